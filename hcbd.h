@@ -1,0 +1,2111 @@
+/* hcbd.h - hydrodynamically coupled Brownian dynamics in one C header.
+
+   Version 0.1. Public domain-style single header; see README.md.
+
+   WHAT IT IS
+     A simulation kernel for soft-matter fluids: Brownian particles that carry
+     a background-fluid velocity, updated by a momentum-conserving, Galilean-
+     invariant pair scheme with pairwise noise (GI-BD, Padding & Briels 2014,
+     with the corrections of Ahuja et al. 2016), and classical Brownian
+     dynamics in the same kernel.  The walled model (2016) and HCBD (2018)
+     build on the same storage, neighbour search, random numbers and
+     observables.
+
+   USAGE
+     In exactly one C or C++ file:
+         #define HCBD_IMPLEMENTATION
+         #include "hcbd.h"
+     Everywhere else just #include "hcbd.h".  Link with -lm; add -fopenmp for
+     threads (optional: results are bit-identical for any thread count).
+
+   CONFIGURATION MACROS (set globally, identically in every file)
+     HCBD_MODEL    HCBD_MODEL_GIBD (default): bulk GI-BD and classical BD.
+                   HCBD_MODEL_WALLED, HCBD_MODEL_HCBD: not implemented yet;
+                   selecting them is a compile-time error, not a stub.
+     HCBD_REAL     double (default) or float: storage and pair arithmetic.
+                   Conservation sums and observables are accumulated in
+                   double either way.
+   (only in the implementation file)
+     HCBD_MALLOC / HCBD_FREE   allocator of hcbd_world_create (default
+                   malloc/free).  Nothing else in the library allocates.
+
+   EXAMPLE (20 lines)
+       hcbd_world_def def = hcbd_world_def_default();   // 2014/2016 stars
+       def.capacity = 512;
+       def.params.potential = HCBD_POT_STAR;
+       hcbd_world w;
+       if (hcbd_world_create(&w, &def) != HCBD_OK) {
+           fprintf(stderr, "%s\n", w.err.msg); return 1;
+       }
+       hcbd_world_place_lattice(&w, 512);        // ids 0..511, v Maxwellian
+       for (int block = 0; block < 100; ++block) {
+           if (hcbd_step(&w, 100) != HCBD_OK) {
+               fprintf(stderr, "%s\n", w.err.msg); break;
+           }
+           printf("T = %g\n", hcbd_temperature(&w));
+       }
+       hcbd_world_destroy(&w);
+
+   MEMORY
+     hcbd_world_bytes(&def) says how many bytes a configuration needs;
+     hcbd_world_init(&w, &def, block, bytes) lays the world out in a block
+     the caller owns (64-byte aligned internally).  hcbd_world_create is the
+     malloc convenience.  The step loop never allocates.
+
+   RANDOM NUMBERS
+     xoshiro256** (Blackman & Vigna), seeded through splitmix64, one stream
+     per particle (moves with the particle when storage is re-sorted): the
+     Brownian displacements and the initial velocities.  Pair noise comes
+     from a counter-based stream: the key is a 64-bit mix (splitmix64's
+     finaliser) of (seed, step, min id, max id); the stream is splitmix64
+     started at that key.  A pair's noise is therefore a pure function of
+     its ids and the step, independent of threads and storage order.
+     Gaussians: 256-layer ziggurat (Marsaglia & Tsang 2000, Doornik's
+     layout): one 64-bit draw gives the layer (low 8 bits) and a 53-bit
+     uniform; 99% of draws return after one multiply and compare, the rest
+     use the wedge or the exact tail method.  Tables are built at init.
+     HCBD_NOISE_UNIFORM replaces pair-noise Gaussians by variance-matched
+     uniforms (cheaper, same first two moments).
+
+   DETERMINISM
+     Every per-particle sum runs over partners in increasing id order and
+     skips pairs beyond the cut-off, so results depend on neither the thread
+     count, nor the storage order (particles are re-sorted by cell at every
+     neighbour-list rebuild), nor when the list is rebuilt.
+
+   ERRORS
+     Every public function returns hcbd_result (HCBD_OK = 0).  On failure
+     w->err holds the code, the step, the particle id (or -1) and a message
+     naming the bad value.  The library never exits or aborts.
+*/
+#ifndef HCBD_H_INCLUDED
+#define HCBD_H_INCLUDED
+
+#include <stddef.h>
+#include <stdint.h>
+
+#define HCBD_VERSION_MAJOR 0
+#define HCBD_VERSION_MINOR 1
+
+#define HCBD_MODEL_GIBD 1
+#define HCBD_MODEL_WALLED 2
+#define HCBD_MODEL_HCBD 3
+#ifndef HCBD_MODEL
+#define HCBD_MODEL HCBD_MODEL_GIBD
+#endif
+#if HCBD_MODEL != HCBD_MODEL_GIBD
+#error "hcbd: only HCBD_MODEL_GIBD is implemented so far (walled and HCBD models are open issues)"
+#endif
+
+#ifndef HCBD_REAL
+#define HCBD_REAL double
+#endif
+typedef HCBD_REAL hcbd_real;
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* >>results ---------------------------------------------------------------*/
+typedef enum hcbd_result {
+    HCBD_OK = 0,
+    HCBD_ERR_NULL = 1,       /* a required pointer is NULL                  */
+    HCBD_ERR_PARAM = 2,      /* a parameter is outside its range            */
+    HCBD_ERR_CAPACITY = 3,   /* particles or pairs above the fixed capacity */
+    HCBD_ERR_BOX = 4,        /* box shorter than the cut-offs need          */
+    HCBD_ERR_MEMORY = 5,     /* memory block too small, or malloc failed    */
+    HCBD_ERR_NONFINITE = 6,  /* a non-finite value in input or state        */
+    HCBD_ERR_UNSTABLE = 7,   /* a stability limit was crossed during a step */
+    HCBD_ERR_STATE = 8       /* call not valid in the world's present state */
+} hcbd_result;
+
+const char *hcbd_result_name(hcbd_result r);
+
+typedef struct hcbd_error {
+    hcbd_result code;
+    int64_t step;   /* step at which it happened, -1 outside a step */
+    int64_t id;     /* particle id involved, -1 if none             */
+    char msg[256];
+} hcbd_error;
+
+/* >>parameters ------------------------------------------------------------*/
+typedef enum hcbd_dynamics {
+    HCBD_DYN_GIBD = 0,   /* background velocity, pair friction and noise  */
+    HCBD_DYN_BD = 1      /* classical BD: v == 0, no velocity update       */
+} hcbd_dynamics;
+
+typedef enum hcbd_potential {
+    HCBD_POT_IDEAL = 0,  /* no pair potential: the force pass is skipped  */
+    HCBD_POT_STAR = 1,   /* Likos star polymer, 2014 eq. 28              */
+    HCBD_POT_TABLE = 2   /* user table of F(r) and V(r), copied at init   */
+} hcbd_potential;
+
+typedef enum hcbd_noise {
+    HCBD_NOISE_GAUSS = 0,
+    HCBD_NOISE_UNIFORM = 1  /* pair noise only; uniform with unit variance */
+} hcbd_noise;
+
+#define HCBD_AUTO (-1)
+
+typedef struct hcbd_params {
+    double L[3];          /* box edges (periodic)                            */
+    double dt;            /* time step                                       */
+    double kT;            /* thermal energy; 0 draws no random numbers       */
+    double xi;            /* particle friction                               */
+    double xip;           /* background friction xi' (m = xi' tau)           */
+    double tau;           /* background relaxation time                      */
+    double Rc;            /* range of the Wendland weight function           */
+    double density;       /* n#, nominal number density (2016 normalisation) */
+    int density_norm;     /* 2014 or 2016                                    */
+    int lagged_density;   /* 1: friction uses densities of t - dt (2014)     */
+    hcbd_dynamics dynamics;
+    hcbd_potential potential;
+    hcbd_noise noise;
+    double f;             /* star arms                                       */
+    double sigma;         /* star core size                                  */
+    double star_eps;      /* energy unit of the star potential (kT of 2014)  */
+    double rcut;          /* pair-potential cut-off                          */
+    const double *table_F;/* HCBD_POT_TABLE: force F(r) = -dV/dr, table_n pts*/
+    const double *table_V;/*   and V(r); uniform in r on [table_r0, rcut]    */
+    int table_n;
+    double table_r0;
+    double fext[3];       /* constant external force on every particle      */
+    double skin;          /* Verlet skin                                     */
+    int sort;             /* 1: re-sort storage by cell at each rebuild      */
+    uint64_t seed;
+    int threads;          /* OpenMP threads (ignored without OpenMP)         */
+} hcbd_params;
+
+/* The 2014/2016 star-polymer scene: f = 128, n# = 0.24, N = 512, L = 12.9,
+   Rc = rcut = 2.5, dt = 1e-4, tau = 3.6e-3, kT = xi = xi' = 1, 2016 density. */
+hcbd_params hcbd_params_default(void);
+
+/* Validates a whole parameter set.  Writes a message naming the bad field
+   and its value into msg (msg may be NULL).  Thread-safe. */
+hcbd_result hcbd_params_check(const hcbd_params *p, char *msg, size_t msg_size);
+
+typedef struct hcbd_world_def {
+    int capacity;         /* most particles the world can hold              */
+    int64_t max_pairs;    /* half-list capacity; HCBD_AUTO: 1.6x the ideal-
+                             gas estimate plus 8 per particle                */
+    hcbd_params params;
+} hcbd_world_def;
+
+hcbd_world_def hcbd_world_def_default(void);
+
+/* >>world -----------------------------------------------------------------*/
+typedef struct hcbd__zig {
+    double x[257];
+    double r[256];
+} hcbd__zig;
+
+typedef struct hcbd_world {
+    hcbd_params p;
+    hcbd_error err;
+    int capacity, n;
+    int64_t max_pairs, npairs;
+    int64_t step;
+    /* derived constants */
+    double m, inv_m, w0, cw, cf, rho_norm, rlist, cutmax;
+    double star_a, star_b, star_s;
+    int has_pairs, has_fext, has_noise, gibd;
+    /* statistics */
+    int64_t n_rebuilds, n_table_clamped;
+    /* per-particle arrays (struct of arrays), storage order */
+    hcbd_real *x, *y, *z;        /* positions in [0, L)                       */
+    hcbd_real *vx, *vy, *vz;     /* background velocity (GI-BD)               */
+    hcbd_real *fx, *fy, *fz;     /* own-half pair force sums (scratch)        */
+    hcbd_real *px, *py, *pz;     /* own-half momentum exchanges (scratch)     */
+    hcbd_real *rho, *inv_rho, *wown;
+    hcbd_real *x0, *y0, *z0;     /* positions at the last list build          */
+    int32_t *ix, *iy, *iz;       /* periodic images crossed (unwrapped pos.)  */
+    int32_t *id, *slot;          /* slot -> id, id -> slot                    */
+    uint64_t *rs0, *rs1, *rs2, *rs3; /* xoshiro256** state per particle       */
+    /* cells and neighbour lists */
+    int nc[3], ncell;
+    int32_t *cell_start, *cell_cursor, *cell_of, *perm;
+    int32_t *nb_start, *nb_j, *rev_start, *rev_p, *pair_i;
+    hcbd_real *buf[7];           /* per-pair values of the owner (lower id)   */
+    int nbuf, bF, bP, bW;        /* buffer slots: force, momentum, weight     */
+    double step_limit, disp_max;
+    void *scratch;               /* n x 8 bytes for permutations              */
+    double *tab_F, *tab_V;
+    double tab_inv_dr;
+    hcbd__zig *zig;
+    uint64_t seed_key;
+    int list_valid, rho_current, rho_valid;
+    void *owned_mem;
+} hcbd_world;
+
+size_t hcbd_world_bytes(const hcbd_world_def *def);
+/* Lays the world out in mem (bytes >= hcbd_world_bytes).  On failure w->err
+   says why.  No particles yet: call hcbd_world_set_positions or
+   hcbd_world_place_lattice. */
+hcbd_result hcbd_world_init(hcbd_world *w, const hcbd_world_def *def,
+                            void *mem, size_t bytes);
+hcbd_result hcbd_world_create(hcbd_world *w, const hcbd_world_def *def);
+void hcbd_world_destroy(hcbd_world *w);
+
+/* Sets n particles with ids 0..n-1 at xyz (3n values, interleaved x y z;
+   wrapped into the box), draws Maxwell-Boltzmann background velocities
+   (variance kT/m, total momentum removed) and resets the step counter. */
+hcbd_result hcbd_world_set_positions(hcbd_world *w, int n, const double *xyz);
+/* n particles on the first n sites of the smallest simple-cubic lattice
+   (scaled to the box) that has at least n sites. */
+hcbd_result hcbd_world_place_lattice(hcbd_world *w, int n);
+/* n particles uniformly at random (ideal-gas configuration). */
+hcbd_result hcbd_world_place_random(hcbd_world *w, int n);
+/* Background velocities in id order, 3n values. */
+hcbd_result hcbd_world_set_velocities(hcbd_world *w, const double *v);
+
+/* >>step ------------------------------------------------------------------*/
+/* Advances nsteps steps.  Returns HCBD_ERR_UNSTABLE when a particle moves
+   more than the per-step limit (half the skin; a tenth of the cut-off when
+   the skin is 0), HCBD_ERR_NONFINITE on non-finite state, HCBD_ERR_CAPACITY
+   when the neighbour list overflows; w->err names the step, the particle
+   and the limit.  After a run-time error the state is that of the failed
+   step: restart from a saved state. */
+hcbd_result hcbd_step(hcbd_world *w, int nsteps);
+
+/* >>observables (cost nothing unless called) ------------------------------*/
+/* Positions (unwrapped if unwrapped != 0) and velocities, id order, 3n. */
+hcbd_result hcbd_get_positions(const hcbd_world *w, double *xyz, int unwrapped);
+hcbd_result hcbd_get_velocities(const hcbd_world *w, double *v);
+/* Background kinetic temperature sum m (v - v_cm)^2 / (3 (n - 1)); 0 in BD. */
+double hcbd_temperature(const hcbd_world *w);
+/* Total momentum sum m v, accumulated in double. */
+void hcbd_momentum(const hcbd_world *w, double p[3]);
+/* Pair-virial stress of the conservative pair forces,
+   s[3a+b] = -(1/V) sum_{i<j} x_ij,a F_ij,b. */
+hcbd_result hcbd_stress(hcbd_world *w, double s[9]);
+/* Configurational friction averages over particles, with the densities the
+   next step's friction uses: out[0] = <sum_j f_ij>, out[1] = <sum_j f_ij
+   r_ij^2>, out[2] = <sum_j f_ij (1 - cos k.x_ij)> averaged over k along x,
+   y, z with |k| = 2 pi nk / L_d.  nu_meanfield = out[2] / (tau k^2) and
+   nu_eff = out[1] / (6 tau).  GI-BD only. */
+hcbd_result hcbd_friction_average(hcbd_world *w, int nk, double out[3]);
+/* Transverse background current at k = 2 pi nk / L_d along each axis d:
+   out[4d + 2c + 0/1] = Re/Im of sum_i v_i,a exp(-i k x_i,d) for the two
+   transverse components a (c = 0, 1).  C_t(k,t) = <Re(j(t) j*(0))> / n. */
+hcbd_result hcbd_transverse_current(const hcbd_world *w, int nk, double out[12]);
+/* Total potential energy of the pair potential. */
+double hcbd_potential_energy(hcbd_world *w);
+/* 64-bit hash of positions, images, velocities and generator states in id
+   order: equal checksums mean bit-identical states. */
+uint64_t hcbd_state_checksum(const hcbd_world *w);
+
+/* Radial distribution function.  The caller owns hist (nbins doubles). */
+typedef struct hcbd_rdf {
+    double rmax, dr;
+    int nbins;
+    double *hist;
+    int64_t samples;
+    double pair_norm;
+} hcbd_rdf;
+hcbd_result hcbd_rdf_init(hcbd_rdf *g, double rmax, int nbins, double *hist);
+/* Uses the neighbour list when rmax <= the interaction cut-off, else all
+   pairs (O(n^2)); rmax must not exceed half the shortest box edge. */
+hcbd_result hcbd_rdf_sample(hcbd_rdf *g, hcbd_world *w);
+/* r[b] bin centres, g[b] values (either may be NULL). */
+void hcbd_rdf_result(const hcbd_rdf *g, double *r, double *gr);
+
+/* Multiple-tau correlator (Ramirez et al. 2010) for nch channels; the
+   correlation is averaged over channels.  Level 0 holds lags 0..p-1, level
+   k >= 1 lags j m^k for j = p/m..p-1 (block averages of m^k samples). */
+typedef struct hcbd_mtcorr {
+    int nch, p, m, levels, kmax;
+    double *shift;      /* levels x p x nch      */
+    double *acc;        /* (levels + 1) x nch    */
+    double *corr;       /* levels x p            */
+    int64_t *count;     /* levels x p            */
+    int *fill, *head, *nacc;
+    int64_t nsamples;
+    int finalized;
+} hcbd_mtcorr;
+size_t hcbd_mtcorr_bytes(int nch, int p, int m, int levels);
+hcbd_result hcbd_mtcorr_init(hcbd_mtcorr *c, int nch, int p, int m, int levels,
+                             void *mem, size_t bytes);
+void hcbd_mtcorr_add(hcbd_mtcorr *c, const double *x);
+/* Ends the series (see the implementation for what the tail keeps). */
+void hcbd_mtcorr_finalize(hcbd_mtcorr *c);
+/* Writes up to max (lag in samples, correlation, count) triples in order of
+   increasing lag, skipping lags seen fewer than min_count times; returns
+   how many.  Any output array may be NULL. */
+int hcbd_mtcorr_result(const hcbd_mtcorr *c, int64_t min_count, double *lag,
+                       double *corr, int64_t *count, int max);
+
+/* Mean-squared displacement with multiple time origins, order-n scheme
+   (Frenkel & Smit sec. 4.4): level l keeps the last B positions sampled
+   every B^l samples and correlates each new one with them; lags j B^l,
+   j = 1..B-1.  Feed unwrapped positions (3n, id order) every sample. */
+typedef struct hcbd_msd {
+    int n, B, levels;
+    double *pos;        /* levels x B x 3n       */
+    double *sum;        /* levels x B            */
+    int64_t *count;     /* levels x B            */
+    int *fill, *head;
+    int64_t nsamples;
+} hcbd_msd;
+size_t hcbd_msd_bytes(int n, int B, int levels);
+hcbd_result hcbd_msd_init(hcbd_msd *d, int n, int B, int levels, void *mem,
+                          size_t bytes);
+void hcbd_msd_add(hcbd_msd *d, const double *xyz);
+int hcbd_msd_result(const hcbd_msd *d, double *lag, double *msd, int64_t *count,
+                    int max);
+
+/* >>random numbers (also for callers' own use) ----------------------------*/
+typedef struct hcbd_rng { uint64_t s[4]; } hcbd_rng;
+uint64_t hcbd_splitmix64(uint64_t *state);
+void hcbd_rng_seed(hcbd_rng *r, uint64_t seed);
+uint64_t hcbd_rng_next(hcbd_rng *r);
+double hcbd_rng_uniform(hcbd_rng *r);               /* [0, 1)              */
+double hcbd_rng_normal(const hcbd_world *w, hcbd_rng *r);
+/* The pair noise of pair (a, b) at step s, exactly as the step draws it. */
+void hcbd_pair_normals(const hcbd_world *w, int64_t s, int32_t a, int32_t b,
+                       double out[3]);
+
+/* >>kernels (exported for tests and users) --------------------------------*/
+double hcbd_wendland(double r, double Rc);
+double hcbd_wendland_dr(double r, double Rc);
+/* Star potential V(r) and force -dV/dr for f arms, core sigma, energy eps. */
+double hcbd_star_potential(double r, double f, double sigma, double eps);
+double hcbd_star_force(double r, double f, double sigma, double eps);
+
+#ifdef __cplusplus
+}
+#endif
+#endif /* HCBD_H_INCLUDED */
+
+/* ========================================================================= */
+/* >>implementation                                                          */
+/* ========================================================================= */
+#if defined(HCBD_IMPLEMENTATION) && !defined(HCBD_IMPLEMENTATION_DONE)
+#define HCBD_IMPLEMENTATION_DONE
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <stdarg.h>
+#include <limits.h>
+
+#ifndef HCBD_MALLOC
+#define HCBD_MALLOC(n) malloc(n)
+#define HCBD_FREE(p) free(p)
+#endif
+
+#ifdef _OPENMP
+#include <omp.h>
+#define HCBD__OMP(x) _Pragma(#x)
+#else
+#define HCBD__OMP(x)
+#endif
+
+#if defined(__GNUC__) || defined(__clang__)
+#define HCBD__RESTRICT __restrict
+#else
+#define HCBD__RESTRICT
+#endif
+
+#define HCBD__PI 3.14159265358979323846
+#define HCBD__GOLDEN 0x9E3779B97F4A7C15ULL
+/* Stream ids: one per use of the random numbers, so streams never overlap. */
+#define HCBD__STREAM_PARTICLE 0x1ULL
+#define HCBD__STREAM_PAIR 0x2ULL
+#define HCBD__STREAM_PLACE 0x3ULL
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* >>errors */
+const char *hcbd_result_name(hcbd_result r)
+{
+    switch (r) {
+    case HCBD_OK: return "HCBD_OK";
+    case HCBD_ERR_NULL: return "HCBD_ERR_NULL";
+    case HCBD_ERR_PARAM: return "HCBD_ERR_PARAM";
+    case HCBD_ERR_CAPACITY: return "HCBD_ERR_CAPACITY";
+    case HCBD_ERR_BOX: return "HCBD_ERR_BOX";
+    case HCBD_ERR_MEMORY: return "HCBD_ERR_MEMORY";
+    case HCBD_ERR_NONFINITE: return "HCBD_ERR_NONFINITE";
+    case HCBD_ERR_UNSTABLE: return "HCBD_ERR_UNSTABLE";
+    case HCBD_ERR_STATE: return "HCBD_ERR_STATE";
+    }
+    return "HCBD_ERR_UNKNOWN";
+}
+
+#if defined(__GNUC__) || defined(__clang__)
+__attribute__((format(printf, 5, 6)))
+#endif
+static hcbd_result hcbd__fail(hcbd_error *e, hcbd_result code, int64_t step,
+                              int64_t id, const char *fmt, ...)
+{
+    va_list ap;
+    e->code = code;
+    e->step = step;
+    e->id = id;
+    va_start(ap, fmt);
+    vsnprintf(e->msg, sizeof e->msg, fmt, ap);
+    va_end(ap);
+    return code;
+}
+
+static void hcbd__clear(hcbd_error *e)
+{
+    e->code = HCBD_OK;
+    e->step = -1;
+    e->id = -1;
+    e->msg[0] = 0;
+}
+
+/* >>parameters */
+hcbd_params hcbd_params_default(void)
+{
+    hcbd_params p;
+    memset(&p, 0, sizeof p);
+    p.L[0] = p.L[1] = p.L[2] = 12.9;
+    p.dt = 1e-4;
+    p.kT = 1.0;
+    p.xi = 1.0;
+    p.xip = 1.0;
+    p.tau = 3.6e-3;
+    p.Rc = 2.5;
+    p.density = 0.24;
+    p.density_norm = 2016;
+    p.lagged_density = 0;
+    p.dynamics = HCBD_DYN_GIBD;
+    p.potential = HCBD_POT_STAR;
+    p.noise = HCBD_NOISE_GAUSS;
+    p.f = 128.0;
+    p.sigma = 1.0;
+    p.star_eps = 1.0;
+    p.rcut = 2.5;
+    p.table_F = NULL;
+    p.table_V = NULL;
+    p.table_n = 0;
+    p.table_r0 = 0.0;
+    p.skin = 0.4;
+    p.sort = 1;
+    p.seed = 1;
+    p.threads = 1;
+    return p;
+}
+
+hcbd_world_def hcbd_world_def_default(void)
+{
+    hcbd_world_def d;
+    d.capacity = 512;
+    d.max_pairs = HCBD_AUTO;
+    d.params = hcbd_params_default();
+    return d;
+}
+
+static double hcbd__cutmax(const hcbd_params *p)
+{
+    double c = 0.0;
+    if (p->dynamics == HCBD_DYN_GIBD) c = p->Rc;
+    if (p->potential != HCBD_POT_IDEAL && p->rcut > c) c = p->rcut;
+    return c;
+}
+
+static int hcbd__needs_pairs(const hcbd_params *p)
+{
+    return p->dynamics == HCBD_DYN_GIBD || p->potential != HCBD_POT_IDEAL;
+}
+
+static hcbd_result hcbd__param_fail(char *msg, size_t n, const char *field,
+                                    double val, const char *rule)
+{
+    if (msg && n) snprintf(msg, n, "parameter %s = %.17g is invalid (need %s)",
+                           field, val, rule);
+    return HCBD_ERR_PARAM;
+}
+
+#define HCBD__CHECK(cond, field, val)                                          \
+    do {                                                                       \
+        if (!(cond))                                                           \
+            return hcbd__param_fail(msg, msg_size, field, (double)(val), #cond); \
+    } while (0)
+
+hcbd_result hcbd_params_check(const hcbd_params *p, char *msg, size_t msg_size)
+{
+    int d;
+    static const char *Lname[3] = {"L[0]", "L[1]", "L[2]"};
+    static const char *Fname[3] = {"fext[0]", "fext[1]", "fext[2]"};
+    if (!p) {
+        if (msg && msg_size) snprintf(msg, msg_size, "params is NULL");
+        return HCBD_ERR_NULL;
+    }
+    for (d = 0; d < 3; ++d) {
+        HCBD__CHECK(isfinite(p->L[d]) && p->L[d] > 0, Lname[d], p->L[d]);
+        HCBD__CHECK(isfinite(p->fext[d]), Fname[d], p->fext[d]);
+    }
+    HCBD__CHECK(isfinite(p->dt) && p->dt > 0, "dt", p->dt);
+    HCBD__CHECK(isfinite(p->kT) && p->kT >= 0, "kT", p->kT);
+    HCBD__CHECK(isfinite(p->xi) && p->xi > 0, "xi", p->xi);
+    HCBD__CHECK(p->dynamics == HCBD_DYN_GIBD || p->dynamics == HCBD_DYN_BD,
+                "dynamics", p->dynamics);
+    HCBD__CHECK(p->potential == HCBD_POT_IDEAL || p->potential == HCBD_POT_STAR ||
+                p->potential == HCBD_POT_TABLE, "potential", p->potential);
+    HCBD__CHECK(p->noise == HCBD_NOISE_GAUSS || p->noise == HCBD_NOISE_UNIFORM,
+                "noise", p->noise);
+    if (p->dynamics == HCBD_DYN_GIBD) {
+        HCBD__CHECK(isfinite(p->xip) && p->xip > 0, "xip", p->xip);
+        HCBD__CHECK(isfinite(p->tau) && p->tau > 0, "tau", p->tau);
+        /* Explicit Euler friction overshoots for tau < dt; 2014 eq. 27 asks
+           tau >= 10 dt for accuracy, which stays the caller's trade-off. */
+        HCBD__CHECK(p->tau >= p->dt, "tau", p->tau);
+        HCBD__CHECK(isfinite(p->Rc) && p->Rc > 0, "Rc", p->Rc);
+        HCBD__CHECK(p->density_norm == 2014 || p->density_norm == 2016,
+                    "density_norm", p->density_norm);
+        if (p->density_norm == 2016)
+            HCBD__CHECK(isfinite(p->density) && p->density > 0, "density",
+                        p->density);
+        HCBD__CHECK(p->lagged_density == 0 || p->lagged_density == 1,
+                    "lagged_density", p->lagged_density);
+    }
+    if (p->potential == HCBD_POT_STAR) {
+        HCBD__CHECK(isfinite(p->f) && p->f > 0, "f", p->f);
+        HCBD__CHECK(isfinite(p->sigma) && p->sigma > 0, "sigma", p->sigma);
+        HCBD__CHECK(isfinite(p->star_eps) && p->star_eps >= 0, "star_eps",
+                    p->star_eps);
+    }
+    if (p->potential != HCBD_POT_IDEAL)
+        HCBD__CHECK(isfinite(p->rcut) && p->rcut > 0, "rcut", p->rcut);
+    if (p->potential == HCBD_POT_TABLE) {
+        int k;
+        if (!p->table_F || !p->table_V) {
+            if (msg && msg_size)
+                snprintf(msg, msg_size, "parameter table_F or table_V is NULL");
+            return HCBD_ERR_NULL;
+        }
+        HCBD__CHECK(p->table_n >= 2, "table_n", p->table_n);
+        HCBD__CHECK(isfinite(p->table_r0) && p->table_r0 >= 0 &&
+                    p->table_r0 < p->rcut, "table_r0", p->table_r0);
+        for (k = 0; k < p->table_n; ++k) {
+            HCBD__CHECK(isfinite(p->table_F[k]), "table_F[k]", p->table_F[k]);
+            HCBD__CHECK(isfinite(p->table_V[k]), "table_V[k]", p->table_V[k]);
+        }
+    }
+    HCBD__CHECK(isfinite(p->skin) && p->skin >= 0, "skin", p->skin);
+    HCBD__CHECK(p->sort == 0 || p->sort == 1, "sort", p->sort);
+    HCBD__CHECK(p->threads >= 1 && p->threads <= 1024, "threads", p->threads);
+    if (hcbd__needs_pairs(p)) {
+        double rl = hcbd__cutmax(p) + p->skin;
+        for (d = 0; d < 3; ++d)
+            if (p->L[d] < 2.0 * rl) {
+                if (msg && msg_size)
+                    snprintf(msg, msg_size,
+                             "box too small: L[%d] = %.17g < 2 (cut-off %.17g + "
+                             "skin %.17g); enlarge the box or reduce the skin",
+                             d, p->L[d], hcbd__cutmax(p), p->skin);
+                return HCBD_ERR_BOX;
+            }
+    }
+    return HCBD_OK;
+}
+
+/* >>random numbers */
+static uint64_t hcbd__mix64(uint64_t z)
+{
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+    return z ^ (z >> 31);
+}
+
+uint64_t hcbd_splitmix64(uint64_t *state)
+{
+    *state += HCBD__GOLDEN;
+    return hcbd__mix64(*state);
+}
+
+static uint64_t hcbd__rotl(uint64_t x, int k) { return (x << k) | (x >> (64 - k)); }
+
+uint64_t hcbd_rng_next(hcbd_rng *r)
+{
+    uint64_t *s = r->s;
+    uint64_t res = hcbd__rotl(s[1] * 5, 7) * 9, t = s[1] << 17;
+    s[2] ^= s[0];
+    s[3] ^= s[1];
+    s[1] ^= s[2];
+    s[0] ^= s[3];
+    s[2] ^= t;
+    s[3] = hcbd__rotl(s[3], 45);
+    return res;
+}
+
+void hcbd_rng_seed(hcbd_rng *r, uint64_t seed)
+{
+    uint64_t st = seed;
+    int k;
+    for (k = 0; k < 4; ++k) r->s[k] = hcbd_splitmix64(&st);
+}
+
+static double hcbd__u01(uint64_t u) { return (double)(u >> 11) * (1.0 / 9007199254740992.0); }
+
+double hcbd_rng_uniform(hcbd_rng *r) { return hcbd__u01(hcbd_rng_next(r)); }
+
+/* Ziggurat, 256 layers (Marsaglia & Tsang 2000; table layout of Doornik's
+   ZIGNOR).  x[0] = V/f(R) is the pseudo-width of the base strip with tail. */
+#define HCBD__ZIG_R 3.6541528853610088
+#define HCBD__ZIG_V 0.00492867323399
+
+static void hcbd__zig_init(hcbd__zig *z)
+{
+    double f = exp(-0.5 * HCBD__ZIG_R * HCBD__ZIG_R);
+    int i;
+    z->x[0] = HCBD__ZIG_V / f;
+    z->x[1] = HCBD__ZIG_R;
+    z->x[256] = 0.0;
+    for (i = 2; i < 256; ++i) {
+        z->x[i] = sqrt(-2.0 * log(HCBD__ZIG_V / z->x[i - 1] + f));
+        f = exp(-0.5 * z->x[i] * z->x[i]);
+    }
+    for (i = 0; i < 256; ++i) z->r[i] = z->x[i + 1] / z->x[i];
+}
+
+/* A generator is either a xoshiro state or a splitmix64 counter. */
+typedef struct hcbd__gen {
+    hcbd_rng *xo;
+    uint64_t sm;
+} hcbd__gen;
+
+static inline uint64_t hcbd__gen_next(hcbd__gen *g)
+{
+    return g->xo ? hcbd_rng_next(g->xo) : hcbd_splitmix64(&g->sm);
+}
+
+static double hcbd__zig_slow(const hcbd__zig *z, hcbd__gen *g, uint64_t u)
+{
+    for (;;) {
+        int i = (int)(u & 255);
+        double uu = 2.0 * hcbd__u01(u) - 1.0;
+        if (fabs(uu) < z->r[i]) return uu * z->x[i];
+        if (i == 0) {
+            /* Marsaglia's exact tail method beyond R. */
+            double xx, yy;
+            do {
+                double a = hcbd__u01(hcbd__gen_next(g)), b = hcbd__u01(hcbd__gen_next(g));
+                xx = log(1.0 - a) / HCBD__ZIG_R;
+                yy = log(1.0 - b);
+            } while (-2.0 * yy < xx * xx);
+            return uu < 0 ? xx - HCBD__ZIG_R : HCBD__ZIG_R - xx;
+        } else {
+            double xx = uu * z->x[i];
+            double f0 = exp(-0.5 * (z->x[i] * z->x[i] - xx * xx));
+            double f1 = exp(-0.5 * (z->x[i + 1] * z->x[i + 1] - xx * xx));
+            if (f1 + hcbd__u01(hcbd__gen_next(g)) * (f0 - f1) < 1.0) return xx;
+        }
+        u = hcbd__gen_next(g);
+    }
+}
+
+static inline double hcbd__normal(const hcbd__zig *z, hcbd__gen *g)
+{
+    uint64_t u = hcbd__gen_next(g);
+    int i = (int)(u & 255);
+    double uu = 2.0 * hcbd__u01(u) - 1.0;
+    if (fabs(uu) < z->r[i]) return uu * z->x[i];
+    return hcbd__zig_slow(z, g, u);
+}
+
+double hcbd_rng_normal(const hcbd_world *w, hcbd_rng *r)
+{
+    hcbd__gen g;
+    g.xo = r;
+    g.sm = 0;
+    return hcbd__normal(w->zig, &g);
+}
+
+static uint64_t hcbd__step_key(const hcbd_world *w, int64_t s)
+{
+    return hcbd__mix64(w->seed_key ^ hcbd__mix64((uint64_t)s));
+}
+
+static inline uint64_t hcbd__pair_key(uint64_t step_key, int32_t a, int32_t b)
+{
+    uint64_t lo = (uint64_t)(uint32_t)(a < b ? a : b);
+    uint64_t hi = (uint64_t)(uint32_t)(a < b ? b : a);
+    return hcbd__mix64(step_key ^ ((hi << 32) | lo));
+}
+
+/* Three pair-noise numbers of unit variance from a pair key. */
+static inline void hcbd__pair_noise(const hcbd_world *w, uint64_t key, double *z3)
+{
+    hcbd__gen g;
+    g.xo = NULL;
+    g.sm = key;
+    if (w->p.noise == HCBD_NOISE_UNIFORM) {
+        /* 21 bits per component, uniform on (-sqrt 3, sqrt 3). */
+        uint64_t u = hcbd__gen_next(&g);
+        const double s = 1.7320508075688772 / 1048576.0;
+        z3[0] = ((double)(u & 0x1FFFFF) + 0.5 - 1048576.0) * s;
+        z3[1] = ((double)((u >> 21) & 0x1FFFFF) + 0.5 - 1048576.0) * s;
+        z3[2] = ((double)((u >> 42) & 0x1FFFFF) + 0.5 - 1048576.0) * s;
+    } else {
+        z3[0] = hcbd__normal(w->zig, &g);
+        z3[1] = hcbd__normal(w->zig, &g);
+        z3[2] = hcbd__normal(w->zig, &g);
+    }
+}
+
+void hcbd_pair_normals(const hcbd_world *w, int64_t s, int32_t a, int32_t b,
+                       double out[3])
+{
+    hcbd__pair_noise(w, hcbd__pair_key(hcbd__step_key(w, s), a, b), out);
+}
+
+/* >>kernels */
+double hcbd_wendland(double r, double Rc)
+{
+    double q, a;
+    if (r >= Rc) return 0.0;
+    q = r / Rc;
+    a = 1.0 - q;
+    return 21.0 / (2.0 * HCBD__PI * Rc * Rc * Rc) * a * a * a * a * (4.0 * q + 1.0);
+}
+
+double hcbd_wendland_dr(double r, double Rc)
+{
+    double q, a;
+    if (r >= Rc) return 0.0;
+    q = r / Rc;
+    a = 1.0 - q;
+    return -210.0 / (HCBD__PI * Rc * Rc * Rc * Rc) * a * a * a * q;
+}
+
+double hcbd_star_potential(double r, double f, double sigma, double eps)
+{
+    double a = eps * (5.0 / 18.0) * pow(f, 1.5), b = 1.0 / (1.0 + 0.5 * sqrt(f));
+    double q = r / sigma;
+    if (q <= 1.0) return a * (-log(q) + b);
+    return a * b / q * exp(-0.5 * sqrt(f) * (q - 1.0));
+}
+
+double hcbd_star_force(double r, double f, double sigma, double eps)
+{
+    double a = eps * (5.0 / 18.0) * pow(f, 1.5), b = 1.0 / (1.0 + 0.5 * sqrt(f));
+    double s = 0.5 * sqrt(f), q = r / sigma;
+    if (q <= 1.0) return a / r;
+    return a * b * exp(-s * (q - 1.0)) * (1.0 / (q * q) + s / q) / sigma;
+}
+
+/* Table lookup with linear interpolation; r below the table is clamped. */
+static inline double hcbd__table(const hcbd_world *w, const double *t, double r)
+{
+    double u = (r - w->p.table_r0) * w->tab_inv_dr;
+    int k;
+    if (u < 0) u = 0;
+    k = (int)u;
+    if (k > w->p.table_n - 2) k = w->p.table_n - 2;
+    u -= k;
+    return t[k] + u * (t[k + 1] - t[k]);
+}
+
+/* Pair force divided by r, for r < rcut. */
+static inline double hcbd__force_over_r(const hcbd_world *w, double r, double r2)
+{
+    if (w->p.potential == HCBD_POT_STAR) {
+        double q = r / w->p.sigma;
+        if (q <= 1.0) return w->star_a / r2;
+        return w->star_a * w->star_b * exp(-w->star_s * (q - 1.0)) *
+               (1.0 / (q * q) + w->star_s / q) / (w->p.sigma * r);
+    }
+    return hcbd__table(w, w->tab_F, r) / r;
+}
+
+static double hcbd__pair_energy(const hcbd_world *w, double r)
+{
+    if (w->p.potential == HCBD_POT_STAR)
+        return hcbd_star_potential(r, w->p.f, w->p.sigma, w->p.star_eps);
+    return hcbd__table(w, w->tab_V, r);
+}
+
+/* >>world and storage */
+#define HCBD__ALIGN 64
+
+static void hcbd__take(char *base, size_t *off, size_t bytes, void **out)
+{
+    size_t o = (*off + HCBD__ALIGN - 1) & ~(size_t)(HCBD__ALIGN - 1);
+    if (out) *out = base ? (void *)(base + o) : NULL;
+    *off = o + bytes;
+}
+
+static int hcbd__cells(const hcbd_params *p, int nc[3])
+{
+    int d, total = 1;
+    double rl = hcbd__cutmax(p) + p->skin;
+    for (d = 0; d < 3; ++d) {
+        int k = hcbd__needs_pairs(p) ? (int)floor(p->L[d] / rl) : 1;
+        if (k < 1) k = 1;
+        if (k > 1024) k = 1024;
+        nc[d] = k;
+        total *= k;
+    }
+    return total;
+}
+
+static int64_t hcbd__auto_pairs(const hcbd_world_def *def)
+{
+    const hcbd_params *p = &def->params;
+    double V = p->L[0] * p->L[1] * p->L[2];
+    double rl = hcbd__cutmax(p) + p->skin;
+    double per = 0.5 * (double)def->capacity / V * (4.0 / 3.0) * HCBD__PI * rl * rl * rl;
+    if (!hcbd__needs_pairs(p)) return 0;
+    return (int64_t)(1.6 * per * def->capacity) + 8 * (int64_t)def->capacity;
+}
+
+/* One function sizes the block and (with base != NULL) assigns pointers, so
+   the two can never disagree. */
+static size_t hcbd__layout(const hcbd_world_def *def, hcbd_world *w, char *base)
+{
+    size_t off = 0, N = (size_t)def->capacity;
+    int nc[3], ncell = hcbd__cells(&def->params, nc), k;
+    int64_t mp = def->max_pairs == HCBD_AUTO ? hcbd__auto_pairs(def) : def->max_pairs;
+    size_t P = (size_t)mp, R = sizeof(hcbd_real), I = sizeof(int32_t);
+    hcbd_world tmp;
+    hcbd_world *t = w ? w : &tmp;
+    const hcbd_params *p = &def->params;
+    int gibd = p->dynamics == HCBD_DYN_GIBD, pot = p->potential != HCBD_POT_IDEAL;
+    int nbuf = 0;
+    t->bF = t->bP = t->bW = -1;
+    if (pot) { t->bF = nbuf; nbuf += 3; }
+    if (gibd) { t->bP = nbuf; nbuf += 3; }
+    if (gibd && p->lagged_density) { t->bW = nbuf; nbuf += 1; }
+    memset(t->buf, 0, sizeof t->buf);
+    hcbd__take(base, &off, sizeof(hcbd__zig), (void **)&t->zig);
+#define HCBD__ARR(ptr, bytes) hcbd__take(base, &off, (bytes), (void **)&(t->ptr))
+    HCBD__ARR(x, N * R); HCBD__ARR(y, N * R); HCBD__ARR(z, N * R);
+    HCBD__ARR(fx, N * R); HCBD__ARR(fy, N * R); HCBD__ARR(fz, N * R);
+    HCBD__ARR(x0, N * R); HCBD__ARR(y0, N * R); HCBD__ARR(z0, N * R);
+    HCBD__ARR(ix, N * I); HCBD__ARR(iy, N * I); HCBD__ARR(iz, N * I);
+    HCBD__ARR(id, N * I); HCBD__ARR(slot, N * I);
+    HCBD__ARR(rs0, N * 8); HCBD__ARR(rs1, N * 8); HCBD__ARR(rs2, N * 8);
+    HCBD__ARR(rs3, N * 8);
+    HCBD__ARR(scratch, N * 8);
+    HCBD__ARR(cell_start, (size_t)(ncell + 1) * I);
+    HCBD__ARR(cell_cursor, (size_t)ncell * I);
+    HCBD__ARR(cell_of, N * I); HCBD__ARR(perm, N * I);
+    HCBD__ARR(nb_start, (N + 1) * I); HCBD__ARR(rev_start, (N + 1) * I);
+    HCBD__ARR(nb_j, P * I); HCBD__ARR(rev_p, P * I); HCBD__ARR(pair_i, P * I);
+    for (k = 0; k < nbuf; ++k) HCBD__ARR(buf[k], P * R);
+    if (gibd) {
+        HCBD__ARR(vx, N * R); HCBD__ARR(vy, N * R); HCBD__ARR(vz, N * R);
+        HCBD__ARR(px, N * R); HCBD__ARR(py, N * R); HCBD__ARR(pz, N * R);
+        HCBD__ARR(rho, N * R); HCBD__ARR(inv_rho, N * R); HCBD__ARR(wown, N * R);
+    } else {
+        t->vx = t->vy = t->vz = t->px = t->py = t->pz = NULL;
+        t->rho = t->inv_rho = t->wown = NULL;
+    }
+    if (p->potential == HCBD_POT_TABLE) {
+        HCBD__ARR(tab_F, (size_t)p->table_n * sizeof(double));
+        HCBD__ARR(tab_V, (size_t)p->table_n * sizeof(double));
+    } else {
+        t->tab_F = t->tab_V = NULL;
+    }
+#undef HCBD__ARR
+    t->nbuf = nbuf;
+    t->nc[0] = nc[0]; t->nc[1] = nc[1]; t->nc[2] = nc[2];
+    t->ncell = ncell;
+    t->max_pairs = mp;
+    return off + HCBD__ALIGN; /* room to align the caller's block */
+}
+
+static hcbd_result hcbd__check_def(const hcbd_world_def *def, char *msg, size_t n)
+{
+    hcbd_result r;
+    if (!def) {
+        snprintf(msg, n, "world definition is NULL");
+        return HCBD_ERR_NULL;
+    }
+    if (def->capacity < 1 || def->capacity > (INT32_MAX / 4)) {
+        snprintf(msg, n, "capacity = %d is invalid (need 1 <= capacity <= %d)",
+                 def->capacity, INT32_MAX / 4);
+        return HCBD_ERR_PARAM;
+    }
+    if (def->max_pairs != HCBD_AUTO && (def->max_pairs < 0 || def->max_pairs > INT32_MAX)) {
+        snprintf(msg, n, "max_pairs = %lld is invalid (need HCBD_AUTO or 0..%d)",
+                 (long long)def->max_pairs, INT32_MAX);
+        return HCBD_ERR_PARAM;
+    }
+    r = hcbd_params_check(&def->params, msg, n);
+    if (r != HCBD_OK) return r;
+    if (def->max_pairs == HCBD_AUTO && hcbd__auto_pairs(def) > INT32_MAX) {
+        snprintf(msg, n, "capacity = %d needs more than 2^31 pairs", def->capacity);
+        return HCBD_ERR_CAPACITY;
+    }
+    return HCBD_OK;
+}
+
+size_t hcbd_world_bytes(const hcbd_world_def *def)
+{
+    char msg[256];
+    if (hcbd__check_def(def, msg, sizeof msg) != HCBD_OK) return 0;
+    return hcbd__layout(def, NULL, NULL);
+}
+
+hcbd_result hcbd_world_init(hcbd_world *w, const hcbd_world_def *def, void *mem,
+                            size_t bytes)
+{
+    hcbd_result r;
+    size_t need;
+    char *base;
+    const hcbd_params *p;
+    if (!w) return HCBD_ERR_NULL;
+    memset(w, 0, sizeof *w);
+    hcbd__clear(&w->err);
+    r = hcbd__check_def(def, w->err.msg, sizeof w->err.msg);
+    if (r != HCBD_OK) {
+        w->err.code = r;
+        return r;
+    }
+    need = hcbd__layout(def, NULL, NULL);
+    if (!mem)
+        return hcbd__fail(&w->err, HCBD_ERR_NULL, -1, -1, "memory block is NULL");
+    if (bytes < need)
+        return hcbd__fail(&w->err, HCBD_ERR_MEMORY, -1, -1,
+                          "memory block of %zu bytes is smaller than the %zu "
+                          "bytes hcbd_world_bytes asks for", bytes, need);
+    base = (char *)mem;
+    base += (HCBD__ALIGN - ((uintptr_t)base & (HCBD__ALIGN - 1))) & (HCBD__ALIGN - 1);
+    hcbd__layout(def, w, base);
+    w->p = def->params;
+    p = &w->p;
+    w->capacity = def->capacity;
+    w->gibd = p->dynamics == HCBD_DYN_GIBD;
+    w->m = w->gibd ? p->xip * p->tau : 0.0;
+    w->inv_m = w->gibd ? 1.0 / w->m : 0.0;
+    w->cw = 21.0 / (2.0 * HCBD__PI * p->Rc * p->Rc * p->Rc);
+    w->w0 = w->cw;
+    w->cf = 15.0 / (2.0 * HCBD__PI * p->Rc * p->Rc * p->Rc);
+    w->rho_norm = p->density_norm == 2016 ? 1.0 / (1.0 + w->w0 / p->density) : 1.0;
+    w->cutmax = hcbd__cutmax(p);
+    w->rlist = w->cutmax + p->skin;
+    w->step_limit = p->skin > 0 ? 0.5 * p->skin : 0.1 * w->cutmax;
+    if (!hcbd__needs_pairs(p)) w->step_limit = HUGE_VAL;
+    w->star_a = p->star_eps * (5.0 / 18.0) * pow(p->f, 1.5);
+    w->star_b = 1.0 / (1.0 + 0.5 * sqrt(p->f));
+    w->star_s = 0.5 * sqrt(p->f);
+    w->has_pairs = hcbd__needs_pairs(p);
+    w->has_fext = p->fext[0] != 0.0 || p->fext[1] != 0.0 || p->fext[2] != 0.0;
+    w->has_noise = p->kT > 0.0;
+    w->seed_key = hcbd__mix64(p->seed ^ hcbd__mix64(HCBD__STREAM_PAIR));
+    if (p->potential == HCBD_POT_TABLE) {
+        memcpy(w->tab_F, p->table_F, (size_t)p->table_n * sizeof(double));
+        memcpy(w->tab_V, p->table_V, (size_t)p->table_n * sizeof(double));
+        w->tab_inv_dr = (double)(p->table_n - 1) / (p->rcut - p->table_r0);
+        w->p.table_F = w->tab_F; /* the caller's arrays need not outlive init */
+        w->p.table_V = w->tab_V;
+    }
+    hcbd__zig_init(w->zig);
+    w->n = 0;
+    return HCBD_OK;
+}
+
+hcbd_result hcbd_world_create(hcbd_world *w, const hcbd_world_def *def)
+{
+    size_t need;
+    void *mem;
+    hcbd_result r;
+    if (!w) return HCBD_ERR_NULL;
+    memset(w, 0, sizeof *w);
+    hcbd__clear(&w->err);
+    r = hcbd__check_def(def, w->err.msg, sizeof w->err.msg);
+    if (r != HCBD_OK) {
+        w->err.code = r;
+        return r;
+    }
+    need = hcbd_world_bytes(def);
+    mem = HCBD_MALLOC(need);
+    if (!mem)
+        return hcbd__fail(&w->err, HCBD_ERR_MEMORY, -1, -1,
+                          "malloc of %zu bytes failed", need);
+    r = hcbd_world_init(w, def, mem, need);
+    if (r != HCBD_OK) {
+        HCBD_FREE(mem);
+        return r;
+    }
+    w->owned_mem = mem;
+    return HCBD_OK;
+}
+
+void hcbd_world_destroy(hcbd_world *w)
+{
+    if (!w) return;
+    if (w->owned_mem) HCBD_FREE(w->owned_mem);
+    w->owned_mem = NULL;
+    w->n = 0;
+}
+
+static void hcbd__wrap(double L, double *x, int32_t *img)
+{
+    double k = floor(*x / L);
+    if (k != 0.0) {
+        *x -= k * L;
+        *img += (int32_t)k;
+    }
+    if (*x >= L) { *x -= L; *img += 1; } /* round-off of x - kL */
+    if (*x < 0) *x = 0;
+}
+
+/* Position source for the shared set-up path: the caller's array, a
+   lattice or uniform random points (no temporary allocation). */
+typedef struct hcbd__src {
+    const double *xyz;
+    int lattice_k;
+    hcbd_rng g;
+} hcbd__src;
+
+static void hcbd__src_get(const hcbd_world *w, hcbd__src *s, int i, double r[3])
+{
+    int d;
+    if (s->xyz) {
+        for (d = 0; d < 3; ++d) r[d] = s->xyz[3 * i + d];
+    } else if (s->lattice_k > 0) {
+        int k = s->lattice_k, c[3];
+        c[0] = i % k; c[1] = (i / k) % k; c[2] = i / (k * k);
+        for (d = 0; d < 3; ++d) r[d] = (c[d] + 0.5) * w->p.L[d] / k;
+    } else {
+        for (d = 0; d < 3; ++d) r[d] = hcbd_rng_uniform(&s->g) * w->p.L[d];
+    }
+}
+
+static hcbd_result hcbd__set_particles(hcbd_world *w, int n, hcbd__src *src)
+{
+    int i, d;
+    double mom[3] = {0, 0, 0};
+    if (n < 1 || n > w->capacity)
+        return hcbd__fail(&w->err, HCBD_ERR_CAPACITY, -1, -1,
+                          "N = %d is invalid (need 1 <= N <= capacity %d)", n,
+                          w->capacity);
+    if (w->gibd && n < 2)
+        return hcbd__fail(&w->err, HCBD_ERR_PARAM, -1, -1,
+                          "N = %d: GI-BD needs at least 2 particles", n);
+    if (src->xyz)
+        for (i = 0; i < 3 * n; ++i)
+            if (!isfinite(src->xyz[i]))
+                return hcbd__fail(&w->err, HCBD_ERR_NONFINITE, -1, i / 3,
+                                  "position %c of particle %d is %g",
+                                  "xyz"[i % 3], i / 3, src->xyz[i]);
+    w->n = n;
+    for (i = 0; i < n; ++i) {
+        double r[3];
+        int32_t img[3] = {0, 0, 0};
+        hcbd_rng g;
+        hcbd__src_get(w, src, i, r);
+        for (d = 0; d < 3; ++d) hcbd__wrap(w->p.L[d], &r[d], &img[d]);
+        w->x[i] = (hcbd_real)r[0]; w->y[i] = (hcbd_real)r[1]; w->z[i] = (hcbd_real)r[2];
+        /* A position that rounds to L in float storage belongs at 0. */
+        if (w->x[i] >= (hcbd_real)w->p.L[0]) w->x[i] = 0;
+        if (w->y[i] >= (hcbd_real)w->p.L[1]) w->y[i] = 0;
+        if (w->z[i] >= (hcbd_real)w->p.L[2]) w->z[i] = 0;
+        w->ix[i] = img[0]; w->iy[i] = img[1]; w->iz[i] = img[2];
+        w->id[i] = i;
+        w->slot[i] = i;
+        hcbd_rng_seed(&g, hcbd__mix64(w->p.seed ^ hcbd__mix64(HCBD__STREAM_PARTICLE)) ^
+                              hcbd__mix64((uint64_t)i + HCBD__GOLDEN));
+        if (w->gibd) {
+            double s = w->has_noise ? sqrt(w->p.kT / w->m) : 0.0, v[3] = {0, 0, 0};
+            if (s > 0)
+                for (d = 0; d < 3; ++d) v[d] = s * hcbd_rng_normal(w, &g);
+            w->vx[i] = (hcbd_real)v[0]; w->vy[i] = (hcbd_real)v[1]; w->vz[i] = (hcbd_real)v[2];
+            for (d = 0; d < 3; ++d) mom[d] += v[d];
+        }
+        w->rs0[i] = g.s[0]; w->rs1[i] = g.s[1]; w->rs2[i] = g.s[2]; w->rs3[i] = g.s[3];
+    }
+    if (w->gibd)
+        for (i = 0; i < n; ++i) {
+            w->vx[i] -= (hcbd_real)(mom[0] / n);
+            w->vy[i] -= (hcbd_real)(mom[1] / n);
+            w->vz[i] -= (hcbd_real)(mom[2] / n);
+        }
+    w->step = 0;
+    w->list_valid = 0;
+    w->rho_current = 0;
+    w->rho_valid = 0;
+    w->n_rebuilds = 0;
+    return HCBD_OK;
+}
+
+hcbd_result hcbd_world_set_positions(hcbd_world *w, int n, const double *xyz)
+{
+    hcbd__src s;
+    if (!w) return HCBD_ERR_NULL;
+    hcbd__clear(&w->err);
+    if (!xyz) return hcbd__fail(&w->err, HCBD_ERR_NULL, -1, -1, "positions are NULL");
+    memset(&s, 0, sizeof s);
+    s.xyz = xyz;
+    return hcbd__set_particles(w, n, &s);
+}
+
+hcbd_result hcbd_world_place_lattice(hcbd_world *w, int n)
+{
+    hcbd__src s;
+    if (!w) return HCBD_ERR_NULL;
+    hcbd__clear(&w->err);
+    memset(&s, 0, sizeof s);
+    s.lattice_k = 1;
+    while ((int64_t)s.lattice_k * s.lattice_k * s.lattice_k < n) ++s.lattice_k;
+    return hcbd__set_particles(w, n, &s);
+}
+
+hcbd_result hcbd_world_place_random(hcbd_world *w, int n)
+{
+    hcbd__src s;
+    if (!w) return HCBD_ERR_NULL;
+    hcbd__clear(&w->err);
+    memset(&s, 0, sizeof s);
+    hcbd_rng_seed(&s.g, w->p.seed ^ hcbd__mix64(HCBD__STREAM_PLACE));
+    return hcbd__set_particles(w, n, &s);
+}
+
+hcbd_result hcbd_world_set_velocities(hcbd_world *w, const double *v)
+{
+    int i;
+    if (!w) return HCBD_ERR_NULL;
+    hcbd__clear(&w->err);
+    if (!v) return hcbd__fail(&w->err, HCBD_ERR_NULL, -1, -1, "velocities are NULL");
+    if (!w->gibd)
+        return hcbd__fail(&w->err, HCBD_ERR_STATE, -1, -1,
+                          "classical BD carries no background velocity");
+    for (i = 0; i < 3 * w->n; ++i)
+        if (!isfinite(v[i]))
+            return hcbd__fail(&w->err, HCBD_ERR_NONFINITE, -1, i / 3,
+                              "velocity %c of particle %d is %g", "xyz"[i % 3],
+                              i / 3, v[i]);
+    for (i = 0; i < w->n; ++i) {
+        int s = w->slot[i];
+        w->vx[s] = (hcbd_real)v[3 * i];
+        w->vy[s] = (hcbd_real)v[3 * i + 1];
+        w->vz[s] = (hcbd_real)v[3 * i + 2];
+    }
+    w->rho_current = 0;
+    return HCBD_OK;
+}
+
+/* >>neighbour search */
+static inline double hcbd__mi(double d, double L)
+{
+    if (d > 0.5 * L) return d - L;
+    if (d < -0.5 * L) return d + L;
+    return d;
+}
+
+static int hcbd__cell_index(const hcbd_world *w, int i)
+{
+    int c[3], d;
+    double r[3];
+    r[0] = w->x[i]; r[1] = w->y[i]; r[2] = w->z[i];
+    for (d = 0; d < 3; ++d) {
+        c[d] = (int)(r[d] * w->nc[d] / w->p.L[d]);
+        if (c[d] >= w->nc[d]) c[d] = w->nc[d] - 1;
+        if (c[d] < 0) c[d] = 0;
+    }
+    return (c[0] * w->nc[1] + c[1]) * w->nc[2] + c[2];
+}
+
+/* Moves every per-particle array into the order given by perm (new slot k
+   holds old slot perm[k]), through one scratch block. */
+static void hcbd__permute(hcbd_world *w)
+{
+    int n = w->n, k, a;
+    hcbd_real *rr = (hcbd_real *)w->scratch;
+    int32_t *ii = (int32_t *)w->scratch;
+    uint64_t *uu = (uint64_t *)w->scratch;
+    hcbd_real *ra[11];
+    int32_t *ia[4];
+    uint64_t *ua[4];
+    int nr = 0;
+    ra[nr++] = w->x; ra[nr++] = w->y; ra[nr++] = w->z;
+    if (w->gibd) {
+        ra[nr++] = w->vx; ra[nr++] = w->vy; ra[nr++] = w->vz;
+        ra[nr++] = w->rho; ra[nr++] = w->inv_rho;
+    }
+    ia[0] = w->ix; ia[1] = w->iy; ia[2] = w->iz; ia[3] = w->id;
+    ua[0] = w->rs0; ua[1] = w->rs1; ua[2] = w->rs2; ua[3] = w->rs3;
+    for (a = 0; a < nr; ++a) {
+        for (k = 0; k < n; ++k) rr[k] = ra[a][w->perm[k]];
+        memcpy(ra[a], rr, (size_t)n * sizeof *rr);
+    }
+    for (a = 0; a < 4; ++a) {
+        for (k = 0; k < n; ++k) ii[k] = ia[a][w->perm[k]];
+        memcpy(ia[a], ii, (size_t)n * sizeof *ii);
+    }
+    for (a = 0; a < 4; ++a) {
+        for (k = 0; k < n; ++k) uu[k] = ua[a][w->perm[k]];
+        memcpy(ua[a], uu, (size_t)n * sizeof *uu);
+    }
+    for (k = 0; k < n; ++k) w->slot[w->id[k]] = k;
+}
+
+/* Scans the cells around particle i for partners j with id_j > id_i within
+   the list range; writes their slots to out (if not NULL), returns the
+   count. */
+static int hcbd__scan(const hcbd_world *w, int i, int32_t *out)
+{
+    int c[3], d, cnt = 0, o0, o1, o2, lo[3], hi[3];
+    const double rl2 = w->rlist * w->rlist;
+    const double xi = w->x[i], yi = w->y[i], zi = w->z[i];
+    const int32_t idi = w->id[i];
+    int ci = hcbd__cell_index(w, i);
+    c[2] = ci % w->nc[2];
+    c[1] = (ci / w->nc[2]) % w->nc[1];
+    c[0] = ci / (w->nc[2] * w->nc[1]);
+    /* With fewer than 3 cells along an axis, -1 and +1 are the same cell
+       (or the cell itself): visit each cell once. */
+    for (d = 0; d < 3; ++d) {
+        lo[d] = w->nc[d] >= 3 ? -1 : 0;
+        hi[d] = w->nc[d] >= 3 ? 1 : w->nc[d] - 1;
+    }
+    for (o0 = lo[0]; o0 <= hi[0]; ++o0)
+        for (o1 = lo[1]; o1 <= hi[1]; ++o1)
+            for (o2 = lo[2]; o2 <= hi[2]; ++o2) {
+                int a = (c[0] + o0 + w->nc[0]) % w->nc[0];
+                int b = (c[1] + o1 + w->nc[1]) % w->nc[1];
+                int e = (c[2] + o2 + w->nc[2]) % w->nc[2];
+                int cc = (a * w->nc[1] + b) * w->nc[2] + e, k;
+                for (k = w->cell_start[cc]; k < w->cell_start[cc + 1]; ++k) {
+                    int j = w->perm[k];
+                    double dx, dy, dz;
+                    if (w->id[j] <= idi) continue;
+                    dx = hcbd__mi(xi - w->x[j], w->p.L[0]);
+                    dy = hcbd__mi(yi - w->y[j], w->p.L[1]);
+                    dz = hcbd__mi(zi - w->z[j], w->p.L[2]);
+                    if (dx * dx + dy * dy + dz * dz < rl2) {
+                        if (out) out[cnt] = j;
+                        ++cnt;
+                    }
+                }
+            }
+    return cnt;
+}
+
+/* Insertion sort of a short slot list by id (lists hold ~10-40 entries). */
+static void hcbd__sort_by_id(const int32_t *id, int32_t *a, int n, const int32_t *key_of)
+{
+    int k, m;
+    for (k = 1; k < n; ++k) {
+        int32_t v = a[k];
+        int32_t kv = id[key_of ? key_of[v] : v];
+        for (m = k - 1; m >= 0 && id[key_of ? key_of[a[m]] : a[m]] > kv; --m)
+            a[m + 1] = a[m];
+        a[m + 1] = v;
+    }
+}
+
+static hcbd_result hcbd__rebuild(hcbd_world *w)
+{
+    int n = w->n, i, c, nt = w->p.threads;
+    int64_t total = 0;
+    (void)nt;
+    /* cells by counting sort */
+    for (c = 0; c <= w->ncell; ++c) w->cell_start[c] = 0;
+    for (i = 0; i < n; ++i) {
+        w->cell_of[i] = hcbd__cell_index(w, i);
+        w->cell_start[w->cell_of[i] + 1]++;
+    }
+    for (c = 0; c < w->ncell; ++c) {
+        w->cell_start[c + 1] += w->cell_start[c];
+        w->cell_cursor[c] = w->cell_start[c];
+    }
+    for (i = 0; i < n; ++i) w->perm[w->cell_cursor[w->cell_of[i]]++] = i;
+    if (w->p.sort) {
+        hcbd__permute(w);
+        for (i = 0; i < n; ++i) w->perm[i] = i;
+    }
+    /* half list: counts, prefix sum, fill, order by partner id */
+    HCBD__OMP(omp parallel for num_threads(nt) schedule(static))
+    for (i = 0; i < n; ++i) w->nb_start[i + 1] = hcbd__scan(w, i, NULL);
+    w->nb_start[0] = 0;
+    for (i = 0; i < n; ++i) {
+        total += w->nb_start[i + 1];
+        if (total > w->max_pairs)
+            return hcbd__fail(&w->err, HCBD_ERR_CAPACITY, w->step, -1,
+                              "neighbour list needs more than max_pairs = %lld "
+                              "pairs (list range %g); raise hcbd_world_def.max_pairs",
+                              (long long)w->max_pairs, w->rlist);
+        w->nb_start[i + 1] = (int32_t)total;
+    }
+    w->npairs = total;
+    HCBD__OMP(omp parallel for num_threads(nt) schedule(static))
+    for (i = 0; i < n; ++i) {
+        int32_t p0 = w->nb_start[i], k, cnt;
+        cnt = hcbd__scan(w, i, w->nb_j + p0);
+        hcbd__sort_by_id(w->id, w->nb_j + p0, cnt, NULL);
+        for (k = 0; k < cnt; ++k) w->pair_i[p0 + k] = i;
+    }
+    /* reverse incidences: for each j the pairs it is the partner of, in
+       increasing owner id */
+    for (i = 0; i <= n; ++i) w->rev_start[i] = 0;
+    for (total = 0; total < w->npairs; ++total) w->rev_start[w->nb_j[total] + 1]++;
+    for (i = 0; i < n; ++i) {
+        w->rev_start[i + 1] += w->rev_start[i];
+        w->cell_of[i] = w->rev_start[i]; /* cursor; cell_of is free now */
+    }
+    for (total = 0; total < w->npairs; ++total)
+        w->rev_p[w->cell_of[w->nb_j[total]]++] = (int32_t)total;
+    HCBD__OMP(omp parallel for num_threads(nt) schedule(static))
+    for (i = 0; i < n; ++i)
+        hcbd__sort_by_id(w->id, w->rev_p + w->rev_start[i],
+                         w->rev_start[i + 1] - w->rev_start[i], w->pair_i);
+    for (i = 0; i < n; ++i) {
+        w->x0[i] = w->x[i];
+        w->y0[i] = w->y[i];
+        w->z0[i] = w->z[i];
+    }
+    w->disp_max = 0.0;
+    w->list_valid = 1;
+    w->n_rebuilds++;
+    return HCBD_OK;
+}
+
+static hcbd_result hcbd__ensure_list(hcbd_world *w)
+{
+    if (!w->has_pairs) return HCBD_OK;
+    if (w->list_valid && w->disp_max <= 0.5 * w->p.skin) return HCBD_OK;
+    return hcbd__rebuild(w);
+}
+
+/* >>pair passes
+   Each pass runs over owners i (the lower id of a pair): the owner sums its
+   own pairs in increasing partner id and stores the pair value in buf; the
+   partner later subtracts (or adds) the stored values in increasing owner
+   id.  Every sum has a fixed order, whatever the thread count. */
+static void hcbd__density(hcbd_world *w)
+{
+    const int n = w->n, nt = w->p.threads;
+    const double Rc2 = w->p.Rc * w->p.Rc, invRc = 1.0 / w->p.Rc, cw = w->cw;
+    const double L0 = w->p.L[0], L1 = w->p.L[1], L2 = w->p.L[2];
+    hcbd_real *HCBD__RESTRICT bw = w->buf[0];
+    int i;
+    (void)nt;
+    HCBD__OMP(omp parallel for num_threads(nt) schedule(static))
+    for (i = 0; i < n; ++i) {
+        double s = 0.0;
+        int32_t p;
+        for (p = w->nb_start[i]; p < w->nb_start[i + 1]; ++p) {
+            int j = w->nb_j[p];
+            double dx = hcbd__mi(w->x[i] - w->x[j], L0);
+            double dy = hcbd__mi(w->y[i] - w->y[j], L1);
+            double dz = hcbd__mi(w->z[i] - w->z[j], L2);
+            double r2 = dx * dx + dy * dy + dz * dz, v = 0.0;
+            if (r2 < Rc2) {
+                double q = sqrt(r2) * invRc, a = 1.0 - q;
+                v = cw * a * a * a * a * (4.0 * q + 1.0);
+                s += v;
+            }
+            bw[p] = (hcbd_real)v;
+        }
+        w->wown[i] = (hcbd_real)s;
+    }
+    HCBD__OMP(omp parallel for num_threads(nt) schedule(static))
+    for (i = 0; i < n; ++i) {
+        double s = w->wown[i], rho;
+        int32_t q;
+        for (q = w->rev_start[i]; q < w->rev_start[i + 1]; ++q) s += bw[w->rev_p[q]];
+        rho = w->m * w->rho_norm * (w->w0 + s);
+        w->rho[i] = (hcbd_real)rho;
+        w->inv_rho[i] = (hcbd_real)(1.0 / rho);
+    }
+    w->rho_current = 1;
+    w->rho_valid = 1;
+}
+
+/* Forces, and in GI-BD the friction and noise momentum exchanges
+   dp_ij = (S_ij/tau)(v_j - v_i) dt + sqrt(2 kT S_ij dt/tau) zeta,
+   S_ij = m_i f_ij (MODEL 2, pair-momentum form). */
+static void hcbd__forces(hcbd_world *w)
+{
+    const int n = w->n, nt = w->p.threads;
+    const int pot = w->p.potential != HCBD_POT_IDEAL, gibd = w->gibd;
+    const int noise = w->has_noise, lag = w->p.lagged_density;
+    const double L0 = w->p.L[0], L1 = w->p.L[1], L2 = w->p.L[2];
+    const double rc2 = w->p.rcut * w->p.rcut, Rc2 = w->p.Rc * w->p.Rc;
+    const double cut2 = w->cutmax * w->cutmax, invRc = 1.0 / w->p.Rc;
+    const double cs = w->cf * w->m * w->m * w->p.dt / w->p.tau, two_kT = 2.0 * w->p.kT;
+    const double cw = w->cw;
+    const uint64_t skey = hcbd__step_key(w, w->step);
+    hcbd_real *HCBD__RESTRICT bFx = pot ? w->buf[w->bF] : NULL;
+    hcbd_real *HCBD__RESTRICT bFy = pot ? w->buf[w->bF + 1] : NULL;
+    hcbd_real *HCBD__RESTRICT bFz = pot ? w->buf[w->bF + 2] : NULL;
+    hcbd_real *HCBD__RESTRICT bPx = gibd ? w->buf[w->bP] : NULL;
+    hcbd_real *HCBD__RESTRICT bPy = gibd ? w->buf[w->bP + 1] : NULL;
+    hcbd_real *HCBD__RESTRICT bPz = gibd ? w->buf[w->bP + 2] : NULL;
+    hcbd_real *HCBD__RESTRICT bW = lag ? w->buf[w->bW] : NULL;
+    int i;
+    (void)nt;
+    HCBD__OMP(omp parallel for num_threads(nt) schedule(static))
+    for (i = 0; i < n; ++i) {
+        double fxs = 0, fys = 0, fzs = 0, pxs = 0, pys = 0, pzs = 0, ws = 0;
+        const double xi = w->x[i], yi = w->y[i], zi = w->z[i];
+        const double vxi = gibd ? w->vx[i] : 0, vyi = gibd ? w->vy[i] : 0;
+        const double vzi = gibd ? w->vz[i] : 0, iri = gibd ? w->inv_rho[i] : 0;
+        const int32_t idi = w->id[i];
+        int32_t p;
+        for (p = w->nb_start[i]; p < w->nb_start[i + 1]; ++p) {
+            int j = w->nb_j[p];
+            double dx = hcbd__mi(xi - w->x[j], L0);
+            double dy = hcbd__mi(yi - w->y[j], L1);
+            double dz = hcbd__mi(zi - w->z[j], L2);
+            double r2 = dx * dx + dy * dy + dz * dz;
+            double Fx = 0, Fy = 0, Fz = 0, Px = 0, Py = 0, Pz = 0, wv = 0;
+            if (r2 < cut2) {
+                double r = sqrt(r2);
+                if (pot && r2 < rc2) {
+                    double fr = hcbd__force_over_r(w, r, r2);
+                    Fx = fr * dx; Fy = fr * dy; Fz = fr * dz;
+                }
+                if (gibd && r2 < Rc2) {
+                    double q = r * invRc, a = 1.0 - q;
+                    double sdt = cs * (iri + w->inv_rho[j]) * a * a * a; /* S dt/tau */
+                    Px = sdt * (w->vx[j] - vxi);
+                    Py = sdt * (w->vy[j] - vyi);
+                    Pz = sdt * (w->vz[j] - vzi);
+                    if (noise) {
+                        double z3[3], b = sqrt(two_kT * sdt);
+                        hcbd__pair_noise(w, hcbd__pair_key(skey, idi, w->id[j]), z3);
+                        Px += b * z3[0]; Py += b * z3[1]; Pz += b * z3[2];
+                    }
+                    if (lag) wv = cw * a * a * a * a * (4.0 * q + 1.0);
+                }
+            }
+            if (pot) {
+                fxs += Fx; fys += Fy; fzs += Fz;
+                bFx[p] = (hcbd_real)Fx; bFy[p] = (hcbd_real)Fy; bFz[p] = (hcbd_real)Fz;
+            }
+            if (gibd) {
+                /* the owner gets exactly the negative of what the partner
+                   gets, so momentum is conserved to round-off in the sums */
+                pxs += (hcbd_real)Px; pys += (hcbd_real)Py; pzs += (hcbd_real)Pz;
+                bPx[p] = (hcbd_real)Px; bPy[p] = (hcbd_real)Py; bPz[p] = (hcbd_real)Pz;
+            }
+            if (lag) {
+                ws += wv;
+                bW[p] = (hcbd_real)wv;
+            }
+        }
+        if (pot) { w->fx[i] = (hcbd_real)fxs; w->fy[i] = (hcbd_real)fys; w->fz[i] = (hcbd_real)fzs; }
+        if (gibd) { w->px[i] = (hcbd_real)pxs; w->py[i] = (hcbd_real)pys; w->pz[i] = (hcbd_real)pzs; }
+        if (lag) w->wown[i] = (hcbd_real)ws;
+    }
+}
+
+/* >>integrator: Euler-Maruyama, all right-hand sides at time t (MODEL 2):
+   dR = v dt + F/xi dt + dW,  dv = F/m dt + (pair exchanges)/m. */
+static hcbd_result hcbd__integrate(hcbd_world *w)
+{
+    const int n = w->n, nt = w->p.threads;
+    const int pot = w->p.potential != HCBD_POT_IDEAL, gibd = w->gibd;
+    const int noise = w->has_noise, lag = gibd && w->p.lagged_density, fext = w->has_fext;
+    const double dt = w->p.dt, dt_xi = dt / w->p.xi, sdr = sqrt(2.0 * w->p.kT * dt / w->p.xi);
+    const double inv_m = w->inv_m, dt_m = dt * w->inv_m;
+    const double L0 = w->p.L[0], L1 = w->p.L[1], L2 = w->p.L[2];
+    const double lim2 = w->step_limit * w->step_limit;
+    const double gx = w->p.fext[0], gy = w->p.fext[1], gz = w->p.fext[2];
+    double dmax = 0.0;
+    int bad_step = INT_MAX, bad_nan = INT_MAX, i;
+    (void)nt;
+    HCBD__OMP(omp parallel for num_threads(nt) schedule(static) reduction(max:dmax) reduction(min:bad_step) reduction(min:bad_nan))
+    for (i = 0; i < n; ++i) {
+        double F[3] = {0, 0, 0}, P[3] = {0, 0, 0}, ws = lag ? w->wown[i] : 0.0;
+        double r[3], dr[3], d2, v2 = 0.0;
+        int32_t q;
+        int d;
+        if (pot) {
+            F[0] = w->fx[i]; F[1] = w->fy[i]; F[2] = w->fz[i];
+            for (q = w->rev_start[i]; q < w->rev_start[i + 1]; ++q) {
+                int32_t p = w->rev_p[q];
+                F[0] -= w->buf[w->bF][p];
+                F[1] -= w->buf[w->bF + 1][p];
+                F[2] -= w->buf[w->bF + 2][p];
+            }
+        }
+        if (gibd) {
+            P[0] = w->px[i]; P[1] = w->py[i]; P[2] = w->pz[i];
+            for (q = w->rev_start[i]; q < w->rev_start[i + 1]; ++q) {
+                int32_t p = w->rev_p[q];
+                P[0] -= w->buf[w->bP][p];
+                P[1] -= w->buf[w->bP + 1][p];
+                P[2] -= w->buf[w->bP + 2][p];
+                if (lag) ws += w->buf[w->bW][p];
+            }
+        }
+        if (fext) { F[0] += gx; F[1] += gy; F[2] += gz; }
+        for (d = 0; d < 3; ++d) dr[d] = F[d] * dt_xi;
+        if (gibd) {
+            dr[0] += w->vx[i] * dt; dr[1] += w->vy[i] * dt; dr[2] += w->vz[i] * dt;
+        }
+        if (noise) {
+            hcbd_rng g;
+            hcbd__gen gen;
+            g.s[0] = w->rs0[i]; g.s[1] = w->rs1[i]; g.s[2] = w->rs2[i]; g.s[3] = w->rs3[i];
+            gen.xo = &g;
+            gen.sm = 0;
+            for (d = 0; d < 3; ++d) dr[d] += sdr * hcbd__normal(w->zig, &gen);
+            w->rs0[i] = g.s[0]; w->rs1[i] = g.s[1]; w->rs2[i] = g.s[2]; w->rs3[i] = g.s[3];
+        }
+        if (gibd) {
+            double vx = w->vx[i] + F[0] * dt_m + P[0] * inv_m;
+            double vy = w->vy[i] + F[1] * dt_m + P[1] * inv_m;
+            double vz = w->vz[i] + F[2] * dt_m + P[2] * inv_m;
+            w->vx[i] = (hcbd_real)vx; w->vy[i] = (hcbd_real)vy; w->vz[i] = (hcbd_real)vz;
+            v2 = vx * vx + vy * vy + vz * vz;
+            if (lag) {
+                double rho = w->m * w->rho_norm * (w->w0 + ws);
+                w->rho[i] = (hcbd_real)rho;
+                w->inv_rho[i] = (hcbd_real)(1.0 / rho);
+            }
+        }
+        r[0] = w->x[i] + dr[0];
+        r[1] = w->y[i] + dr[1];
+        r[2] = w->z[i] + dr[2];
+        d2 = dr[0] * dr[0] + dr[1] * dr[1] + dr[2] * dr[2];
+        if (!(d2 + v2 < HUGE_VAL)) { /* NaN or infinity */
+            if (w->id[i] < bad_nan) bad_nan = w->id[i];
+            continue;
+        }
+        if (d2 > lim2 && w->id[i] < bad_step) bad_step = w->id[i];
+        hcbd__wrap(L0, &r[0], &w->ix[i]);
+        hcbd__wrap(L1, &r[1], &w->iy[i]);
+        hcbd__wrap(L2, &r[2], &w->iz[i]);
+        w->x[i] = (hcbd_real)r[0]; w->y[i] = (hcbd_real)r[1]; w->z[i] = (hcbd_real)r[2];
+        if (w->x[i] >= (hcbd_real)L0) w->x[i] = 0;
+        if (w->y[i] >= (hcbd_real)L1) w->y[i] = 0;
+        if (w->z[i] >= (hcbd_real)L2) w->z[i] = 0;
+        {
+            double ex = hcbd__mi(r[0] - w->x0[i], L0), ey = hcbd__mi(r[1] - w->y0[i], L1);
+            double ez = hcbd__mi(r[2] - w->z0[i], L2), e2 = ex * ex + ey * ey + ez * ez;
+            if (e2 > dmax) dmax = e2;
+        }
+    }
+    w->disp_max = sqrt(dmax);
+    w->rho_current = 0;
+    if (bad_nan != INT_MAX)
+        return hcbd__fail(&w->err, HCBD_ERR_NONFINITE, w->step, bad_nan,
+                          "step %lld: particle id %d got a non-finite position or "
+                          "velocity (forces too strong for dt = %g?)",
+                          (long long)w->step, bad_nan, dt);
+    if (bad_step != INT_MAX)
+        return hcbd__fail(&w->err, HCBD_ERR_UNSTABLE, w->step, bad_step,
+                          "step %lld: particle id %d moved more than the per-step "
+                          "limit %g (half the neighbour skin); reduce dt = %g",
+                          (long long)w->step, bad_step, w->step_limit, dt);
+    return HCBD_OK;
+}
+
+hcbd_result hcbd_step(hcbd_world *w, int nsteps)
+{
+    int s;
+    hcbd_result r;
+    if (!w) return HCBD_ERR_NULL;
+    hcbd__clear(&w->err);
+    if (nsteps < 0)
+        return hcbd__fail(&w->err, HCBD_ERR_PARAM, w->step, -1,
+                          "nsteps = %d is negative", nsteps);
+    if (w->n < 1)
+        return hcbd__fail(&w->err, HCBD_ERR_STATE, w->step, -1,
+                          "the world has no particles: set positions first");
+    for (s = 0; s < nsteps; ++s) {
+        r = hcbd__ensure_list(w);
+        if (r != HCBD_OK) return r;
+        if (w->gibd && !w->rho_current && !(w->p.lagged_density && w->rho_valid))
+            hcbd__density(w);
+        if (w->has_pairs) hcbd__forces(w);
+        r = hcbd__integrate(w);
+        w->step++;
+        if (r != HCBD_OK) return r;
+    }
+    return HCBD_OK;
+}
+
+/* >>observables */
+hcbd_result hcbd_get_positions(const hcbd_world *w, double *xyz, int unwrapped)
+{
+    int i;
+    if (!w || !xyz) return HCBD_ERR_NULL;
+    for (i = 0; i < w->n; ++i) {
+        int s = w->slot[i];
+        xyz[3 * i] = w->x[s] + (unwrapped ? w->ix[s] * w->p.L[0] : 0.0);
+        xyz[3 * i + 1] = w->y[s] + (unwrapped ? w->iy[s] * w->p.L[1] : 0.0);
+        xyz[3 * i + 2] = w->z[s] + (unwrapped ? w->iz[s] * w->p.L[2] : 0.0);
+    }
+    return HCBD_OK;
+}
+
+hcbd_result hcbd_get_velocities(const hcbd_world *w, double *v)
+{
+    int i;
+    if (!w || !v) return HCBD_ERR_NULL;
+    for (i = 0; i < w->n; ++i) {
+        int s = w->slot[i];
+        v[3 * i] = w->gibd ? w->vx[s] : 0.0;
+        v[3 * i + 1] = w->gibd ? w->vy[s] : 0.0;
+        v[3 * i + 2] = w->gibd ? w->vz[s] : 0.0;
+    }
+    return HCBD_OK;
+}
+
+void hcbd_momentum(const hcbd_world *w, double p[3])
+{
+    int i;
+    p[0] = p[1] = p[2] = 0.0;
+    if (!w || !w->gibd) return;
+    for (i = 0; i < w->n; ++i) {
+        p[0] += w->m * w->vx[i];
+        p[1] += w->m * w->vy[i];
+        p[2] += w->m * w->vz[i];
+    }
+}
+
+double hcbd_temperature(const hcbd_world *w)
+{
+    double p[3], s = 0.0;
+    int i;
+    if (!w || !w->gibd || w->n < 2) return 0.0;
+    hcbd_momentum(w, p);
+    for (i = 0; i < w->n; ++i) {
+        double a = w->vx[i] - p[0] / (w->m * w->n), b = w->vy[i] - p[1] / (w->m * w->n);
+        double c = w->vz[i] - p[2] / (w->m * w->n);
+        s += a * a + b * b + c * c;
+    }
+    return w->m * s / (3.0 * (w->n - 1));
+}
+
+/* Calls fn for every pair within rmax (<= the list's guaranteed range) once,
+   with x_ij = x_i - x_j. */
+typedef void (*hcbd__pair_fn)(void *ctx, int i, int j, double dx, double dy,
+                              double dz, double r2);
+static hcbd_result hcbd__for_pairs(hcbd_world *w, double rmax, hcbd__pair_fn fn,
+                                   void *ctx)
+{
+    int i;
+    double r2max = rmax * rmax;
+    hcbd_result r = hcbd__ensure_list(w);
+    if (r != HCBD_OK) return r;
+    for (i = 0; i < w->n; ++i) {
+        int32_t p;
+        for (p = w->nb_start[i]; p < w->nb_start[i + 1]; ++p) {
+            int j = w->nb_j[p];
+            double dx = hcbd__mi((double)w->x[i] - w->x[j], w->p.L[0]);
+            double dy = hcbd__mi((double)w->y[i] - w->y[j], w->p.L[1]);
+            double dz = hcbd__mi((double)w->z[i] - w->z[j], w->p.L[2]);
+            double r2 = dx * dx + dy * dy + dz * dz;
+            if (r2 < r2max) fn(ctx, i, j, dx, dy, dz, r2);
+        }
+    }
+    return HCBD_OK;
+}
+
+typedef struct { hcbd_world *w; double s[9]; double e; } hcbd__stress_ctx;
+
+static void hcbd__stress_fn(void *c, int i, int j, double dx, double dy, double dz,
+                            double r2)
+{
+    hcbd__stress_ctx *s = (hcbd__stress_ctx *)c;
+    double r = sqrt(r2), fr = hcbd__force_over_r(s->w, r, r2);
+    double d[3], a;
+    int k, l;
+    (void)i; (void)j;
+    d[0] = dx; d[1] = dy; d[2] = dz;
+    for (k = 0; k < 3; ++k)
+        for (l = 0; l < 3; ++l) s->s[3 * k + l] -= d[k] * fr * d[l];
+    a = hcbd__pair_energy(s->w, r);
+    s->e += a;
+}
+
+hcbd_result hcbd_stress(hcbd_world *w, double s[9])
+{
+    hcbd__stress_ctx c;
+    hcbd_result r;
+    int k;
+    if (!w || !s) return HCBD_ERR_NULL;
+    memset(&c, 0, sizeof c);
+    c.w = w;
+    if (w->p.potential != HCBD_POT_IDEAL && w->n > 0) {
+        r = hcbd__for_pairs(w, w->p.rcut, hcbd__stress_fn, &c);
+        if (r != HCBD_OK) return r;
+    }
+    for (k = 0; k < 9; ++k) s[k] = c.s[k] / (w->p.L[0] * w->p.L[1] * w->p.L[2]);
+    return HCBD_OK;
+}
+
+double hcbd_potential_energy(hcbd_world *w)
+{
+    hcbd__stress_ctx c;
+    if (!w) return 0.0;
+    memset(&c, 0, sizeof c);
+    c.w = w;
+    if (w->p.potential != HCBD_POT_IDEAL && w->n > 0)
+        if (hcbd__for_pairs(w, w->p.rcut, hcbd__stress_fn, &c) != HCBD_OK) return NAN;
+    return c.e;
+}
+
+typedef struct { hcbd_world *w; double k[3]; double s[3]; } hcbd__fric_ctx;
+
+static void hcbd__fric_fn(void *c, int i, int j, double dx, double dy, double dz,
+                          double r2)
+{
+    hcbd__fric_ctx *f = (hcbd__fric_ctx *)c;
+    hcbd_world *w = f->w;
+    double a = 1.0 - sqrt(r2) / w->p.Rc;
+    /* f_ij = S_ij / m = cf m (1/rho_i + 1/rho_j) (1 - r/Rc)^3 = f_ji */
+    double fij = w->cf * w->m * ((double)w->inv_rho[i] + w->inv_rho[j]) * a * a * a;
+    double c3 = (1.0 - cos(f->k[0] * dx)) + (1.0 - cos(f->k[1] * dy)) +
+                (1.0 - cos(f->k[2] * dz));
+    f->s[0] += 2.0 * fij;
+    f->s[1] += 2.0 * fij * r2;
+    f->s[2] += 2.0 * fij * c3 / 3.0;
+}
+
+hcbd_result hcbd_friction_average(hcbd_world *w, int nk, double out[3])
+{
+    hcbd__fric_ctx c;
+    hcbd_result r;
+    int d;
+    if (!w || !out) return HCBD_ERR_NULL;
+    hcbd__clear(&w->err);
+    if (!w->gibd)
+        return hcbd__fail(&w->err, HCBD_ERR_STATE, w->step, -1,
+                          "friction averages need GI-BD dynamics");
+    if (w->n < 2)
+        return hcbd__fail(&w->err, HCBD_ERR_STATE, w->step, -1, "no particles");
+    r = hcbd__ensure_list(w);
+    if (r != HCBD_OK) return r;
+    /* the densities the next step's friction will use */
+    if (!w->rho_current && !(w->p.lagged_density && w->rho_valid)) hcbd__density(w);
+    memset(&c, 0, sizeof c);
+    c.w = w;
+    for (d = 0; d < 3; ++d) c.k[d] = 2.0 * HCBD__PI * nk / w->p.L[d];
+    r = hcbd__for_pairs(w, w->p.Rc, hcbd__fric_fn, &c);
+    if (r != HCBD_OK) return r;
+    for (d = 0; d < 3; ++d) out[d] = c.s[d] / w->n;
+    return HCBD_OK;
+}
+
+hcbd_result hcbd_transverse_current(const hcbd_world *w, int nk, double out[12])
+{
+    int i, d;
+    if (!w || !out) return HCBD_ERR_NULL;
+    for (i = 0; i < 12; ++i) out[i] = 0.0;
+    if (!w->gibd) return HCBD_OK;
+    for (i = 0; i < w->n; ++i) {
+        double r[3], v[3];
+        r[0] = w->x[i]; r[1] = w->y[i]; r[2] = w->z[i];
+        v[0] = w->vx[i]; v[1] = w->vy[i]; v[2] = w->vz[i];
+        for (d = 0; d < 3; ++d) {
+            double ph = 2.0 * HCBD__PI * nk * r[d] / w->p.L[d];
+            double c = cos(ph), s = -sin(ph);
+            int a1 = (d + 1) % 3, a2 = (d + 2) % 3;
+            out[4 * d + 0] += v[a1] * c;
+            out[4 * d + 1] += v[a1] * s;
+            out[4 * d + 2] += v[a2] * c;
+            out[4 * d + 3] += v[a2] * s;
+        }
+    }
+    return HCBD_OK;
+}
+
+static uint64_t hcbd__hash(uint64_t h, const void *p, size_t n)
+{
+    const unsigned char *b = (const unsigned char *)p;
+    size_t k;
+    for (k = 0; k < n; ++k) h = (h ^ b[k]) * 0x100000001B3ULL;
+    return h;
+}
+
+uint64_t hcbd_state_checksum(const hcbd_world *w)
+{
+    uint64_t h = 0xCBF29CE484222325ULL;
+    int i;
+    if (!w) return 0;
+    h = hcbd__hash(h, &w->step, sizeof w->step);
+    for (i = 0; i < w->n; ++i) {
+        int s = w->slot[i];
+        h = hcbd__hash(h, &w->x[s], sizeof(hcbd_real));
+        h = hcbd__hash(h, &w->y[s], sizeof(hcbd_real));
+        h = hcbd__hash(h, &w->z[s], sizeof(hcbd_real));
+        h = hcbd__hash(h, &w->ix[s], 4);
+        h = hcbd__hash(h, &w->iy[s], 4);
+        h = hcbd__hash(h, &w->iz[s], 4);
+        if (w->gibd) {
+            h = hcbd__hash(h, &w->vx[s], sizeof(hcbd_real));
+            h = hcbd__hash(h, &w->vy[s], sizeof(hcbd_real));
+            h = hcbd__hash(h, &w->vz[s], sizeof(hcbd_real));
+        }
+        h = hcbd__hash(h, &w->rs0[s], 8);
+        h = hcbd__hash(h, &w->rs3[s], 8);
+    }
+    return h;
+}
+
+/* >>g(r) */
+hcbd_result hcbd_rdf_init(hcbd_rdf *g, double rmax, int nbins, double *hist)
+{
+    int b;
+    if (!g || !hist) return HCBD_ERR_NULL;
+    if (!(rmax > 0) || !isfinite(rmax) || nbins < 1) return HCBD_ERR_PARAM;
+    g->rmax = rmax;
+    g->nbins = nbins;
+    g->dr = rmax / nbins;
+    g->hist = hist;
+    g->samples = 0;
+    g->pair_norm = 0.0;
+    for (b = 0; b < nbins; ++b) hist[b] = 0.0;
+    return HCBD_OK;
+}
+
+static void hcbd__rdf_fn(void *c, int i, int j, double dx, double dy, double dz,
+                         double r2)
+{
+    hcbd_rdf *g = (hcbd_rdf *)c;
+    int b = (int)(sqrt(r2) / g->dr);
+    (void)i; (void)j; (void)dx; (void)dy; (void)dz;
+    if (b < g->nbins) g->hist[b] += 1.0;
+}
+
+hcbd_result hcbd_rdf_sample(hcbd_rdf *g, hcbd_world *w)
+{
+    double V;
+    int i, j;
+    if (!g || !w) return HCBD_ERR_NULL;
+    if (g->rmax > 0.5 * w->p.L[0] || g->rmax > 0.5 * w->p.L[1] || g->rmax > 0.5 * w->p.L[2])
+        return hcbd__fail(&w->err, HCBD_ERR_PARAM, w->step, -1,
+                          "g(r) rmax = %g exceeds half the shortest box edge", g->rmax);
+    if (w->has_pairs && g->rmax <= w->cutmax) {
+        hcbd_result r = hcbd__for_pairs(w, g->rmax, hcbd__rdf_fn, g);
+        if (r != HCBD_OK) return r;
+    } else {
+        for (i = 0; i < w->n; ++i)
+            for (j = i + 1; j < w->n; ++j) {
+                double dx = hcbd__mi((double)w->x[i] - w->x[j], w->p.L[0]);
+                double dy = hcbd__mi((double)w->y[i] - w->y[j], w->p.L[1]);
+                double dz = hcbd__mi((double)w->z[i] - w->z[j], w->p.L[2]);
+                double r2 = dx * dx + dy * dy + dz * dz;
+                if (r2 < g->rmax * g->rmax) hcbd__rdf_fn(g, i, j, dx, dy, dz, r2);
+            }
+    }
+    V = w->p.L[0] * w->p.L[1] * w->p.L[2];
+    /* expected pairs per unit volume of shell for an ideal gas: n(n-1)/(2V) */
+    g->pair_norm += 0.5 * w->n * (w->n - 1.0) / V;
+    g->samples++;
+    return HCBD_OK;
+}
+
+void hcbd_rdf_result(const hcbd_rdf *g, double *r, double *gr)
+{
+    int b;
+    for (b = 0; b < g->nbins; ++b) {
+        double r0 = b * g->dr, r1 = r0 + g->dr;
+        double shell = 4.0 / 3.0 * HCBD__PI * (r1 * r1 * r1 - r0 * r0 * r0);
+        if (r) r[b] = r0 + 0.5 * g->dr;
+        if (gr) gr[b] = g->pair_norm > 0 ? g->hist[b] / (g->pair_norm * shell) : 0.0;
+    }
+}
+
+/* >>multiple-tau correlator */
+size_t hcbd_mtcorr_bytes(int nch, int p, int m, int levels)
+{
+    size_t off = 0, L = (size_t)levels, P = (size_t)p, C = (size_t)nch;
+    if (nch < 1 || p < 2 || m < 2 || p % m || levels < 1) return 0;
+    hcbd__take(NULL, &off, L * P * C * sizeof(double), NULL);
+    hcbd__take(NULL, &off, (L + 1) * C * sizeof(double), NULL);
+    hcbd__take(NULL, &off, L * P * sizeof(double), NULL);
+    hcbd__take(NULL, &off, L * P * sizeof(int64_t), NULL);
+    hcbd__take(NULL, &off, 3 * L * sizeof(int), NULL);
+    return off + HCBD__ALIGN;
+}
+
+hcbd_result hcbd_mtcorr_init(hcbd_mtcorr *c, int nch, int p, int m, int levels,
+                             void *mem, size_t bytes)
+{
+    size_t off = 0, L = (size_t)levels, P = (size_t)p, C = (size_t)nch;
+    char *base;
+    void *q;
+    if (!c || !mem) return HCBD_ERR_NULL;
+    if (nch < 1 || p < 2 || m < 2 || p % m || levels < 1) return HCBD_ERR_PARAM;
+    if (bytes < hcbd_mtcorr_bytes(nch, p, m, levels)) return HCBD_ERR_MEMORY;
+    memset(mem, 0, bytes);
+    base = (char *)mem;
+    base += (HCBD__ALIGN - ((uintptr_t)base & (HCBD__ALIGN - 1))) & (HCBD__ALIGN - 1);
+    hcbd__take(base, &off, L * P * C * sizeof(double), &q); c->shift = (double *)q;
+    hcbd__take(base, &off, (L + 1) * C * sizeof(double), &q); c->acc = (double *)q;
+    hcbd__take(base, &off, L * P * sizeof(double), &q); c->corr = (double *)q;
+    hcbd__take(base, &off, L * P * sizeof(int64_t), &q); c->count = (int64_t *)q;
+    hcbd__take(base, &off, 3 * L * sizeof(int), &q);
+    c->fill = (int *)q;
+    c->head = c->fill + levels;
+    c->nacc = c->head + levels;
+    c->nch = nch; c->p = p; c->m = m; c->levels = levels;
+    c->kmax = 0;
+    c->nsamples = 0;
+    c->finalized = 0;
+    return HCBD_OK;
+}
+
+/* Ramirez et al. 2010: a value enters level k; every m values of level k
+   are averaged and enter level k+1.  Level k correlates the new value with
+   the values j = (k ? p/m : 0) .. p-1 places back. */
+static void hcbd__mt_add(hcbd_mtcorr *c, const double *x, int k)
+{
+    int ch, j, jmin;
+    double *row;
+    if (k >= c->levels) return;
+    if (k > c->kmax) c->kmax = k;
+    row = c->shift + ((size_t)k * c->p + c->head[k]) * c->nch;
+    for (ch = 0; ch < c->nch; ++ch) row[ch] = x[ch];
+    if (c->fill[k] < c->p) c->fill[k]++;
+    jmin = k ? c->p / c->m : 0;
+    for (j = jmin; j < c->fill[k]; ++j) {
+        int idx = (c->head[k] - j + c->p) % c->p;
+        const double *old = c->shift + ((size_t)k * c->p + idx) * c->nch;
+        double s = 0.0;
+        for (ch = 0; ch < c->nch; ++ch) s += row[ch] * old[ch];
+        c->corr[(size_t)k * c->p + j] += s / c->nch;
+        c->count[(size_t)k * c->p + j]++;
+    }
+    c->head[k] = (c->head[k] + 1) % c->p;
+    {
+        double *a = c->acc + (size_t)k * c->nch;
+        for (ch = 0; ch < c->nch; ++ch) a[ch] += x[ch];
+        if (++c->nacc[k] == c->m) {
+            double *avg = c->acc + (size_t)c->levels * c->nch; /* spare row */
+            for (ch = 0; ch < c->nch; ++ch) {
+                avg[ch] = a[ch] / c->m;
+                a[ch] = 0.0;
+            }
+            c->nacc[k] = 0;
+            /* level k + 1 copies avg before it can overwrite the spare row */
+            hcbd__mt_add(c, avg, k + 1);
+        }
+    }
+}
+
+void hcbd_mtcorr_add(hcbd_mtcorr *c, const double *x)
+{
+    if (!c || !x || c->finalized) return;
+    c->nsamples++;
+    hcbd__mt_add(c, x, 0);
+}
+
+/* The end of a series needs no push of partial accumulators: a block of
+   fewer than m values has a shorter time window than the block it would be
+   correlated with, which biases the tail.  What finalize does is stop
+   further input and make the result drop the top level reached (kmax): it
+   has seen only the first few blocks and its lags are not yet covered by a
+   full shift register, so it is the noisiest and least complete part of
+   the tail (Ramirez & Likhtman's reference code does the same). */
+void hcbd_mtcorr_finalize(hcbd_mtcorr *c)
+{
+    if (c) c->finalized = 1;
+}
+
+int hcbd_mtcorr_result(const hcbd_mtcorr *c, int64_t min_count, double *lag,
+                       double *corr, int64_t *count, int max)
+{
+    int k, j, out = 0, ktop;
+    double scale = 1.0;
+    if (!c) return 0;
+    ktop = c->finalized ? c->kmax : c->kmax + 1;
+    if (ktop < 1) ktop = 1;
+    for (k = 0; k < ktop && k < c->levels; ++k) {
+        int jmin = k ? c->p / c->m : 0;
+        for (j = jmin; j < c->p; ++j) {
+            int64_t n = c->count[(size_t)k * c->p + j];
+            if (n < min_count || n == 0) continue;
+            if (out < max) {
+                if (lag) lag[out] = j * scale;
+                if (corr) corr[out] = c->corr[(size_t)k * c->p + j] / n;
+                if (count) count[out] = n;
+            }
+            ++out;
+        }
+        scale *= c->m;
+    }
+    return out < max ? out : max;
+}
+
+/* >>mean-squared displacement, order-n */
+size_t hcbd_msd_bytes(int n, int B, int levels)
+{
+    size_t off = 0, L = (size_t)levels;
+    if (n < 1 || B < 2 || levels < 1) return 0;
+    hcbd__take(NULL, &off, L * B * 3 * (size_t)n * sizeof(double), NULL);
+    hcbd__take(NULL, &off, L * B * sizeof(double), NULL);
+    hcbd__take(NULL, &off, L * B * sizeof(int64_t), NULL);
+    hcbd__take(NULL, &off, 2 * L * sizeof(int), NULL);
+    return off + HCBD__ALIGN;
+}
+
+hcbd_result hcbd_msd_init(hcbd_msd *d, int n, int B, int levels, void *mem,
+                          size_t bytes)
+{
+    size_t off = 0, L = (size_t)levels;
+    char *base;
+    void *q;
+    if (!d || !mem) return HCBD_ERR_NULL;
+    if (n < 1 || B < 2 || levels < 1) return HCBD_ERR_PARAM;
+    if (bytes < hcbd_msd_bytes(n, B, levels)) return HCBD_ERR_MEMORY;
+    memset(mem, 0, bytes);
+    base = (char *)mem;
+    base += (HCBD__ALIGN - ((uintptr_t)base & (HCBD__ALIGN - 1))) & (HCBD__ALIGN - 1);
+    hcbd__take(base, &off, L * B * 3 * (size_t)n * sizeof(double), &q); d->pos = (double *)q;
+    hcbd__take(base, &off, L * B * sizeof(double), &q); d->sum = (double *)q;
+    hcbd__take(base, &off, L * B * sizeof(int64_t), &q); d->count = (int64_t *)q;
+    hcbd__take(base, &off, 2 * L * sizeof(int), &q);
+    d->fill = (int *)q;
+    d->head = d->fill + levels;
+    d->n = n; d->B = B; d->levels = levels;
+    d->nsamples = 0;
+    return HCBD_OK;
+}
+
+void hcbd_msd_add(hcbd_msd *d, const double *xyz)
+{
+    int l, j, k;
+    int64_t every = 1;
+    size_t n3;
+    if (!d || !xyz) return;
+    n3 = 3 * (size_t)d->n;
+    for (l = 0; l < d->levels; ++l, every *= d->B) {
+        double *slot;
+        if (d->nsamples % every) break;
+        slot = d->pos + ((size_t)l * d->B + d->head[l]) * n3;
+        memcpy(slot, xyz, n3 * sizeof(double));
+        if (d->fill[l] < d->B) d->fill[l]++;
+        for (j = 1; j < d->fill[l]; ++j) {
+            const double *old = d->pos + ((size_t)l * d->B + (d->head[l] - j + d->B) % d->B) * n3;
+            double s = 0.0;
+            for (k = 0; k < (int)n3; ++k) s += (xyz[k] - old[k]) * (xyz[k] - old[k]);
+            d->sum[(size_t)l * d->B + j] += s / d->n;
+            d->count[(size_t)l * d->B + j]++;
+        }
+        d->head[l] = (d->head[l] + 1) % d->B;
+    }
+    d->nsamples++;
+}
+
+int hcbd_msd_result(const hcbd_msd *d, double *lag, double *msd, int64_t *count,
+                    int max)
+{
+    int l, j, out = 0;
+    double scale = 1.0;
+    if (!d) return 0;
+    for (l = 0; l < d->levels; ++l, scale *= d->B)
+        for (j = 1; j < d->B; ++j) {
+            int64_t n = d->count[(size_t)l * d->B + j];
+            if (!n) continue;
+            if (out < max) {
+                if (lag) lag[out] = j * scale;
+                if (msd) msd[out] = d->sum[(size_t)l * d->B + j] / n;
+                if (count) count[out] = n;
+            }
+            ++out;
+        }
+    return out < max ? out : max;
+}
+
+#ifdef __cplusplus
+}
+#endif
+#endif /* HCBD_IMPLEMENTATION */

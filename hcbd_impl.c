@@ -1,0 +1,2 @@
+#define HCBD_IMPLEMENTATION
+#include "hcbd.h"
