@@ -260,8 +260,8 @@ hcbd_result hcbd_world_set_velocities(hcbd_world *w, const double *v);
 
 /* >>step ------------------------------------------------------------------*/
 /* Advances nsteps steps.  Returns HCBD_ERR_UNSTABLE when a particle moves
-   more than the per-step limit (half the skin; a tenth of the cut-off when
-   the skin is 0), HCBD_ERR_NONFINITE on non-finite state, HCBD_ERR_CAPACITY
+   more than half the interaction range in one step, HCBD_ERR_NONFINITE on
+   non-finite state, HCBD_ERR_CAPACITY
    when the neighbour list overflows; w->err names the step, the particle
    and the limit.  After a run-time error the state is that of the failed
    step: restart from a saved state. */
@@ -982,7 +982,10 @@ hcbd_result hcbd_world_init(hcbd_world *w, const hcbd_world_def *def, void *mem,
     w->rho_norm = p->density_norm == 2016 ? 1.0 / (1.0 + w->w0 / p->density) : 1.0;
     w->cutmax = hcbd__cutmax(p);
     w->rlist = w->cutmax + p->skin;
-    w->step_limit = p->skin > 0 ? 0.5 * p->skin : 0.1 * w->cutmax;
+    /* List validity is checked before every force evaluation, so a long
+       step never misses a pair; a step longer than half the interaction
+       range jumps through neighbours and means dt is unstable. */
+    w->step_limit = 0.5 * w->cutmax;
     if (!hcbd__needs_pairs(p)) w->step_limit = HUGE_VAL;
     w->star_a = p->star_eps * (5.0 / 18.0) * pow(p->f, 1.5);
     w->star_b = 1.0 / (1.0 + 0.5 * sqrt(p->f));
@@ -1589,7 +1592,7 @@ static hcbd_result hcbd__integrate(hcbd_world *w)
     if (bad_step != INT_MAX)
         return hcbd__fail(&w->err, HCBD_ERR_UNSTABLE, w->step, bad_step,
                           "step %lld: particle id %d moved more than the per-step "
-                          "limit %g (half the neighbour skin); reduce dt = %g",
+                          "limit %g (half the interaction range); reduce dt = %g",
                           (long long)w->step, bad_step, w->step_limit, dt);
     return HCBD_OK;
 }

@@ -1,0 +1,73 @@
+/* Tiny test framework: each test is a function registered in main.c; a
+   CHECK failure prints where and why and fails the test.  Statistical
+   tests compare with tolerances made from measured block-average errors. */
+#ifndef HCBD_TEST_H
+#define HCBD_TEST_H
+#include "../hcbd.h"
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+extern int t_fail;
+extern int t_quick; /* 1 under sanitizers: shorter statistical runs */
+
+#define CHECK(cond, ...)                                                       \
+    do {                                                                       \
+        if (!(cond)) {                                                         \
+            printf("    FAIL %s:%d: %s: ", __FILE__, __LINE__, #cond);         \
+            printf(__VA_ARGS__);                                               \
+            printf("\n");                                                      \
+            t_fail = 1;                                                        \
+        }                                                                      \
+    } while (0)
+#define NOTE(...) do { printf("    "); printf(__VA_ARGS__); printf("\n"); } while (0)
+
+/* Mean and standard error from nb block averages of x[0..n). */
+static inline void block_stats(const double *x, int n, int nb, double *mean, double *err)
+{
+    double m = 0, s2 = 0;
+    int b, k, len = n / nb;
+    for (b = 0; b < nb; ++b) {
+        double a = 0;
+        for (k = 0; k < len; ++k) a += x[b * len + k];
+        a /= len;
+        m += a;
+        s2 += a * a;
+    }
+    m /= nb;
+    *mean = m;
+    *err = sqrt((s2 / nb - m * m) / (nb - 1));
+}
+
+/* A world from the default 2014/2016 scene with the given changes. */
+static inline hcbd_world_def scene(int N, double density)
+{
+    hcbd_world_def d = hcbd_world_def_default();
+    double L = cbrt(N / density);
+    d.capacity = N;
+    d.params.L[0] = d.params.L[1] = d.params.L[2] = L;
+    d.params.density = density;
+    return d;
+}
+
+static inline int make_world(hcbd_world *w, const hcbd_world_def *d)
+{
+    if (hcbd_world_create(w, d) != HCBD_OK) {
+        printf("    world: %s\n", w->err.msg);
+        t_fail = 1;
+        return 0;
+    }
+    return 1;
+}
+
+static inline int run(hcbd_world *w, int steps)
+{
+    if (hcbd_step(w, steps) != HCBD_OK) {
+        printf("    step: %s\n", w->err.msg);
+        t_fail = 1;
+        return 0;
+    }
+    return 1;
+}
+#endif

@@ -1,0 +1,103 @@
+/* Bad inputs are rejected with a result code and a message naming the
+   value; nothing is changed. */
+#include "test.h"
+
+static void expect(hcbd_world_def d, hcbd_result code, const char *name)
+{
+    hcbd_world w;
+    hcbd_result r = hcbd_world_create(&w, &d);
+    CHECK(r == code, "%s: got %s (%s)", name, hcbd_result_name(r), w.err.msg);
+    CHECK(strstr(w.err.msg, name) != NULL, "message does not name %s: %s", name, w.err.msg);
+    if (r == HCBD_OK) hcbd_world_destroy(&w);
+}
+
+void test_bad_parameters(void)
+{
+    hcbd_world_def d = scene(64, 0.24), e;
+    d.params.L[0] = d.params.L[1] = d.params.L[2] = 12.9;
+    e = d; e.params.dt = 0; expect(e, HCBD_ERR_PARAM, "dt");
+    e = d; e.params.dt = -1e-4; expect(e, HCBD_ERR_PARAM, "dt");
+    e = d; e.params.dt = NAN; expect(e, HCBD_ERR_PARAM, "dt");
+    e = d; e.params.tau = 0.5e-4; expect(e, HCBD_ERR_PARAM, "tau");
+    e = d; e.params.Rc = 0; expect(e, HCBD_ERR_PARAM, "Rc");
+    e = d; e.params.Rc = -1; expect(e, HCBD_ERR_PARAM, "Rc");
+    e = d; e.params.kT = -1; expect(e, HCBD_ERR_PARAM, "kT");
+    e = d; e.params.xi = INFINITY; expect(e, HCBD_ERR_PARAM, "xi");
+    e = d; e.params.xip = 0; expect(e, HCBD_ERR_PARAM, "xip");
+    e = d; e.params.density_norm = 2015; expect(e, HCBD_ERR_PARAM, "density_norm");
+    e = d; e.params.threads = 0; expect(e, HCBD_ERR_PARAM, "threads");
+    e = d; e.params.fext[2] = NAN; expect(e, HCBD_ERR_PARAM, "fext[2]");
+    e = d; e.params.L[2] = 5.0; expect(e, HCBD_ERR_BOX, "L[2]");
+    e = d; e.capacity = 0; expect(e, HCBD_ERR_PARAM, "capacity");
+    e = d; e.params.potential = HCBD_POT_TABLE; expect(e, HCBD_ERR_NULL, "table_F");
+}
+
+void test_bad_particles(void)
+{
+    hcbd_world_def d = scene(64, 0.24);
+    hcbd_world w;
+    double xyz[3 * 65];
+    int k;
+    hcbd_result r;
+    uint64_t before;
+    if (!make_world(&w, &d)) return;
+    hcbd_world_place_lattice(&w, 64);
+    before = hcbd_state_checksum(&w);
+    for (k = 0; k < 3 * 65; ++k) xyz[k] = 0.1 * k;
+    r = hcbd_world_set_positions(&w, 65, xyz);
+    CHECK(r == HCBD_ERR_CAPACITY && strstr(w.err.msg, "65"), "N above capacity: %s", w.err.msg);
+    xyz[3 * 5 + 1] = NAN;
+    r = hcbd_world_set_positions(&w, 64, xyz);
+    CHECK(r == HCBD_ERR_NONFINITE && strstr(w.err.msg, "particle 5") && w.err.id == 5,
+          "non-finite position: %s", w.err.msg);
+    CHECK(hcbd_state_checksum(&w) == before, "state changed by rejected input");
+    r = hcbd_step(&w, -1);
+    CHECK(r == HCBD_ERR_PARAM && strstr(w.err.msg, "nsteps"), "negative nsteps: %s", w.err.msg);
+    {
+        size_t need = hcbd_world_bytes(&d);
+        char *mem = (char *)malloc(need);
+        hcbd_world v;
+        r = hcbd_world_init(&v, &d, mem, need - 100);
+        CHECK(r == HCBD_ERR_MEMORY, "short block: %s", hcbd_result_name(r));
+        r = hcbd_world_init(&v, &d, mem, need);
+        CHECK(r == HCBD_OK, "caller's block: %s", v.err.msg);
+        free(mem);
+    }
+    hcbd_world_destroy(&w);
+}
+
+/* A step too large for the forces is caught and names the particle. */
+void test_unstable_step_detected(void)
+{
+    hcbd_world_def d = scene(64, 0.24);
+    hcbd_world w;
+    double xyz[3 * 64];
+    hcbd_result r;
+    d.params.dynamics = HCBD_DYN_BD;
+    d.params.kT = 0; /* only the overlapping pair moves */
+    d.params.dt = 1e-2;
+    if (!make_world(&w, &d)) return;
+    hcbd_world_place_lattice(&w, 64);
+    hcbd_get_positions(&w, xyz, 0);
+    xyz[3 * 7] = xyz[3 * 3] + 0.01; /* particle 7 almost on top of 3 */
+    xyz[3 * 7 + 1] = xyz[3 * 3 + 1];
+    xyz[3 * 7 + 2] = xyz[3 * 3 + 2];
+    hcbd_world_set_positions(&w, 64, xyz);
+    r = hcbd_step(&w, 10);
+    CHECK(r == HCBD_ERR_UNSTABLE && (w.err.id == 3 || w.err.id == 7) && w.err.step == 0,
+          "got %s id %lld: %s", hcbd_result_name(r), (long long)w.err.id, w.err.msg);
+    hcbd_world_destroy(&w);
+}
+
+void test_neighbour_capacity_overflow(void)
+{
+    hcbd_world_def d = scene(512, 0.24);
+    hcbd_world w;
+    hcbd_result r;
+    d.max_pairs = 1000;
+    if (!make_world(&w, &d)) return;
+    hcbd_world_place_lattice(&w, 512);
+    r = hcbd_step(&w, 1);
+    CHECK(r == HCBD_ERR_CAPACITY && strstr(w.err.msg, "max_pairs"), "%s", w.err.msg);
+    hcbd_world_destroy(&w);
+}

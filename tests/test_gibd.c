@@ -1,0 +1,259 @@
+/* GI-BD and classical BD: conservation, invariance, determinism. */
+#include "test.h"
+
+/* <sum_j f_ij> for uncorrelated positions (MODEL 3), and the library's
+   value against an independent O(N^2) computation on the same points. */
+void test_density_normalisation(void)
+{
+    int norm;
+    for (norm = 2014; norm <= 2016; norm += 2) {
+        hcbd_world_def d = scene(1000, 0.24);
+        hcbd_world w;
+        double sumf = 0, sumf2 = 0;
+        int s, nconf = 8;
+        d.params.potential = HCBD_POT_IDEAL;
+        d.params.density_norm = norm;
+        if (!make_world(&w, &d)) return;
+        for (s = 0; s < nconf; ++s) {
+            double out[3], *xyz = (double *)malloc(3000 * sizeof(double));
+            double *rho = (double *)malloc(1000 * sizeof(double)), direct = 0;
+            double Rc = 2.5, m = w.m, w0 = hcbd_wendland(0, Rc);
+            double nrm = norm == 2016 ? 1 / (1 + w0 / 0.24) : 1;
+            int i, j;
+            w.p.seed = 1000 + s;
+            hcbd_world_place_random(&w, 1000);
+            hcbd_friction_average(&w, 1, out);
+            hcbd_get_positions(&w, xyz, 0);
+            for (i = 0; i < 1000; ++i) {
+                double sw = w0;
+                for (j = 0; j < 1000; ++j) {
+                    double r2 = 0;
+                    int c;
+                    if (j == i) continue;
+                    for (c = 0; c < 3; ++c) {
+                        double dx = xyz[3 * i + c] - xyz[3 * j + c];
+                        dx -= w.p.L[c] * round(dx / w.p.L[c]);
+                        r2 += dx * dx;
+                    }
+                    sw += hcbd_wendland(sqrt(r2), Rc);
+                }
+                rho[i] = m * nrm * sw;
+            }
+            for (i = 0; i < 1000; ++i)
+                for (j = 0; j < 1000; ++j) {
+                    double r2 = 0, r;
+                    int c;
+                    if (j == i) continue;
+                    for (c = 0; c < 3; ++c) {
+                        double dx = xyz[3 * i + c] - xyz[3 * j + c];
+                        dx -= w.p.L[c] * round(dx / w.p.L[c]);
+                        r2 += dx * dx;
+                    }
+                    r = sqrt(r2);
+                    if (r < Rc)
+                        direct += 15 / (2 * 3.14159265358979323846 * Rc * Rc * Rc) * m *
+                                  (1 / rho[i] + 1 / rho[j]) * pow(1 - r / Rc, 3);
+                }
+            direct /= 1000;
+            CHECK(fabs(direct - out[0]) < 1e-10, "norm %d: library %.12f, direct %.12f", norm,
+                  out[0], direct);
+            sumf += out[0];
+            sumf2 += out[0] * out[0];
+            free(xyz);
+            free(rho);
+        }
+        {
+            double mean = sumf / nconf, err = sqrt((sumf2 / nconf - mean * mean) / (nconf - 1));
+            NOTE("density_norm %d: <sum_j f_ij> = %.4f +- %.4f", norm, mean, err);
+            if (norm == 2016)
+                CHECK(mean > 0.9 && mean < 1.02, "2016: %g (MODEL 3: 0.92-1)", mean);
+            else
+                CHECK(mean > 0.45 && mean < 0.56, "2014: %g (MODEL 3: 0.49-0.53)", mean);
+        }
+        hcbd_world_destroy(&w);
+    }
+}
+
+static hcbd_world_def star_scene(void)
+{
+    hcbd_world_def d = scene(512, 0.24);
+    d.params.L[0] = d.params.L[1] = d.params.L[2] = 12.9;
+    return d;
+}
+
+/* sum m v is conserved to round-off over 10^4 steps with forces and noise. */
+void test_momentum_conservation(void)
+{
+    hcbd_world_def d = star_scene();
+    hcbd_world w;
+    double p0[3], p1[3], scale = 0, v[3 * 512];
+    int i, steps = t_quick ? 1000 : 10000;
+    if (!make_world(&w, &d)) return;
+    hcbd_world_place_lattice(&w, 512);
+    hcbd_momentum(&w, p0);
+    if (!run(&w, steps)) return;
+    hcbd_momentum(&w, p1);
+    hcbd_get_velocities(&w, v);
+    for (i = 0; i < 3 * 512; ++i) scale += w.m * fabs(v[i]);
+    for (i = 0; i < 3; ++i)
+        CHECK(fabs(p1[i] - p0[i]) < 1e-12 * scale, "component %d: %g -> %g (scale %g)", i, p0[i],
+              p1[i], scale);
+    NOTE("|dP| / sum m|v| = %.2e after %d steps", fabs(p1[0] - p0[0]) / scale, steps);
+    hcbd_world_destroy(&w);
+}
+
+/* Adding U to every background velocity shifts the trajectory by U t and
+   the velocities by U, with the same seed, to round-off. */
+void test_galilean_invariance(void)
+{
+    hcbd_world_def d = star_scene();
+    hcbd_world a, b;
+    double U[3] = {0.7, -0.4, 0.25}, va[3 * 512], vb[3 * 512], ra[3 * 512], rb[3 * 512];
+    double t, dev_r = 0, dev_v = 0;
+    int i, steps = 300;
+    d.params.tau = 3.6e-2;
+    if (!make_world(&a, &d) || !make_world(&b, &d)) return;
+    hcbd_world_place_lattice(&a, 512);
+    hcbd_world_place_lattice(&b, 512);
+    run(&a, 500);
+    hcbd_get_positions(&a, ra, 1);
+    hcbd_get_velocities(&a, va);
+    hcbd_world_set_positions(&b, 512, ra);
+    for (i = 0; i < 3 * 512; ++i) vb[i] = va[i] + U[i % 3];
+    hcbd_world_set_velocities(&b, vb);
+    /* same generator states and step counter */
+    memcpy(b.rs0, a.rs0, 512 * 8); memcpy(b.rs1, a.rs1, 512 * 8);
+    memcpy(b.rs2, a.rs2, 512 * 8); memcpy(b.rs3, a.rs3, 512 * 8);
+    /* a's storage is sorted: copy the states into b's id order */
+    for (i = 0; i < 512; ++i) {
+        int sa = a.slot[i], sb = b.slot[i];
+        b.rs0[sb] = a.rs0[sa]; b.rs1[sb] = a.rs1[sa]; b.rs2[sb] = a.rs2[sa]; b.rs3[sb] = a.rs3[sa];
+    }
+    b.step = a.step;
+    hcbd_get_positions(&a, ra, 1);
+    run(&a, steps);
+    run(&b, steps);
+    t = steps * d.params.dt;
+    {
+        double ra1[3 * 512], rb1[3 * 512];
+        hcbd_get_positions(&a, ra1, 1);
+        hcbd_get_positions(&b, rb1, 1);
+        hcbd_get_velocities(&a, va);
+        hcbd_get_velocities(&b, vb);
+        for (i = 0; i < 3 * 512; ++i) {
+            double e = fabs(rb1[i] - ra1[i] - U[i % 3] * t);
+            double f = fabs(vb[i] - va[i] - U[i % 3]);
+            if (e > dev_r) dev_r = e;
+            if (f > dev_v) dev_v = f;
+        }
+        (void)rb;
+    }
+    NOTE("max |dR - U t| = %.2e, max |dv - U| = %.2e", dev_r, dev_v);
+    CHECK(dev_r < 1e-9, "positions deviate by %g", dev_r);
+    CHECK(dev_v < 1e-8, "velocities deviate by %g", dev_v);
+    hcbd_world_destroy(&a);
+    hcbd_world_destroy(&b);
+}
+
+static uint64_t run_hash(hcbd_world_def d, int steps)
+{
+    hcbd_world w;
+    uint64_t h;
+    if (!make_world(&w, &d)) return 0;
+    hcbd_world_place_lattice(&w, d.capacity);
+    run(&w, steps);
+    h = hcbd_state_checksum(&w);
+    hcbd_world_destroy(&w);
+    return h;
+}
+
+/* Same seed: same bits; any thread count, with or without storage
+   sorting: same bits; another seed: other bits. */
+void test_determinism(void)
+{
+    int lag, dyn;
+    for (dyn = 0; dyn < 2; ++dyn)
+        for (lag = 0; lag < 2; ++lag) {
+            hcbd_world_def d = star_scene(), e;
+            uint64_t h1, h2, h3, h4, h5;
+            d.params.dynamics = dyn ? HCBD_DYN_BD : HCBD_DYN_GIBD;
+            d.params.lagged_density = lag;
+            if (dyn && lag) continue;
+            h1 = run_hash(d, 400);
+            h2 = run_hash(d, 400);
+            e = d; e.params.threads = 2; h3 = run_hash(e, 400);
+            e = d; e.params.sort = 0; e.params.threads = 3; h4 = run_hash(e, 400);
+            e = d; e.params.seed = 2; h5 = run_hash(e, 400);
+            CHECK(h1 == h2, "dyn %d lag %d: same seed differs", dyn, lag);
+            CHECK(h1 == h3, "dyn %d lag %d: 2 threads differ from 1", dyn, lag);
+            CHECK(h1 == h4, "dyn %d lag %d: unsorted storage, 3 threads differ", dyn, lag);
+            CHECK(h1 != h5, "dyn %d lag %d: different seeds give the same state", dyn, lag);
+        }
+#ifndef _OPENMP
+    NOTE("built without OpenMP: thread counts are ignored, the check is trivial");
+#endif
+}
+
+/* kT = 0 draws no random numbers (generator states untouched), and ideal
+   BD builds no neighbour list. */
+void test_skipped_work(void)
+{
+    hcbd_world_def d = star_scene();
+    hcbd_world w;
+    uint64_t s0[512], s3[512];
+    d.params.kT = 0;
+    if (!make_world(&w, &d)) return;
+    hcbd_world_place_lattice(&w, 512);
+    memcpy(s0, w.rs0, sizeof s0);
+    memcpy(s3, w.rs3, sizeof s3);
+    run(&w, 50);
+    {
+        int i, same = 1;
+        for (i = 0; i < 512; ++i) {
+            int s = w.slot[i];
+            if (w.rs0[s] != s0[i] || w.rs3[s] != s3[i]) same = 0;
+        }
+        CHECK(same, "kT = 0 advanced the generators");
+    }
+    CHECK(hcbd_temperature(&w) < 1e-20, "kT = 0 lattice start has T = %g", hcbd_temperature(&w));
+    hcbd_world_destroy(&w);
+    d = star_scene();
+    d.params.dynamics = HCBD_DYN_BD;
+    d.params.potential = HCBD_POT_IDEAL;
+    if (!make_world(&w, &d)) return;
+    hcbd_world_place_lattice(&w, 512);
+    run(&w, 50);
+    CHECK(w.n_rebuilds == 0, "ideal BD built %lld neighbour lists", (long long)w.n_rebuilds);
+    hcbd_world_destroy(&w);
+}
+
+/* The lagged densities (2014's speed-up) are the densities of the
+   previous step: a run with them stays close to the exact run and keeps
+   momentum. */
+void test_lagged_density(void)
+{
+    hcbd_world_def d = star_scene();
+    hcbd_world a, b;
+    double pa[3], pb[3], ta, tb;
+    d.params.kT = 1;
+    if (!make_world(&a, &d)) return;
+    d.params.lagged_density = 1;
+    if (!make_world(&b, &d)) return;
+    hcbd_world_place_lattice(&a, 512);
+    hcbd_world_place_lattice(&b, 512);
+    run(&a, 1);
+    run(&b, 1);
+    /* first step: no lag yet, identical */
+    CHECK(hcbd_state_checksum(&a) == hcbd_state_checksum(&b), "first step differs");
+    run(&a, 200);
+    run(&b, 200);
+    hcbd_momentum(&b, pb);
+    hcbd_momentum(&a, pa);
+    ta = hcbd_temperature(&a);
+    tb = hcbd_temperature(&b);
+    CHECK(fabs(pb[0]) < 1e-12 && fabs(pb[1]) < 1e-12, "lagged momentum %g %g", pb[0], pb[1]);
+    CHECK(hcbd_state_checksum(&a) != hcbd_state_checksum(&b), "lag has no effect");
+    NOTE("T exact %.4f, lagged %.4f", ta, tb);
+    hcbd_world_destroy(&a);
+    hcbd_world_destroy(&b);
+}

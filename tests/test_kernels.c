@@ -1,0 +1,147 @@
+/* Weight functions and pair potentials against integrals and finite
+   differences (MODEL 1, 9). */
+#include "test.h"
+
+/* 4 pi int_0^R r^2 w(r) dr by composite Simpson with n intervals. */
+static double radial_integral(double (*w)(double, double), double Rc, int n)
+{
+    double h = Rc / n, s = 0;
+    int k;
+    for (k = 0; k <= n; ++k) {
+        double r = k * h, c = (k == 0 || k == n) ? 1 : (k % 2 ? 4 : 2);
+        s += c * r * r * w(r, Rc);
+    }
+    return 4 * 3.14159265358979323846 * s * h / 3;
+}
+
+void test_wendland_normalisation(void)
+{
+    double Rc[3] = {1.0, 2.5, 4.0};
+    int k;
+    for (k = 0; k < 3; ++k) {
+        double I = radial_integral(hcbd_wendland, Rc[k], 20000);
+        CHECK(fabs(I - 1) < 1e-12, "Rc = %g: integral %.15f", Rc[k], I);
+    }
+    CHECK(fabs(hcbd_wendland(0, 2.5) - 21 / (2 * 3.14159265358979323846 * 15.625)) < 1e-15,
+          "w(0) = %g", hcbd_wendland(0, 2.5));
+    CHECK(hcbd_wendland(2.5, 2.5) == 0 && hcbd_wendland(3, 2.5) == 0, "w beyond Rc");
+}
+
+void test_wendland_derivative(void)
+{
+    double r;
+    for (r = 0.05; r < 2.5; r += 0.1) {
+        double h = 1e-6;
+        double fd = (hcbd_wendland(r + h, 2.5) - hcbd_wendland(r - h, 2.5)) / (2 * h);
+        CHECK(fabs(fd - hcbd_wendland_dr(r, 2.5)) < 1e-8, "r = %g: %g vs %g", r, fd,
+              hcbd_wendland_dr(r, 2.5));
+    }
+}
+
+void test_star_force_is_minus_gradient(void)
+{
+    double f[2] = {128, 32}, r;
+    int k;
+    for (k = 0; k < 2; ++k)
+        for (r = 0.05; r < 2.5; r += 0.0731) {
+            double h = 1e-6 * r;
+            double fd = -(hcbd_star_potential(r + h, f[k], 1, 1) -
+                          hcbd_star_potential(r - h, f[k], 1, 1)) / (2 * h);
+            double F = hcbd_star_force(r, f[k], 1, 1);
+            CHECK(fabs(fd - F) < 1e-6 * (1 + fabs(F)), "f = %g r = %g: %g vs %g", f[k], r,
+                  fd, F);
+        }
+    /* continuity of V and F at r = sigma (2014 eq. 28) */
+    {
+        double e = 1e-12;
+        double v0 = hcbd_star_potential(1 - e, 128, 1, 1), v1 = hcbd_star_potential(1 + e, 128, 1, 1);
+        double f0 = hcbd_star_force(1 - e, 128, 1, 1), f1 = hcbd_star_force(1 + e, 128, 1, 1);
+        CHECK(fabs(v0 - v1) < 1e-9 * v0, "V jumps at sigma: %.15g %.15g", v0, v1);
+        CHECK(fabs(f0 - f1) < 1e-9 * f0, "F jumps at sigma: %.15g %.15g", f0, f1);
+    }
+    /* scaling with sigma and eps */
+    CHECK(fabs(hcbd_star_potential(2.0, 128, 2.0, 3.0) - 3 * hcbd_star_potential(1.0, 128, 1, 1)) < 1e-12,
+          "V(r; sigma, eps) = eps V(r/sigma; 1, 1)");
+}
+
+/* Total force on each particle, from one BD step with kT = 0 and a tiny
+   dt (dR = F dt / xi), on a jittered lattice of 64 particles. */
+static void step_forces(hcbd_world_def d, double *xyz, double *F)
+{
+    enum { N = 64 };
+    hcbd_world w;
+    double x1[3 * N];
+    int i;
+    d.params.dynamics = HCBD_DYN_BD;
+    d.params.kT = 0;
+    d.params.dt = 1e-9;
+    d.params.L[0] = d.params.L[1] = d.params.L[2] = 6.5;
+    if (!make_world(&w, &d)) return;
+    for (i = 0; i < N; ++i) {
+        xyz[3 * i] = (i % 4 + 0.5) * 6.5 / 4 + 0.2 * sin(i);
+        xyz[3 * i + 1] = ((i / 4) % 4 + 0.5) * 6.5 / 4 + 0.2 * cos(3 * i);
+        xyz[3 * i + 2] = (i / 16 + 0.5) * 6.5 / 4 + 0.2 * sin(7 * i);
+    }
+    hcbd_world_set_positions(&w, N, xyz);
+    run(&w, 1);
+    hcbd_get_positions(&w, x1, 1);
+    for (i = 0; i < 3 * N; ++i) F[i] = (x1[i] - xyz[i]) / 1e-9;
+    hcbd_world_destroy(&w);
+}
+
+/* The forces the step applies are minus the gradient of the total
+   potential energy (finite differences of hcbd_potential_energy). */
+void test_pair_forces_vs_energy(void)
+{
+    enum { N = 64 };
+    hcbd_world_def d = scene(N, 0.24);
+    hcbd_world w;
+    double xyz[3 * N], F[3 * N];
+    int i, c;
+    step_forces(d, xyz, F);
+    d.params.L[0] = d.params.L[1] = d.params.L[2] = 6.5;
+    if (!make_world(&w, &d)) return;
+    for (i = 0; i < 6; ++i)
+        for (c = 0; c < 3; ++c) {
+            double h = 1e-6, e1, e0, fd;
+            xyz[3 * i + c] += h;
+            hcbd_world_set_positions(&w, N, xyz);
+            e1 = hcbd_potential_energy(&w);
+            xyz[3 * i + c] -= 2 * h;
+            hcbd_world_set_positions(&w, N, xyz);
+            e0 = hcbd_potential_energy(&w);
+            xyz[3 * i + c] += h;
+            fd = -(e1 - e0) / (2 * h);
+            CHECK(fabs(fd - F[3 * i + c]) < 1e-5 * (1 + fabs(fd)), "particle %d comp %d: -dU/dx %g, F %g",
+                  i, c, fd, F[3 * i + c]);
+        }
+    hcbd_world_destroy(&w);
+}
+
+/* A table of the star force reproduces the analytic forces within the
+   linear-interpolation error dr^2 max|F''| / 8 per pair (~1e-6 relative
+   here; an index off by one would give ~1e-3). */
+void test_table_potential(void)
+{
+    enum { N = 64, NT = 4001 };
+    static double tF[NT], tV[NT];
+    hcbd_world_def d = scene(N, 0.24), t;
+    double xyz[3 * N], Fa[3 * N], Ft[3 * N];
+    int i;
+    for (i = 0; i < NT; ++i) {
+        double r = 0.3 + i * (2.5 - 0.3) / (NT - 1);
+        tF[i] = hcbd_star_force(r, 128, 1, 1);
+        tV[i] = hcbd_star_potential(r, 128, 1, 1);
+    }
+    t = d;
+    t.params.potential = HCBD_POT_TABLE;
+    t.params.table_F = tF;
+    t.params.table_V = tV;
+    t.params.table_n = NT;
+    t.params.table_r0 = 0.3;
+    step_forces(d, xyz, Fa);
+    step_forces(t, xyz, Ft);
+    for (i = 0; i < 3 * N; ++i)
+        CHECK(fabs(Fa[i] - Ft[i]) < 1e-4 * (1 + fabs(Fa[i])), "particle %d comp %d: %g vs %g", i / 3,
+              i % 3, Ft[i], Fa[i]);
+}

@@ -1,0 +1,205 @@
+/* Observables against independent computations. */
+#include "test.h"
+
+/* AR(1) signal x_{t+1} = a x_t + sqrt(1 - a^2) g has <x_t x_{t+s}> = a^s.
+   The multiple-tau correlator must equal a direct computation of the same
+   block-averaged estimator at every lag it reports (the long-lag tail
+   included), and agree with a^s within the statistical error. */
+void test_multiple_tau_correlator(void)
+{
+    enum { N = 1 << 16, P = 16, M = 2, LEV = 12 };
+    double *x = (double *)malloc(N * sizeof(double)), lag[400], c[400];
+    int64_t cnt[400];
+    hcbd_mtcorr mt;
+    size_t bytes = hcbd_mtcorr_bytes(2, P, M, LEV);
+    void *mem = malloc(bytes);
+    hcbd_rng r;
+    hcbd_world_def d = scene(64, 0.24);
+    hcbd_world w;
+    double a = 0.98, v = 0;
+    int k, nres, checked = 0;
+    if (!make_world(&w, &d)) return;
+    hcbd_rng_seed(&r, 5);
+    CHECK(hcbd_mtcorr_init(&mt, 2, P, M, LEV, mem, bytes) == HCBD_OK, "init");
+    for (k = 0; k < N; ++k) {
+        double two[2];
+        v = a * v + sqrt(1 - a * a) * hcbd_rng_normal(&w, &r);
+        x[k] = v;
+        two[0] = v;
+        two[1] = -v; /* a second channel with the same correlation */
+        hcbd_mtcorr_add(&mt, two);
+    }
+    hcbd_mtcorr_finalize(&mt);
+    nres = hcbd_mtcorr_result(&mt, 1, lag, c, cnt, 400);
+    /* level 0: P lags; levels 1..kmax-1: P - P/M each (the top level is dropped) */
+    CHECK(nres == P + (P - P / M) * (LEV - 2), "%d lags", nres);
+    for (k = 0; k < nres; ++k) {
+        /* direct: block averages of length b = m^level, products at lag */
+        int b = 1, s = (int)lag[k], nb, t;
+        double sum = 0;
+        int64_t n = 0;
+        while (s >= P * b) b *= M;
+        nb = N / b;
+        {
+            double *avg = (double *)malloc((size_t)nb * sizeof(double));
+            for (t = 0; t < nb; ++t) {
+                int u;
+                avg[t] = 0;
+                for (u = 0; u < b; ++u) avg[t] += x[t * b + u];
+                avg[t] /= b;
+            }
+            for (t = 0; t + s / b < nb; ++t) {
+                sum += avg[t] * avg[t + s / b];
+                ++n;
+            }
+            free(avg);
+        }
+        CHECK(n == cnt[k], "lag %g: count %lld, direct %lld", lag[k], (long long)cnt[k], (long long)n);
+        CHECK(fabs(sum / n - c[k]) < 1e-9 * (1 + fabs(c[k])), "lag %g: %g vs direct %g", lag[k],
+              c[k], sum / n);
+        /* against the exact correlation, for lags where the block
+           smoothing is small (lag >= 8 blocks) and counts are decent */
+        if (s / b >= P / M && cnt[k] > 200 && s < 400) {
+            /* error of an AR(1) covariance estimate ~ sqrt((1+a^2)/(1-a^2) / n) */
+            double err = sqrt((1 + a * a) / (1 - a * a) / (double)(N - s));
+            double blockfac = b > 1 ? 1.0 : 1.0;
+            CHECK(fabs(c[k] - pow(a, s) * blockfac) < 5 * err + 0.02 * (b > 1),
+                  "lag %d: %g vs a^s %g (err %g)", s, c[k], pow(a, s), err);
+            ++checked;
+        }
+    }
+    CHECK(c[0] > 0.9 && c[0] < 1.1, "C(0) = %g", c[0]);
+    CHECK(checked > 10, "only %d lags compared with theory", checked);
+    free(mem);
+    free(x);
+    hcbd_world_destroy(&w);
+}
+
+/* Order-n MSD equals the direct all-origins average at the lags where
+   every sample is an origin (level 0), and averages over origins spaced
+   B^l at higher levels; both checked against a direct computation. */
+void test_msd_order_n(void)
+{
+    enum { NP = 5, T = 2000, B = 8, LEV = 4 };
+    double *traj = (double *)malloc((size_t)T * 3 * NP * sizeof(double));
+    double lag[64], msd[64];
+    int64_t cnt[64];
+    size_t bytes = hcbd_msd_bytes(NP, B, LEV);
+    void *mem = malloc(bytes);
+    hcbd_msd m;
+    hcbd_rng r;
+    int t, k, nres;
+    hcbd_rng_seed(&r, 9);
+    CHECK(hcbd_msd_init(&m, NP, B, LEV, mem, bytes) == HCBD_OK, "init");
+    for (k = 0; k < 3 * NP; ++k) traj[k] = 0;
+    for (t = 1; t < T; ++t)
+        for (k = 0; k < 3 * NP; ++k)
+            traj[(size_t)t * 3 * NP + k] = traj[(size_t)(t - 1) * 3 * NP + k] + hcbd_rng_uniform(&r) - 0.5;
+    for (t = 0; t < T; ++t) hcbd_msd_add(&m, traj + (size_t)t * 3 * NP);
+    nres = hcbd_msd_result(&m, lag, msd, cnt, 64);
+    /* levels 0-2 full; level 3 (every 512 samples) has 4 positions */
+    CHECK(nres == 3 * (B - 1) + 3, "%d lags", nres);
+    for (k = 0; k < nres; ++k) {
+        int s = (int)lag[k], every = 1, t0;
+        double sum = 0;
+        int64_t n = 0;
+        while (s >= B * every) every *= B;
+        for (t0 = 0; t0 + s < T; t0 += every) {
+            int c;
+            double d2 = 0;
+            if ((t0 + s) % every) continue;
+            for (c = 0; c < 3 * NP; ++c) {
+                double dd = traj[(size_t)(t0 + s) * 3 * NP + c] - traj[(size_t)t0 * 3 * NP + c];
+                d2 += dd * dd;
+            }
+            sum += d2 / NP;
+            ++n;
+        }
+        CHECK(n == cnt[k] && fabs(sum / n - msd[k]) < 1e-9 * sum / n, "lag %d: %g (%lld) vs %g (%lld)",
+              s, msd[k], (long long)cnt[k], sum / n, (long long)n);
+    }
+    free(mem);
+    free(traj);
+}
+
+/* g(r) of an ideal gas is 1: both the list path and the all-pairs path. */
+void test_rdf_ideal_gas(void)
+{
+    hcbd_world_def d = scene(2000, 0.24);
+    hcbd_world w;
+    double h1[25], h2[25], g1[25], g2[25];
+    hcbd_rdf a, b;
+    int s, k;
+    d.params.potential = HCBD_POT_IDEAL;
+    if (!make_world(&w, &d)) return;
+    hcbd_rdf_init(&a, 2.5, 25, h1);
+    hcbd_rdf_init(&b, 5.0, 25, h2);
+    for (s = 0; s < 20; ++s) {
+        w.p.seed = 100 + s;
+        hcbd_world_place_random(&w, 2000);
+        hcbd_rdf_sample(&a, &w);
+        hcbd_rdf_sample(&b, &w);
+    }
+    hcbd_rdf_result(&a, NULL, g1);
+    hcbd_rdf_result(&b, NULL, g2);
+    for (k = 2; k < 25; ++k) {
+        /* Poisson error of a bin count: 1 / sqrt(expected count) */
+        double shell1 = 4.0 / 3 * 3.14159265 * (pow((k + 1) * 0.1, 3) - pow(k * 0.1, 3));
+        double e1 = 1 / sqrt(0.5 * 2000 * 0.24 * shell1 * 20);
+        double shell2 = 4.0 / 3 * 3.14159265 * (pow((k + 1) * 0.2, 3) - pow(k * 0.2, 3));
+        double e2 = 1 / sqrt(0.5 * 2000 * 0.24 * shell2 * 20);
+        CHECK(fabs(g1[k] - 1) < 5 * e1, "list path bin %d: %g (err %g)", k, g1[k], e1);
+        CHECK(fabs(g2[k] - 1) < 5 * e2, "all-pairs path bin %d: %g (err %g)", k, g2[k], e2);
+    }
+    hcbd_world_destroy(&w);
+}
+
+/* The pair-virial shear stress equals (1/V) dU/dgamma under the affine
+   shear x -> x + gamma y (an independent computation from energies). */
+void test_stress_is_strain_derivative(void)
+{
+    enum { N = 300 };
+    hcbd_world_def d = scene(N, 0.24);
+    hcbd_world w;
+    double xyz[3 * N], s[9], V, h = 1e-6, up, dn;
+    int i;
+    d.params.dynamics = HCBD_DYN_BD;
+    if (!make_world(&w, &d)) return;
+    hcbd_world_place_lattice(&w, N);
+    run(&w, 2000); /* a liquid configuration */
+    hcbd_get_positions(&w, xyz, 1);
+    hcbd_stress(&w, s);
+    V = w.p.L[0] * w.p.L[1] * w.p.L[2];
+    {
+        /* energy as a function of gamma with Lees-Edwards-consistent images:
+           sum over pairs of V(|x_ij + gamma y_ij e_x|) with the minimum
+           image taken before the strain */
+        double e[2];
+        int sgn;
+        for (sgn = 0; sgn < 2; ++sgn) {
+            double g = sgn ? -h : h, E = 0;
+            int j;
+            for (i = 0; i < N; ++i)
+                for (j = i + 1; j < N; ++j) {
+                    double dx[3], r;
+                    int c;
+                    for (c = 0; c < 3; ++c) {
+                        dx[c] = xyz[3 * i + c] - xyz[3 * j + c];
+                        dx[c] -= w.p.L[c] * round(dx[c] / w.p.L[c]);
+                    }
+                    dx[0] += g * dx[1];
+                    r = sqrt(dx[0] * dx[0] + dx[1] * dx[1] + dx[2] * dx[2]);
+                    if (r < 2.5) E += hcbd_star_potential(r, 128, 1, 1);
+                }
+            e[sgn] = E;
+        }
+        up = e[0];
+        dn = e[1];
+    }
+    /* S_xy = -(1/V) sum x_ij F_ij,y: with F = -dV/dr e, this is
+       (1/V) sum V'(r) x y / r = (1/V) dU/dgamma */
+    CHECK(fabs(s[1] - (up - dn) / (2 * h) / V) < 1e-6 * (1 + fabs(s[1])), "S_xy %g vs dU/dg/V %g",
+          s[1], (up - dn) / (2 * h) / V);
+    CHECK(fabs(s[1] - s[3]) < 1e-12 * (1 + fabs(s[1])), "stress not symmetric: %g %g", s[1], s[3]);
+    hcbd_world_destroy(&w);
+}

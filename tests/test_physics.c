@@ -1,0 +1,290 @@
+/* Statistical physics tests (MODEL 3, 10).  Every tolerance is a multiple
+   of an error measured from block averages of the same run, plus, where
+   stated, the size of a known higher-order term. */
+#include "test.h"
+
+#define PI 3.14159265358979323846
+
+/* Equipartition of the background velocities with the Euler bias: the
+   temperature excess is (dt/(2 tau)) <sum_j f_ij> to first order (MODEL 10)
+   and halves when dt halves. */
+static void temperature_run(double dt, double *bias, double *err, double *pred)
+{
+    hcbd_world_def d = scene(1000, 0.24);
+    hcbd_world w;
+    int nsamp = t_quick ? 400 : 4000, every = 4 * (int)(1e-3 / dt + 0.5), k;
+    double *T = (double *)malloc(nsamp * sizeof(double)), sf = 0, out[3], mean;
+    d.params.potential = HCBD_POT_IDEAL;
+    d.params.tau = 1e-2;
+    d.params.dt = dt;
+    d.params.seed = 77;
+    if (!make_world(&w, &d)) return;
+    hcbd_world_place_random(&w, 1000);
+    run(&w, 20 * every);
+    for (k = 0; k < nsamp; ++k) {
+        run(&w, every);
+        T[k] = hcbd_temperature(&w);
+        if (k % 100 == 0) {
+            hcbd_friction_average(&w, 1, out);
+            sf += out[0];
+        }
+    }
+    block_stats(T, nsamp, 20, &mean, err);
+    *bias = mean - 1;
+    *pred = dt / (2 * d.params.tau) * sf / (nsamp / 100);
+    free(T);
+    hcbd_world_destroy(&w);
+}
+
+void test_equipartition_euler_bias(void)
+{
+    double b1, e1, p1, b2, e2, p2;
+    temperature_run(1e-3, &b1, &e1, &p1);
+    temperature_run(5e-4, &b2, &e2, &p2);
+    NOTE("tau = 10 dt: T/kT - 1 = %.4f +- %.4f, first-order (dt/2tau)<sum f> = %.4f", b1, e1, p1);
+    NOTE("tau = 20 dt: T/kT - 1 = %.4f +- %.4f, first-order %.4f", b2, e2, p2);
+    if (t_quick) return;
+    /* second-order term of a discrete Ornstein-Uhlenbeck variance,
+       1/(1 - x) = 1 + x + x^2..., bounds the departure from first order */
+    CHECK(fabs(b1 - p1) < 4 * e1 + 2 * p1 * p1, "dt: bias %g vs %g", b1, p1);
+    CHECK(fabs(b2 - p2) < 4 * e2 + 2 * p2 * p2, "dt/2: bias %g vs %g", b2, p2);
+    CHECK(fabs(b1 / 2 - b2) < 4 * sqrt(e1 * e1 / 4 + e2 * e2) + p1 * p1,
+          "bias does not halve with dt: %g -> %g", b1, b2);
+    CHECK(e1 < 0.2 * b1, "run too short to resolve the bias: %g +- %g", b1, e1);
+}
+
+/* Transverse current of the background velocity.  Its initial decay rate
+   is exactly (1/tau) <sum_j f_ij (1 - cos k.x_ij)> + k^2 kT/xi (MODEL 10),
+   so nu_initial = Gamma/k^2 - kT/xi equals nu_meanfield, with one
+   finite-system factor: total momentum is exactly zero, so <v_i v_l> =
+   (kT/m)(delta_il - 1/N) and C_t(k,0) = (kT/m)(1 - S(k)/N) while the
+   friction decrement is unchanged; the identity is nu_initial =
+   nu_meanfield / (1 - S(k)/N), S(k) = <|rho_k|^2>/N measured in the run.
+   Small box and the second wave number: the decay is fast next to the
+   velocity relaxation time, and independent samples come quickly. */
+typedef struct {
+    double nu_init, nu_init_err, nu_mf, fs;
+} tc_result;
+
+/* Least squares of y(s) = 1 - C(s)/C(0) = a s + b s (s - 1) over the lags
+   with C/C(0) > 0.75: a is the one-step decrement of the discrete process
+   (for a geometric decay (1 - a)^s, exactly to second order). */
+static double initial_rate(const double *c, int n, double dt)
+{
+    double a11 = 0, a12 = 0, a22 = 0, b1 = 0, b2 = 0;
+    int s;
+    for (s = 1; s < n && c[s] / c[0] > 0.75; ++s) {
+        double u = (double)s * (s - 1), y = 1 - c[s] / c[0];
+        a11 += (double)s * s; a12 += s * u; a22 += u * u;
+        b1 += s * y; b2 += u * y;
+    }
+    return (b1 * a22 - b2 * a12) / (a11 * a22 - a12 * a12) / dt;
+}
+
+static tc_result transverse_identity(hcbd_world_def d, int nk, int nblocks, int block_steps)
+{
+    enum { P = 64 };
+    hcbd_world w;
+    tc_result r = {0, 0, 0, 0};
+    double k, rates[64], sum = 0, sum2 = 0, mf = 0, sk = 0;
+    int nmf = 0, b, s, n = d.capacity;
+    size_t bytes = hcbd_mtcorr_bytes(12, P, 2, 1);
+    void *mem = malloc(bytes);
+    double *xyz = (double *)malloc(3 * (size_t)n * sizeof(double));
+    hcbd_mtcorr c;
+    if (!make_world(&w, &d)) return r;
+    hcbd_world_place_lattice(&w, n);
+    run(&w, 20000);
+    k = 2 * PI * nk / d.params.L[0];
+    for (b = 0; b < nblocks; ++b) {
+        double lag[P], corr[P];
+        int got;
+        hcbd_mtcorr_init(&c, 12, P, 2, 1, mem, bytes);
+        for (s = 0; s < block_steps; ++s) {
+            double j[12], out[3];
+            hcbd_transverse_current(&w, nk, j);
+            hcbd_mtcorr_add(&c, j);
+            if (s % 50 == 0) {
+                int i, a;
+                hcbd_friction_average(&w, nk, out);
+                mf += out[2] / (d.params.tau * k * k);
+                hcbd_get_positions(&w, xyz, 0);
+                for (a = 0; a < 3; ++a) {
+                    double re = 0, im = 0;
+                    for (i = 0; i < n; ++i) {
+                        re += cos(k * xyz[3 * i + a]);
+                        im += sin(k * xyz[3 * i + a]);
+                    }
+                    sk += (re * re + im * im) / n / 3;
+                }
+                ++nmf;
+            }
+            if (!run(&w, 1)) return r;
+        }
+        hcbd_mtcorr_finalize(&c);
+        got = hcbd_mtcorr_result(&c, 1, lag, corr, NULL, P);
+        rates[b] = initial_rate(corr, got, d.params.dt) / (k * k) - d.params.kT / d.params.xi;
+        sum += rates[b];
+        sum2 += rates[b] * rates[b];
+    }
+    r.nu_init = sum / nblocks;
+    r.nu_init_err = sqrt((sum2 / nblocks - r.nu_init * r.nu_init) / (nblocks - 1));
+    r.nu_mf = mf / nmf;
+    r.fs = 1 - sk / nmf / n;
+    free(mem);
+    free(xyz);
+    hcbd_world_destroy(&w);
+    return r;
+}
+
+void test_transverse_current_initial_decay(void)
+{
+    int pot;
+    for (pot = 0; pot < 2; ++pot) {
+        hcbd_world_def d = scene(54, 0.25);
+        tc_result r;
+        double target;
+        d.params.L[0] = d.params.L[1] = d.params.L[2] = 6.0;
+        if (pot) {
+            d.params.potential = HCBD_POT_STAR;
+            d.params.dt = 1e-4;
+            d.params.tau = 3.6e-3;
+        } else {
+            d.params.potential = HCBD_POT_IDEAL;
+            d.params.dt = 5e-4;
+            d.params.tau = 1e-2;
+        }
+        r = transverse_identity(d, 2, 12, t_quick ? 2000 : 16000);
+        target = r.nu_mf / r.fs;
+        NOTE("%s: nu_initial = %.3f +- %.3f, nu_meanfield = %.3f, 1 - S(k)/N = %.4f, "
+             "nu_initial / (nu_meanfield / (1 - S/N)) = %.4f",
+             pot ? "stars" : "ideal", r.nu_init, r.nu_init_err, r.nu_mf, r.fs, r.nu_init / target);
+        if (t_quick) continue;
+        CHECK(fabs(r.nu_init / target - 1) < 0.03, "nu_initial %g vs %g", r.nu_init, target);
+        CHECK(fabs(r.nu_init - target) < 4 * r.nu_init_err + 0.01 * target,
+              "nu_initial %g +- %g vs %g", r.nu_init, r.nu_init_err, target);
+        CHECK(r.nu_init_err < 0.01 * target, "error %g too large to test 3 %%", r.nu_init_err);
+    }
+}
+
+/* For ideal particles with the 2016 density the configurational friction
+   average gives nu_meanfield = Rc^2/(28 tau) within 5 % (MODEL 3, 10); the
+   friction of an ideal gas is a property of uncorrelated positions. */
+void test_nu_meanfield_ideal(void)
+{
+    hcbd_world_def d = scene(512, 0.24);
+    hcbd_world w;
+    double sum = 0, sum2 = 0, k, nu_th;
+    int s, nconf = 10;
+    d.params.L[0] = d.params.L[1] = d.params.L[2] = 12.9;
+    d.params.potential = HCBD_POT_IDEAL;
+    if (!make_world(&w, &d)) return;
+    k = 2 * PI / 12.9;
+    nu_th = 2.5 * 2.5 / (28 * d.params.tau);
+    for (s = 0; s < nconf; ++s) {
+        double out[3], nu;
+        w.p.seed = 500 + s;
+        hcbd_world_place_random(&w, 512);
+        hcbd_friction_average(&w, 1, out);
+        nu = out[2] / (d.params.tau * k * k);
+        sum += nu;
+        sum2 += nu * nu;
+    }
+    {
+        double m = sum / nconf, e = sqrt((sum2 / nconf - m * m) / (nconf - 1));
+        NOTE("nu_meanfield = %.2f +- %.2f, Rc^2/(28 tau) = %.2f (ratio %.4f)", m, e, nu_th, m / nu_th);
+        CHECK(fabs(m / nu_th - 1) < 0.05, "nu_meanfield %g vs %g", m, nu_th);
+    }
+    hcbd_world_destroy(&w);
+}
+
+/* MSD of ideal particles (2016 eq. 32) for t <= tau, where the zeroth-order
+   result holds; the long-time ratio D_measured/D_theory is reported. */
+void test_msd_ideal_gibd(void)
+{
+    enum { N = 500, B = 10, LEV = 3, NB = 10 };
+    hcbd_world_def d = scene(N, 0.24);
+    hcbd_world w;
+    size_t bytes = hcbd_msd_bytes(N, B, LEV);
+    void *mem = malloc(bytes);
+    double *xyz = (double *)malloc(3 * N * sizeof(double));
+    double vals[NB][32], lag[32];
+    int b, s, nl = 0, steps = t_quick ? 300 : 2000, l;
+    hcbd_msd m;
+    d.params.potential = HCBD_POT_IDEAL;
+    d.params.tau = 0.1;
+    d.params.dt = 1e-3;
+    if (!make_world(&w, &d)) return;
+    hcbd_world_place_random(&w, N);
+    run(&w, 1000);
+    for (b = 0; b < NB; ++b) {
+        hcbd_msd_init(&m, N, B, LEV, mem, bytes);
+        for (s = 0; s < steps; ++s) {
+            hcbd_get_positions(&w, xyz, 1);
+            hcbd_msd_add(&m, xyz);
+            run(&w, 1);
+        }
+        nl = hcbd_msd_result(&m, lag, vals[b], NULL, 32);
+    }
+    for (l = 0; l < nl; ++l) {
+        double t = lag[l] * d.params.dt, tau = d.params.tau, mean = 0, m2 = 0, e, th;
+        if (t > tau) continue;
+        for (b = 0; b < NB; ++b) {
+            mean += vals[b][l];
+            m2 += vals[b][l] * vals[b][l];
+        }
+        mean /= NB;
+        e = sqrt((m2 / NB - mean * mean) / (NB - 1));
+        th = 6 * (t - tau * (1 - exp(-t / tau))) + 6 * t; /* kT = xi = xi' = 1 */
+        if (l % 3 == 0 || t == tau) NOTE("t = %.3f: MSD %.5f +- %.5f, eq. 32 %.5f (ratio %.4f)", t, mean, e, th, mean / th);
+        if (!t_quick)
+            CHECK(fabs(mean / th - 1) < 0.03 && fabs(mean - th) < 4 * e + 0.03 * th,
+                  "t = %g: %g +- %g vs %g", t, mean, e, th);
+    }
+    free(xyz);
+    free(mem);
+    hcbd_world_destroy(&w);
+}
+
+/* Classical BD of free particles: MSD = 6 D0 t exactly (the noise
+   prefactor: sqrt(kT dt / xi) instead of sqrt(2 kT dt / xi) fails). */
+void test_bd_free_diffusion(void)
+{
+    enum { N = 1000, B = 10, LEV = 3, NB = 10 };
+    hcbd_world_def d = scene(N, 0.24);
+    hcbd_world w;
+    size_t bytes = hcbd_msd_bytes(N, B, LEV);
+    void *mem = malloc(bytes);
+    double *xyz = (double *)malloc(3 * N * sizeof(double)), vals[NB][32], lag[32];
+    int b, s, nl = 0, l;
+    hcbd_msd m;
+    d.params.dynamics = HCBD_DYN_BD;
+    d.params.potential = HCBD_POT_IDEAL;
+    d.params.xi = 2.0;
+    d.params.kT = 1.5;
+    d.params.dt = 1e-3;
+    if (!make_world(&w, &d)) return;
+    hcbd_world_place_random(&w, N);
+    for (b = 0; b < NB; ++b) {
+        hcbd_msd_init(&m, N, B, LEV, mem, bytes);
+        for (s = 0; s < 1000; ++s) {
+            hcbd_get_positions(&w, xyz, 1);
+            hcbd_msd_add(&m, xyz);
+            run(&w, 1);
+        }
+        nl = hcbd_msd_result(&m, lag, vals[b], NULL, 32);
+    }
+    for (l = 0; l < nl; ++l) {
+        double t = lag[l] * d.params.dt, mean = 0, m2 = 0, e, th = 6 * 1.5 / 2.0 * t;
+        for (b = 0; b < NB; ++b) {
+            mean += vals[b][l];
+            m2 += vals[b][l] * vals[b][l];
+        }
+        mean /= NB;
+        e = sqrt((m2 / NB - mean * mean) / (NB - 1));
+        CHECK(fabs(mean - th) < 4 * e && e < 0.05 * th, "t = %g: %g +- %g vs 6 D0 t = %g", t, mean, e, th);
+    }
+    free(xyz);
+    free(mem);
+    hcbd_world_destroy(&w);
+}
