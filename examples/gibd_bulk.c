@@ -28,6 +28,7 @@
 
    Arguments are key=value (see usage()).  The summary at the end is one
    key=value per line. */
+#define _POSIX_C_SOURCE 200809L /* clock_gettime, mkdir under -std=c99 */
 #include "../hcbd.h"
 #include <math.h>
 #include <stdio.h>

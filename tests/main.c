@@ -1,5 +1,6 @@
 /* Test runner: runs every registered test (or those whose name contains
    argv[1]); the last line is "N passed, N failed". */
+#define _POSIX_C_SOURCE 200809L /* clock_gettime, mkdir under -std=c99 */
 #include "test.h"
 #include <time.h>
 

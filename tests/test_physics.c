@@ -12,12 +12,13 @@ static void temperature_run(double dt, double *bias, double *err, double *pred)
 {
     hcbd_world_def d = scene(1000, 0.24);
     hcbd_world w;
-    int nsamp = t_quick ? 400 : 4000, every = 4 * (int)(1e-3 / dt + 0.5), k;
+    int nsamp = t_quick ? 400 : 2000, every = 4 * (int)(1e-3 / dt + 0.5), k;
     double *T = (double *)malloc(nsamp * sizeof(double)), sf = 0, out[3], mean;
     d.params.potential = HCBD_POT_IDEAL;
     d.params.tau = 1e-2;
     d.params.dt = dt;
     d.params.seed = 77;
+    d.params.skin = 1.2; /* Brownian steps of 0.08: a thin skin rebuilds every step */
     if (!make_world(&w, &d)) return;
     hcbd_world_place_random(&w, 1000);
     run(&w, 20 * every);
@@ -214,6 +215,7 @@ void test_msd_ideal_gibd(void)
     d.params.potential = HCBD_POT_IDEAL;
     d.params.tau = 0.1;
     d.params.dt = 1e-3;
+    d.params.skin = 1.2;
     if (!make_world(&w, &d)) return;
     hcbd_world_place_random(&w, N);
     run(&w, 1000);
