@@ -207,7 +207,7 @@ typedef struct hcbd_world {
     int64_t step;
     /* derived constants */
     double m, inv_m, w0, cw, cf, rho_norm, rlist, cutmax;
-    double star_a, star_b, star_s;
+    double star_a, star_b, star_s, star_ab, star_s_sigma;
     int has_pairs, has_fext, has_noise, gibd;
     /* statistics */
     int64_t n_rebuilds, n_table_clamped;
@@ -807,10 +807,13 @@ static inline double hcbd__table(const hcbd_world *w, const double *t, double r)
 static inline double hcbd__force_over_r(const hcbd_world *w, double r, double r2)
 {
     if (w->p.potential == HCBD_POT_STAR) {
-        double q = r / w->p.sigma;
-        if (q <= 1.0) return w->star_a / r2;
-        return w->star_a * w->star_b * exp(-w->star_s * (q - 1.0)) *
-               (1.0 / (q * q) + w->star_s / q) / (w->p.sigma * r);
+        /* outer branch: a b e^{-s(q-1)} (1/q^2 + s/q) / (sigma r), written
+           with one division */
+        double ir;
+        if (r <= w->p.sigma) return w->star_a / r2;
+        ir = 1.0 / r;
+        return w->star_ab * exp(w->star_s - w->star_s_sigma * r) *
+               (w->p.sigma * ir + w->star_s) * ir * ir;
     }
     return hcbd__table(w, w->tab_F, r) / r;
 }
@@ -990,6 +993,8 @@ hcbd_result hcbd_world_init(hcbd_world *w, const hcbd_world_def *def, void *mem,
     w->star_a = p->star_eps * (5.0 / 18.0) * pow(p->f, 1.5);
     w->star_b = 1.0 / (1.0 + 0.5 * sqrt(p->f));
     w->star_s = 0.5 * sqrt(p->f);
+    w->star_ab = w->star_a * w->star_b;
+    w->star_s_sigma = w->star_s / p->sigma;
     w->has_pairs = hcbd__needs_pairs(p);
     w->has_fext = p->fext[0] != 0.0 || p->fext[1] != 0.0 || p->fext[2] != 0.0;
     w->has_noise = p->kT > 0.0;
@@ -1041,10 +1046,17 @@ void hcbd_world_destroy(hcbd_world *w)
     w->n = 0;
 }
 
-static void hcbd__wrap(double L, double *x, int32_t *img)
+static inline void hcbd__wrap(double L, double *x, int32_t *img)
 {
-    double k = floor(*x / L);
-    if (k != 0.0) {
+    if (*x >= 0.0 && *x < L) return;
+    if (*x >= L && *x < 2.0 * L) { /* the step loop's case: one box at most */
+        *x -= L;
+        *img += 1;
+    } else if (*x < 0.0 && *x >= -L) {
+        *x += L;
+        *img -= 1;
+    } else {
+        double k = floor(*x / L);
         *x -= k * L;
         *img += (int32_t)k;
     }
@@ -1188,11 +1200,11 @@ hcbd_result hcbd_world_set_velocities(hcbd_world *w, const double *v)
 }
 
 /* >>neighbour search */
+/* Minimum image of a difference of two wrapped coordinates (|d| < L). */
 static inline double hcbd__mi(double d, double L)
 {
-    if (d > 0.5 * L) return d - L;
-    if (d < -0.5 * L) return d + L;
-    return d;
+    double h = 0.5 * L;
+    return d > h ? d - L : (d < -h ? d + L : d);
 }
 
 static int hcbd__cell_index(const hcbd_world *w, int i)
@@ -1243,14 +1255,17 @@ static void hcbd__permute(hcbd_world *w)
 }
 
 /* Scans the cells around particle i for partners j with id_j > id_i within
-   the list range; writes their slots to out (if not NULL), returns the
-   count. */
-static int hcbd__scan(const hcbd_world *w, int i, int32_t *out)
+   the list range; writes up to room of their slots to out (if not NULL)
+   and returns the count, which may exceed room. */
+static int hcbd__scan(const hcbd_world *w, int i, int32_t *out, int room)
 {
     int c[3], d, cnt = 0, o0, o1, o2, lo[3], hi[3];
     const double rl2 = w->rlist * w->rlist;
     const double xi = w->x[i], yi = w->y[i], zi = w->z[i];
+    const double L0 = w->p.L[0], L1 = w->p.L[1], L2 = w->p.L[2];
     const int32_t idi = w->id[i];
+    const int32_t *HCBD__RESTRICT perm = w->perm, *HCBD__RESTRICT id = w->id;
+    const hcbd_real *HCBD__RESTRICT x = w->x, *HCBD__RESTRICT y = w->y, *HCBD__RESTRICT z = w->z;
     int ci = hcbd__cell_index(w, i);
     c[2] = ci % w->nc[2];
     c[1] = (ci / w->nc[2]) % w->nc[1];
@@ -1268,15 +1283,16 @@ static int hcbd__scan(const hcbd_world *w, int i, int32_t *out)
                 int b = (c[1] + o1 + w->nc[1]) % w->nc[1];
                 int e = (c[2] + o2 + w->nc[2]) % w->nc[2];
                 int cc = (a * w->nc[1] + b) * w->nc[2] + e, k;
-                for (k = w->cell_start[cc]; k < w->cell_start[cc + 1]; ++k) {
-                    int j = w->perm[k];
+                const int k1 = w->cell_start[cc + 1];
+                for (k = w->cell_start[cc]; k < k1; ++k) {
+                    int j = perm[k];
                     double dx, dy, dz;
-                    if (w->id[j] <= idi) continue;
-                    dx = hcbd__mi(xi - w->x[j], w->p.L[0]);
-                    dy = hcbd__mi(yi - w->y[j], w->p.L[1]);
-                    dz = hcbd__mi(zi - w->z[j], w->p.L[2]);
+                    if (id[j] <= idi) continue;
+                    dx = hcbd__mi(xi - x[j], L0);
+                    dy = hcbd__mi(yi - y[j], L1);
+                    dz = hcbd__mi(zi - z[j], L2);
                     if (dx * dx + dy * dy + dz * dz < rl2) {
-                        if (out) out[cnt] = j;
+                        if (out && cnt < room) out[cnt] = j;
                         ++cnt;
                     }
                 }
@@ -1317,26 +1333,64 @@ static hcbd_result hcbd__rebuild(hcbd_world *w)
         hcbd__permute(w);
         for (i = 0; i < n; ++i) w->perm[i] = i;
     }
-    /* half list: counts, prefix sum, fill, order by partner id */
-    HCBD__OMP(omp parallel for num_threads(nt) schedule(static))
-    for (i = 0; i < n; ++i) w->nb_start[i + 1] = hcbd__scan(w, i, NULL);
-    w->nb_start[0] = 0;
-    for (i = 0; i < n; ++i) {
-        total += w->nb_start[i + 1];
-        if (total > w->max_pairs)
-            return hcbd__fail(&w->err, HCBD_ERR_CAPACITY, w->step, -1,
-                              "neighbour list needs more than max_pairs = %lld "
-                              "pairs (list range %g); raise hcbd_world_def.max_pairs",
-                              (long long)w->max_pairs, w->rlist);
-        w->nb_start[i + 1] = (int32_t)total;
-    }
-    w->npairs = total;
-    HCBD__OMP(omp parallel for num_threads(nt) schedule(static))
-    for (i = 0; i < n; ++i) {
-        int32_t p0 = w->nb_start[i], k, cnt;
-        cnt = hcbd__scan(w, i, w->nb_j + p0);
-        hcbd__sort_by_id(w->id, w->nb_j + p0, cnt, NULL);
-        for (k = 0; k < cnt; ++k) w->pair_i[p0 + k] = i;
+    /* half list in one scan: each thread lists its contiguous share of
+       particles into its own slice of rev_p (unused until the reverse
+       lists are built); then prefix sums and a compacting copy.  Only if a
+       slice overflows are the cells scanned a second time. */
+    {
+        int overflow = 0;
+        HCBD__OMP(omp parallel num_threads(nt) reduction(max:overflow))
+        {
+            int tid = 0, nth = 1, a, b, ii, ovf = 0;
+            int64_t pos, end;
+#ifdef _OPENMP
+            tid = omp_get_thread_num();
+            nth = omp_get_num_threads();
+#endif
+            a = (int)((int64_t)n * tid / nth);
+            b = (int)((int64_t)n * (tid + 1) / nth);
+            pos = w->max_pairs * tid / nth;
+            end = w->max_pairs * (tid + 1) / nth;
+            for (ii = a; ii < b; ++ii) {
+                /* a particle has at most n - 1 partners */
+                int room = end - pos < n ? (int)(end - pos) : n;
+                int cnt = hcbd__scan(w, ii, w->rev_p + pos, room);
+                if (cnt > room) {
+                    ovf = 1;
+                    break;
+                }
+                w->cell_of[ii] = (int32_t)pos; /* cell_of is free now */
+                w->nb_start[ii + 1] = cnt;
+                pos += cnt;
+            }
+            /* the private copy of a max-reduction starts at INT_MIN */
+            overflow = ovf;
+        }
+        w->nb_start[0] = 0;
+        if (overflow) {
+            HCBD__OMP(omp parallel for num_threads(nt) schedule(static))
+            for (i = 0; i < n; ++i) w->nb_start[i + 1] = hcbd__scan(w, i, NULL, 0);
+        }
+        for (i = 0; i < n; ++i) {
+            total += w->nb_start[i + 1];
+            if (total > w->max_pairs)
+                return hcbd__fail(&w->err, HCBD_ERR_CAPACITY, w->step, -1,
+                                  "neighbour list needs more than max_pairs = %lld "
+                                  "pairs (list range %g); raise hcbd_world_def.max_pairs",
+                                  (long long)w->max_pairs, w->rlist);
+            w->nb_start[i + 1] = (int32_t)total;
+        }
+        w->npairs = total;
+        HCBD__OMP(omp parallel for num_threads(nt) schedule(static))
+        for (i = 0; i < n; ++i) {
+            int32_t p0 = w->nb_start[i], k, cnt = w->nb_start[i + 1] - p0;
+            if (overflow)
+                hcbd__scan(w, i, w->nb_j + p0, cnt);
+            else
+                memcpy(w->nb_j + p0, w->rev_p + w->cell_of[i], (size_t)cnt * sizeof(int32_t));
+            hcbd__sort_by_id(w->id, w->nb_j + p0, cnt, NULL);
+            for (k = 0; k < cnt; ++k) w->pair_i[p0 + k] = i;
+        }
     }
     /* reverse incidences: for each j the pairs it is the partner of, in
        increasing owner id */
@@ -1506,6 +1560,13 @@ static hcbd_result hcbd__integrate(hcbd_world *w)
     const double L0 = w->p.L[0], L1 = w->p.L[1], L2 = w->p.L[2];
     const double lim2 = w->step_limit * w->step_limit;
     const double gx = w->p.fext[0], gy = w->p.fext[1], gz = w->p.fext[2];
+    const hcbd_real *HCBD__RESTRICT bFx = pot ? w->buf[w->bF] : NULL;
+    const hcbd_real *HCBD__RESTRICT bFy = pot ? w->buf[w->bF + 1] : NULL;
+    const hcbd_real *HCBD__RESTRICT bFz = pot ? w->buf[w->bF + 2] : NULL;
+    const hcbd_real *HCBD__RESTRICT bPx = gibd ? w->buf[w->bP] : NULL;
+    const hcbd_real *HCBD__RESTRICT bPy = gibd ? w->buf[w->bP + 1] : NULL;
+    const hcbd_real *HCBD__RESTRICT bPz = gibd ? w->buf[w->bP + 2] : NULL;
+    const hcbd_real *HCBD__RESTRICT bW = lag ? w->buf[w->bW] : NULL;
     double dmax = 0.0;
     int bad_step = INT_MAX, bad_nan = INT_MAX, i;
     (void)nt;
@@ -1519,19 +1580,19 @@ static hcbd_result hcbd__integrate(hcbd_world *w)
             F[0] = w->fx[i]; F[1] = w->fy[i]; F[2] = w->fz[i];
             for (q = w->rev_start[i]; q < w->rev_start[i + 1]; ++q) {
                 int32_t p = w->rev_p[q];
-                F[0] -= w->buf[w->bF][p];
-                F[1] -= w->buf[w->bF + 1][p];
-                F[2] -= w->buf[w->bF + 2][p];
+                F[0] -= bFx[p];
+                F[1] -= bFy[p];
+                F[2] -= bFz[p];
             }
         }
         if (gibd) {
             P[0] = w->px[i]; P[1] = w->py[i]; P[2] = w->pz[i];
             for (q = w->rev_start[i]; q < w->rev_start[i + 1]; ++q) {
                 int32_t p = w->rev_p[q];
-                P[0] -= w->buf[w->bP][p];
-                P[1] -= w->buf[w->bP + 1][p];
-                P[2] -= w->buf[w->bP + 2][p];
-                if (lag) ws += w->buf[w->bW][p];
+                P[0] -= bPx[p];
+                P[1] -= bPy[p];
+                P[2] -= bPz[p];
+                if (lag) ws += bW[p];
             }
         }
         if (fext) { F[0] += gx; F[1] += gy; F[2] += gz; }
