@@ -71,7 +71,10 @@
      Every per-particle sum runs over partners in increasing id order and
      skips pairs beyond the cut-off, so results depend on neither the thread
      count, nor the storage order (particles are re-sorted by cell at every
-     neighbour-list rebuild), nor when the list is rebuilt.
+     neighbour-list rebuild), nor when the list is rebuilt; observables sum
+     in id order too.  Across builds, bits agree only if the compiler may
+     not contract a*b+c into FMA: compile with -ffp-contract=off (the
+     Makefile does).
 
    ERRORS
      Every public function returns hcbd_result (HCBD_OK = 0).  On failure
@@ -210,7 +213,7 @@ typedef struct hcbd_world {
     double star_a, star_b, star_s, star_ab, star_s_sigma;
     int has_pairs, has_fext, has_noise, gibd;
     /* statistics */
-    int64_t n_rebuilds, n_table_clamped;
+    int64_t n_rebuilds, n_rescans; /* list builds; second scans after overflow */
     /* per-particle arrays (struct of arrays), storage order */
     hcbd_real *x, *y, *z;        /* positions in [0, L)                       */
     hcbd_real *vx, *vy, *vz;     /* background velocity (GI-BD)               */
@@ -264,7 +267,7 @@ hcbd_result hcbd_world_set_velocities(hcbd_world *w, const double *v);
    non-finite state, HCBD_ERR_CAPACITY
    when the neighbour list overflows; w->err names the step, the particle
    and the limit.  After a run-time error the state is that of the failed
-   step: restart from a saved state. */
+   step and should not be stepped further. */
 hcbd_result hcbd_step(hcbd_world *w, int nsteps);
 
 /* >>observables (cost nothing unless called) ------------------------------*/
@@ -538,7 +541,7 @@ hcbd_result hcbd_params_check(const hcbd_params *p, char *msg, size_t msg_size)
         return HCBD_ERR_NULL;
     }
     for (d = 0; d < 3; ++d) {
-        HCBD__CHECK(isfinite(p->L[d]) && p->L[d] > 0, Lname[d], p->L[d]);
+        HCBD__CHECK(isfinite(p->L[d]) && p->L[d] > 0 && p->L[d] < 1e12, Lname[d], p->L[d]);
         HCBD__CHECK(isfinite(p->fext[d]), Fname[d], p->fext[d]);
     }
     HCBD__CHECK(isfinite(p->dt) && p->dt > 0, "dt", p->dt);
@@ -713,6 +716,7 @@ static inline double hcbd__normal(const hcbd__zig *z, hcbd__gen *g)
 double hcbd_rng_normal(const hcbd_world *w, hcbd_rng *r)
 {
     hcbd__gen g;
+    if (!w || !w->zig || !r) return NAN;
     g.xo = r;
     g.sm = 0;
     return hcbd__normal(w->zig, &g);
@@ -753,6 +757,11 @@ static inline void hcbd__pair_noise(const hcbd_world *w, uint64_t key, double *z
 void hcbd_pair_normals(const hcbd_world *w, int64_t s, int32_t a, int32_t b,
                        double out[3])
 {
+    if (!out) return;
+    if (!w || !w->zig) {
+        out[0] = out[1] = out[2] = NAN;
+        return;
+    }
     hcbd__pair_noise(w, hcbd__pair_key(hcbd__step_key(w, s), a, b), out);
 }
 
@@ -840,11 +849,10 @@ static int hcbd__cells(const hcbd_params *p, int nc[3])
     int d, total = 1;
     double rl = hcbd__cutmax(p) + p->skin;
     for (d = 0; d < 3; ++d) {
-        int k = hcbd__needs_pairs(p) ? (int)floor(p->L[d] / rl) : 1;
-        if (k < 1) k = 1;
-        if (k > 1024) k = 1024;
-        nc[d] = k;
-        total *= k;
+        /* clamp in double before the cast; 256 cells per edge is plenty */
+        double k = hcbd__needs_pairs(p) ? floor(p->L[d] / rl) : 1.0;
+        nc[d] = k < 1.0 ? 1 : (k > 256.0 ? 256 : (int)k);
+        total *= nc[d];
     }
     return total;
 }
@@ -1042,8 +1050,8 @@ void hcbd_world_destroy(hcbd_world *w)
 {
     if (!w) return;
     if (w->owned_mem) HCBD_FREE(w->owned_mem);
-    w->owned_mem = NULL;
-    w->n = 0;
+    /* a destroyed world has no particles and no arrays to touch */
+    memset(w, 0, sizeof *w);
 }
 
 static inline void hcbd__wrap(double L, double *x, int32_t *img)
@@ -1098,11 +1106,18 @@ static hcbd_result hcbd__set_particles(hcbd_world *w, int n, hcbd__src *src)
         return hcbd__fail(&w->err, HCBD_ERR_PARAM, -1, -1,
                           "N = %d: GI-BD needs at least 2 particles", n);
     if (src->xyz)
-        for (i = 0; i < 3 * n; ++i)
+        for (i = 0; i < 3 * n; ++i) {
             if (!isfinite(src->xyz[i]))
                 return hcbd__fail(&w->err, HCBD_ERR_NONFINITE, -1, i / 3,
                                   "position %c of particle %d is %g",
                                   "xyz"[i % 3], i / 3, src->xyz[i]);
+            /* the periodic image counters are int32 */
+            if (fabs(src->xyz[i]) > 1e9 * w->p.L[i % 3])
+                return hcbd__fail(&w->err, HCBD_ERR_PARAM, -1, i / 3,
+                                  "position %c of particle %d is %g, more than 1e9 "
+                                  "box lengths from the box", "xyz"[i % 3], i / 3,
+                                  src->xyz[i]);
+        }
     w->n = n;
     for (i = 0; i < n; ++i) {
         double r[3];
@@ -1318,6 +1333,7 @@ static hcbd_result hcbd__rebuild(hcbd_world *w)
     int n = w->n, i, c, nt = w->p.threads;
     int64_t total = 0;
     (void)nt;
+    w->list_valid = 0; /* until the new list is complete */
     /* cells by counting sort */
     for (c = 0; c <= w->ncell; ++c) w->cell_start[c] = 0;
     for (i = 0; i < n; ++i) {
@@ -1368,6 +1384,7 @@ static hcbd_result hcbd__rebuild(hcbd_world *w)
         }
         w->nb_start[0] = 0;
         if (overflow) {
+            w->n_rescans++;
             HCBD__OMP(omp parallel for num_threads(nt) schedule(static))
             for (i = 0; i < n; ++i) w->nb_start[i + 1] = hcbd__scan(w, i, NULL, 0);
         }
@@ -1560,6 +1577,7 @@ static hcbd_result hcbd__integrate(hcbd_world *w)
     const double L0 = w->p.L[0], L1 = w->p.L[1], L2 = w->p.L[2];
     const double lim2 = w->step_limit * w->step_limit;
     const double gx = w->p.fext[0], gy = w->p.fext[1], gz = w->p.fext[2];
+    const int track = w->has_pairs; /* displacement since the list build */
     const hcbd_real *HCBD__RESTRICT bFx = pot ? w->buf[w->bF] : NULL;
     const hcbd_real *HCBD__RESTRICT bFy = pot ? w->buf[w->bF + 1] : NULL;
     const hcbd_real *HCBD__RESTRICT bFz = pot ? w->buf[w->bF + 2] : NULL;
@@ -1629,7 +1647,10 @@ static hcbd_result hcbd__integrate(hcbd_world *w)
             if (w->id[i] < bad_nan) bad_nan = w->id[i];
             continue;
         }
-        if (d2 > lim2 && w->id[i] < bad_step) bad_step = w->id[i];
+        if (d2 > lim2) {
+            if (w->id[i] < bad_step) bad_step = w->id[i];
+            continue;
+        }
         hcbd__wrap(L0, &r[0], &w->ix[i]);
         hcbd__wrap(L1, &r[1], &w->iy[i]);
         hcbd__wrap(L2, &r[2], &w->iz[i]);
@@ -1637,7 +1658,7 @@ static hcbd_result hcbd__integrate(hcbd_world *w)
         if (w->x[i] >= (hcbd_real)L0) w->x[i] = 0;
         if (w->y[i] >= (hcbd_real)L1) w->y[i] = 0;
         if (w->z[i] >= (hcbd_real)L2) w->z[i] = 0;
-        {
+        if (track) {
             double ex = hcbd__mi(r[0] - w->x0[i], L0), ey = hcbd__mi(r[1] - w->y0[i], L1);
             double ez = hcbd__mi(r[2] - w->z0[i], L2), e2 = ex * ex + ey * ey + ez * ez;
             if (e2 > dmax) dmax = e2;
@@ -1712,10 +1733,12 @@ hcbd_result hcbd_get_velocities(const hcbd_world *w, double *v)
 
 void hcbd_momentum(const hcbd_world *w, double p[3])
 {
-    int i;
+    int k;
+    if (!p) return;
     p[0] = p[1] = p[2] = 0.0;
     if (!w || !w->gibd) return;
-    for (i = 0; i < w->n; ++i) {
+    for (k = 0; k < w->n; ++k) { /* id order: storage order changes no bit */
+        int i = w->slot[k];
         p[0] += w->m * w->vx[i];
         p[1] += w->m * w->vy[i];
         p[2] += w->m * w->vz[i];
@@ -1725,10 +1748,11 @@ void hcbd_momentum(const hcbd_world *w, double p[3])
 double hcbd_temperature(const hcbd_world *w)
 {
     double p[3], s = 0.0;
-    int i;
+    int k;
     if (!w || !w->gibd || w->n < 2) return 0.0;
     hcbd_momentum(w, p);
-    for (i = 0; i < w->n; ++i) {
+    for (k = 0; k < w->n; ++k) {
+        int i = w->slot[k];
         double a = w->vx[i] - p[0] / (w->m * w->n), b = w->vy[i] - p[1] / (w->m * w->n);
         double c = w->vz[i] - p[2] / (w->m * w->n);
         s += a * a + b * b + c * c;
@@ -1743,11 +1767,12 @@ typedef void (*hcbd__pair_fn)(void *ctx, int i, int j, double dx, double dy,
 static hcbd_result hcbd__for_pairs(hcbd_world *w, double rmax, hcbd__pair_fn fn,
                                    void *ctx)
 {
-    int i;
+    int k;
     double r2max = rmax * rmax;
     hcbd_result r = hcbd__ensure_list(w);
     if (r != HCBD_OK) return r;
-    for (i = 0; i < w->n; ++i) {
+    for (k = 0; k < w->n; ++k) { /* owners in id order, partners in id order */
+        int i = w->slot[k];
         int32_t p;
         for (p = w->nb_start[i]; p < w->nb_start[i + 1]; ++p) {
             int j = w->nb_j[p];
@@ -1849,14 +1874,15 @@ hcbd_result hcbd_friction_average(hcbd_world *w, int nk, double out[3])
 
 hcbd_result hcbd_transverse_current(const hcbd_world *w, int nk, double out[12])
 {
-    int i, d;
+    int i, k, d;
     if (!w || !out) return HCBD_ERR_NULL;
     for (i = 0; i < 12; ++i) out[i] = 0.0;
     if (!w->gibd) return HCBD_OK;
-    for (i = 0; i < w->n; ++i) {
+    for (k = 0; k < w->n; ++k) {
+        int q = w->slot[k];
         double r[3], v[3];
-        r[0] = w->x[i]; r[1] = w->y[i]; r[2] = w->z[i];
-        v[0] = w->vx[i]; v[1] = w->vy[i]; v[2] = w->vz[i];
+        r[0] = w->x[q]; r[1] = w->y[q]; r[2] = w->z[q];
+        v[0] = w->vx[q]; v[1] = w->vy[q]; v[2] = w->vz[q];
         for (d = 0; d < 3; ++d) {
             double ph = 2.0 * HCBD__PI * nk * r[d] / w->p.L[d];
             double c = cos(ph), s = -sin(ph);
@@ -1933,6 +1959,8 @@ hcbd_result hcbd_rdf_sample(hcbd_rdf *g, hcbd_world *w)
     double V;
     int i, j;
     if (!g || !w) return HCBD_ERR_NULL;
+    if (w->n < 2)
+        return hcbd__fail(&w->err, HCBD_ERR_STATE, w->step, -1, "g(r) needs particles");
     if (g->rmax > 0.5 * w->p.L[0] || g->rmax > 0.5 * w->p.L[1] || g->rmax > 0.5 * w->p.L[2])
         return hcbd__fail(&w->err, HCBD_ERR_PARAM, w->step, -1,
                           "g(r) rmax = %g exceeds half the shortest box edge", g->rmax);
@@ -1959,6 +1987,7 @@ hcbd_result hcbd_rdf_sample(hcbd_rdf *g, hcbd_world *w)
 void hcbd_rdf_result(const hcbd_rdf *g, double *r, double *gr)
 {
     int b;
+    if (!g) return;
     for (b = 0; b < g->nbins; ++b) {
         double r0 = b * g->dr, r1 = r0 + g->dr;
         double shell = 4.0 / 3.0 * HCBD__PI * (r1 * r1 * r1 - r0 * r0 * r0);
@@ -2069,7 +2098,7 @@ int hcbd_mtcorr_result(const hcbd_mtcorr *c, int64_t min_count, double *lag,
 {
     int k, j, out = 0, ktop;
     double scale = 1.0;
-    if (!c) return 0;
+    if (!c || max < 0) return 0;
     ktop = c->finalized ? c->kmax : c->kmax + 1;
     if (ktop < 1) ktop = 1;
     for (k = 0; k < ktop && k < c->levels; ++k) {
@@ -2090,10 +2119,20 @@ int hcbd_mtcorr_result(const hcbd_mtcorr *c, int64_t min_count, double *lag,
 }
 
 /* >>mean-squared displacement, order-n */
+/* B^(levels-1) samples must fit in int64 */
+static int hcbd__msd_ok(int n, int B, int levels)
+{
+    double span = 1.0;
+    int l;
+    if (n < 1 || B < 2 || levels < 1 || n > INT32_MAX / 3) return 0;
+    for (l = 1; l < levels; ++l) span *= B;
+    return span < 9e18;
+}
+
 size_t hcbd_msd_bytes(int n, int B, int levels)
 {
     size_t off = 0, L = (size_t)levels;
-    if (n < 1 || B < 2 || levels < 1) return 0;
+    if (!hcbd__msd_ok(n, B, levels)) return 0;
     hcbd__take(NULL, &off, L * B * 3 * (size_t)n * sizeof(double), NULL);
     hcbd__take(NULL, &off, L * B * sizeof(double), NULL);
     hcbd__take(NULL, &off, L * B * sizeof(int64_t), NULL);
@@ -2108,7 +2147,7 @@ hcbd_result hcbd_msd_init(hcbd_msd *d, int n, int B, int levels, void *mem,
     char *base;
     void *q;
     if (!d || !mem) return HCBD_ERR_NULL;
-    if (n < 1 || B < 2 || levels < 1) return HCBD_ERR_PARAM;
+    if (!hcbd__msd_ok(n, B, levels)) return HCBD_ERR_PARAM;
     if (bytes < hcbd_msd_bytes(n, B, levels)) return HCBD_ERR_MEMORY;
     memset(mem, 0, bytes);
     base = (char *)mem;
@@ -2126,13 +2165,14 @@ hcbd_result hcbd_msd_init(hcbd_msd *d, int n, int B, int levels, void *mem,
 
 void hcbd_msd_add(hcbd_msd *d, const double *xyz)
 {
-    int l, j, k;
+    int l, j;
     int64_t every = 1;
     size_t n3;
     if (!d || !xyz) return;
     n3 = 3 * (size_t)d->n;
-    for (l = 0; l < d->levels; ++l, every *= d->B) {
+    for (l = 0; l < d->levels; ++l) {
         double *slot;
+        if (l > 0) every *= d->B;
         if (d->nsamples % every) break;
         slot = d->pos + ((size_t)l * d->B + d->head[l]) * n3;
         memcpy(slot, xyz, n3 * sizeof(double));
@@ -2140,7 +2180,8 @@ void hcbd_msd_add(hcbd_msd *d, const double *xyz)
         for (j = 1; j < d->fill[l]; ++j) {
             const double *old = d->pos + ((size_t)l * d->B + (d->head[l] - j + d->B) % d->B) * n3;
             double s = 0.0;
-            for (k = 0; k < (int)n3; ++k) s += (xyz[k] - old[k]) * (xyz[k] - old[k]);
+            size_t k;
+            for (k = 0; k < n3; ++k) s += (xyz[k] - old[k]) * (xyz[k] - old[k]);
             d->sum[(size_t)l * d->B + j] += s / d->n;
             d->count[(size_t)l * d->B + j]++;
         }
@@ -2154,7 +2195,7 @@ int hcbd_msd_result(const hcbd_msd *d, double *lag, double *msd, int64_t *count,
 {
     int l, j, out = 0;
     double scale = 1.0;
-    if (!d) return 0;
+    if (!d || max < 0) return 0;
     for (l = 0; l < d->levels; ++l, scale *= d->B)
         for (j = 1; j < d->B; ++j) {
             int64_t n = d->count[(size_t)l * d->B + j];

@@ -225,6 +225,22 @@ static double late_rate(const double *lag, const double *c, int n, double dt)
     return -(m * sxy - sx * sy) / (m * sxx - sx * sx);
 }
 
+/* Long-time diffusion: slope / 6 of the MSD over lags t > 10 tau with at
+   least 20 time origins; NaN when the run is too short.  dts is the time
+   between MSD samples. */
+static double long_time_D(const hcbd_msd *msd, double dts, double tau)
+{
+    double lag[128], mm[128], sx = 0, sy = 0, sxx = 0, sxy = 0;
+    int64_t cnt[128];
+    int n = hcbd_msd_result(msd, lag, mm, cnt, 128), k, m = 0;
+    for (k = 0; k < n; ++k) {
+        double t = lag[k] * dts;
+        if (t < 10 * tau || cnt[k] < 20) continue;
+        sx += t; sy += mm[k]; sxx += t * t; sxy += t * mm[k]; ++m;
+    }
+    return m >= 2 ? (m * sxy - sx * sy) / (m * sxx - sx * sx) / 6 : NAN;
+}
+
 /* MSD at time t by log-log interpolation between the bracketing lags. */
 static double msd_at(const double *lag, const double *m, int n, double dt, double t)
 {
@@ -314,6 +330,7 @@ int main(int argc, char **argv)
         for (k = 0; k < 3; ++k)
             hcbd_mtcorr_init(&ct[b][k], 12, PC, 2, LEVC, (char *)mem_ct + (b * 3 + k) * bytes_ct, bytes_ct);
         for (s = 0; s < blk_steps; ++s) {
+            const int g = b * blk_steps + s; /* samples evenly spaced across blocks */
             if (gibd) {
                 double j[12];
                 for (k = 0; k < 3; ++k) {
@@ -322,8 +339,8 @@ int main(int argc, char **argv)
                 }
                 hcbd_get_velocities(&w, vel);
                 hcbd_mtcorr_add(&vacf, vel);
-                if (s % 10 == 0) { Tb += hcbd_temperature(&w); ++nTb; }
-                if (s % 50 == 0) {
+                if (g % 10 == 0) { Tb += hcbd_temperature(&w); ++nTb; }
+                if (g % 50 == 0) {
                     double out[3];
                     int i, a;
                     hcbd_friction_average(&w, 1, out);
@@ -344,17 +361,17 @@ int main(int argc, char **argv)
                     ++nmb;
                 }
             }
-            if (p->potential != HCBD_POT_IDEAL && s % 5 == 0) {
+            if (p->potential != HCBD_POT_IDEAL && g % 5 == 0) {
                 double st[9], o[3];
                 hcbd_stress(&w, st);
                 o[0] = st[1]; o[1] = st[2]; o[2] = st[5];
                 hcbd_mtcorr_add(&gt, o);
             }
-            if (s % 5 == 0) {
+            if (g % 5 == 0) {
                 hcbd_get_positions(&w, xyz, 1);
                 hcbd_msd_add(&msd, xyz);
             }
-            if (s % 200 == 0) hcbd_rdf_sample(&rdf, &w);
+            if (g % 200 == 0) hcbd_rdf_sample(&rdf, &w);
             if (hcbd_step(&w, 1) != HCBD_OK) {
                 fprintf(stderr, "gibd_bulk: %s\n", w.err.msg);
                 return 1;
@@ -441,8 +458,10 @@ int main(int argc, char **argv)
             hcbd_mtcorr_finalize(&vacf);
             nv = hcbd_mtcorr_result(&vacf, 10, lagv, cv, NULL, 512);
             fprintf(f, "t,vacf,tail_eq34\n");
+            /* eq. 34 with the measured long-time diffusion of the run */
+            double D = long_time_D(&msd, 5 * p->dt, p->tau);
             for (k = 0; k < nv; ++k) {
-                double t = lagv[k] * p->dt, nu_e = eff / nmf, D = p->kT / p->xi + p->kT / p->xip;
+                double t = lagv[k] * p->dt, nu_e = eff / nmf;
                 /* 3 cv: the correlator averages over the 3N components */
                 fprintf(f, "%.6g,%.6g,%.6g\n", t, 3 * cv[k],
                         t > 0 ? 2 * p->kT / (c.density * w.m * pow(4 * PI * (nu_e + D) * t, 1.5)) : NAN);
@@ -503,19 +522,7 @@ int main(int argc, char **argv)
             printf("msd_ratio_at_tau=%.4f\n", mt / th_tau);
             if (tau < 5 * p->dt) printf("# msd_ratio_at_tau: tau is shorter than the MSD sampling interval\n");
         }
-        /* long-time slope: the last lags with at least 20 origins */
-        {
-            double sx = 0, sy = 0, sxx = 0, sxy = 0;
-            int64_t cnt[128];
-            int m2 = 0;
-            n = hcbd_msd_result(&msd, lag, mm, cnt, 128);
-            for (k = 0; k < n; ++k) {
-                double t = lag[k] * 5 * p->dt;
-                if (t < 10 * tau || cnt[k] < 20 || t < 0.2 * c.steps * p->dt * 0.1) continue;
-                sx += t; sy += mm[k]; sxx += t * t; sxy += t * mm[k]; ++m2;
-            }
-            if (m2 >= 2) D_meas = (m2 * sxy - sx * sy) / (m2 * sxx - sx * sx) / 6;
-        }
+        D_meas = long_time_D(&msd, 5 * p->dt, tau);
         printf("D_theory=%.6g\nD_measured=%.6g\nD_ratio=%.4f\n", D_th, D_meas, D_meas / D_th);
     } else {
         printf("T_ratio=nan\n# classical BD carries no background velocity\n");

@@ -2,12 +2,16 @@
    value; nothing is changed. */
 #include "test.h"
 
+/* The message must name the field followed by its value ("xi =" is not
+   satisfied by "xip = ..."), or, for a NULL pointer, the field itself. */
 static void expect(hcbd_world_def d, hcbd_result code, const char *name)
 {
     hcbd_world w;
+    char key[64];
     hcbd_result r = hcbd_world_create(&w, &d);
+    snprintf(key, sizeof key, code == HCBD_ERR_NULL ? "%s " : "%s = ", name);
     CHECK(r == code, "%s: got %s (%s)", name, hcbd_result_name(r), w.err.msg);
-    CHECK(strstr(w.err.msg, name) != NULL, "message does not name %s: %s", name, w.err.msg);
+    CHECK(strstr(w.err.msg, key) != NULL, "message does not name %s: %s", name, w.err.msg);
     if (r == HCBD_OK) hcbd_world_destroy(&w);
 }
 

@@ -155,20 +155,35 @@ void test_galilean_invariance(void)
     hcbd_world_destroy(&b);
 }
 
+/* Checksum of the state and of the observables' bits. */
 static uint64_t run_hash(hcbd_world_def d, int steps)
 {
     hcbd_world w;
     uint64_t h;
+    double obs[9 + 12 + 3 + 3 + 1];
+    int k;
     if (!make_world(&w, &d)) return 0;
     hcbd_world_place_lattice(&w, d.capacity);
     run(&w, steps);
     h = hcbd_state_checksum(&w);
+    hcbd_stress(&w, obs);
+    hcbd_transverse_current(&w, 1, obs + 9);
+    hcbd_momentum(&w, obs + 21);
+    if (w.gibd) hcbd_friction_average(&w, 1, obs + 24);
+    else obs[24] = obs[25] = obs[26] = 0;
+    obs[27] = hcbd_temperature(&w);
+    for (k = 0; k < 28; ++k) {
+        uint64_t u;
+        memcpy(&u, &obs[k], 8);
+        h = (h ^ u) * 0x100000001B3ULL;
+    }
     hcbd_world_destroy(&w);
     return h;
 }
 
-/* Same seed: same bits; any thread count, with or without storage
-   sorting: same bits; another seed: other bits. */
+/* Same seed: same bits, in the state and in the observables; any thread
+   count, with or without storage sorting: same bits; another seed: other
+   bits. */
 void test_determinism(void)
 {
     int lag, dyn;
@@ -253,6 +268,31 @@ void test_lagged_density(void)
     tb = hcbd_temperature(&b);
     CHECK(fabs(pb[0]) < 1e-12 && fabs(pb[1]) < 1e-12, "lagged momentum %g %g", pb[0], pb[1]);
     CHECK(hcbd_state_checksum(&a) != hcbd_state_checksum(&b), "lag has no effect");
+    /* the densities held for the next step are those of the positions
+       before the last step (2014's lag), by an independent O(N^2) sum */
+    {
+        static double xyz[3 * 512];
+        double w0 = hcbd_wendland(0, 2.5), nrm = 1 / (1 + w0 / 0.24), maxdev = 0;
+        int i, j, c;
+        hcbd_get_positions(&b, xyz, 0);
+        run(&b, 1);
+        for (i = 0; i < 512; ++i) {
+            double sw = w0;
+            for (j = 0; j < 512; ++j) {
+                double r2 = 0;
+                if (j == i) continue;
+                for (c = 0; c < 3; ++c) {
+                    double dx = xyz[3 * i + c] - xyz[3 * j + c];
+                    dx -= b.p.L[c] * round(dx / b.p.L[c]);
+                    r2 += dx * dx;
+                }
+                sw += hcbd_wendland(sqrt(r2), 2.5);
+            }
+            sw *= b.m * nrm;
+            if (fabs(b.rho[b.slot[i]] / sw - 1) > maxdev) maxdev = fabs(b.rho[b.slot[i]] / sw - 1);
+        }
+        CHECK(maxdev < 1e-12, "lagged densities differ from those of the previous step by %g", maxdev);
+    }
     NOTE("T exact %.4f, lagged %.4f", ta, tb);
     hcbd_world_destroy(&a);
     hcbd_world_destroy(&b);

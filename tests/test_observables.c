@@ -57,14 +57,17 @@ void test_multiple_tau_correlator(void)
         CHECK(n == cnt[k], "lag %g: count %lld, direct %lld", lag[k], (long long)cnt[k], (long long)n);
         CHECK(fabs(sum / n - c[k]) < 1e-9 * (1 + fabs(c[k])), "lag %g: %g vs direct %g", lag[k],
               c[k], sum / n);
-        /* against the exact correlation, for lags where the block
-           smoothing is small (lag >= 8 blocks) and counts are decent */
-        if (s / b >= P / M && cnt[k] > 200 && s < 400) {
-            /* error of an AR(1) covariance estimate ~ sqrt((1+a^2)/(1-a^2) / n) */
-            double err = sqrt((1 + a * a) / (1 - a * a) / (double)(N - s));
-            double blockfac = b > 1 ? 1.0 : 1.0;
-            CHECK(fabs(c[k] - pow(a, s) * blockfac) < 5 * err + 0.02 * (b > 1),
-                  "lag %d: %g vs a^s %g (err %g)", s, c[k], pow(a, s), err);
+        /* against the exact correlation of block averages of length b:
+           (1/b^2) sum_{u,v<b} a^|s + v - u|; error of an AR(1) covariance
+           estimate from n products ~ sqrt((1 + a^2)/(1 - a^2) / n) */
+        if (cnt[k] > 100) {
+            double ex = 0, err = sqrt((1 + a * a) / (1 - a * a) / (double)cnt[k]);
+            int u, v;
+            for (u = 0; u < b; ++u)
+                for (v = 0; v < b; ++v) ex += pow(a, fabs((double)(s + v - u)));
+            ex /= (double)b * b;
+            CHECK(fabs(c[k] - ex) < 5 * err, "lag %d (blocks of %d): %g vs exact %g (err %g)", s, b,
+                  c[k], ex, err);
             ++checked;
         }
     }

@@ -170,7 +170,9 @@ void test_transverse_current_initial_decay(void)
 
 /* For ideal particles with the 2016 density the configurational friction
    average gives nu_meanfield = Rc^2/(28 tau) within 5 % (MODEL 3, 10); the
-   friction of an ideal gas is a property of uncorrelated positions. */
+   friction of an ideal gas is a property of uncorrelated positions.  The
+   band is the model's: density fluctuations make <1/rho> differ from
+   1/<rho> (a few %), and k = 2 pi/L is not yet small against 1/Rc. */
 void test_nu_meanfield_ideal(void)
 {
     hcbd_world_def d = scene(512, 0.24);
@@ -200,7 +202,10 @@ void test_nu_meanfield_ideal(void)
 }
 
 /* MSD of ideal particles (2016 eq. 32) for t <= tau, where the zeroth-order
-   result holds; the long-time ratio D_measured/D_theory is reported. */
+   result holds.  Eq. 32 neglects momentum flowing back from neighbours, a
+   systematic effect that grows with t (MODEL 3), so the 3 % band is the
+   model's accuracy claim, checked on top of the statistical error; the
+   long-time ratio D_measured/D_theory (eq. 33) is reported. */
 void test_msd_ideal_gibd(void)
 {
     enum { N = 500, B = 10, LEV = 3, NB = 10 };
@@ -227,6 +232,15 @@ void test_msd_ideal_gibd(void)
             run(&w, 1);
         }
         nl = hcbd_msd_result(&m, lag, vals[b], NULL, 32);
+    }
+    {
+        /* slope over the last decade of lags, t = 5-9 tau */
+        double m0 = 0, m1 = 0, t0 = lag[nl - 5] * d.params.dt, t1 = lag[nl - 1] * d.params.dt;
+        for (b = 0; b < NB; ++b) {
+            m0 += vals[b][nl - 5] / NB;
+            m1 += vals[b][nl - 1] / NB;
+        }
+        NOTE("D_measured / D_theory (eq. 33, t = %.2f-%.2f) = %.3f", t0, t1, (m1 - m0) / (6 * (t1 - t0)) / 2.0);
     }
     for (l = 0; l < nl; ++l) {
         double t = lag[l] * d.params.dt, tau = d.params.tau, mean = 0, m2 = 0, e, th;
@@ -297,7 +311,8 @@ void test_bd_free_diffusion(void)
    configurational temperature <sum |F_i|^2> / <sum lap_i U>, computed
    here from positions with the analytic derivatives of the star
    potential: the difference GI-BD minus BD at the same dt isolates the
-   coupling, and halving dt must halve it. */
+   coupling; it must be resolved at dt = 2e-4, drop significantly at
+   dt = 1e-4, and halve to first order. */
 typedef struct {
     double g[50], gerr[50], tc, tcerr;
 } gr_result;
@@ -381,8 +396,8 @@ void test_gr_gibd_equals_bd(void)
     gr_result bd1 = gr_run(1, 1e-4, 0, 60000 / q);
     gr_result gi = gr_run(0, 1e-4, 3.6e-2, 60000 / q);
     gr_result gs1 = gr_run(0, 1e-4, 3.6e-4, 30000 / q);
-    gr_result bd2 = gr_run(1, 5e-5, 0, 60000 / q);
-    gr_result gs2 = gr_run(0, 5e-5, 3.6e-4, 60000 / q);
+    gr_result bd2 = gr_run(1, 2e-4, 0, 30000 / q);
+    gr_result gs2 = gr_run(0, 2e-4, 3.6e-4, 30000 / q);
     for (k = 0; k < 50; ++k) {
         double e2s = bd1.gerr[k] * bd1.gerr[k] + gi.gerr[k] * gi.gerr[k];
         if (bd1.g[k] < 0.05 || e2s <= 0) continue; /* empty core bins */
@@ -395,9 +410,9 @@ void test_gr_gibd_equals_bd(void)
     e2 = sqrt(gs2.tcerr * gs2.tcerr + bd2.tcerr * bd2.tcerr);
     NOTE("g(r) GI-BD (tau = 3.6e-2) vs BD, dt = 1e-4: chi2 = %.1f over %d bins; first peak %.4f +- %.4f vs %.4f +- %.4f",
          chi2, nbins, gi.g[15], gi.gerr[15], bd1.g[15], bd1.gerr[15]);
-    NOTE("T_conf: BD %.4f +- %.4f (dt 1e-4), %.4f +- %.4f (dt 5e-5); GI-BD tau = 3.6e-2: %.4f +- %.4f",
+    NOTE("T_conf: BD %.4f +- %.4f (dt 1e-4), %.4f +- %.4f (dt 2e-4); GI-BD tau = 3.6e-2: %.4f +- %.4f",
          bd1.tc, bd1.tcerr, bd2.tc, bd2.tcerr, gi.tc, gi.tcerr);
-    NOTE("coupling bias at tau = 3.6e-4: T_conf(GI-BD) - T_conf(BD) = %.4f +- %.4f (dt 1e-4), %.4f +- %.4f (dt 5e-5)",
+    NOTE("coupling bias at tau = 3.6e-4: T_conf(GI-BD) - T_conf(BD) = %.4f +- %.4f (dt 1e-4), %.4f +- %.4f (dt 2e-4)",
          d1, e1, d2, e2);
     if (t_quick) return;
     /* chi2 with n degrees of freedom: mean n, sd sqrt(2n); 10 blocks make
@@ -405,6 +420,8 @@ void test_gr_gibd_equals_bd(void)
     CHECK(chi2 < nbins + 5 * sqrt(2.0 * nbins), "g(r) differs: chi2 %g over %d bins", chi2, nbins);
     CHECK(fabs(gi.tc - bd1.tc) < 4 * sqrt(gi.tcerr * gi.tcerr + bd1.tcerr * bd1.tcerr),
           "T_conf differs at tau = 3.6e-2: %g vs %g", gi.tc, bd1.tc);
-    CHECK(d1 > 4 * e1, "no coupling bias resolved at dt = 1e-4: %g +- %g", d1, e1);
-    CHECK(fabs(d2 - d1 / 2) < 4 * sqrt(e2 * e2 + e1 * e1 / 4), "bias does not halve: %g -> %g", d1, d2);
+    CHECK(d2 > 4 * e2, "no coupling bias resolved at dt = 2e-4: %g +- %g", d2, e2);
+    CHECK(d2 - d1 > 3 * sqrt(e1 * e1 + e2 * e2), "bias does not shrink with dt: %g -> %g", d2, d1);
+    CHECK(fabs(d1 - d2 / 2) < 4 * sqrt(e1 * e1 + e2 * e2 / 4), "bias not first order in dt: %g -> %g",
+          d2, d1);
 }
