@@ -37,6 +37,7 @@
 #include <time.h>
 #include <errno.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #define PI 3.14159265358979323846
 
@@ -266,7 +267,7 @@ int main(int argc, char **argv)
     double hist[NRDF], *xyz, *vel, V, k1, nu_theory, rdf_max;
     double Tblk[NB], nu_init_b[NB], nu_hydro_b[NB], mf_b[NB], eff_b[NB];
     double Tacc = 0, mf = 0, eff = 0, sumf = 0, sk = 0;
-    int nT = 0, nmf = 0, b, s, k, gibd, blk_steps;
+    int nT = 0, nmf = 0, b, s, k, gibd, blk_steps, tty = isatty(fileno(stderr));
     size_t bytes_ct = hcbd_mtcorr_bytes(12, PC, 2, LEVC), bytes_gt, bytes_v, bytes_msd;
     void *mem_ct, *mem_gt, *mem_v, *mem_msd;
     struct timespec t0, t1;
@@ -293,6 +294,7 @@ int main(int argc, char **argv)
            gibd ? "GI-BD" : "classical BD", p->potential == HCBD_POT_STAR ? "star polymers" : "ideal particles",
            c.N, p->L[0], p->L[1], p->L[2], c.density, p->dt, p->tau, p->xi, p->xip, p->kT, c.steps,
            p->threads);
+    fflush(stdout);
     if (gibd && p->tau < 10 * p->dt)
         printf("warning: tau = %g < 10 dt breaks 2014 eq. 27; expect an Euler bias of "
                "about %.0f %% in the temperature\n", p->tau, 50 * p->dt / p->tau);
@@ -392,11 +394,12 @@ int main(int argc, char **argv)
         clock_gettime(CLOCK_MONOTONIC, &t1);
         {
             double el = (t1.tv_sec - t0.tv_sec) + 1e-9 * (t1.tv_nsec - t0.tv_nsec);
-            fprintf(stderr, "\rstep %d / %d (%3.0f %%), %.0f s elapsed, %.0f s left   ",
-                    (b + 1) * blk_steps, NB * blk_steps, 100.0 * (b + 1) / NB, el, el / (b + 1) * (NB - b - 1));
+            fprintf(stderr, "%sstep %d / %d (%3.0f %%), %.0f s elapsed, %.0f s left   %s",
+                    tty ? "\r" : "", (b + 1) * blk_steps, NB * blk_steps, 100.0 * (b + 1) / NB, el,
+                    el / (b + 1) * (NB - b - 1), tty ? "" : "\n");
         }
     }
-    fprintf(stderr, "\n");
+    if (tty) fprintf(stderr, "\n");
 
     /* ---- CSV output ---- */
     {
@@ -442,12 +445,17 @@ int main(int argc, char **argv)
             }
         }
         if ((f = open_out(&c, "ct.csv"))) {
-            fprintf(f, "t,ct_k1,ct_k2,ct_k3,theory_k1,theory_k2,theory_k3\n");
+            /* eq13: the paper's exp(-nu k^2 t), nu = Rc^2/(28 tau), for ideal
+               particles; eff: nu_eff = <sum f r^2>/(6 tau) of this run plus the
+               Brownian kT/xi, the small-k rate for interacting particles */
+            double nu_e = nmf ? eff / nmf + p->kT / p->xi : NAN;
+            fprintf(f, "t,ct_k1,ct_k2,ct_k3,eq13_k1,eq13_k2,eq13_k3,eff_k1,eff_k2,eff_k3\n");
             for (k = 0; k < n[0] && k < n[1] && k < n[2]; ++k) {
                 double t = lag[0][k] * p->dt;
                 fprintf(f, "%.6g", t);
                 for (kk = 0; kk < 3; ++kk) fprintf(f, ",%.6g", acc[kk][k] / acc[kk][0]);
                 for (kk = 0; kk < 3; ++kk) fprintf(f, ",%.6g", exp(-nu_theory * pow((kk + 1) * k1, 2) * t));
+                for (kk = 0; kk < 3; ++kk) fprintf(f, ",%.6g", exp(-nu_e * pow((kk + 1) * k1, 2) * t));
                 fprintf(f, "\n");
             }
             fclose(f);
@@ -478,7 +486,8 @@ int main(int argc, char **argv)
             fprintf(f, "set output 'gt.png'\nset ylabel 'G(t)'\nplot 'gt.csv' u 1:($2>0?$2:1/0) w lp\n");
         if (gibd)
             fprintf(f, "unset logscale y\nset output 'ct.png'\nset ylabel 'C_t(k,t)/C_t(k,0)'\nset logscale x\n"
-                       "plot for [i=2:4] 'ct.csv' u 1:i w lp, for [i=5:7] '' u 1:i w l dt 2\n"
+                       "plot for [i=2:4] 'ct.csv' u 1:i w lp, for [i=5:7] '' u 1:i w l dt 2, "
+                       "for [i=8:10] '' u 1:i w l dt 3\n"
                        "set logscale xy\nset output 'vacf.png'\nset ylabel '<v(t).v(0)>'\n"
                        "plot 'vacf.csv' u 1:($2>0?$2:1/0) w lp, '' u 1:3 w l\n");
         fclose(f);
@@ -520,6 +529,8 @@ int main(int argc, char **argv)
             for (k = 0; k < n; ++k) lag[k] *= 5; /* samples were every 5 steps */
             mt = msd_at(lag, mm, n, p->dt, t);
             printf("msd_ratio_at_tau=%.4f\n", mt / th_tau);
+            if (p->potential != HCBD_POT_IDEAL)
+                printf("# msd_ratio_at_tau: 2016 eq. 32 is the ideal-particle result\n");
             if (tau < 5 * p->dt) printf("# msd_ratio_at_tau: tau is shorter than the MSD sampling interval\n");
         }
         D_meas = long_time_D(&msd, 5 * p->dt, tau);
