@@ -40,6 +40,20 @@ static inline void block_stats(const double *x, int n, int nb, double *mean, dou
     *err = sqrt((s2 / nb - m * m) / (nb - 1));
 }
 
+/* Squared minimum-image distance of particles i and j of an interleaved
+   position array, written independently of the library. */
+static inline double pair_r2(const double *xyz, int i, int j, const double L[3])
+{
+    double r2 = 0;
+    int c;
+    for (c = 0; c < 3; ++c) {
+        double dx = xyz[3 * i + c] - xyz[3 * j + c];
+        dx -= L[c] * round(dx / L[c]);
+        r2 += dx * dx;
+    }
+    return r2;
+}
+
 /* A world from the default 2014/2016 scene with the given changes. */
 static inline hcbd_world_def scene(int N, double density)
 {

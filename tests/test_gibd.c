@@ -26,31 +26,14 @@ void test_density_normalisation(void)
             hcbd_get_positions(&w, xyz, 0);
             for (i = 0; i < 1000; ++i) {
                 double sw = w0;
-                for (j = 0; j < 1000; ++j) {
-                    double r2 = 0;
-                    int c;
-                    if (j == i) continue;
-                    for (c = 0; c < 3; ++c) {
-                        double dx = xyz[3 * i + c] - xyz[3 * j + c];
-                        dx -= w.p.L[c] * round(dx / w.p.L[c]);
-                        r2 += dx * dx;
-                    }
-                    sw += hcbd_wendland(sqrt(r2), Rc);
-                }
+                for (j = 0; j < 1000; ++j)
+                    if (j != i) sw += hcbd_wendland(sqrt(pair_r2(xyz, i, j, w.p.L)), Rc);
                 rho[i] = m * nrm * sw;
             }
             for (i = 0; i < 1000; ++i)
                 for (j = 0; j < 1000; ++j) {
-                    double r2 = 0, r;
-                    int c;
-                    if (j == i) continue;
-                    for (c = 0; c < 3; ++c) {
-                        double dx = xyz[3 * i + c] - xyz[3 * j + c];
-                        dx -= w.p.L[c] * round(dx / w.p.L[c]);
-                        r2 += dx * dx;
-                    }
-                    r = sqrt(r2);
-                    if (r < Rc)
+                    double r = sqrt(pair_r2(xyz, i, j, w.p.L));
+                    if (j != i && r < Rc)
                         direct += 15 / (2 * 3.14159265358979323846 * Rc * Rc * Rc) * m *
                                   (1 / rho[i] + 1 / rho[j]) * pow(1 - r / Rc, 3);
                 }
@@ -273,21 +256,13 @@ void test_lagged_density(void)
     {
         static double xyz[3 * 512];
         double w0 = hcbd_wendland(0, 2.5), nrm = 1 / (1 + w0 / 0.24), maxdev = 0;
-        int i, j, c;
+        int i, j;
         hcbd_get_positions(&b, xyz, 0);
         run(&b, 1);
         for (i = 0; i < 512; ++i) {
             double sw = w0;
-            for (j = 0; j < 512; ++j) {
-                double r2 = 0;
-                if (j == i) continue;
-                for (c = 0; c < 3; ++c) {
-                    double dx = xyz[3 * i + c] - xyz[3 * j + c];
-                    dx -= b.p.L[c] * round(dx / b.p.L[c]);
-                    r2 += dx * dx;
-                }
-                sw += hcbd_wendland(sqrt(r2), 2.5);
-            }
+            for (j = 0; j < 512; ++j)
+                if (j != i) sw += hcbd_wendland(sqrt(pair_r2(xyz, i, j, b.p.L)), 2.5);
             sw *= b.m * nrm;
             if (fabs(b.rho[b.slot[i]] / sw - 1) > maxdev) maxdev = fabs(b.rho[b.slot[i]] / sw - 1);
         }

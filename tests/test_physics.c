@@ -201,6 +201,40 @@ void test_nu_meanfield_ideal(void)
     hcbd_world_destroy(&w);
 }
 
+/* Order-n MSD of a running world in NB consecutive blocks of `steps`
+   samples, one sample per step: vals[b][l] at lag[l] (in steps); returns
+   the number of lags. */
+enum { MSD_NB = 10, MSD_MAXLAG = 32 };
+static int msd_blocks(hcbd_world *w, int steps, double vals[MSD_NB][MSD_MAXLAG], double *lag)
+{
+    enum { B = 10, LEV = 3 };
+    int n = w->n, b, s, nl = 0;
+    size_t bytes = hcbd_msd_bytes(n, B, LEV);
+    void *mem = malloc(bytes);
+    double *xyz = (double *)malloc(3 * (size_t)n * sizeof(double));
+    hcbd_msd m;
+    for (b = 0; b < MSD_NB; ++b) {
+        hcbd_msd_init(&m, n, B, LEV, mem, bytes);
+        for (s = 0; s < steps; ++s) {
+            hcbd_get_positions(w, xyz, 1);
+            hcbd_msd_add(&m, xyz);
+            if (!run(w, 1)) break;
+        }
+        nl = hcbd_msd_result(&m, lag, vals[b], NULL, MSD_MAXLAG);
+    }
+    free(xyz);
+    free(mem);
+    return nl;
+}
+
+static void lag_stats(double vals[MSD_NB][MSD_MAXLAG], int l, double *mean, double *err)
+{
+    double col[MSD_NB];
+    int b;
+    for (b = 0; b < MSD_NB; ++b) col[b] = vals[b][l];
+    block_stats(col, MSD_NB, MSD_NB, mean, err);
+}
+
 /* MSD of ideal particles (2016 eq. 32) for t <= tau, where the zeroth-order
    result holds.  Eq. 32 neglects momentum flowing back from neighbours, a
    systematic effect that grows with t (MODEL 3), so the 3 % band is the
@@ -208,57 +242,33 @@ void test_nu_meanfield_ideal(void)
    long-time ratio D_measured/D_theory (eq. 33) is reported. */
 void test_msd_ideal_gibd(void)
 {
-    enum { N = 500, B = 10, LEV = 3, NB = 10 };
-    hcbd_world_def d = scene(N, 0.24);
+    hcbd_world_def d = scene(500, 0.24);
     hcbd_world w;
-    size_t bytes = hcbd_msd_bytes(N, B, LEV);
-    void *mem = malloc(bytes);
-    double *xyz = (double *)malloc(3 * N * sizeof(double));
-    double vals[NB][32], lag[32];
-    int b, s, nl = 0, steps = t_quick ? 300 : 2000, l;
-    hcbd_msd m;
+    double vals[MSD_NB][MSD_MAXLAG], lag[MSD_MAXLAG], m0, m1, e;
+    int nl, l;
     d.params.potential = HCBD_POT_IDEAL;
     d.params.tau = 0.1;
     d.params.dt = 1e-3;
     d.params.skin = 1.2;
     if (!make_world(&w, &d)) return;
-    hcbd_world_place_random(&w, N);
+    hcbd_world_place_random(&w, 500);
     run(&w, 1000);
-    for (b = 0; b < NB; ++b) {
-        hcbd_msd_init(&m, N, B, LEV, mem, bytes);
-        for (s = 0; s < steps; ++s) {
-            hcbd_get_positions(&w, xyz, 1);
-            hcbd_msd_add(&m, xyz);
-            run(&w, 1);
-        }
-        nl = hcbd_msd_result(&m, lag, vals[b], NULL, 32);
-    }
-    {
-        /* slope over the last decade of lags, t = 5-9 tau */
-        double m0 = 0, m1 = 0, t0 = lag[nl - 5] * d.params.dt, t1 = lag[nl - 1] * d.params.dt;
-        for (b = 0; b < NB; ++b) {
-            m0 += vals[b][nl - 5] / NB;
-            m1 += vals[b][nl - 1] / NB;
-        }
-        NOTE("D_measured / D_theory (eq. 33, t = %.2f-%.2f) = %.3f", t0, t1, (m1 - m0) / (6 * (t1 - t0)) / 2.0);
-    }
+    nl = msd_blocks(&w, t_quick ? 300 : 2000, vals, lag);
+    /* slope over the last lags of the run, t = 5-9 tau */
+    lag_stats(vals, nl - 5, &m0, &e);
+    lag_stats(vals, nl - 1, &m1, &e);
+    NOTE("D_measured / D_theory (eq. 33, t = %.2f-%.2f) = %.3f", lag[nl - 5] * d.params.dt,
+         lag[nl - 1] * d.params.dt, (m1 - m0) / (6 * (lag[nl - 1] - lag[nl - 5]) * d.params.dt) / 2.0);
     for (l = 0; l < nl; ++l) {
-        double t = lag[l] * d.params.dt, tau = d.params.tau, mean = 0, m2 = 0, e, th;
+        double t = lag[l] * d.params.dt, tau = d.params.tau, mean, th;
         if (t > tau) continue;
-        for (b = 0; b < NB; ++b) {
-            mean += vals[b][l];
-            m2 += vals[b][l] * vals[b][l];
-        }
-        mean /= NB;
-        e = sqrt((m2 / NB - mean * mean) / (NB - 1));
+        lag_stats(vals, l, &mean, &e);
         th = 6 * (t - tau * (1 - exp(-t / tau))) + 6 * t; /* kT = xi = xi' = 1 */
         if (l % 3 == 0 || t == tau) NOTE("t = %.3f: MSD %.5f +- %.5f, eq. 32 %.5f (ratio %.4f)", t, mean, e, th, mean / th);
         if (!t_quick)
             CHECK(fabs(mean / th - 1) < 0.03 && fabs(mean - th) < 4 * e + 0.03 * th,
                   "t = %g: %g +- %g vs %g", t, mean, e, th);
     }
-    free(xyz);
-    free(mem);
     hcbd_world_destroy(&w);
 }
 
@@ -266,42 +276,23 @@ void test_msd_ideal_gibd(void)
    prefactor: sqrt(kT dt / xi) instead of sqrt(2 kT dt / xi) fails). */
 void test_bd_free_diffusion(void)
 {
-    enum { N = 1000, B = 10, LEV = 3, NB = 10 };
-    hcbd_world_def d = scene(N, 0.24);
+    hcbd_world_def d = scene(1000, 0.24);
     hcbd_world w;
-    size_t bytes = hcbd_msd_bytes(N, B, LEV);
-    void *mem = malloc(bytes);
-    double *xyz = (double *)malloc(3 * N * sizeof(double)), vals[NB][32], lag[32];
-    int b, s, nl = 0, l;
-    hcbd_msd m;
+    double vals[MSD_NB][MSD_MAXLAG], lag[MSD_MAXLAG];
+    int nl, l;
     d.params.dynamics = HCBD_DYN_BD;
     d.params.potential = HCBD_POT_IDEAL;
     d.params.xi = 2.0;
     d.params.kT = 1.5;
     d.params.dt = 1e-3;
     if (!make_world(&w, &d)) return;
-    hcbd_world_place_random(&w, N);
-    for (b = 0; b < NB; ++b) {
-        hcbd_msd_init(&m, N, B, LEV, mem, bytes);
-        for (s = 0; s < 1000; ++s) {
-            hcbd_get_positions(&w, xyz, 1);
-            hcbd_msd_add(&m, xyz);
-            run(&w, 1);
-        }
-        nl = hcbd_msd_result(&m, lag, vals[b], NULL, 32);
-    }
+    hcbd_world_place_random(&w, 1000);
+    nl = msd_blocks(&w, 1000, vals, lag);
     for (l = 0; l < nl; ++l) {
-        double t = lag[l] * d.params.dt, mean = 0, m2 = 0, e, th = 6 * 1.5 / 2.0 * t;
-        for (b = 0; b < NB; ++b) {
-            mean += vals[b][l];
-            m2 += vals[b][l] * vals[b][l];
-        }
-        mean /= NB;
-        e = sqrt((m2 / NB - mean * mean) / (NB - 1));
+        double t = lag[l] * d.params.dt, mean, e, th = 6 * 1.5 / 2.0 * t;
+        lag_stats(vals, l, &mean, &e);
         CHECK(fabs(mean - th) < 4 * e && e < 0.05 * th, "t = %g: %g +- %g vs 6 D0 t = %g", t, mean, e, th);
     }
-    free(xyz);
-    free(mem);
     hcbd_world_destroy(&w);
 }
 
@@ -359,13 +350,12 @@ static gr_result gr_run(int dyn, double dt, double tau, int steps)
             memset(F, 0, sizeof F);
             for (i = 0; i < N; ++i)
                 for (j = i + 1; j < N; ++j) {
-                    double dx[3], r2 = 0, r, dv, lp;
+                    double dx[3], r2 = pair_r2(xyz, i, j, w.p.L), r, dv, lp;
+                    if (r2 >= 2.5 * 2.5) continue;
                     for (c = 0; c < 3; ++c) {
                         dx[c] = xyz[3 * i + c] - xyz[3 * j + c];
                         dx[c] -= w.p.L[c] * round(dx[c] / w.p.L[c]);
-                        r2 += dx[c] * dx[c];
                     }
-                    if (r2 >= 2.5 * 2.5) continue;
                     r = sqrt(r2);
                     star_derivs(r, &dv, &lp);
                     for (c = 0; c < 3; ++c) {
