@@ -1,6 +1,6 @@
 /* hcbd.h - hydrodynamically coupled Brownian dynamics in one C header.
 
-   Version 0.1. Public domain-style single header; see README.md.
+   Version 0.1; see README.md.
 
    WHAT IT IS
      A simulation kernel for soft-matter fluids: Brownian particles that carry
@@ -1210,7 +1210,6 @@ hcbd_result hcbd_world_set_velocities(hcbd_world *w, const double *v)
         w->vy[s] = (hcbd_real)v[3 * i + 1];
         w->vz[s] = (hcbd_real)v[3 * i + 2];
     }
-    w->rho_current = 0;
     return HCBD_OK;
 }
 
@@ -1439,6 +1438,13 @@ static hcbd_result hcbd__ensure_list(hcbd_world *w)
     if (!w->has_pairs) return HCBD_OK;
     if (w->list_valid && w->disp_max <= 0.5 * w->p.skin) return HCBD_OK;
     return hcbd__rebuild(w);
+}
+
+/* The densities the next step's friction needs are missing: those of the
+   present positions (exact mode), or any earlier ones (lagged mode). */
+static int hcbd__density_stale(const hcbd_world *w)
+{
+    return !w->rho_current && !(w->p.lagged_density && w->rho_valid);
 }
 
 /* >>pair passes
@@ -1694,8 +1700,7 @@ hcbd_result hcbd_step(hcbd_world *w, int nsteps)
     for (s = 0; s < nsteps; ++s) {
         r = hcbd__ensure_list(w);
         if (r != HCBD_OK) return r;
-        if (w->gibd && !w->rho_current && !(w->p.lagged_density && w->rho_valid))
-            hcbd__density(w);
+        if (w->gibd && hcbd__density_stale(w)) hcbd__density(w);
         if (w->has_pairs) hcbd__forces(w);
         r = hcbd__integrate(w);
         w->step++;
@@ -1862,7 +1867,7 @@ hcbd_result hcbd_friction_average(hcbd_world *w, int nk, double out[3])
     r = hcbd__ensure_list(w);
     if (r != HCBD_OK) return r;
     /* the densities the next step's friction will use */
-    if (!w->rho_current && !(w->p.lagged_density && w->rho_valid)) hcbd__density(w);
+    if (hcbd__density_stale(w)) hcbd__density(w);
     memset(&c, 0, sizeof c);
     c.w = w;
     for (d = 0; d < 3; ++d) c.k[d] = 2.0 * HCBD__PI * nk / w->p.L[d];
