@@ -68,7 +68,8 @@ test-build: | $(B)
 	done; done
 	for cxx in g++ clang++; do \
 	  $$cxx -x c++ -std=c++11 -Wall -Wextra -Werror -O2 -c $(B)/compile_test.c -o $(B)/ct.o || exit 1; done
-	@echo "test-build: header compiles as C99, C11 and C++11 with gcc and clang"
+	for cc in gcc clang; do $$cc $(WARN) -fsyntax-only examples/*.c bench/*.c || exit 1; done
+	@echo "test-build: header compiles as C99, C11 and C++11 with gcc and clang; examples and bench too"
 
 bench: $(B)/bench_speed
 	./$(B)/bench_speed out=out/bench

@@ -266,8 +266,8 @@ int main(int argc, char **argv)
     hcbd_rdf rdf;
     double hist[NRDF], *xyz, *vel, V, k1, nu_theory, rdf_max;
     double Tblk[NB], nu_init_b[NB], nu_hydro_b[NB], mf_b[NB], eff_b[NB];
-    double Tacc = 0, mf = 0, eff = 0, sumf = 0, sk = 0;
-    int nT = 0, nmf = 0, b, s, k, gibd, blk_steps, tty = isatty(fileno(stderr));
+    double mf = 0, eff = 0, sumf = 0, sk = 0;
+    int nmf = 0, b, s, k, gibd, blk_steps, tty = isatty(fileno(stderr));
     size_t bytes_ct = hcbd_mtcorr_bytes(12, PC, 2, LEVC), bytes_gt, bytes_v, bytes_msd;
     void *mem_ct, *mem_gt, *mem_v, *mem_msd;
     struct timespec t0, t1;
@@ -389,7 +389,7 @@ int main(int argc, char **argv)
             Tblk[b] = Tb / nTb / p->kT;
             mf_b[b] = mfb / nmb;
             eff_b[b] = effb / nmb;
-            Tacc += Tb; nT += nTb; mf += mfb; eff += effb; sumf += sfb; nmf += nmb;
+            mf += mfb; eff += effb; sumf += sfb; nmf += nmb;
         }
         clock_gettime(CLOCK_MONOTONIC, &t1);
         {
