@@ -173,6 +173,8 @@ typedef struct hcbd_params {
     int table_n;
     double table_r0;
     double fext[3];       /* constant external force on every particle      */
+    double gdot;          /* Lees-Edwards shear rate (flow x, gradient y);
+                             0 switches it off.  GI-BD only.                 */
     double skin;          /* Verlet skin                                     */
     int sort;             /* 1: re-sort storage by cell at each rebuild      */
     uint64_t seed;
@@ -231,6 +233,16 @@ typedef struct hcbd_world {
     hcbd_real *buf[7];           /* per-pair values of the owner (lower id)   */
     int nbuf, bF, bP, bW;        /* buffer slots: force, momentum, weight     */
     double step_limit, disp_max;
+    /* Lees-Edwards: offset s of the image above, its drift since the list
+       build, per-particle x shifts applied at crossings (unwrapped x) */
+    int le_on;
+    double le_offset, le_drift, le_vjump;
+    double *lx;
+    /* shear-stress flux accumulation (hcbd_flux_enable) */
+    int flux_on;
+    int64_t flux_steps;
+    double flux_sum[3];
+    hcbd_real *fl_p, *fl_b, *fl_c;
     void *scratch;               /* n x 8 bytes for permutations              */
     double *tab_F, *tab_V;
     double tab_inv_dr;
@@ -293,6 +305,15 @@ hcbd_result hcbd_friction_average(hcbd_world *w, int nk, double out[3]);
 hcbd_result hcbd_transverse_current(const hcbd_world *w, int nk, double out[12]);
 /* Total potential energy of the pair potential. */
 double hcbd_potential_energy(hcbd_world *w);
+/* Shear-stress flux, accumulated every step while enabled (off by default,
+   and then it costs nothing).  hcbd_flux_enable(w, 1) clears the sums and
+   starts; hcbd_flux_read gives the averages over the steps since:
+   out[0] pair forces (2016 eq. 26), out[1] background friction and noise
+   exchanges, out[2] momentum carried across the Lees-Edwards boundary by
+   crossing particles (MODEL 5), out[3] their sum; each as the shear stress
+   S_yx = -(1/V) sum_{i<j} y_ij F_ij,x, so the viscosity is out / gdot. */
+hcbd_result hcbd_flux_enable(hcbd_world *w, int on);
+hcbd_result hcbd_flux_read(const hcbd_world *w, double out[4], int64_t *nsteps);
 /* 64-bit hash of positions, images, velocities and generator states in id
    order: equal checksums mean bit-identical states. */
 uint64_t hcbd_state_checksum(const hcbd_world *w);
@@ -489,6 +510,7 @@ hcbd_params hcbd_params_default(void)
     p.table_n = 0;
     p.table_r0 = 0.0;
     p.skin = 0.4;
+    p.gdot = 0.0;
     p.sort = 1;
     p.seed = 1;
     p.threads = 1;
@@ -592,6 +614,20 @@ hcbd_result hcbd_params_check(const hcbd_params *p, char *msg, size_t msg_size)
         }
     }
     HCBD__CHECK(isfinite(p->skin) && p->skin >= 0, "skin", p->skin);
+    HCBD__CHECK(isfinite(p->gdot), "gdot", p->gdot);
+    if (p->gdot != 0.0) {
+        HCBD__CHECK(p->dynamics == HCBD_DYN_GIBD, "gdot", p->gdot);
+        /* the offset may move by less than a box edge per step */
+        HCBD__CHECK(fabs(p->gdot * p->L[1] * p->dt) < p->L[0], "gdot", p->gdot);
+        for (d = 0; d < 2; ++d)
+            if (p->L[d] < 3.0 * (hcbd__cutmax(p) + p->skin)) {
+                if (msg && msg_size)
+                    snprintf(msg, msg_size,
+                             "box too small for Lees-Edwards: L[%d] = %.17g < 3 (cut-off "
+                             "%.17g + skin %.17g)", d, p->L[d], hcbd__cutmax(p), p->skin);
+                return HCBD_ERR_BOX;
+            }
+    }
     HCBD__CHECK(p->sort == 0 || p->sort == 1, "sort", p->sort);
     HCBD__CHECK(p->threads >= 1 && p->threads <= 1024, "threads", p->threads);
     if (hcbd__needs_pairs(p)) {
@@ -895,6 +931,8 @@ static size_t hcbd__layout(const hcbd_world_def *def, hcbd_world *w, char *base)
     HCBD__ARR(rs0, N * 8); HCBD__ARR(rs1, N * 8); HCBD__ARR(rs2, N * 8);
     HCBD__ARR(rs3, N * 8);
     HCBD__ARR(scratch, N * 8);
+    HCBD__ARR(lx, N * sizeof(double));
+    HCBD__ARR(fl_p, N * R); HCBD__ARR(fl_b, N * R); HCBD__ARR(fl_c, N * R);
     HCBD__ARR(cell_start, (size_t)(ncell + 1) * I);
     HCBD__ARR(cell_cursor, (size_t)ncell * I);
     HCBD__ARR(cell_of, N * I); HCBD__ARR(perm, N * I);
@@ -1006,6 +1044,8 @@ hcbd_result hcbd_world_init(hcbd_world *w, const hcbd_world_def *def, void *mem,
     w->has_pairs = hcbd__needs_pairs(p);
     w->has_fext = p->fext[0] != 0.0 || p->fext[1] != 0.0 || p->fext[2] != 0.0;
     w->has_noise = p->kT > 0.0;
+    w->le_on = p->gdot != 0.0;
+    w->le_vjump = p->gdot * p->L[1];
     w->seed_key = hcbd__mix64(p->seed ^ hcbd__mix64(HCBD__STREAM_PAIR));
     if (p->potential == HCBD_POT_TABLE) {
         memcpy(w->tab_F, p->table_F, (size_t)p->table_n * sizeof(double));
@@ -1139,11 +1179,16 @@ static hcbd_result hcbd__set_particles(hcbd_world *w, int n, hcbd__src *src)
             double s = w->has_noise ? sqrt(w->p.kT / w->m) : 0.0, v[3] = {0, 0, 0};
             if (s > 0)
                 for (d = 0; d < 3; ++d) v[d] = s * hcbd_rng_normal(w, &g);
+            /* a sheared run starts on the linear profile (MODEL 5) */
+            v[0] += w->p.gdot * (w->y[i] - 0.5 * w->p.L[1]);
             w->vx[i] = (hcbd_real)v[0]; w->vy[i] = (hcbd_real)v[1]; w->vz[i] = (hcbd_real)v[2];
             for (d = 0; d < 3; ++d) mom[d] += v[d];
         }
         w->rs0[i] = g.s[0]; w->rs1[i] = g.s[1]; w->rs2[i] = g.s[2]; w->rs3[i] = g.s[3];
     }
+    for (i = 0; i < n; ++i) w->lx[i] = 0.0;
+    w->le_offset = 0.0;
+    w->le_drift = 0.0;
     if (w->gibd)
         for (i = 0; i < n; ++i) {
             w->vx[i] -= (hcbd_real)(mom[0] / n);
@@ -1221,6 +1266,35 @@ static inline double hcbd__mi(double d, double L)
     return d > h ? d - L : (d < -h ? d + L : d);
 }
 
+/* >>Lees-Edwards.  The one routine every pair pass uses: the minimum-image
+   displacement d = x_i - x_j of a pair from its raw coordinate differences,
+   and the returned image index k of j: k = +1 when the nearest image of j
+   is in the box above (shifted by +offset in x, its velocity variable by
+   +gdot Ly), -1 below, 0 inside.  Without shear k is always 0. */
+static inline int hcbd__delta(const hcbd_world *w, double dx, double dy, double dz, double d[3])
+{
+    int k = 0;
+    const double Ly = w->p.L[1];
+    if (dy > 0.5 * Ly) {
+        dy -= Ly;
+        k = 1;
+    } else if (dy < -0.5 * Ly) {
+        dy += Ly;
+        k = -1;
+    }
+    if (k && w->le_on) {
+        double Lx = w->p.L[0];
+        dx -= k * w->le_offset; /* now in (-2 Lx, 2 Lx) */
+        dx -= Lx * floor(dx / Lx + 0.5);
+    } else {
+        dx = hcbd__mi(dx, w->p.L[0]);
+    }
+    d[0] = dx;
+    d[1] = dy;
+    d[2] = hcbd__mi(dz, w->p.L[2]);
+    return w->le_on ? k : 0;
+}
+
 static int hcbd__cell_index(const hcbd_world *w, int i)
 {
     int c[3], d;
@@ -1265,6 +1339,11 @@ static void hcbd__permute(hcbd_world *w)
         for (k = 0; k < n; ++k) uu[k] = ua[a][w->perm[k]];
         memcpy(ua[a], uu, (size_t)n * sizeof *uu);
     }
+    {
+        double *dd = (double *)w->scratch;
+        for (k = 0; k < n; ++k) dd[k] = w->lx[w->perm[k]];
+        memcpy(w->lx, dd, (size_t)n * sizeof *dd);
+    }
     for (k = 0; k < n; ++k) w->slot[w->id[k]] = k;
 }
 
@@ -1276,7 +1355,6 @@ static int hcbd__scan(const hcbd_world *w, int i, int32_t *out, int room)
     int c[3], d, cnt = 0, o0, o1, o2, lo[3], hi[3];
     const double rl2 = w->rlist * w->rlist;
     const double xi = w->x[i], yi = w->y[i], zi = w->z[i];
-    const double L0 = w->p.L[0], L1 = w->p.L[1], L2 = w->p.L[2];
     const int32_t idi = w->id[i];
     const int32_t *HCBD__RESTRICT perm = w->perm, *HCBD__RESTRICT id = w->id;
     const hcbd_real *HCBD__RESTRICT x = w->x, *HCBD__RESTRICT y = w->y, *HCBD__RESTRICT z = w->z;
@@ -1290,27 +1368,37 @@ static int hcbd__scan(const hcbd_world *w, int i, int32_t *out, int room)
         lo[d] = w->nc[d] >= 3 ? -1 : 0;
         hi[d] = w->nc[d] >= 3 ? 1 : w->nc[d] - 1;
     }
-    for (o0 = lo[0]; o0 <= hi[0]; ++o0)
-        for (o1 = lo[1]; o1 <= hi[1]; ++o1)
+    for (o1 = lo[1]; o1 <= hi[1]; ++o1) {
+        int row = c[1] + o1, k = row < 0 ? -1 : (row >= w->nc[1] ? 1 : 0);
+        int x0 = c[0] + lo[0], x1 = c[0] + hi[0];
+        if (k && w->le_on) {
+            /* the row across the sheared boundary: its image sits shifted
+               by k * offset in x, so take the cells around x_i - k offset
+               (Lees-Edwards needs at least 3 cells along x and y) */
+            double cw = w->p.L[0] / w->nc[0], xs = xi - k * w->le_offset;
+            x0 = (int)floor((xs - w->rlist) / cw);
+            x1 = (int)floor((xs + w->rlist) / cw);
+            if (x1 - x0 > 2) x1 = x0 + 2;
+        }
+        for (o0 = x0; o0 <= x1; ++o0)
             for (o2 = lo[2]; o2 <= hi[2]; ++o2) {
-                int a = (c[0] + o0 + w->nc[0]) % w->nc[0];
-                int b = (c[1] + o1 + w->nc[1]) % w->nc[1];
+                int a = ((o0 % w->nc[0]) + w->nc[0]) % w->nc[0];
+                int b = (row + w->nc[1]) % w->nc[1];
                 int e = (c[2] + o2 + w->nc[2]) % w->nc[2];
-                int cc = (a * w->nc[1] + b) * w->nc[2] + e, k;
-                const int k1 = w->cell_start[cc + 1];
-                for (k = w->cell_start[cc]; k < k1; ++k) {
-                    int j = perm[k];
-                    double dx, dy, dz;
+                int cc = (a * w->nc[1] + b) * w->nc[2] + e, q;
+                const int q1 = w->cell_start[cc + 1];
+                for (q = w->cell_start[cc]; q < q1; ++q) {
+                    int j = perm[q];
+                    double dd[3];
                     if (id[j] <= idi) continue;
-                    dx = hcbd__mi(xi - x[j], L0);
-                    dy = hcbd__mi(yi - y[j], L1);
-                    dz = hcbd__mi(zi - z[j], L2);
-                    if (dx * dx + dy * dy + dz * dz < rl2) {
+                    hcbd__delta(w, xi - x[j], yi - y[j], zi - z[j], dd);
+                    if (dd[0] * dd[0] + dd[1] * dd[1] + dd[2] * dd[2] < rl2) {
                         if (out && cnt < room) out[cnt] = j;
                         ++cnt;
                     }
                 }
             }
+    }
     return cnt;
 }
 
@@ -1428,6 +1516,7 @@ static hcbd_result hcbd__rebuild(hcbd_world *w)
         w->z0[i] = w->z[i];
     }
     w->disp_max = 0.0;
+    w->le_drift = 0.0;
     w->list_valid = 1;
     w->n_rebuilds++;
     return HCBD_OK;
@@ -1436,7 +1525,10 @@ static hcbd_result hcbd__rebuild(hcbd_world *w)
 static hcbd_result hcbd__ensure_list(hcbd_world *w)
 {
     if (!w->has_pairs) return HCBD_OK;
-    if (w->list_valid && w->disp_max <= 0.5 * w->p.skin) return HCBD_OK;
+    /* two particles close in by 2 disp_max; across the sheared boundary the
+       offset drift adds to that, and a particle that crossed since the
+       build is measured with today's offset (error <= drift): 3 drift */
+    if (w->list_valid && 2.0 * w->disp_max + 3.0 * w->le_drift <= w->p.skin) return HCBD_OK;
     return hcbd__rebuild(w);
 }
 
@@ -1456,7 +1548,6 @@ static void hcbd__density(hcbd_world *w)
 {
     const int n = w->n, nt = w->p.threads;
     const double Rc2 = w->p.Rc * w->p.Rc, invRc = 1.0 / w->p.Rc, cw = w->cw;
-    const double L0 = w->p.L[0], L1 = w->p.L[1], L2 = w->p.L[2];
     hcbd_real *HCBD__RESTRICT bw = w->buf[0];
     int i;
     (void)nt;
@@ -1466,10 +1557,9 @@ static void hcbd__density(hcbd_world *w)
         int32_t p;
         for (p = w->nb_start[i]; p < w->nb_start[i + 1]; ++p) {
             int j = w->nb_j[p];
-            double dx = hcbd__mi(w->x[i] - w->x[j], L0);
-            double dy = hcbd__mi(w->y[i] - w->y[j], L1);
-            double dz = hcbd__mi(w->z[i] - w->z[j], L2);
-            double r2 = dx * dx + dy * dy + dz * dz, v = 0.0;
+            double d[3], r2, v = 0.0;
+            hcbd__delta(w, w->x[i] - w->x[j], w->y[i] - w->y[j], w->z[i] - w->z[j], d);
+            r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
             if (r2 < Rc2) {
                 double q = sqrt(r2) * invRc, a = 1.0 - q;
                 v = cw * a * a * a * a * (4.0 * q + 1.0);
@@ -1499,8 +1589,8 @@ static void hcbd__forces(hcbd_world *w)
 {
     const int n = w->n, nt = w->p.threads;
     const int pot = w->p.potential != HCBD_POT_IDEAL, gibd = w->gibd;
-    const int noise = w->has_noise, lag = w->p.lagged_density;
-    const double L0 = w->p.L[0], L1 = w->p.L[1], L2 = w->p.L[2];
+    const int noise = w->has_noise, lag = w->p.lagged_density, flux = w->flux_on;
+    const double vle = w->le_vjump;
     const double rc2 = w->p.rcut * w->p.rcut, Rc2 = w->p.Rc * w->p.Rc;
     const double cut2 = w->cutmax * w->cutmax, invRc = 1.0 / w->p.Rc;
     const double cs = w->cf * w->m * w->m * w->p.dt / w->p.tau, two_kT = 2.0 * w->p.kT;
@@ -1517,7 +1607,7 @@ static void hcbd__forces(hcbd_world *w)
     (void)nt;
     HCBD__OMP(omp parallel for num_threads(nt) schedule(static))
     for (i = 0; i < n; ++i) {
-        double fxs = 0, fys = 0, fzs = 0, pxs = 0, pys = 0, pzs = 0, ws = 0;
+        double fxs = 0, fys = 0, fzs = 0, pxs = 0, pys = 0, pzs = 0, ws = 0, sp = 0, sb = 0;
         const double xi = w->x[i], yi = w->y[i], zi = w->z[i];
         const double vxi = gibd ? w->vx[i] : 0, vyi = gibd ? w->vy[i] : 0;
         const double vzi = gibd ? w->vz[i] : 0, iri = gibd ? w->inv_rho[i] : 0;
@@ -1525,11 +1615,11 @@ static void hcbd__forces(hcbd_world *w)
         int32_t p;
         for (p = w->nb_start[i]; p < w->nb_start[i + 1]; ++p) {
             int j = w->nb_j[p];
-            double dx = hcbd__mi(xi - w->x[j], L0);
-            double dy = hcbd__mi(yi - w->y[j], L1);
-            double dz = hcbd__mi(zi - w->z[j], L2);
-            double r2 = dx * dx + dy * dy + dz * dz;
+            double d[3], dx, dy, dz, r2;
             double Fx = 0, Fy = 0, Fz = 0, Px = 0, Py = 0, Pz = 0, wv = 0;
+            const int k = hcbd__delta(w, xi - w->x[j], yi - w->y[j], zi - w->z[j], d);
+            dx = d[0]; dy = d[1]; dz = d[2];
+            r2 = dx * dx + dy * dy + dz * dz;
             if (r2 < cut2) {
                 double r = sqrt(r2);
                 if (pot && r2 < rc2) {
@@ -1539,7 +1629,9 @@ static void hcbd__forces(hcbd_world *w)
                 if (gibd && r2 < Rc2) {
                     double q = r * invRc, a = 1.0 - q;
                     double sdt = cs * (iri + w->inv_rho[j]) * a * a * a; /* S dt/tau */
-                    Px = sdt * (w->vx[j] - vxi);
+                    /* j's image across the sheared boundary moves faster
+                       by k gdot Ly */
+                    Px = sdt * (w->vx[j] + k * vle - vxi);
                     Py = sdt * (w->vy[j] - vyi);
                     Pz = sdt * (w->vz[j] - vzi);
                     if (noise) {
@@ -1564,6 +1656,14 @@ static void hcbd__forces(hcbd_world *w)
                 ws += wv;
                 bW[p] = (hcbd_real)wv;
             }
+            if (flux) { /* y_ij F_ij,x: flux of x momentum across y planes */
+                sp += 0.5 * (dy * Fx + dx * Fy);
+                sb += dy * Px;
+            }
+        }
+        if (flux) {
+            w->fl_p[i] = (hcbd_real)sp;
+            w->fl_b[i] = (hcbd_real)sb;
         }
         if (pot) { w->fx[i] = (hcbd_real)fxs; w->fy[i] = (hcbd_real)fys; w->fz[i] = (hcbd_real)fzs; }
         if (gibd) { w->px[i] = (hcbd_real)pxs; w->py[i] = (hcbd_real)pys; w->pz[i] = (hcbd_real)pzs; }
@@ -1584,6 +1684,10 @@ static hcbd_result hcbd__integrate(hcbd_world *w)
     const double lim2 = w->step_limit * w->step_limit;
     const double gx = w->p.fext[0], gy = w->p.fext[1], gz = w->p.fext[2];
     const int track = w->has_pairs; /* displacement since the list build */
+    const int le = w->le_on, flux = w->flux_on;
+    const double vle = w->le_vjump, m = w->m;
+    /* positions at t + dt are remapped with the offset of t + dt */
+    double s_new = w->le_offset + w->p.gdot * L1 * dt;
     const hcbd_real *HCBD__RESTRICT bFx = pot ? w->buf[w->bF] : NULL;
     const hcbd_real *HCBD__RESTRICT bFy = pot ? w->buf[w->bF + 1] : NULL;
     const hcbd_real *HCBD__RESTRICT bFz = pot ? w->buf[w->bF + 2] : NULL;
@@ -1600,6 +1704,7 @@ static hcbd_result hcbd__integrate(hcbd_world *w)
         double r[3], dr[3], d2, v2 = 0.0;
         int32_t q;
         int d;
+        if (flux) w->fl_c[i] = 0;
         if (pot) {
             F[0] = w->fx[i]; F[1] = w->fy[i]; F[2] = w->fz[i];
             for (q = w->rev_start[i]; q < w->rev_start[i + 1]; ++q) {
@@ -1657,6 +1762,23 @@ static hcbd_result hcbd__integrate(hcbd_world *w)
             if (w->id[i] < bad_step) bad_step = w->id[i];
             continue;
         }
+        if (le) {
+            /* crossing the sheared boundary: x and the velocity variable
+               jump (MODEL 5); the carried momentum is the carrier flux */
+            double c = 0.0;
+            if (r[1] >= L1) {
+                c = m * w->vx[i];
+                r[1] -= L1; w->iy[i]++;
+                r[0] -= s_new; w->lx[i] += s_new;
+                w->vx[i] = (hcbd_real)(w->vx[i] - vle);
+            } else if (r[1] < 0.0) {
+                c = -m * (w->vx[i] + vle);
+                r[1] += L1; w->iy[i]--;
+                r[0] += s_new; w->lx[i] -= s_new;
+                w->vx[i] = (hcbd_real)(w->vx[i] + vle);
+            }
+            if (flux) w->fl_c[i] = (hcbd_real)c;
+        }
         hcbd__wrap(L0, &r[0], &w->ix[i]);
         hcbd__wrap(L1, &r[1], &w->iy[i]);
         hcbd__wrap(L2, &r[2], &w->iz[i]);
@@ -1665,13 +1787,18 @@ static hcbd_result hcbd__integrate(hcbd_world *w)
         if (w->y[i] >= (hcbd_real)L1) w->y[i] = 0;
         if (w->z[i] >= (hcbd_real)L2) w->z[i] = 0;
         if (track) {
-            double ex = hcbd__mi(r[0] - w->x0[i], L0), ey = hcbd__mi(r[1] - w->y0[i], L1);
-            double ez = hcbd__mi(r[2] - w->z0[i], L2), e2 = ex * ex + ey * ey + ez * ez;
+            double e[3], e2;
+            hcbd__delta(w, r[0] - w->x0[i], r[1] - w->y0[i], r[2] - w->z0[i], e);
+            e2 = e[0] * e[0] + e[1] * e[1] + e[2] * e[2];
             if (e2 > dmax) dmax = e2;
         }
     }
     w->disp_max = sqrt(dmax);
     w->rho_current = 0;
+    if (le) {
+        w->le_offset = s_new - L0 * floor(s_new / L0);
+        w->le_drift += fabs(w->p.gdot * L1 * dt);
+    }
     if (bad_nan != INT_MAX)
         return hcbd__fail(&w->err, HCBD_ERR_NONFINITE, w->step, bad_nan,
                           "step %lld: particle id %d got a non-finite position or "
@@ -1682,6 +1809,51 @@ static hcbd_result hcbd__integrate(hcbd_world *w)
                           "step %lld: particle id %d moved more than the per-step "
                           "limit %g (half the interaction range); reduce dt = %g",
                           (long long)w->step, bad_step, w->step_limit, dt);
+    return HCBD_OK;
+}
+
+/* Adds this step's shear stress contributions, summed in id order, as
+   S_yx = -(1/V) sum_{i<j} y_ij F_ij,x (a momentum flux, so viscosity is
+   S/gdot): pair forces, background exchanges dp/dt, and the momentum
+   carried across the sheared boundary per area and time. */
+static void hcbd__flux_add(hcbd_world *w)
+{
+    const double V = w->p.L[0] * w->p.L[1] * w->p.L[2], dt = w->p.dt;
+    double sp = 0, sb = 0, sc = 0;
+    int k;
+    for (k = 0; k < w->n; ++k) {
+        int i = w->slot[k];
+        if (w->has_pairs) {
+            sp += w->fl_p[i];
+            if (w->gibd) sb += w->fl_b[i];
+        }
+        if (w->le_on) sc += w->fl_c[i];
+    }
+    w->flux_sum[0] -= sp / V;
+    w->flux_sum[1] -= sb / (V * dt);
+    w->flux_sum[2] -= sc / (w->p.L[0] * w->p.L[2] * dt);
+    w->flux_steps++;
+}
+
+hcbd_result hcbd_flux_enable(hcbd_world *w, int on)
+{
+    if (!w) return HCBD_ERR_NULL;
+    hcbd__clear(&w->err);
+    if (on != 0 && on != 1)
+        return hcbd__fail(&w->err, HCBD_ERR_PARAM, w->step, -1, "on = %d is not 0 or 1", on);
+    w->flux_on = on;
+    w->flux_steps = 0;
+    w->flux_sum[0] = w->flux_sum[1] = w->flux_sum[2] = 0.0;
+    return HCBD_OK;
+}
+
+hcbd_result hcbd_flux_read(const hcbd_world *w, double out[4], int64_t *nsteps)
+{
+    int k;
+    if (!w || !out) return HCBD_ERR_NULL;
+    for (k = 0; k < 3; ++k) out[k] = w->flux_steps ? w->flux_sum[k] / w->flux_steps : 0.0;
+    out[3] = out[0] + out[1] + out[2];
+    if (nsteps) *nsteps = w->flux_steps;
     return HCBD_OK;
 }
 
@@ -1703,6 +1875,7 @@ hcbd_result hcbd_step(hcbd_world *w, int nsteps)
         if (w->gibd && hcbd__density_stale(w)) hcbd__density(w);
         if (w->has_pairs) hcbd__forces(w);
         r = hcbd__integrate(w);
+        if (r == HCBD_OK && w->flux_on) hcbd__flux_add(w);
         w->step++;
         if (r != HCBD_OK) return r;
     }
@@ -1716,7 +1889,7 @@ hcbd_result hcbd_get_positions(const hcbd_world *w, double *xyz, int unwrapped)
     if (!w || !xyz) return HCBD_ERR_NULL;
     for (i = 0; i < w->n; ++i) {
         int s = w->slot[i];
-        xyz[3 * i] = w->x[s] + (unwrapped ? w->ix[s] * w->p.L[0] : 0.0);
+        xyz[3 * i] = w->x[s] + (unwrapped ? w->ix[s] * w->p.L[0] + w->lx[s] : 0.0);
         xyz[3 * i + 1] = w->y[s] + (unwrapped ? w->iy[s] * w->p.L[1] : 0.0);
         xyz[3 * i + 2] = w->z[s] + (unwrapped ? w->iz[s] * w->p.L[2] : 0.0);
     }
@@ -1781,11 +1954,11 @@ static hcbd_result hcbd__for_pairs(hcbd_world *w, double rmax, hcbd__pair_fn fn,
         int32_t p;
         for (p = w->nb_start[i]; p < w->nb_start[i + 1]; ++p) {
             int j = w->nb_j[p];
-            double dx = hcbd__mi((double)w->x[i] - w->x[j], w->p.L[0]);
-            double dy = hcbd__mi((double)w->y[i] - w->y[j], w->p.L[1]);
-            double dz = hcbd__mi((double)w->z[i] - w->z[j], w->p.L[2]);
-            double r2 = dx * dx + dy * dy + dz * dz;
-            if (r2 < r2max) fn(ctx, i, j, dx, dy, dz, r2);
+            double d[3], r2;
+            hcbd__delta(w, (double)w->x[i] - w->x[j], (double)w->y[i] - w->y[j],
+                        (double)w->z[i] - w->z[j], d);
+            r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+            if (r2 < r2max) fn(ctx, i, j, d[0], d[1], d[2], r2);
         }
     }
     return HCBD_OK;
@@ -1975,11 +2148,11 @@ hcbd_result hcbd_rdf_sample(hcbd_rdf *g, hcbd_world *w)
     } else {
         for (i = 0; i < w->n; ++i)
             for (j = i + 1; j < w->n; ++j) {
-                double dx = hcbd__mi((double)w->x[i] - w->x[j], w->p.L[0]);
-                double dy = hcbd__mi((double)w->y[i] - w->y[j], w->p.L[1]);
-                double dz = hcbd__mi((double)w->z[i] - w->z[j], w->p.L[2]);
-                double r2 = dx * dx + dy * dy + dz * dz;
-                if (r2 < g->rmax * g->rmax) hcbd__rdf_fn(g, i, j, dx, dy, dz, r2);
+                double d[3], r2;
+                hcbd__delta(w, (double)w->x[i] - w->x[j], (double)w->y[i] - w->y[j],
+                            (double)w->z[i] - w->z[j], d);
+                r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+                if (r2 < g->rmax * g->rmax) hcbd__rdf_fn(g, i, j, d[0], d[1], d[2], r2);
             }
     }
     V = w->p.L[0] * w->p.L[1] * w->p.L[2];
