@@ -286,7 +286,9 @@ hcbd_result hcbd_step(hcbd_world *w, int nsteps);
 /* Positions (unwrapped if unwrapped != 0) and velocities, id order, 3n. */
 hcbd_result hcbd_get_positions(const hcbd_world *w, double *xyz, int unwrapped);
 hcbd_result hcbd_get_velocities(const hcbd_world *w, double *v);
-/* Background kinetic temperature sum m (v - v_cm)^2 / (3 (n - 1)); 0 in BD. */
+/* Background kinetic temperature sum m u^2 / (3 (n - 1)) of the peculiar
+   velocities u (relative to the mean and, under shear, to the imposed
+   profile gdot (y - Ly/2)); 0 in BD. */
 double hcbd_temperature(const hcbd_world *w);
 /* Total momentum sum m v, accumulated in double. */
 void hcbd_momentum(const hcbd_world *w, double p[3]);
@@ -1925,14 +1927,22 @@ void hcbd_momentum(const hcbd_world *w, double p[3])
 
 double hcbd_temperature(const hcbd_world *w)
 {
-    double p[3], s = 0.0;
-    int k;
+    double u[3] = {0, 0, 0}, s = 0.0;
+    int k, d;
     if (!w || !w->gibd || w->n < 2) return 0.0;
-    hcbd_momentum(w, p);
+    /* peculiar velocities: relative to the mean and, under shear, to the
+       imposed profile gdot (y - Ly/2) */
     for (k = 0; k < w->n; ++k) {
         int i = w->slot[k];
-        double a = w->vx[i] - p[0] / (w->m * w->n), b = w->vy[i] - p[1] / (w->m * w->n);
-        double c = w->vz[i] - p[2] / (w->m * w->n);
+        u[0] += w->vx[i] - w->p.gdot * (w->y[i] - 0.5 * w->p.L[1]);
+        u[1] += w->vy[i];
+        u[2] += w->vz[i];
+    }
+    for (d = 0; d < 3; ++d) u[d] /= w->n;
+    for (k = 0; k < w->n; ++k) {
+        int i = w->slot[k];
+        double a = w->vx[i] - w->p.gdot * (w->y[i] - 0.5 * w->p.L[1]) - u[0];
+        double b = w->vy[i] - u[1], c = w->vz[i] - u[2];
         s += a * a + b * b + c * c;
     }
     return w->m * s / (3.0 * (w->n - 1));
