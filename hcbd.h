@@ -379,6 +379,17 @@ void hcbd_msd_add(hcbd_msd *d, const double *xyz);
 int hcbd_msd_result(const hcbd_msd *d, double *lag, double *msd, int64_t *count,
                     int max);
 
+/* Carreau fit of a flow curve (2016 eq. 34, 2018 eq. 36) with eta_inf
+   fixed (for GI-BD the background viscosity of eq. 35):
+     eta(gdot) = eta_inf + (eta0 - eta_inf) [1 + (lambda gdot)^2]^((n-1)/2).
+   Levenberg-Marquardt on chi^2 with the given standard errors; p[] =
+   {eta0, lambda, n} (also the start if p_start is nonzero), perr[] their
+   standard errors from the inverse curvature matrix; *chi2 (may be NULL)
+   the final chi^2.  Needs n_points >= 4, positive rates and errors. */
+hcbd_result hcbd_carreau_fit(const double *gdot, const double *eta, const double *err,
+                             int n_points, double eta_inf, int p_start, double p[3],
+                             double perr[3], double *chi2);
+
 /* >>random numbers (also for callers' own use) ----------------------------*/
 typedef struct hcbd_rng { uint64_t s[4]; } hcbd_rng;
 uint64_t hcbd_splitmix64(uint64_t *state);
@@ -2304,6 +2315,112 @@ int hcbd_mtcorr_result(const hcbd_mtcorr *c, int64_t min_count, double *lag,
         scale *= c->m;
     }
     return out < max ? out : max;
+}
+
+/* >>Carreau fit */
+static double hcbd__carreau(const double *p, double eta_inf, double g, double jac[3])
+{
+    double u = 1.0 + p[1] * p[1] * g * g, f = pow(u, 0.5 * (p[2] - 1.0)), a = p[0] - eta_inf;
+    if (jac) {
+        jac[0] = f;
+        jac[1] = a * f * (p[2] - 1.0) * p[1] * g * g / u;
+        jac[2] = a * f * 0.5 * log(u);
+    }
+    return eta_inf + a * f;
+}
+
+/* Solves the 3x3 system A x = b by Cramer's rule; 0 if singular. */
+static int hcbd__solve3(const double A[9], const double b[3], double x[3])
+{
+    double det = A[0] * (A[4] * A[8] - A[5] * A[7]) - A[1] * (A[3] * A[8] - A[5] * A[6]) +
+                 A[2] * (A[3] * A[7] - A[4] * A[6]);
+    int c, r;
+    if (!(fabs(det) > 0) || !isfinite(det)) return 0;
+    for (c = 0; c < 3; ++c) {
+        double M[9];
+        memcpy(M, A, sizeof M);
+        for (r = 0; r < 3; ++r) M[3 * r + c] = b[r];
+        x[c] = (M[0] * (M[4] * M[8] - M[5] * M[7]) - M[1] * (M[3] * M[8] - M[5] * M[6]) +
+                M[2] * (M[3] * M[7] - M[4] * M[6])) / det;
+    }
+    return 1;
+}
+
+static double hcbd__carreau_chi2(const double *g, const double *eta, const double *err, int n,
+                                 double eta_inf, const double *p, double A[9], double b[3])
+{
+    double c2 = 0.0, J[3];
+    int k, r, c;
+    if (A) for (k = 0; k < 9; ++k) A[k] = 0.0;
+    if (b) for (k = 0; k < 3; ++k) b[k] = 0.0;
+    for (k = 0; k < n; ++k) {
+        double res = (eta[k] - hcbd__carreau(p, eta_inf, g[k], J)) / err[k];
+        c2 += res * res;
+        if (A)
+            for (r = 0; r < 3; ++r) {
+                b[r] += J[r] / err[k] * res;
+                for (c = 0; c < 3; ++c) A[3 * r + c] += J[r] * J[c] / (err[k] * err[k]);
+            }
+    }
+    return c2;
+}
+
+hcbd_result hcbd_carreau_fit(const double *gdot, const double *eta, const double *err,
+                             int n_points, double eta_inf, int p_start, double p[3],
+                             double perr[3], double *chi2)
+{
+    double A[9], b[3], c2, mu = 1e-3;
+    int k, it;
+    if (!gdot || !eta || !err || !p || !perr) return HCBD_ERR_NULL;
+    if (n_points < 4 || !isfinite(eta_inf)) return HCBD_ERR_PARAM;
+    for (k = 0; k < n_points; ++k)
+        if (!(gdot[k] > 0) || !(err[k] > 0) || !isfinite(eta[k]) || !isfinite(gdot[k]) ||
+            !isfinite(err[k]))
+            return HCBD_ERR_PARAM;
+    if (!p_start) {
+        /* eta0 from the slowest rate, lambda from the middle, n = 1/2 */
+        int kmin = 0;
+        double gs = 0;
+        for (k = 0; k < n_points; ++k) {
+            if (gdot[k] < gdot[kmin]) kmin = k;
+            gs += log(gdot[k]);
+        }
+        p[0] = eta[kmin];
+        p[1] = exp(-gs / n_points);
+        p[2] = 0.5;
+    }
+    c2 = hcbd__carreau_chi2(gdot, eta, err, n_points, eta_inf, p, A, b);
+    for (it = 0; it < 500; ++it) {
+        double M[9], dp[3], q[3], c2n;
+        memcpy(M, A, sizeof M);
+        for (k = 0; k < 3; ++k) M[4 * k] *= 1.0 + mu;
+        if (!hcbd__solve3(M, b, dp)) break;
+        for (k = 0; k < 3; ++k) q[k] = p[k] + dp[k];
+        if (q[1] <= 0) q[1] = 0.5 * p[1]; /* lambda stays positive */
+        c2n = hcbd__carreau_chi2(gdot, eta, err, n_points, eta_inf, q, NULL, NULL);
+        if (c2n < c2) {
+            double rel = (c2 - c2n) / (c2 + 1e-300);
+            memcpy(p, q, 3 * sizeof *p);
+            c2 = hcbd__carreau_chi2(gdot, eta, err, n_points, eta_inf, p, A, b);
+            mu *= 0.3;
+            if (rel < 1e-12) break;
+        } else {
+            mu *= 10.0;
+            if (mu > 1e12) break;
+        }
+    }
+    {
+        /* standard errors: the inverse of the curvature matrix J^T W J */
+        double e[3], col[3];
+        int c;
+        for (c = 0; c < 3; ++c) {
+            for (k = 0; k < 3; ++k) e[k] = k == c;
+            if (!hcbd__solve3(A, e, col)) return HCBD_ERR_STATE;
+            perr[c] = sqrt(fabs(col[c]));
+        }
+    }
+    if (chi2) *chi2 = c2;
+    return isfinite(p[0] + p[1] + p[2]) ? HCBD_OK : HCBD_ERR_NONFINITE;
 }
 
 /* >>mean-squared displacement, order-n */

@@ -206,3 +206,51 @@ void test_stress_is_strain_derivative(void)
     CHECK(fabs(s[1] - s[3]) < 1e-12 * (1 + fabs(s[1])), "stress not symmetric: %g %g", s[1], s[3]);
     hcbd_world_destroy(&w);
 }
+
+/* Carreau fit on synthetic flow curves with known Gaussian errors: over
+   many noisy realisations the pulls (fit - truth) / reported error of
+   eta0, lambda and n have mean 0 and standard deviation 1 within their
+   sampling errors, so both the fit and its uncertainties are right; the
+   noiseless curve is recovered to 1e-6. */
+void test_carreau_fit(void)
+{
+    enum { NP = 20, TRIALS = 200 };
+    const double truth[3] = {2.526, 3.05, 0.344}, eta_inf = 0.9;
+    double g[NP], eta[NP], err[NP], p[3], pe[3], chi2, pull[3][TRIALS];
+    hcbd_world_def d = scene(64, 0.24);
+    hcbd_world w;
+    hcbd_rng r;
+    int k, t, c;
+    if (!make_world(&w, &d)) return;
+    hcbd_rng_seed(&r, 17);
+    for (k = 0; k < NP; ++k) {
+        g[k] = pow(10.0, -2 + 4.0 * k / (NP - 1));
+        eta[k] = eta_inf + (truth[0] - eta_inf) * pow(1 + pow(truth[1] * g[k], 2), (truth[2] - 1) / 2);
+        err[k] = 0.01 * eta[k];
+    }
+    CHECK(hcbd_carreau_fit(g, eta, err, NP, eta_inf, 0, p, pe, &chi2) == HCBD_OK, "fit failed");
+    for (c = 0; c < 3; ++c)
+        CHECK(fabs(p[c] / truth[c] - 1) < 1e-6, "noiseless: parameter %d = %g, truth %g", c, p[c], truth[c]);
+    for (t = 0; t < TRIALS; ++t) {
+        double noisy[NP];
+        for (k = 0; k < NP; ++k) noisy[k] = eta[k] + err[k] * hcbd_rng_normal(&w, &r);
+        if (hcbd_carreau_fit(g, noisy, err, NP, eta_inf, 0, p, pe, &chi2) != HCBD_OK) {
+            CHECK(0, "trial %d: fit failed", t);
+            break;
+        }
+        for (c = 0; c < 3; ++c) pull[c][t] = (p[c] - truth[c]) / pe[c];
+    }
+    for (c = 0; c < 3; ++c) {
+        double m = 0, s2 = 0;
+        for (t = 0; t < TRIALS; ++t) m += pull[c][t] / TRIALS;
+        for (t = 0; t < TRIALS; ++t) s2 += (pull[c][t] - m) * (pull[c][t] - m) / (TRIALS - 1);
+        NOTE("parameter %d: pull mean %.3f, sd %.3f", c, m, sqrt(s2));
+        /* sampling errors of the mean and sd of TRIALS unit normals */
+        CHECK(fabs(m) < 4 / sqrt((double)TRIALS) && fabs(sqrt(s2) - 1) < 4 / sqrt(2.0 * TRIALS),
+              "parameter %d: pulls have mean %g, sd %g", c, m, sqrt(s2));
+    }
+    CHECK(hcbd_carreau_fit(g, eta, err, 3, eta_inf, 0, p, pe, NULL) == HCBD_ERR_PARAM, "3 points accepted");
+    err[2] = 0;
+    CHECK(hcbd_carreau_fit(g, eta, err, NP, eta_inf, 0, p, pe, NULL) == HCBD_ERR_PARAM, "zero error accepted");
+    hcbd_world_destroy(&w);
+}
