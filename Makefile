@@ -14,7 +14,7 @@ ALL_CFLAGS = $(WARN) $(FP) $(CFLAGS) $(OMPFLAG)
 LDLIBS  := -lm
 B       := build
 
-EXAMPLES := $(B)/gibd_bulk
+EXAMPLES := $(B)/gibd_bulk $(B)/shear_flow
 HEADERS  := hcbd.h
 TEST_SRC := $(wildcard tests/test_*.c) tests/main.c
 

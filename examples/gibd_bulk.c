@@ -30,27 +30,9 @@
 
    Arguments are key=value (see usage()).  The summary at the end is one
    key=value per line. */
-#define _POSIX_C_SOURCE 200809L /* clock_gettime, mkdir under -std=c99 */
-#include "../hcbd.h"
-#include <math.h>
-#include <stdio.h>
-#include <stdlib.h>
-#include <string.h>
-#include <time.h>
-#include <errno.h>
-#include <sys/stat.h>
-#include <unistd.h>
+#include "example_common.h"
 
 #define PI 3.14159265358979323846
-
-typedef struct {
-    hcbd_world_def def;
-    int N, steps, every_rdf, every_stress, every_fric;
-    double density;
-    double L[3];
-    int box_given;
-    char out[512];
-} config;
 
 static void usage(void)
 {
@@ -64,138 +46,22 @@ static void usage(void)
             "  lagged=0|1 noise=gauss|uniform seed steps threads out\n");
 }
 
-static int parse_double(const char *key, const char *v, double *x)
-{
-    char *end;
-    errno = 0;
-    *x = strtod(v, &end);
-    if (errno || end == v || *end || !isfinite(*x)) {
-        fprintf(stderr, "gibd_bulk: %s=%s is not a number\n", key, v);
-        return 0;
-    }
-    return 1;
-}
-
-static int parse_int(const char *key, const char *v, int *x)
+static int own_key(config *c, const char *key, const char *v)
 {
     double d;
-    if (!parse_double(key, v, &d)) return 0;
-    if (d != floor(d) || d < -2e9 || d > 2e9) {
-        fprintf(stderr, "gibd_bulk: %s=%s is not an integer\n", key, v);
-        return 0;
+    if (!strcmp(key, "preset")) {
+        if (strcmp(v, "quick") && strcmp(v, "paper")) {
+            fprintf(stderr, "gibd_bulk: unknown preset '%s'\n", v);
+            return 0;
+        }
+        return 1; /* applied before the other keys */
     }
-    *x = (int)d;
-    return 1;
-}
-
-static int parse_args(int argc, char **argv, config *c)
-{
-    hcbd_params *p = &c->def.params;
-    int k;
-    /* preset first, so explicit keys override it */
-    c->steps = 40000;
-    for (k = 1; k < argc; ++k)
-        if (!strcmp(argv[k], "preset=paper")) c->steps = 1000000;
-        else if (!strncmp(argv[k], "preset=", 7) && strcmp(argv[k], "preset=quick")) {
-            fprintf(stderr, "gibd_bulk: unknown preset '%s'\n", argv[k] + 7);
-            return 0;
-        }
-    for (k = 1; k < argc; ++k) {
-        char key[64], *eq = strchr(argv[k], '=');
-        const char *v;
-        double d;
-        if (!eq || eq == argv[k] || eq - argv[k] >= (long)sizeof key) {
-            fprintf(stderr, "gibd_bulk: argument '%s' is not key=value\n", argv[k]);
-            usage();
-            return 0;
-        }
-        memcpy(key, argv[k], (size_t)(eq - argv[k]));
-        key[eq - argv[k]] = 0;
-        v = eq + 1;
-#define DBL(name, field) else if (!strcmp(key, name)) { if (!parse_double(key, v, &d)) return 0; field = d; }
-        if (!strcmp(key, "preset")) {}
-        DBL("density", c->density)
-        DBL("dt", p->dt) DBL("kT", p->kT) DBL("xi", p->xi) DBL("xip", p->xip)
-        DBL("tau", p->tau) DBL("Rc", p->Rc) DBL("f", p->f) DBL("sigma", p->sigma)
-        DBL("rcut", p->rcut) DBL("skin", p->skin) DBL("gdot", p->gdot)
-        else if (!strcmp(key, "Lx") || !strcmp(key, "Ly") || !strcmp(key, "Lz")) {
-            if (!parse_double(key, v, &d)) return 0;
-            c->L[key[1] - 'x'] = d;
-            c->box_given |= 1 << (key[1] - 'x');
-        }
-        else if (!strcmp(key, "N")) { if (!parse_int(key, v, &c->N)) return 0; }
-        else if (!strcmp(key, "steps")) { if (!parse_int(key, v, &c->steps)) return 0; }
-        else if (!strcmp(key, "threads")) { if (!parse_int(key, v, &p->threads)) return 0; }
-        else if (!strcmp(key, "density_norm")) { if (!parse_int(key, v, &p->density_norm)) return 0; }
-        else if (!strcmp(key, "lagged")) { if (!parse_int(key, v, &p->lagged_density)) return 0; }
-        else if (!strcmp(key, "seed")) {
-            char *end;
-            errno = 0;
-            p->seed = strtoull(v, &end, 10);
-            if (errno || end == v || *end) { fprintf(stderr, "gibd_bulk: seed=%s is not an unsigned integer\n", v); return 0; }
-        }
-        else if (!strcmp(key, "potential")) {
-            if (!strcmp(v, "star")) p->potential = HCBD_POT_STAR;
-            else if (!strcmp(v, "ideal")) p->potential = HCBD_POT_IDEAL;
-            else { fprintf(stderr, "gibd_bulk: potential=%s is not star or ideal\n", v); return 0; }
-        }
-        else if (!strcmp(key, "dynamics")) {
-            if (!strcmp(v, "gibd")) p->dynamics = HCBD_DYN_GIBD;
-            else if (!strcmp(v, "bd")) p->dynamics = HCBD_DYN_BD;
-            else { fprintf(stderr, "gibd_bulk: dynamics=%s is not gibd or bd\n", v); return 0; }
-        }
-        else if (!strcmp(key, "noise")) {
-            if (!strcmp(v, "gauss")) p->noise = HCBD_NOISE_GAUSS;
-            else if (!strcmp(v, "uniform")) p->noise = HCBD_NOISE_UNIFORM;
-            else { fprintf(stderr, "gibd_bulk: noise=%s is not gauss or uniform\n", v); return 0; }
-        }
-        else if (!strcmp(key, "out")) snprintf(c->out, sizeof c->out, "%s", v);
-        else {
-            fprintf(stderr, "gibd_bulk: unknown key '%s'\n", key);
-            usage();
-            return 0;
-        }
-#undef DBL
+    if (!strcmp(key, "gdot")) {
+        if (!parse_double(c, key, v, &d)) return 0;
+        c->def.params.gdot = d;
+        return 1;
     }
-    if (c->N < 2) { fprintf(stderr, "gibd_bulk: N=%d must be at least 2\n", c->N); return 0; }
-    if (!(c->density > 0)) { fprintf(stderr, "gibd_bulk: density=%g must be positive\n", c->density); return 0; }
-    if (c->steps < 1000) { fprintf(stderr, "gibd_bulk: steps=%d must be at least 1000\n", c->steps); return 0; }
-    for (k = 0; k < 3; ++k)
-        if (!(c->box_given >> k & 1)) c->L[k] = cbrt(c->N / c->density);
-    memcpy(p->L, c->L, sizeof c->L);
-    p->density = c->density;
-    c->def.capacity = c->N;
-    return 1;
-}
-
-static FILE *open_out(const config *c, const char *name)
-{
-    char path[700];
-    FILE *f;
-    snprintf(path, sizeof path, "%s/%s", c->out, name);
-    f = fopen(path, "w");
-    if (!f) fprintf(stderr, "gibd_bulk: cannot write %s\n", path);
-    return f;
-}
-
-static void mkdirs(const char *path)
-{
-    char tmp[512];
-    size_t k;
-    snprintf(tmp, sizeof tmp, "%s", path);
-    for (k = 1; tmp[k]; ++k)
-        if (tmp[k] == '/') { tmp[k] = 0; mkdir(tmp, 0755); tmp[k] = '/'; }
-    mkdir(tmp, 0755);
-}
-
-/* Mean and standard error of per-block values. */
-static void mean_err(const double *x, int n, double *m, double *e)
-{
-    double s = 0, s2 = 0;
-    int k;
-    for (k = 0; k < n; ++k) { s += x[k]; s2 += x[k] * x[k]; }
-    *m = s / n;
-    *e = n > 1 ? sqrt(fmax(s2 / n - *m * *m, 0) / (n - 1)) : 0;
+    return -1;
 }
 
 /* Least-squares initial rate of a discrete decay: y(s) = 1 - C(s)/C(0) =
@@ -270,18 +136,22 @@ int main(int argc, char **argv)
     double hist[NRDF], *xyz, *vel, V, k1, nu_theory, rdf_max;
     double Tblk[NB], nu_init_b[NB], nu_hydro_b[NB], mf_b[NB], eff_b[NB];
     double mf = 0, eff = 0, sumf = 0, sk = 0;
-    int nmf = 0, b, s, k, gibd, blk_steps, tty = isatty(fileno(stderr));
+    int nmf = 0, b, s, k, gibd, blk_steps;
     size_t bytes_ct = hcbd_mtcorr_bytes(12, PC, 2, LEVC), bytes_gt, bytes_v, bytes_msd;
     void *mem_ct, *mem_gt, *mem_v, *mem_msd;
-    struct timespec t0, t1;
+    struct timespec t0;
     FILE *f;
 
     memset(&c, 0, sizeof c);
+    c.name = "gibd_bulk";
     c.def = hcbd_world_def_default();
     c.N = 512;
     c.density = 0.24;
+    c.steps = 40000;
+    for (k = 1; k < argc; ++k) /* the preset first: explicit keys override it */
+        if (!strcmp(argv[k], "preset=paper")) c.steps = 1000000;
     snprintf(c.out, sizeof c.out, "out/gibd_bulk");
-    if (!parse_args(argc, argv, &c)) return 2;
+    if (!parse_args(argc, argv, &c, own_key, usage)) return 2;
     p = &c.def.params;
     gibd = p->dynamics == HCBD_DYN_GIBD;
     if (hcbd_world_create(&w, &c.def) != HCBD_OK) {
@@ -395,15 +265,8 @@ int main(int argc, char **argv)
             eff_b[b] = effb / nmb;
             mf += mfb; eff += effb; sumf += sfb; nmf += nmb;
         }
-        clock_gettime(CLOCK_MONOTONIC, &t1);
-        {
-            double el = (t1.tv_sec - t0.tv_sec) + 1e-9 * (t1.tv_nsec - t0.tv_nsec);
-            fprintf(stderr, "%sstep %d / %d (%3.0f %%), %.0f s elapsed, %.0f s left   %s",
-                    tty ? "\r" : "", (b + 1) * blk_steps, NB * blk_steps, 100.0 * (b + 1) / NB, el,
-                    el / (b + 1) * (NB - b - 1), tty ? "" : "\n");
-        }
+        progress(&c, (b + 1) * blk_steps, NB * blk_steps, &t0);
     }
-    if (tty) fprintf(stderr, "\n");
 
     /* ---- CSV output ---- */
     {
@@ -495,13 +358,7 @@ int main(int argc, char **argv)
                        "set logscale xy\nset output 'vacf.png'\nset ylabel '<v(t).v(0)>'\n"
                        "plot 'vacf.csv' u 1:($2>0?$2:1/0) w lp, '' u 1:3 w l\n");
         fclose(f);
-        if (system("command -v gnuplot >/dev/null 2>&1") == 0) {
-            char cmd[800];
-            snprintf(cmd, sizeof cmd, "cd '%s' && gnuplot plots.gp", c.out);
-            if (system(cmd) != 0) fprintf(stderr, "gibd_bulk: gnuplot failed\n");
-        } else {
-            printf("gnuplot not found: skipped the PNG figures (CSV files and plots.gp are in %s)\n", c.out);
-        }
+        make_figures(&c);
     }
 
     /* ---- summary ---- */

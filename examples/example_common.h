@@ -1,0 +1,200 @@
+/* Shared by the examples: key=value arguments named as in MODEL.md and
+   DESIGN.md, output files, block statistics.  Each example handles its own
+   keys in a callback and leaves the physical ones to parse_args. */
+#ifndef HCBD_EXAMPLE_COMMON_H
+#define HCBD_EXAMPLE_COMMON_H
+#define _POSIX_C_SOURCE 200809L /* mkdir, isatty, clock_gettime under -std=c99 */
+#include "../hcbd.h"
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <time.h>
+#include <unistd.h>
+
+typedef struct {
+    const char *name;          /* program name for messages */
+    hcbd_world_def def;
+    int N, steps;
+    double density;
+    double L[3];
+    int box_given;
+    char out[512];
+} config;
+
+/* An example's own key: 1 taken, 0 error (already reported), -1 unknown. */
+typedef int (*own_key_fn)(config *c, const char *key, const char *v);
+
+static int parse_double(const config *c, const char *key, const char *v, double *x)
+{
+    char *end;
+    errno = 0;
+    *x = strtod(v, &end);
+    if (errno || end == v || *end || !isfinite(*x)) {
+        fprintf(stderr, "%s: %s=%s is not a number\n", c->name, key, v);
+        return 0;
+    }
+    return 1;
+}
+
+static int parse_int(const config *c, const char *key, const char *v, int *x)
+{
+    double d;
+    if (!parse_double(c, key, v, &d)) return 0;
+    if (d != floor(d) || d < -2e9 || d > 2e9) {
+        fprintf(stderr, "%s: %s=%s is not an integer\n", c->name, key, v);
+        return 0;
+    }
+    *x = (int)d;
+    return 1;
+}
+
+static int parse_choice(const config *c, const char *key, const char *v, const char *a,
+                        const char *b, int *x, int va, int vb)
+{
+    if (!strcmp(v, a)) *x = va;
+    else if (!strcmp(v, b)) *x = vb;
+    else {
+        fprintf(stderr, "%s: %s=%s is not %s or %s\n", c->name, key, v, a, b);
+        return 0;
+    }
+    return 1;
+}
+
+/* Physical keys of MODEL.md, seed, steps, threads, out; the example's own
+   keys first through own().  Returns 0 after printing what was wrong. */
+static int parse_args(int argc, char **argv, config *c, own_key_fn own, void (*usage)(void))
+{
+    hcbd_params *p = &c->def.params;
+    int k, e;
+    for (k = 1; k < argc; ++k) {
+        char key[64], *eq = strchr(argv[k], '=');
+        const char *v;
+        double d;
+        if (!eq || eq == argv[k] || eq - argv[k] >= (long)sizeof key) {
+            fprintf(stderr, "%s: argument '%s' is not key=value\n", c->name, argv[k]);
+            usage();
+            return 0;
+        }
+        memcpy(key, argv[k], (size_t)(eq - argv[k]));
+        key[eq - argv[k]] = 0;
+        v = eq + 1;
+        e = own ? own(c, key, v) : -1;
+        if (e == 0) return 0;
+        if (e == 1) continue;
+#define DBL(name, field) else if (!strcmp(key, name)) { if (!parse_double(c, key, v, &d)) return 0; field = d; }
+        if (0) {}
+        DBL("density", c->density)
+        DBL("dt", p->dt) DBL("kT", p->kT) DBL("xi", p->xi) DBL("xip", p->xip)
+        DBL("tau", p->tau) DBL("Rc", p->Rc) DBL("f", p->f) DBL("sigma", p->sigma)
+        DBL("rcut", p->rcut) DBL("skin", p->skin)
+        else if (!strcmp(key, "Lx") || !strcmp(key, "Ly") || !strcmp(key, "Lz")) {
+            if (!parse_double(c, key, v, &d)) return 0;
+            c->L[key[1] - 'x'] = d;
+            c->box_given |= 1 << (key[1] - 'x');
+        }
+        else if (!strcmp(key, "N")) { if (!parse_int(c, key, v, &c->N)) return 0; }
+        else if (!strcmp(key, "steps")) { if (!parse_int(c, key, v, &c->steps)) return 0; }
+        else if (!strcmp(key, "threads")) { if (!parse_int(c, key, v, &p->threads)) return 0; }
+        else if (!strcmp(key, "density_norm")) { if (!parse_int(c, key, v, &p->density_norm)) return 0; }
+        else if (!strcmp(key, "lagged")) { if (!parse_int(c, key, v, &p->lagged_density)) return 0; }
+        else if (!strcmp(key, "seed")) {
+            char *end;
+            errno = 0;
+            p->seed = strtoull(v, &end, 10);
+            if (errno || end == v || *end || *v == '-') {
+                fprintf(stderr, "%s: seed=%s is not an unsigned integer\n", c->name, v);
+                return 0;
+            }
+        }
+        else if (!strcmp(key, "potential")) {
+            int x;
+            if (!parse_choice(c, key, v, "star", "ideal", &x, HCBD_POT_STAR, HCBD_POT_IDEAL)) return 0;
+            p->potential = (hcbd_potential)x;
+        }
+        else if (!strcmp(key, "dynamics")) {
+            int x;
+            if (!parse_choice(c, key, v, "gibd", "bd", &x, HCBD_DYN_GIBD, HCBD_DYN_BD)) return 0;
+            p->dynamics = (hcbd_dynamics)x;
+        }
+        else if (!strcmp(key, "noise")) {
+            int x;
+            if (!parse_choice(c, key, v, "gauss", "uniform", &x, HCBD_NOISE_GAUSS, HCBD_NOISE_UNIFORM)) return 0;
+            p->noise = (hcbd_noise)x;
+        }
+        else if (!strcmp(key, "out")) snprintf(c->out, sizeof c->out, "%s", v);
+        else {
+            fprintf(stderr, "%s: unknown key '%s'\n", c->name, key);
+            usage();
+            return 0;
+        }
+#undef DBL
+    }
+    if (c->N < 2) { fprintf(stderr, "%s: N=%d must be at least 2\n", c->name, c->N); return 0; }
+    if (!(c->density > 0)) { fprintf(stderr, "%s: density=%g must be positive\n", c->name, c->density); return 0; }
+    if (c->steps < 1000) { fprintf(stderr, "%s: steps=%d must be at least 1000\n", c->name, c->steps); return 0; }
+    for (k = 0; k < 3; ++k)
+        if (!(c->box_given >> k & 1)) c->L[k] = cbrt(c->N / c->density);
+    memcpy(p->L, c->L, sizeof c->L);
+    p->density = c->density;
+    c->def.capacity = c->N;
+    return 1;
+}
+
+static void mkdirs(const char *path)
+{
+    char tmp[512];
+    size_t k;
+    snprintf(tmp, sizeof tmp, "%s", path);
+    for (k = 1; tmp[k]; ++k)
+        if (tmp[k] == '/') { tmp[k] = 0; mkdir(tmp, 0755); tmp[k] = '/'; }
+    mkdir(tmp, 0755);
+}
+
+static FILE *open_out(const config *c, const char *name)
+{
+    char path[700];
+    FILE *f;
+    snprintf(path, sizeof path, "%s/%s", c->out, name);
+    f = fopen(path, "w");
+    if (!f) fprintf(stderr, "%s: cannot write %s\n", c->name, path);
+    return f;
+}
+
+/* Runs gnuplot on plots.gp in the output folder, or says why not. */
+static void make_figures(const config *c)
+{
+    if (system("command -v gnuplot >/dev/null 2>&1") == 0) {
+        char cmd[800];
+        snprintf(cmd, sizeof cmd, "cd '%s' && gnuplot plots.gp", c->out);
+        if (system(cmd) != 0) fprintf(stderr, "%s: gnuplot failed\n", c->name);
+    } else {
+        printf("gnuplot not found: skipped the PNG figures (CSV files and plots.gp are in %s)\n", c->out);
+    }
+}
+
+/* Mean and standard error of per-block values. */
+static void mean_err(const double *x, int n, double *m, double *e)
+{
+    double s = 0, s2 = 0;
+    int k;
+    for (k = 0; k < n; ++k) { s += x[k]; s2 += x[k] * x[k]; }
+    *m = s / n;
+    *e = n > 1 ? sqrt(fmax(s2 / n - *m * *m, 0) / (n - 1)) : 0;
+}
+
+/* Progress on stderr: a rewritten line on a terminal, else one per call. */
+static void progress(const config *c, int done, int total, const struct timespec *t0)
+{
+    struct timespec t1;
+    double el;
+    int tty = isatty(fileno(stderr));
+    clock_gettime(CLOCK_MONOTONIC, &t1);
+    el = (t1.tv_sec - t0->tv_sec) + 1e-9 * (t1.tv_nsec - t0->tv_nsec);
+    fprintf(stderr, "%s%s: step %d / %d (%3.0f %%), %.0f s elapsed, %.0f s left   %s", tty ? "\r" : "",
+            c->name, done, total, 100.0 * done / total, el, done ? el / done * (total - done) : 0.0,
+            tty ? (done == total ? "\n" : "") : "\n");
+}
+#endif
