@@ -63,6 +63,15 @@ static int parse_choice(const config *c, const char *key, const char *v, const c
     return 1;
 }
 
+/* preset=quick|paper: read by each example before parse_args (so that
+   explicit keys override it); here only checked. */
+static int check_preset(const config *c, const char *v)
+{
+    if (!strcmp(v, "quick") || !strcmp(v, "paper")) return 1;
+    fprintf(stderr, "%s: unknown preset '%s' (quick or paper)\n", c->name, v);
+    return 0;
+}
+
 /* Physical keys of MODEL.md, seed, steps, threads, out; the example's own
    keys first through own().  Returns 0 after printing what was wrong. */
 static int parse_args(int argc, char **argv, config *c, own_key_fn own, void (*usage)(void))

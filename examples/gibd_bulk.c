@@ -49,13 +49,7 @@ static void usage(void)
 static int own_key(config *c, const char *key, const char *v)
 {
     double d;
-    if (!strcmp(key, "preset")) {
-        if (strcmp(v, "quick") && strcmp(v, "paper")) {
-            fprintf(stderr, "gibd_bulk: unknown preset '%s'\n", v);
-            return 0;
-        }
-        return 1; /* applied before the other keys */
-    }
+    if (!strcmp(key, "preset")) return check_preset(c, v);
     if (!strcmp(key, "gdot")) {
         if (!parse_double(c, key, v, &d)) return 0;
         c->def.params.gdot = d;

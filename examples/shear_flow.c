@@ -42,13 +42,7 @@ static void usage(void)
 
 static int own_key(config *c, const char *key, const char *v)
 {
-    if (!strcmp(key, "preset")) {
-        if (strcmp(v, "quick") && strcmp(v, "paper")) {
-            fprintf(stderr, "shear_flow: unknown preset '%s'\n", v);
-            return 0;
-        }
-        return 1; /* applied before the other keys */
-    }
+    if (!strcmp(key, "preset")) return check_preset(c, v);
     if (!strcmp(key, "gdot")) {
         char buf[512], *tok, *save = NULL;
         snprintf(buf, sizeof buf, "%s", v);
