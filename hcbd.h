@@ -632,8 +632,10 @@ hcbd_result hcbd_params_check(const hcbd_params *p, char *msg, size_t msg_size)
         HCBD__CHECK(p->dynamics == HCBD_DYN_GIBD, "gdot", p->gdot);
         /* the offset may move by less than a box edge per step */
         HCBD__CHECK(fabs(p->gdot * p->L[1] * p->dt) < p->L[0], "gdot", p->gdot);
+        /* the sheared scan needs 3 cells along x and y, counted exactly as
+           hcbd__cells does (L / rl can round just below 3) */
         for (d = 0; d < 2; ++d)
-            if (p->L[d] < 3.0 * (hcbd__cutmax(p) + p->skin)) {
+            if (floor(p->L[d] / (hcbd__cutmax(p) + p->skin)) < 3.0) {
                 if (msg && msg_size)
                     snprintf(msg, msg_size,
                              "box too small for Lees-Edwards: L[%d] = %.17g < 3 (cut-off "
@@ -1392,6 +1394,7 @@ static int hcbd__scan(const hcbd_world *w, int i, int32_t *out, int room)
             x0 = (int)floor((xs - w->rlist) / cw);
             x1 = (int)floor((xs + w->rlist) / cw);
             if (x1 - x0 > 2) x1 = x0 + 2;
+            if (x1 - x0 > w->nc[0] - 1) x1 = x0 + w->nc[0] - 1; /* each cell once */
         }
         for (o0 = x0; o0 <= x1; ++o0)
             for (o2 = lo[2]; o2 <= hi[2]; ++o2) {
@@ -1775,6 +1778,15 @@ static hcbd_result hcbd__integrate(hcbd_world *w)
             if (w->id[i] < bad_step) bad_step = w->id[i];
             continue;
         }
+        /* a coordinate is stored as hcbd_real: decide wraps on what will be
+           stored, so a value that rounds to L crosses (with its image and
+           Lees-Edwards bookkeeping) and a step just below 0 that would
+           round back to L stays at 0 */
+        for (d = 0; d < 3; ++d) {
+            const double Ld = w->p.L[d];
+            if (r[d] < 0.0 && (hcbd_real)(r[d] + Ld) >= (hcbd_real)Ld) r[d] = 0.0;
+            else if (r[d] < Ld && (hcbd_real)r[d] >= (hcbd_real)Ld) r[d] = Ld;
+        }
         if (le) {
             /* crossing the sheared boundary: x and the velocity variable
                jump (MODEL 5); the carried momentum is the carrier flux */
@@ -2109,6 +2121,7 @@ uint64_t hcbd_state_checksum(const hcbd_world *w)
     int i;
     if (!w) return 0;
     h = hcbd__hash(h, &w->step, sizeof w->step);
+    h = hcbd__hash(h, &w->le_offset, sizeof w->le_offset);
     for (i = 0; i < w->n; ++i) {
         int s = w->slot[i];
         h = hcbd__hash(h, &w->x[s], sizeof(hcbd_real));
@@ -2117,6 +2130,7 @@ uint64_t hcbd_state_checksum(const hcbd_world *w)
         h = hcbd__hash(h, &w->ix[s], 4);
         h = hcbd__hash(h, &w->iy[s], 4);
         h = hcbd__hash(h, &w->iz[s], 4);
+        h = hcbd__hash(h, &w->lx[s], sizeof(double));
         if (w->gibd) {
             h = hcbd__hash(h, &w->vx[s], sizeof(hcbd_real));
             h = hcbd__hash(h, &w->vy[s], sizeof(hcbd_real));

@@ -81,45 +81,160 @@ void test_le_neighbour_list(void)
         }
 }
 
-/* A particle leaving through the top re-enters at the bottom with x moved
-   back by the offset and its velocity variable lowered by gdot Ly, exactly;
-   its unwrapped x continues smoothly. */
+/* A particle leaving through the top (bottom) re-enters at the bottom
+   (top) with x moved back (forward) by the offset and its velocity variable
+   lowered (raised) by gdot Ly, exactly; its unwrapped position continues
+   smoothly; the one-step carrier stress is -(m v_x)/(Lx Lz dt) upward and
+   +m (v_x + gdot Ly)/(Lx Lz dt) downward (MODEL 5). */
 void test_le_crossing_jump(void)
 {
-    hcbd_world_def d = shear_scene(2, 0.7);
-    hcbd_world w;
-    double xyz[6], v[6], x1[6], v1[6], u0[6], u1[6], s;
-    d.params.kT = 0;
-    d.params.dt = 1e-3;
-    if (!make_world(&w, &d)) return;
-    xyz[0] = 3.0; xyz[1] = w.p.L[1] - 1e-3; xyz[2] = 4.0;   /* about to cross */
-    xyz[3] = 9.0; xyz[4] = 6.0; xyz[5] = 9.0;               /* far away */
-    hcbd_world_set_positions(&w, 2, xyz);
-    v[0] = 0.3; v[1] = 5.0; v[2] = 0.0; v[3] = v[4] = v[5] = 0.0;
-    hcbd_world_set_velocities(&w, v);
-    run(&w, 10); /* the offset moves away from 0 (particle 0 crosses once) */
-    /* a fresh crossing at that nonzero offset */
-    xyz[1] = w.p.L[1] - 1e-3;
-    s = w.le_offset;
-    {
-        double keep = w.le_offset;
+    int dir;
+    for (dir = 0; dir < 2; ++dir) {
+        hcbd_world_def d = shear_scene(2, 0.7);
+        hcbd_world w;
+        double xyz[6], v[6], x1[6], v1[6], u0[6], u1[6], fl[4], s, vy = dir ? -5.0 : 5.0;
+        double vle = 0.7 * 12.9, area_dt = 12.9 * 12.9 * 1e-3;
+        d.params.kT = 0;
+        d.params.dt = 1e-3;
+        if (!make_world(&w, &d)) return;
+        xyz[0] = 3.0; xyz[1] = dir ? 1e-3 : w.p.L[1] - 1e-3; xyz[2] = 4.0; /* about to cross */
+        xyz[3] = 9.0; xyz[4] = 6.0; xyz[5] = 9.0;                           /* far away */
         hcbd_world_set_positions(&w, 2, xyz);
-        w.le_offset = keep;
+        v[0] = 0.3; v[1] = vy; v[2] = 0.0; v[3] = v[4] = v[5] = 0.0;
+        hcbd_world_set_velocities(&w, v);
+        run(&w, 10); /* the offset moves away from 0 (particle 0 crosses once) */
+        s = w.le_offset;
+        {
+            double keep = w.le_offset;
+            hcbd_world_set_positions(&w, 2, xyz);
+            w.le_offset = keep;
+        }
+        hcbd_world_set_velocities(&w, v);
+        hcbd_get_positions(&w, u0, 1);
+        hcbd_flux_enable(&w, 1);
+        run(&w, 1);
+        hcbd_flux_read(&w, fl, NULL);
+        hcbd_get_positions(&w, x1, 0);
+        hcbd_get_positions(&w, u1, 1);
+        hcbd_get_velocities(&w, v1);
+        {
+            double s_new = s + 0.7 * w.p.L[1] * 1e-3, sg = dir ? -1.0 : 1.0;
+            double xe = 3.0 + 0.3e-3 - sg * s_new, ye = dir ? w.p.L[1] - 4e-3 : 4e-3;
+            double ce = dir ? w.m * (0.3 + vle) / area_dt : -w.m * 0.3 / area_dt;
+            xe -= w.p.L[0] * floor(xe / w.p.L[0]);
+            CHECK(fabs(v1[0] - (0.3 - sg * vle)) < 1e-12, "dir %d: velocity jump: %.15g", dir, v1[0]);
+            CHECK(fabs(x1[1] - ye) < 1e-12, "dir %d: re-entry y %.15g", dir, x1[1]);
+            CHECK(fabs(x1[0] - xe) < 1e-12, "dir %d: re-entry x %.15g, expected %.15g", dir, x1[0], xe);
+            CHECK(fabs(u1[0] - (u0[0] + 0.3e-3)) < 1e-12 && fabs(u1[1] - (u0[1] + vy * 1e-3)) < 1e-12,
+                  "dir %d: unwrapped position jumped: %g %g -> %g %g", dir, u0[0], u0[1], u1[0], u1[1]);
+            CHECK(fabs(fl[2] / ce - 1) < 1e-12, "dir %d: carrier stress %.15g, expected %.15g", dir,
+                  fl[2], ce);
+        }
+        hcbd_world_destroy(&w);
     }
-    hcbd_world_set_velocities(&w, v);
-    hcbd_get_positions(&w, u0, 1);
-    run(&w, 1);
-    hcbd_get_positions(&w, x1, 0);
-    hcbd_get_positions(&w, u1, 1);
-    hcbd_get_velocities(&w, v1);
-    {
-        double s_new = s + 0.7 * w.p.L[1] * 1e-3, xe = 3.0 + 0.3e-3 - s_new;
-        xe -= w.p.L[0] * floor(xe / w.p.L[0]);
-        CHECK(fabs(v1[0] - (0.3 - 0.7 * w.p.L[1])) < 1e-12, "velocity jump: %.15g", v1[0]);
-        CHECK(fabs(x1[1] - (5e-3 - 1e-3)) < 1e-12, "re-entry y %.15g", x1[1]);
-        CHECK(fabs(x1[0] - xe) < 1e-12, "re-entry x %.15g, expected %.15g", x1[0], xe);
-        CHECK(fabs(u1[0] - (u0[0] + 0.3e-3)) < 1e-12 && fabs(u1[1] - (u0[1] + 5e-3)) < 1e-12,
-              "unwrapped position jumped: %g %g -> %g %g", u0[0], u0[1], u1[0], u1[1]);
+}
+
+/* Under shear with no noise, starting from rest, the offset drift decides
+   when the list is rebuilt: at every step of a run every pair within the
+   cut-off (sheared minimum image, independent code) must be in the list,
+   in a box of exactly 3 cells per edge.  At gdot = 3 the list lives a few
+   steps; at gdot = 20 a criterion without the drift misses pairs. */
+void test_le_list_every_step(void)
+{
+    enum { N = 300 };
+    double rates[2] = {3.0, 20.0};
+    int g;
+    for (g = 0; g < 2; ++g) {
+        hcbd_world_def d = shear_scene(N, rates[g]);
+        hcbd_world w;
+        static double xyz[3 * N];
+        int step, i, j, missing = 0, checked = 0;
+        d.params.kT = 0;
+        d.params.dt = 1e-3;
+        d.params.L[0] = d.params.L[1] = d.params.L[2] = 8.75; /* 3 cells of 2.9 */
+        if (!make_world(&w, &d)) return;
+        CHECK(w.nc[0] == 3 && w.nc[1] == 3, "cells %d %d", w.nc[0], w.nc[1]);
+        hcbd_world_place_random(&w, N);
+        /* from rest, not on the shear profile: then only the offset drift
+           moves pairs across the boundary relative to each other */
+        memset(xyz, 0, sizeof xyz);
+        hcbd_world_set_velocities(&w, xyz);
+        for (step = 0; step < 600; ++step) {
+            double out[3];
+            run(&w, 1);
+            hcbd_friction_average(&w, 1, out); /* the list the next step will use */
+            hcbd_get_positions(&w, xyz, 0);
+            for (i = 0; i < N; ++i)
+                for (j = i + 1; j < N; ++j)
+                    if (le_r2(xyz, i, j, w.p.L, w.le_offset, NULL) < 2.5 * 2.5) {
+                        int32_t p, si = w.slot[i], ok = 0;
+                        for (p = w.nb_start[si]; p < w.nb_start[si + 1]; ++p)
+                            if (w.id[w.nb_j[p]] == j) ok = 1;
+                        missing += !ok;
+                        ++checked;
+                    }
+        }
+        NOTE("gdot %g: %d pair-steps checked over 600 steps, %lld rebuilds", rates[g], checked,
+             (long long)w.n_rebuilds);
+        CHECK(missing == 0, "gdot %g: %d of %d in-range pairs missing from the list", rates[g], missing,
+              checked);
+        if (g == 0)
+            CHECK(w.n_rebuilds < 300, "the list is rebuilt every step (%lld): reuse not exercised",
+                  (long long)w.n_rebuilds);
+        hcbd_world_destroy(&w);
+    }
+}
+
+/* The carrier stress measured at the sheared boundary equals an
+   independent count at three interior planes y = Ly/4, Ly/2, 3Ly/4: each
+   particle crossing upward (downward) in a step carries +(-) m v_x of the
+   new step across it.  Errors from blocks. */
+void test_le_carrier_flux_planes(void)
+{
+    enum { N = 600, NB = 8 };
+    hcbd_world_def d = shear_scene(N, 10.0);
+    hcbd_world w;
+    static double y0[N], xyz[3 * N], v[3 * N];
+    double lib[NB], pl[NB], A, ml, el, mp, ep;
+    int b, s, i, q, steps = t_quick ? 100 : 1000;
+    d.params.tau = 1e-2;
+    d.params.dt = 1e-3;
+    d.params.skin = 1.0;
+    if (!make_world(&w, &d)) return;
+    hcbd_world_place_random(&w, N);
+    run(&w, 500);
+    A = w.p.L[0] * w.p.L[2];
+    for (b = 0; b < NB; ++b) {
+        double c = 0, fl[4];
+        hcbd_flux_enable(&w, 1);
+        hcbd_get_positions(&w, xyz, 1);
+        for (i = 0; i < N; ++i) y0[i] = xyz[3 * i + 1];
+        for (s = 0; s < steps; ++s) {
+            run(&w, 1);
+            hcbd_get_positions(&w, xyz, 1); /* unwrapped: interior planes of every image */
+            hcbd_get_velocities(&w, v);
+            for (i = 0; i < N; ++i) {
+                double ya = y0[i], yb = xyz[3 * i + 1];
+                for (q = 1; q <= 3; ++q) {
+                    double ka = floor(ya / w.p.L[1] - 0.25 * q), kb = floor(yb / w.p.L[1] - 0.25 * q);
+                    /* velocities of other images differ by gdot Ly: use this
+                       image's frame, where the step ends */
+                    if (kb > ka) c += w.m * v[3 * i];
+                    if (kb < ka) c -= w.m * v[3 * i];
+                }
+                y0[i] = yb;
+            }
+        }
+        hcbd_flux_read(&w, fl, NULL);
+        lib[b] = fl[2];
+        pl[b] = -c / 3 / (A * w.p.dt * steps);
+    }
+    block_stats(lib, NB, NB, &ml, &el);
+    block_stats(pl, NB, NB, &mp, &ep);
+    NOTE("carrier stress: boundary %.5f +- %.5f, interior planes %.5f +- %.5f", ml, el, mp, ep);
+    if (!t_quick) {
+        CHECK(fabs(ml - mp) < 4 * sqrt(el * el + ep * ep), "boundary %g vs planes %g", ml, mp);
+        CHECK(mp > 4 * ep, "carrier stress not resolved: %g +- %g", mp, ep);
     }
     hcbd_world_destroy(&w);
 }
@@ -272,6 +387,11 @@ void test_le_bad_inputs(void)
     d.params.L[1] = 8.0; /* < 3 (2.5 + 0.4) */
     r = hcbd_world_create(&w, &d);
     CHECK(r == HCBD_ERR_BOX && strstr(w.err.msg, "L[1] = 8"), "short box: %s", w.err.msg);
+    d = shear_scene(100, 1.0);
+    d.params.skin = 0.178;
+    d.params.L[1] = 3 * (2.5 + 0.178); /* L / rl = 2.9999999999999996: 2 cells */
+    r = hcbd_world_create(&w, &d);
+    CHECK(r == HCBD_ERR_BOX, "box of 3 (cut + skin) that rounds to 2 cells: %s", w.err.msg);
     d = shear_scene(100, 1e6); /* offset moves more than a box per step */
     r = hcbd_world_create(&w, &d);
     CHECK(r == HCBD_ERR_PARAM && strstr(w.err.msg, "gdot = "), "huge gdot: %s", w.err.msg);
