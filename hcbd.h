@@ -1286,10 +1286,26 @@ static inline double hcbd__mi(double d, double L)
    and the returned image index k of j: k = +1 when the nearest image of j
    is in the box above (shifted by +offset in x, its velocity variable by
    +gdot Ly), -1 below, 0 inside.  Without shear k is always 0. */
-static inline int hcbd__delta(const hcbd_world *w, double dx, double dy, double dz, double d[3])
+typedef struct hcbd__box {
+    double L[3], offset;
+    int le;
+} hcbd__box;
+
+/* Hot loops copy the box into a local: a store into a pair buffer could
+   otherwise alias w->p.L and force a reload at every pair. */
+static inline hcbd__box hcbd__box_of(const hcbd_world *w)
+{
+    hcbd__box b;
+    b.L[0] = w->p.L[0]; b.L[1] = w->p.L[1]; b.L[2] = w->p.L[2];
+    b.offset = w->le_offset;
+    b.le = w->le_on;
+    return b;
+}
+
+static inline int hcbd__delta_box(const hcbd__box *b, double dx, double dy, double dz, double d[3])
 {
     int k = 0;
-    const double Ly = w->p.L[1];
+    const double Ly = b->L[1];
     if (dy > 0.5 * Ly) {
         dy -= Ly;
         k = 1;
@@ -1297,17 +1313,23 @@ static inline int hcbd__delta(const hcbd_world *w, double dx, double dy, double 
         dy += Ly;
         k = -1;
     }
-    if (k && w->le_on) {
-        double Lx = w->p.L[0];
-        dx -= k * w->le_offset; /* now in (-2 Lx, 2 Lx) */
+    if (k && b->le) {
+        double Lx = b->L[0];
+        dx -= k * b->offset; /* now in (-2 Lx, 2 Lx) */
         dx -= Lx * floor(dx / Lx + 0.5);
     } else {
-        dx = hcbd__mi(dx, w->p.L[0]);
+        dx = hcbd__mi(dx, b->L[0]);
     }
     d[0] = dx;
     d[1] = dy;
-    d[2] = hcbd__mi(dz, w->p.L[2]);
-    return w->le_on ? k : 0;
+    d[2] = hcbd__mi(dz, b->L[2]);
+    return b->le ? k : 0;
+}
+
+static inline int hcbd__delta(const hcbd_world *w, double dx, double dy, double dz, double d[3])
+{
+    hcbd__box b = hcbd__box_of(w);
+    return hcbd__delta_box(&b, dx, dy, dz, d);
 }
 
 static int hcbd__cell_index(const hcbd_world *w, int i)
@@ -1373,6 +1395,7 @@ static int hcbd__scan(const hcbd_world *w, int i, int32_t *out, int room)
     const int32_t idi = w->id[i];
     const int32_t *HCBD__RESTRICT perm = w->perm, *HCBD__RESTRICT id = w->id;
     const hcbd_real *HCBD__RESTRICT x = w->x, *HCBD__RESTRICT y = w->y, *HCBD__RESTRICT z = w->z;
+    const hcbd__box box = hcbd__box_of(w);
     int ci = hcbd__cell_index(w, i);
     c[2] = ci % w->nc[2];
     c[1] = (ci / w->nc[2]) % w->nc[1];
@@ -1407,7 +1430,7 @@ static int hcbd__scan(const hcbd_world *w, int i, int32_t *out, int room)
                     int j = perm[q];
                     double dd[3];
                     if (id[j] <= idi) continue;
-                    hcbd__delta(w, xi - x[j], yi - y[j], zi - z[j], dd);
+                    hcbd__delta_box(&box, xi - x[j], yi - y[j], zi - z[j], dd);
                     if (dd[0] * dd[0] + dd[1] * dd[1] + dd[2] * dd[2] < rl2) {
                         if (out && cnt < room) out[cnt] = j;
                         ++cnt;
@@ -1564,6 +1587,7 @@ static void hcbd__density(hcbd_world *w)
 {
     const int n = w->n, nt = w->p.threads;
     const double Rc2 = w->p.Rc * w->p.Rc, invRc = 1.0 / w->p.Rc, cw = w->cw;
+    const hcbd__box box = hcbd__box_of(w);
     hcbd_real *HCBD__RESTRICT bw = w->buf[0];
     int i;
     (void)nt;
@@ -1574,7 +1598,7 @@ static void hcbd__density(hcbd_world *w)
         for (p = w->nb_start[i]; p < w->nb_start[i + 1]; ++p) {
             int j = w->nb_j[p];
             double d[3], r2, v = 0.0;
-            hcbd__delta(w, w->x[i] - w->x[j], w->y[i] - w->y[j], w->z[i] - w->z[j], d);
+            hcbd__delta_box(&box, w->x[i] - w->x[j], w->y[i] - w->y[j], w->z[i] - w->z[j], d);
             r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
             if (r2 < Rc2) {
                 double q = sqrt(r2) * invRc, a = 1.0 - q;
@@ -1607,6 +1631,7 @@ static void hcbd__forces(hcbd_world *w)
     const int pot = w->p.potential != HCBD_POT_IDEAL, gibd = w->gibd;
     const int noise = w->has_noise, lag = w->p.lagged_density, flux = w->flux_on;
     const double vle = w->le_vjump;
+    const hcbd__box box = hcbd__box_of(w);
     const double rc2 = w->p.rcut * w->p.rcut, Rc2 = w->p.Rc * w->p.Rc;
     const double cut2 = w->cutmax * w->cutmax, invRc = 1.0 / w->p.Rc;
     const double cs = w->cf * w->m * w->m * w->p.dt / w->p.tau, two_kT = 2.0 * w->p.kT;
@@ -1633,7 +1658,7 @@ static void hcbd__forces(hcbd_world *w)
             int j = w->nb_j[p];
             double d[3], dx, dy, dz, r2;
             double Fx = 0, Fy = 0, Fz = 0, Px = 0, Py = 0, Pz = 0, wv = 0;
-            const int k = hcbd__delta(w, xi - w->x[j], yi - w->y[j], zi - w->z[j], d);
+            const int k = hcbd__delta_box(&box, xi - w->x[j], yi - w->y[j], zi - w->z[j], d);
             dx = d[0]; dy = d[1]; dz = d[2];
             r2 = dx * dx + dy * dy + dz * dz;
             if (r2 < cut2) {
@@ -1703,7 +1728,8 @@ static hcbd_result hcbd__integrate(hcbd_world *w)
     const int le = w->le_on, flux = w->flux_on;
     const double vle = w->le_vjump, m = w->m;
     /* positions at t + dt are remapped with the offset of t + dt */
-    double s_new = w->le_offset + w->p.gdot * L1 * dt;
+    const double s_new = w->le_offset + w->p.gdot * L1 * dt;
+    const hcbd__box box = hcbd__box_of(w);
     const hcbd_real *HCBD__RESTRICT bFx = pot ? w->buf[w->bF] : NULL;
     const hcbd_real *HCBD__RESTRICT bFy = pot ? w->buf[w->bF + 1] : NULL;
     const hcbd_real *HCBD__RESTRICT bFz = pot ? w->buf[w->bF + 2] : NULL;
@@ -1783,7 +1809,7 @@ static hcbd_result hcbd__integrate(hcbd_world *w)
            Lees-Edwards bookkeeping) and a step just below 0 that would
            round back to L stays at 0 */
         for (d = 0; d < 3; ++d) {
-            const double Ld = w->p.L[d];
+            const double Ld = box.L[d];
             if (r[d] < 0.0 && (hcbd_real)(r[d] + Ld) >= (hcbd_real)Ld) r[d] = 0.0;
             else if (r[d] < Ld && (hcbd_real)r[d] >= (hcbd_real)Ld) r[d] = Ld;
         }
@@ -1813,7 +1839,7 @@ static hcbd_result hcbd__integrate(hcbd_world *w)
         if (w->z[i] >= (hcbd_real)L2) w->z[i] = 0;
         if (track) {
             double e[3], e2;
-            hcbd__delta(w, r[0] - w->x0[i], r[1] - w->y0[i], r[2] - w->z0[i], e);
+            hcbd__delta_box(&box, r[0] - w->x0[i], r[1] - w->y0[i], r[2] - w->z0[i], e);
             e2 = e[0] * e[0] + e[1] * e[1] + e[2] * e[2];
             if (e2 > dmax) dmax = e2;
         }
