@@ -26,6 +26,19 @@ static hcbd_world_def shear_scene(int N, double gdot)
     return d;
 }
 
+/* An equilibrated sheared liquid of ideal particles, tau = 1e-2, dt = 1e-3
+   (a 1.0 skin: streaming particles move fast). */
+static int sheared_liquid(hcbd_world *w, int N, double gdot, int equil)
+{
+    hcbd_world_def d = shear_scene(N, gdot);
+    d.params.tau = 1e-2;
+    d.params.dt = 1e-3;
+    d.params.skin = 1.0;
+    if (!make_world(w, &d)) return 0;
+    hcbd_world_place_random(w, N);
+    return run(w, equil);
+}
+
 /* Pairs listed = pairs within the cut-off by the sheared minimum image, at
    several offsets; and for particles away from the y boundary the pair
    count does not depend on the offset. */
@@ -192,17 +205,11 @@ void test_le_list_every_step(void)
 void test_le_carrier_flux_planes(void)
 {
     enum { N = 600, NB = 8 };
-    hcbd_world_def d = shear_scene(N, 10.0);
     hcbd_world w;
     static double y0[N], xyz[3 * N], v[3 * N];
     double lib[NB], pl[NB], A, ml, el, mp, ep;
     int b, s, i, q, steps = t_quick ? 100 : 1000;
-    d.params.tau = 1e-2;
-    d.params.dt = 1e-3;
-    d.params.skin = 1.0;
-    if (!make_world(&w, &d)) return;
-    hcbd_world_place_random(&w, N);
-    run(&w, 500);
+    if (!sheared_liquid(&w, N, 10.0, 500)) return;
     A = w.p.L[0] * w.p.L[2];
     for (b = 0; b < NB; ++b) {
         double c = 0, fl[4];
@@ -301,16 +308,10 @@ void test_le_background_flux(void)
 void test_le_linear_profile(void)
 {
     enum { N = 600, NS = 8, NB = 10 };
-    hcbd_world_def d = shear_scene(N, 2.0);
     hcbd_world w;
     double slopes[NB], xyz[3 * N], v[3 * N], flux[4];
     int b, s, i, steps = t_quick ? 200 : 1000;
-    d.params.tau = 1e-2;
-    d.params.dt = 1e-3;
-    d.params.skin = 1.0;
-    if (!make_world(&w, &d)) return;
-    hcbd_world_place_random(&w, N);
-    run(&w, 1000);
+    if (!sheared_liquid(&w, N, 2.0, 1000)) return;
     hcbd_flux_enable(&w, 1);
     for (b = 0; b < NB; ++b) {
         double sum[NS] = {0}, cnt[NS] = {0}, sy = 0, sv = 0, syy = 0, syv = 0, n = 0;
