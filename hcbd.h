@@ -2029,15 +2029,20 @@ static void hcbd__stress_fn(void *c, int i, int j, double dx, double dy, double 
                             double r2)
 {
     hcbd__stress_ctx *s = (hcbd__stress_ctx *)c;
-    double r = sqrt(r2), fr = hcbd__force_over_r(s->w, r, r2);
-    double d[3], a;
+    double fr = hcbd__force_over_r(s->w, sqrt(r2), r2), d[3];
     int k, l;
     (void)i; (void)j;
     d[0] = dx; d[1] = dy; d[2] = dz;
     for (k = 0; k < 3; ++k)
         for (l = 0; l < 3; ++l) s->s[3 * k + l] -= d[k] * fr * d[l];
-    a = hcbd__pair_energy(s->w, r);
-    s->e += a;
+}
+
+static void hcbd__energy_fn(void *c, int i, int j, double dx, double dy, double dz,
+                            double r2)
+{
+    hcbd__stress_ctx *s = (hcbd__stress_ctx *)c;
+    (void)i; (void)j; (void)dx; (void)dy; (void)dz;
+    s->e += hcbd__pair_energy(s->w, sqrt(r2));
 }
 
 hcbd_result hcbd_stress(hcbd_world *w, double s[9])
@@ -2063,7 +2068,7 @@ double hcbd_potential_energy(hcbd_world *w)
     memset(&c, 0, sizeof c);
     c.w = w;
     if (w->p.potential != HCBD_POT_IDEAL && w->n > 0)
-        if (hcbd__for_pairs(w, w->p.rcut, hcbd__stress_fn, &c) != HCBD_OK) return NAN;
+        if (hcbd__for_pairs(w, w->p.rcut, hcbd__energy_fn, &c) != HCBD_OK) return NAN;
     return c.e;
 }
 
