@@ -1,5 +1,6 @@
 # hcbd: make (library object + examples), make run, make test, make bench.
-# Settable: CC, CFLAGS, OMP=1|0 (OpenMP on/off), SAN_CC (sanitizer compiler).
+# Settable: CC, CFLAGS, OMP=1|0 (OpenMP on/off), SAN_CC (sanitizer compiler),
+# MODEL=walled|gibd (walled, the default, is GI-BD plus walls).
 CC      ?= cc
 OMP     ?= 1
 CFLAGS  ?= -O2 -march=native
@@ -10,11 +11,19 @@ FP      := -ffp-contract=off
 ifeq ($(OMP),1)
 OMPFLAG := -fopenmp
 endif
-ALL_CFLAGS = $(WARN) $(FP) $(CFLAGS) $(OMPFLAG)
+MODEL   ?= walled
+ifeq ($(MODEL),gibd)
+MODELFLAG := -DHCBD_MODEL=HCBD_MODEL_GIBD
+else ifeq ($(MODEL),walled)
+MODELFLAG := -DHCBD_MODEL=HCBD_MODEL_WALLED
+else
+$(error MODEL=$(MODEL) is not walled or gibd)
+endif
+ALL_CFLAGS = $(WARN) $(FP) $(MODELFLAG) $(CFLAGS) $(OMPFLAG)
 LDLIBS  := -lm
 B       := build
 
-EXAMPLES := $(B)/gibd_bulk $(B)/shear_flow
+EXAMPLES := $(B)/gibd_bulk $(B)/shear_flow $(B)/channel_flow
 HEADERS  := hcbd.h
 TEST_SRC := $(wildcard tests/test_*.c) tests/main.c
 
@@ -25,7 +34,7 @@ all: $(B)/hcbd_impl.o $(EXAMPLES)
 $(B):
 	mkdir -p $(B)
 
-$(B)/hcbd_impl.o: hcbd_impl.c $(HEADERS) | $(B)
+$(B)/hcbd_impl.o: hcbd_impl.c $(HEADERS) Makefile | $(B)
 	$(CC) $(ALL_CFLAGS) -c $< -o $@
 
 $(B)/%: examples/%.c $(B)/hcbd_impl.o $(HEADERS)
@@ -41,14 +50,19 @@ $(B)/run_tests: $(TEST_SRC) tests/test.h tests/list.h $(B)/hcbd_impl.o
 $(B)/run_tests_float: $(TEST_SRC) tests/test.h tests/list.h hcbd_impl.c $(HEADERS) | $(B)
 	$(CC) $(ALL_CFLAGS) -DHCBD_REAL=float $(TEST_SRC) hcbd_impl.c -o $@ $(LDLIBS)
 
+# The lean GI-BD build: no wall code compiled, wall parameters rejected.
+$(B)/run_tests_gibd: $(TEST_SRC) tests/test.h tests/list.h hcbd_impl.c $(HEADERS) | $(B)
+	$(CC) $(WARN) $(FP) $(CFLAGS) $(OMPFLAG) -DHCBD_MODEL=HCBD_MODEL_GIBD $(TEST_SRC) hcbd_impl.c -o $@ $(LDLIBS)
+
 SAN_CC ?= clang
 SAN := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
 $(B)/run_tests_san: $(TEST_SRC) tests/test.h tests/list.h hcbd_impl.c $(HEADERS) | $(B)
-	$(SAN_CC) $(WARN) $(FP) -O1 -g $(SAN) $(TEST_SRC) hcbd_impl.c -o $@ $(LDLIBS)
+	$(SAN_CC) $(WARN) $(FP) $(MODELFLAG) -O1 -g $(SAN) $(TEST_SRC) hcbd_impl.c -o $@ $(LDLIBS)
 
 # make test: strict builds, the full suite, the float build's bit-level
-# tests, and the whole suite in quick mode under ASan + UBSan.
-test: test-build test-main test-float test-sanitize
+# tests, the GI-BD build's, and the whole suite in quick mode under ASan +
+# UBSan.
+test: test-build test-main test-float test-gibd test-sanitize
 
 test-main: $(B)/run_tests
 	./$(B)/run_tests
@@ -56,20 +70,23 @@ test-main: $(B)/run_tests
 test-float: $(B)/run_tests_float
 	./$(B)/run_tests_float test_determinism
 
+test-gibd: $(B)/run_tests_gibd
+	./$(B)/run_tests_gibd test_determinism test_bad_parameters test_model_switch test_momentum
+
 test-sanitize: $(B)/run_tests_san
 	ASAN_OPTIONS=detect_leaks=1 ./$(B)/run_tests_san --quick
 
 # The header alone, both halves, with gcc and clang as C99 and C11 and as C++.
 test-build: | $(B)
 	printf '#define HCBD_IMPLEMENTATION\n#include "../hcbd.h"\nint main(void){return 0;}\n' > $(B)/compile_test.c
-	for cc in gcc clang; do for std in c99 c11; do \
-	  $$cc -std=$$std -Wall -Wextra -Wpedantic -Werror -Wshadow -O2 -c $(B)/compile_test.c -o $(B)/ct.o || exit 1; \
-	  $$cc -std=$$std -Wall -Wextra -Wpedantic -Werror -O2 -fopenmp -DHCBD_REAL=float -c $(B)/compile_test.c -o $(B)/ct.o || exit 1; \
-	done; done
+	for m in GIBD WALLED; do for cc in gcc clang; do for std in c99 c11; do \
+	  $$cc -std=$$std -Wall -Wextra -Wpedantic -Werror -Wshadow -O2 -DHCBD_MODEL=HCBD_MODEL_$$m -c $(B)/compile_test.c -o $(B)/ct.o || exit 1; \
+	  $$cc -std=$$std -Wall -Wextra -Wpedantic -Werror -O2 -fopenmp -DHCBD_REAL=float -DHCBD_MODEL=HCBD_MODEL_$$m -c $(B)/compile_test.c -o $(B)/ct.o || exit 1; \
+	done; done; \
 	for cxx in g++ clang++; do \
-	  $$cxx -x c++ -std=c++11 -Wall -Wextra -Werror -O2 -c $(B)/compile_test.c -o $(B)/ct.o || exit 1; done
-	for cc in gcc clang; do $$cc $(WARN) -fsyntax-only examples/*.c bench/*.c || exit 1; done
-	@echo "test-build: header compiles as C99, C11 and C++11 with gcc and clang; examples and bench too"
+	  $$cxx -x c++ -std=c++11 -Wall -Wextra -Werror -O2 -DHCBD_MODEL=HCBD_MODEL_$$m -c $(B)/compile_test.c -o $(B)/ct.o || exit 1; done; done
+	for cc in gcc clang; do $$cc $(WARN) $(MODELFLAG) -fsyntax-only examples/*.c bench/*.c || exit 1; done
+	@echo "test-build: header compiles as C99, C11 and C++11 with gcc and clang, GI-BD and walled; examples and bench too"
 
 bench: $(B)/bench_speed
 	./$(B)/bench_speed out=out/bench

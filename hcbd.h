@@ -7,9 +7,10 @@
      a background-fluid velocity, updated by a momentum-conserving, Galilean-
      invariant pair scheme with pairwise noise (GI-BD, Padding & Briels 2014,
      with the corrections of Ahuja et al. 2016), and classical Brownian
-     dynamics in the same kernel.  The walled model (2016) and HCBD (2018)
-     build on the same storage, neighbour search, random numbers and
-     observables.
+     dynamics in the same kernel; Lees-Edwards shear and body forces; in
+     the walled build solid walls (2016: artificial particles with Morris
+     no-slip velocities) for channel flow.  HCBD (2018) will build on the
+     same storage, neighbour search, random numbers and observables.
 
    USAGE
      In exactly one C or C++ file:
@@ -19,9 +20,14 @@
      threads (optional: results are bit-identical for any thread count).
 
    CONFIGURATION MACROS (set globally, identically in every file)
-     HCBD_MODEL    HCBD_MODEL_GIBD (default): bulk GI-BD and classical BD.
-                   HCBD_MODEL_WALLED, HCBD_MODEL_HCBD: not implemented yet;
-                   selecting them is a compile-time error, not a stub.
+     HCBD_MODEL    HCBD_MODEL_GIBD (default): bulk GI-BD and classical BD,
+                   Lees-Edwards shear, body forces.
+                   HCBD_MODEL_WALLED: all of that plus solid walls (2016:
+                   artificial particles, Morris no-slip velocities, wall
+                   repulsion or reflection).  The GI-BD build compiles no
+                   wall code and rejects wall parameters.
+                   HCBD_MODEL_HCBD: not implemented yet; selecting it is a
+                   compile-time error, not a stub.
      HCBD_REAL     double (default) or float: storage and pair arithmetic.
                    Conservation sums and observables are accumulated in
                    double either way.
@@ -96,8 +102,8 @@
 #ifndef HCBD_MODEL
 #define HCBD_MODEL HCBD_MODEL_GIBD
 #endif
-#if HCBD_MODEL != HCBD_MODEL_GIBD
-#error "hcbd: only HCBD_MODEL_GIBD is implemented so far (walled and HCBD models are open issues)"
+#if HCBD_MODEL != HCBD_MODEL_GIBD && HCBD_MODEL != HCBD_MODEL_WALLED
+#error "hcbd: HCBD_MODEL_HCBD is not implemented yet (an open issue)"
 #endif
 
 #ifndef HCBD_REAL
@@ -148,6 +154,17 @@ typedef enum hcbd_noise {
     HCBD_NOISE_UNIFORM = 1  /* pair noise only; uniform with unit variance */
 } hcbd_noise;
 
+typedef enum hcbd_wall_mode {
+    HCBD_WALL_GAUSS = 0,   /* 2016 eq. 18: a exp(-b r^2) from planes inside
+                              the walls; depletes the fluid next to them    */
+    HCBD_WALL_REFLECT = 1, /* specular reflection at the interface: uniform
+                              density up to the wall                        */
+    HCBD_WALL_NOSLIP = 2   /* the Gaussian repulsion, with the Morris
+                              distances measured from the edge of the
+                              depleted layer so the no-slip plane is the
+                              interface (not in the paper)                 */
+} hcbd_wall_mode;
+
 #define HCBD_AUTO (-1)
 
 typedef struct hcbd_params {
@@ -173,8 +190,25 @@ typedef struct hcbd_params {
     int table_n;
     double table_r0;
     double fext[3];       /* constant external force on every particle      */
+    int fext_background_only; /* 1: fext drives only the background
+                             velocity, not the particle displacement        */
     double gdot;          /* Lees-Edwards shear rate (flow x, gradient y);
                              0 switches it off.  GI-BD only.                 */
+    /* Walls normal to y (HCBD_MODEL_WALLED; MODEL 4).  wall_thickness > 0
+       fills y < t and y >= L[1] - t with artificial particles redrawn every
+       step; the channel lies between the interfaces y = t and L[1] - t.  */
+    double wall_thickness;
+    double wall_vx[2];    /* x velocity of the bottom and top wall          */
+    double wall_beta_max; /* Morris cap of 1 + d_B/d_A (1.5)                */
+    hcbd_wall_mode wall_mode;
+    double wall_a, wall_b;/* repulsion a exp(-b r^2): 300 kT, 2 sigma^-2    */
+    double wall_plane;    /* depth of the repulsion plane in the wall (1.2) */
+    double wall_shift;    /* HCBD_WALL_NOSLIP: Morris plane this far in
+                             front of the interface; HCBD_AUTO: the
+                             Boltzmann depletion width                      */
+    int wall_noise_beta;  /* 1: Morris noise scaled by sqrt(beta) as the
+                             fluctuation-dissipation theorem needs; 0 only
+                             to show what breaks without it                 */
     double skin;          /* Verlet skin                                     */
     int sort;             /* 1: re-sort storage by cell at each rebuild      */
     uint64_t seed;
@@ -243,6 +277,15 @@ typedef struct hcbd_world {
     int64_t flux_steps;
     double flux_sum[3];
     hcbd_real *fl_p, *fl_b, *fl_c;
+    /* walls: interfaces, Morris planes, artificial particles of this step
+       sorted into x-z columns, real particles found inside a wall */
+    int walls, n_art, acol[2], has_gauss, has_refl, fext_dr;
+    double wall_lo, wall_hi, morris_lo, morris_hi, art_inv_rho;
+    hcbd_real *ax, *ay, *az;
+    int32_t *acol_start, *acol_of;
+    int64_t wall_pen, wall_pen_step;
+    int wall_pen_id;
+    uint64_t wall_key, wall_pair_key;
     void *scratch;               /* n x 8 bytes for permutations              */
     double *tab_F, *tab_V;
     double tab_inv_dr;
@@ -316,6 +359,47 @@ double hcbd_potential_energy(hcbd_world *w);
    S_yx = -(1/V) sum_{i<j} y_ij F_ij,x, so the viscosity is out / gdot. */
 hcbd_result hcbd_flux_enable(hcbd_world *w, int on);
 hcbd_result hcbd_flux_read(const hcbd_world *w, double out[4], int64_t *nsteps);
+/* Real particles found inside a wall after a step (particle-steps; never
+   silently accepted, but not an error: the Gaussian repulsion is soft), and
+   the last one's step and id (-1 if none). */
+int64_t hcbd_wall_penetrations(const hcbd_world *w, int64_t *last_step, int *last_id);
+/* Wall repulsion on a particle at height y (MODEL 4, every plane at its
+   minimum-image distance): returns the energy, *fy the force (may be NULL).
+   0 without Gaussian walls. */
+double hcbd_wall_potential(const hcbd_params *p, double y, double *fy);
+
+/* Mean-field predictions for a channel or a sheared bulk (MODEL 3, 4):
+   nu = Rc^2/(28 tau), eta_inf = nu n# m (2016 eq. 35), the channel width
+   W (L[1] without walls), g = fext[0]/m, the Newtonian centre velocity
+   v_max = g W^2/(8 nu), the Reynolds bound Re_max = sigma g W^2/(8 nu^2)
+   (2016 eq. 37-39; keep it below 1) and, for Gaussian walls, the excluded
+   width per wall of ideal particles, integral of 1 - exp(-phi/kT). */
+typedef struct hcbd_theory {
+    double nu, eta_inf, m, width, g, v_max, re_max, depletion_width;
+} hcbd_theory;
+hcbd_result hcbd_theory_of(const hcbd_params *p, hcbd_theory *t);
+
+/* Slab profiles across y: number density, mean background velocity and
+   temperature (m times the velocity variance about the slab mean, averaged
+   over components, 2016 sec. IV B), each with the standard error of its
+   block averages.  Samples are grouped in blocks of `block` samples. */
+typedef struct hcbd_profile {
+    int nslab, block, nsamp;
+    int64_t nblocks;
+    double L[3], m;
+    double *acc;   /* nslab x 7: count, sum v_a, sum v_a^2 of the open block */
+    double *stat;  /* nslab x 8: blocks with particles, particles, and sums
+                      and squares of the block values of density, v_x, T */
+} hcbd_profile;
+size_t hcbd_profile_bytes(int nslab);
+hcbd_result hcbd_profile_init(hcbd_profile *pr, const hcbd_world *w, int nslab,
+                              int block, void *mem, size_t bytes);
+void hcbd_profile_sample(hcbd_profile *pr, const hcbd_world *w);
+/* out[8 s + c], slab s: c = 0 centre y, 1 density, 2 its error, 3 <v_x>,
+   4 its error, 5 temperature, 6 its error, 7 mean particles per sample.
+   Returns the number of closed blocks (errors need at least 2). */
+int64_t hcbd_profile_result(const hcbd_profile *pr, double *out);
+
 /* 64-bit hash of positions, images, velocities and generator states in id
    order: equal checksums mean bit-identical states. */
 uint64_t hcbd_state_checksum(const hcbd_world *w);
@@ -450,6 +534,10 @@ double hcbd_star_force(double r, double f, double sigma, double eps);
 #define HCBD__STREAM_PARTICLE 0x1ULL
 #define HCBD__STREAM_PAIR 0x2ULL
 #define HCBD__STREAM_PLACE 0x3ULL
+#define HCBD__STREAM_WALL 0x4ULL
+#define HCBD__STREAM_WALL_PAIR 0x5ULL
+/* The GI-BD build compiles the wall branches away. */
+#define HCBD__WALLS (HCBD_MODEL == HCBD_MODEL_WALLED)
 
 #ifdef __cplusplus
 extern "C" {
@@ -524,6 +612,14 @@ hcbd_params hcbd_params_default(void)
     p.table_r0 = 0.0;
     p.skin = 0.4;
     p.gdot = 0.0;
+    p.wall_thickness = 0.0;
+    p.wall_beta_max = 1.5;
+    p.wall_mode = HCBD_WALL_GAUSS;
+    p.wall_a = 300.0;
+    p.wall_b = 2.0;
+    p.wall_plane = 1.2;
+    p.wall_shift = HCBD_AUTO;
+    p.wall_noise_beta = 1;
     p.sort = 1;
     p.seed = 1;
     p.threads = 1;
@@ -642,6 +738,61 @@ hcbd_result hcbd_params_check(const hcbd_params *p, char *msg, size_t msg_size)
                              "%.17g + skin %.17g)", d, p->L[d], hcbd__cutmax(p), p->skin);
                 return HCBD_ERR_BOX;
             }
+    }
+    HCBD__CHECK(p->fext_background_only == 0 || p->fext_background_only == 1,
+                "fext_background_only", p->fext_background_only);
+    HCBD__CHECK(isfinite(p->wall_thickness) && p->wall_thickness >= 0, "wall_thickness",
+                p->wall_thickness);
+    if (p->wall_thickness > 0) {
+        double t = p->wall_thickness, cut = hcbd__cutmax(p);
+        if (!HCBD__WALLS) {
+            if (msg && msg_size)
+                snprintf(msg, msg_size, "parameter wall_thickness = %.17g needs a build "
+                         "with HCBD_MODEL=HCBD_MODEL_WALLED", t);
+            return HCBD_ERR_PARAM;
+        }
+        if (2.0 * t >= p->L[1]) {
+            if (msg && msg_size)
+                snprintf(msg, msg_size, "wall_thickness = %.17g leaves no channel: the "
+                         "two walls (2 x %.17g) fill the box height L[1] = %.17g",
+                         t, t, p->L[1]);
+            return HCBD_ERR_BOX;
+        }
+        /* y is periodic: the two walls form one slab, and nothing may
+           interact through it */
+        if (2.0 * t < cut) {
+            if (msg && msg_size)
+                snprintf(msg, msg_size, "wall_thickness = %.17g is too thin: y is "
+                         "periodic, so the two walls (2 x %.17g) must be at least the "
+                         "interaction range %.17g thick", t, t, cut);
+            return HCBD_ERR_BOX;
+        }
+        HCBD__CHECK(p->gdot == 0.0, "gdot (walls and Lees-Edwards exclude each other)",
+                    p->gdot);
+        HCBD__CHECK(p->lagged_density == 0,
+                    "lagged_density (not available with walls)", p->lagged_density);
+        HCBD__CHECK(isfinite(p->wall_vx[0]), "wall_vx[0]", p->wall_vx[0]);
+        HCBD__CHECK(isfinite(p->wall_vx[1]), "wall_vx[1]", p->wall_vx[1]);
+        HCBD__CHECK(isfinite(p->wall_beta_max) && p->wall_beta_max >= 1.0,
+                    "wall_beta_max", p->wall_beta_max);
+        HCBD__CHECK(p->wall_mode == HCBD_WALL_GAUSS || p->wall_mode == HCBD_WALL_REFLECT ||
+                    p->wall_mode == HCBD_WALL_NOSLIP, "wall_mode", p->wall_mode);
+        HCBD__CHECK(p->wall_noise_beta == 0 || p->wall_noise_beta == 1,
+                    "wall_noise_beta", p->wall_noise_beta);
+        if (p->wall_mode != HCBD_WALL_REFLECT) {
+            HCBD__CHECK(isfinite(p->wall_a) && p->wall_a >= 0, "wall_a", p->wall_a);
+            HCBD__CHECK(isfinite(p->wall_b) && p->wall_b > 0, "wall_b", p->wall_b);
+            HCBD__CHECK(isfinite(p->wall_plane) && p->wall_plane >= 0 &&
+                        p->wall_plane <= t, "wall_plane", p->wall_plane);
+        }
+        if (p->wall_mode == HCBD_WALL_NOSLIP)
+            HCBD__CHECK(p->wall_shift == HCBD_AUTO ||
+                        (isfinite(p->wall_shift) && p->wall_shift >= 0 &&
+                         p->wall_shift < 0.25 * (p->L[1] - 2.0 * t)),
+                        "wall_shift", p->wall_shift);
+        if (p->dynamics == HCBD_DYN_GIBD)
+            HCBD__CHECK(isfinite(p->density) && p->density > 0,
+                        "density (the artificial particles' number density)", p->density);
     }
     HCBD__CHECK(p->sort == 0 || p->sort == 1, "sort", p->sort);
     HCBD__CHECK(p->threads >= 1 && p->threads <= 1024, "threads", p->threads);
@@ -888,6 +1039,62 @@ static double hcbd__pair_energy(const hcbd_world *w, double r)
 /* >>world and storage */
 #define HCBD__ALIGN 64
 
+/* >>walls (MODEL 4) */
+double hcbd_wall_potential(const hcbd_params *p, double y, double *fy)
+{
+    double e = 0.0, f = 0.0, Ly, planes[2];
+    int k;
+    if (fy) *fy = 0.0;
+    if (!p || p->wall_thickness <= 0 || p->wall_mode == HCBD_WALL_REFLECT) return 0.0;
+    Ly = p->L[1];
+    planes[0] = p->wall_thickness - p->wall_plane;
+    planes[1] = Ly - p->wall_thickness + p->wall_plane;
+    for (k = 0; k < 2; ++k) {
+        double s = y - planes[k], x;
+        s -= Ly * floor(s / Ly + 0.5); /* every plane at its minimum image */
+        x = p->wall_a * exp(-p->wall_b * s * s);
+        e += x;
+        f += 2.0 * p->wall_b * s * x;
+    }
+    if (fy) *fy = f;
+    return e;
+}
+
+/* Excluded width per wall of ideal particles, integral over the channel half
+   of 1 - exp(-phi/kT) (Simpson, 4096 intervals: phi varies on 1/sqrt(b)). */
+static double hcbd__depletion(const hcbd_params *p)
+{
+    const int n = 4096;
+    double a = p->wall_thickness, h = 0.5 * p->L[1] - a, s = 0.0;
+    int k;
+    if (p->wall_thickness <= 0 || p->wall_mode == HCBD_WALL_REFLECT || p->kT <= 0) return 0.0;
+    for (k = 0; k <= n; ++k) {
+        double y = a + h * k / n, c = (k == 0 || k == n) ? 1.0 : (k % 2 ? 4.0 : 2.0);
+        s += c * (1.0 - exp(-hcbd_wall_potential(p, y, NULL) / p->kT));
+    }
+    return s * h / (3.0 * n);
+}
+
+hcbd_result hcbd_theory_of(const hcbd_params *p, hcbd_theory *t)
+{
+    char msg[8];
+    hcbd_result r;
+    if (!p || !t) return HCBD_ERR_NULL;
+    r = hcbd_params_check(p, msg, sizeof msg);
+    if (r != HCBD_OK) return r;
+    memset(t, 0, sizeof *t);
+    if (p->dynamics != HCBD_DYN_GIBD) return HCBD_ERR_PARAM;
+    t->nu = p->Rc * p->Rc / (28.0 * p->tau);
+    t->m = p->xip * p->tau;
+    t->eta_inf = t->nu * p->density * t->m;
+    t->width = p->L[1] - 2.0 * p->wall_thickness;
+    t->g = p->fext[0] / t->m;
+    t->v_max = t->g * t->width * t->width / (8.0 * t->nu);
+    t->re_max = p->sigma * fabs(t->v_max) / t->nu;
+    t->depletion_width = hcbd__depletion(p);
+    return HCBD_OK;
+}
+
 static void hcbd__take(char *base, size_t *off, size_t bytes, void **out)
 {
     size_t o = (*off + HCBD__ALIGN - 1) & ~(size_t)(HCBD__ALIGN - 1);
@@ -918,6 +1125,23 @@ static int64_t hcbd__auto_pairs(const hcbd_world_def *def)
     return (int64_t)(1.6 * per * def->capacity) + 8 * (int64_t)def->capacity;
 }
 
+/* Artificial particles: round(n# x wall volume), only for GI-BD (their job
+   is friction), binned into x-z columns at least Rc wide (one column along
+   an axis with fewer than 3, so no column is visited twice). */
+static int hcbd__art_count(const hcbd_params *p, int acol[2])
+{
+    double n;
+    int d;
+    acol[0] = acol[1] = 1;
+    if (!HCBD__WALLS || p->wall_thickness <= 0 || p->dynamics != HCBD_DYN_GIBD) return 0;
+    for (d = 0; d < 2; ++d) {
+        double k = floor(p->L[2 * d] / p->Rc);
+        acol[d] = k < 3.0 ? 1 : (k > 256.0 ? 256 : (int)k);
+    }
+    n = floor(p->density * p->L[0] * 2.0 * p->wall_thickness * p->L[2] + 0.5);
+    return n > (double)(INT32_MAX / 4) ? INT32_MAX / 4 : (int)n;
+}
+
 /* One function sizes the block and (with base != NULL) assigns pointers, so
    the two can never disagree. */
 static size_t hcbd__layout(const hcbd_world_def *def, hcbd_world *w, char *base)
@@ -930,7 +1154,8 @@ static size_t hcbd__layout(const hcbd_world_def *def, hcbd_world *w, char *base)
     hcbd_world *t = w ? w : &tmp;
     const hcbd_params *p = &def->params;
     int gibd = p->dynamics == HCBD_DYN_GIBD, pot = p->potential != HCBD_POT_IDEAL;
-    int nbuf = 0;
+    int nbuf = 0, acol[2], nart = hcbd__art_count(p, acol);
+    size_t A = (size_t)nart, ncol = (size_t)acol[0] * (size_t)acol[1];
     t->bF = t->bP = t->bW = -1;
     if (pot) { t->bF = nbuf; nbuf += 3; }
     if (gibd) { t->bP = nbuf; nbuf += 3; }
@@ -962,6 +1187,10 @@ static size_t hcbd__layout(const hcbd_world_def *def, hcbd_world *w, char *base)
         t->vx = t->vy = t->vz = t->px = t->py = t->pz = NULL;
         t->rho = t->inv_rho = t->wown = NULL;
     }
+    HCBD__ARR(ax, A * R); HCBD__ARR(ay, A * R); HCBD__ARR(az, A * R);
+    HCBD__ARR(acol_start, (ncol + 1) * I); HCBD__ARR(acol_of, ncol * I);
+    t->n_art = nart;
+    t->acol[0] = acol[0]; t->acol[1] = acol[1];
     if (p->potential == HCBD_POT_TABLE) {
         HCBD__ARR(tab_F, (size_t)p->table_n * sizeof(double));
         HCBD__ARR(tab_V, (size_t)p->table_n * sizeof(double));
@@ -1061,6 +1290,28 @@ hcbd_result hcbd_world_init(hcbd_world *w, const hcbd_world_def *def, void *mem,
     w->has_noise = p->kT > 0.0;
     w->le_on = p->gdot != 0.0;
     w->le_vjump = p->gdot * p->L[1];
+    w->walls = HCBD__WALLS && p->wall_thickness > 0;
+    w->fext_dr = w->has_fext && !p->fext_background_only;
+    if (w->walls) {
+        double h = 0.0;
+        w->has_gauss = p->wall_mode != HCBD_WALL_REFLECT && p->wall_a > 0;
+        w->has_refl = p->wall_mode == HCBD_WALL_REFLECT;
+        w->wall_lo = p->wall_thickness;
+        w->wall_hi = p->L[1] - p->wall_thickness;
+        if (p->wall_mode == HCBD_WALL_NOSLIP)
+            h = p->wall_shift == HCBD_AUTO ? hcbd__depletion(p) : p->wall_shift;
+        w->morris_lo = w->wall_lo + h;
+        w->morris_hi = w->wall_hi - h;
+        /* an artificial particle's density is that of an ideal bulk,
+           m n# (2016) or m (n# + w(0)) (2014) */
+        if (w->gibd)
+            w->art_inv_rho = 1.0 / (w->m * (p->density_norm == 2016 ? p->density
+                                                                     : p->density + w->w0));
+    }
+    w->wall_pen_step = -1;
+    w->wall_pen_id = -1;
+    w->wall_key = hcbd__mix64(p->seed ^ hcbd__mix64(HCBD__STREAM_WALL));
+    w->wall_pair_key = hcbd__mix64(p->seed ^ hcbd__mix64(HCBD__STREAM_WALL_PAIR));
     w->seed_key = hcbd__mix64(p->seed ^ hcbd__mix64(HCBD__STREAM_PAIR));
     if (p->potential == HCBD_POT_TABLE) {
         memcpy(w->tab_F, p->table_F, (size_t)p->table_n * sizeof(double));
@@ -1141,8 +1392,10 @@ static void hcbd__src_get(const hcbd_world *w, hcbd__src *s, int i, double r[3])
     if (s->xyz) {
         for (d = 0; d < 3; ++d) r[d] = s->xyz[3 * i + d];
     } else if (s->lattice_k > 0) {
+        /* n of the k^3 sites, spread evenly so no region is left empty */
         int k = s->lattice_k, c[3];
-        c[0] = i % k; c[1] = (i / k) % k; c[2] = i / (k * k);
+        int64_t site = (int64_t)i * k * k * k / w->n;
+        c[0] = (int)(site % k); c[1] = (int)(site / k % k); c[2] = (int)(site / ((int64_t)k * k));
         for (d = 0; d < 3; ++d) r[d] = (c[d] + 0.5) * w->p.L[d] / k;
     } else {
         for (d = 0; d < 3; ++d) r[d] = hcbd_rng_uniform(&s->g) * w->p.L[d];
@@ -1179,7 +1432,16 @@ static hcbd_result hcbd__set_particles(hcbd_world *w, int n, hcbd__src *src)
         int32_t img[3] = {0, 0, 0};
         hcbd_rng g;
         hcbd__src_get(w, src, i, r);
+        /* generated positions fill the channel only */
+        if (w->walls && !src->xyz)
+            r[1] = w->wall_lo + r[1] / w->p.L[1] * (w->wall_hi - w->wall_lo);
         for (d = 0; d < 3; ++d) hcbd__wrap(w->p.L[d], &r[d], &img[d]);
+        if (w->walls && (r[1] < w->wall_lo || r[1] > w->wall_hi)) {
+            w->n = 0;
+            return hcbd__fail(&w->err, HCBD_ERR_PARAM, -1, i,
+                              "particle %d at y = %g is inside a wall (the channel is "
+                              "%g <= y <= %g)", i, r[1], w->wall_lo, w->wall_hi);
+        }
         w->x[i] = (hcbd_real)r[0]; w->y[i] = (hcbd_real)r[1]; w->z[i] = (hcbd_real)r[2];
         /* A position that rounds to L in float storage belongs at 0. */
         if (w->x[i] >= (hcbd_real)w->p.L[0]) w->x[i] = 0;
@@ -1211,6 +1473,9 @@ static hcbd_result hcbd__set_particles(hcbd_world *w, int n, hcbd__src *src)
             w->vz[i] -= (hcbd_real)(mom[2] / n);
         }
     w->step = 0;
+    w->wall_pen = 0;
+    w->wall_pen_step = -1;
+    w->wall_pen_id = -1;
     w->list_valid = 0;
     w->rho_current = 0;
     w->rho_valid = 0;
@@ -1279,6 +1544,147 @@ static inline double hcbd__mi(double d, double L)
 {
     double h = 0.5 * L;
     return d > h ? d - L : (d < -h ? d + L : d);
+}
+
+/* >>wall passes: artificial particles are redrawn every step from a
+   counter-based stream keyed by (seed, step), uniform in the wall slab
+   [-t, t) of the periodic y axis, and sorted into x-z columns. */
+static void hcbd__art_pos(const hcbd_world *w, uint64_t *g, double r[3])
+{
+    r[0] = hcbd__u01(hcbd_splitmix64(g)) * w->p.L[0];
+    r[1] = (2.0 * hcbd__u01(hcbd_splitmix64(g)) - 1.0) * w->p.wall_thickness;
+    if (r[1] < 0.0) r[1] += w->p.L[1];
+    r[2] = hcbd__u01(hcbd_splitmix64(g)) * w->p.L[2];
+}
+
+static int hcbd__art_col(const hcbd_world *w, double x, double z)
+{
+    int cx = (int)(x * w->acol[0] / w->p.L[0]), cz = (int)(z * w->acol[1] / w->p.L[2]);
+    if (cx >= w->acol[0]) cx = w->acol[0] - 1;
+    if (cz >= w->acol[1]) cz = w->acol[1] - 1;
+    return cx * w->acol[1] + cz;
+}
+
+/* Counting sort in two passes over the same stream, so no scratch. */
+static void hcbd__wall_draw(hcbd_world *w)
+{
+    const int ncol = w->acol[0] * w->acol[1];
+    const uint64_t key = hcbd__mix64(w->wall_key ^ hcbd__mix64((uint64_t)w->step));
+    uint64_t g = key;
+    int k, c;
+    for (c = 0; c <= ncol; ++c) w->acol_start[c] = 0;
+    for (k = 0; k < w->n_art; ++k) {
+        double r[3];
+        hcbd__art_pos(w, &g, r);
+        w->acol_start[hcbd__art_col(w, r[0], r[2]) + 1]++;
+    }
+    for (c = 0; c < ncol; ++c) {
+        w->acol_start[c + 1] += w->acol_start[c];
+        w->acol_of[c] = w->acol_start[c];
+    }
+    g = key;
+    for (k = 0; k < w->n_art; ++k) {
+        double r[3];
+        int32_t q;
+        hcbd__art_pos(w, &g, r);
+        q = w->acol_of[hcbd__art_col(w, r[0], r[2])]++;
+        w->ax[q] = (hcbd_real)r[0]; w->ay[q] = (hcbd_real)r[1]; w->az[q] = (hcbd_real)r[2];
+    }
+}
+
+/* The (up to 9) columns within Rc of x, z. */
+static int hcbd__art_cols(const hcbd_world *w, double x, double z, int cols[9])
+{
+    int c = hcbd__art_col(w, x, z), cx = c / w->acol[1], cz = c % w->acol[1];
+    int nx = w->acol[0] < 3 ? 1 : 3, nz = w->acol[1] < 3 ? 1 : 3, a, b, k = 0;
+    for (a = 0; a < nx; ++a)
+        for (b = 0; b < nz; ++b) {
+            int ux = nx == 1 ? 0 : (cx + a - 1 + w->acol[0]) % w->acol[0];
+            int uz = nz == 1 ? 0 : (cz + b - 1 + w->acol[1]) % w->acol[1];
+            cols[k++] = ux * w->acol[1] + uz;
+        }
+    return k;
+}
+
+static int hcbd__near_wall(const hcbd_world *w, double y)
+{
+    return y < w->wall_lo + w->p.Rc || y > w->wall_hi - w->p.Rc;
+}
+
+/* Sum of the weights of the artificial particles around (x, y, z): they
+   count in the real particles' densities (MODEL 4). */
+static double hcbd__art_wsum(const hcbd_world *w, double x, double y, double z)
+{
+    const double Rc2 = w->p.Rc * w->p.Rc, invRc = 1.0 / w->p.Rc;
+    double s = 0.0;
+    int cols[9], nc = hcbd__art_cols(w, x, z, cols), c;
+    for (c = 0; c < nc; ++c) {
+        int32_t k;
+        for (k = w->acol_start[cols[c]]; k < w->acol_start[cols[c] + 1]; ++k) {
+            double dx = hcbd__mi(x - w->ax[k], w->p.L[0]), dy = hcbd__mi(y - w->ay[k], w->p.L[1]);
+            double dz = hcbd__mi(z - w->az[k], w->p.L[2]), r2 = dx * dx + dy * dy + dz * dz;
+            if (r2 < Rc2) {
+                double q = sqrt(r2) * invRc, a = 1.0 - q;
+                s += w->cw * a * a * a * a * (4.0 * q + 1.0);
+            }
+        }
+    }
+    return s;
+}
+
+/* Friction and noise of the artificial particles on real particle i (Morris
+   et al. 1997, MODEL 4): the artificial particle B takes the velocity with
+   v_i - v_B = beta (v_i - v_wall), beta = min(beta_max, 1 + d_B/d_A), both
+   distances from the interface between them (the Morris plane); the noise
+   carries sqrt(beta) so the pair keeps its fluctuation-dissipation balance.
+   The wall absorbs the momentum. */
+static void hcbd__morris(const hcbd_world *w, int i, uint64_t key, double P[3])
+{
+    const double Rc2 = w->p.Rc * w->p.Rc, invRc = 1.0 / w->p.Rc;
+    const double cs = w->cf * w->m * w->m * w->p.dt / w->p.tau, two_kT = 2.0 * w->p.kT;
+    const double bmax = w->p.wall_beta_max;
+    const double xi = w->x[i], yi = w->y[i], zi = w->z[i];
+    const double vx = w->vx[i], vy = w->vy[i], vz = w->vz[i], iri = w->inv_rho[i];
+    const uint64_t idk = (uint64_t)(uint32_t)w->id[i] << 32;
+    int cols[9], nc = hcbd__art_cols(w, xi, zi, cols), c;
+    for (c = 0; c < nc; ++c) {
+        int32_t k;
+        for (k = w->acol_start[cols[c]]; k < w->acol_start[cols[c] + 1]; ++k) {
+            double dx = hcbd__mi(xi - w->ax[k], w->p.L[0]), dy = hcbd__mi(yi - w->ay[k], w->p.L[1]);
+            double dz = hcbd__mi(zi - w->az[k], w->p.L[2]), r2 = dx * dx + dy * dy + dz * dz;
+            double q, a, sdt, dA, dB, vw, beta;
+            if (r2 >= Rc2) continue;
+            q = sqrt(r2) * invRc;
+            a = 1.0 - q;
+            sdt = cs * (iri + w->art_inv_rho) * a * a * a;
+            if (dy > 0.0) { /* B below i: behind the bottom interface */
+                dA = yi - w->morris_lo;
+                dB = w->morris_lo - (yi - dy);
+                vw = w->p.wall_vx[0];
+            } else {
+                dA = w->morris_hi - yi;
+                dB = (yi - dy) - w->morris_hi;
+                vw = w->p.wall_vx[1];
+            }
+            beta = (dA > 0.0 && dB >= 0.0) ? 1.0 + dB / dA : bmax;
+            if (beta > bmax) beta = bmax;
+            P[0] -= beta * sdt * (vx - vw);
+            P[1] -= beta * sdt * vy;
+            P[2] -= beta * sdt * vz;
+            if (two_kT > 0.0) {
+                double z3[3], b = sqrt(two_kT * sdt * (w->p.wall_noise_beta ? beta : 1.0));
+                hcbd__pair_noise(w, hcbd__mix64(key ^ idk ^ (uint64_t)k), z3);
+                P[0] += b * z3[0]; P[1] += b * z3[1]; P[2] += b * z3[2];
+            }
+        }
+    }
+}
+
+int64_t hcbd_wall_penetrations(const hcbd_world *w, int64_t *last_step, int *last_id)
+{
+    if (last_step) *last_step = w ? w->wall_pen_step : -1;
+    if (last_id) *last_id = w ? w->wall_pen_id : -1;
+    return w ? w->wall_pen : 0;
 }
 
 /* >>Lees-Edwards.  The one routine every pair pass uses: the minimum-image
@@ -1614,6 +2020,8 @@ static void hcbd__density(hcbd_world *w)
         double s = w->wown[i], rho;
         int32_t q;
         for (q = w->rev_start[i]; q < w->rev_start[i + 1]; ++q) s += bw[w->rev_p[q]];
+        if (HCBD__WALLS && w->walls && hcbd__near_wall(w, w->y[i]))
+            s += hcbd__art_wsum(w, w->x[i], w->y[i], w->z[i]);
         rho = w->m * w->rho_norm * (w->w0 + s);
         w->rho[i] = (hcbd_real)rho;
         w->inv_rho[i] = (hcbd_real)(1.0 / rho);
@@ -1725,6 +2133,13 @@ static hcbd_result hcbd__integrate(hcbd_world *w)
     const double lim2 = w->step_limit * w->step_limit;
     const double gx = w->p.fext[0], gy = w->p.fext[1], gz = w->p.fext[2];
     const int track = w->has_pairs; /* displacement since the list build */
+    const int fext_dr = w->fext_dr, walls = HCBD__WALLS && w->walls;
+    const int gauss = walls && w->has_gauss, refl = walls && w->has_refl;
+    const int morris = walls && w->n_art > 0;
+    const double wlo = w->wall_lo, whi = w->wall_hi;
+    const uint64_t wkey = morris ? hcbd__mix64(w->wall_pair_key ^ hcbd__mix64((uint64_t)w->step)) : 0;
+    int64_t npen = 0;
+    int pen_id = INT_MAX;
     const int le = w->le_on, flux = w->flux_on;
     const double vle = w->le_vjump, m = w->m;
     /* positions at t + dt are remapped with the offset of t + dt */
@@ -1740,9 +2155,10 @@ static hcbd_result hcbd__integrate(hcbd_world *w)
     double dmax = 0.0;
     int bad_step = INT_MAX, bad_nan = INT_MAX, i;
     (void)nt;
-    HCBD__OMP(omp parallel for num_threads(nt) schedule(static) reduction(max:dmax) reduction(min:bad_step) reduction(min:bad_nan))
+    HCBD__OMP(omp parallel for num_threads(nt) schedule(static) reduction(max:dmax) reduction(min:bad_step) reduction(min:bad_nan) reduction(+:npen) reduction(min:pen_id))
     for (i = 0; i < n; ++i) {
-        double F[3] = {0, 0, 0}, P[3] = {0, 0, 0}, ws = lag ? w->wown[i] : 0.0;
+        double F[3] = {0, 0, 0}, P[3] = {0, 0, 0}, G[3] = {0, 0, 0};
+        double ws = lag ? w->wown[i] : 0.0;
         double r[3], dr[3], d2, v2 = 0.0;
         int32_t q;
         int d;
@@ -1766,7 +2182,17 @@ static hcbd_result hcbd__integrate(hcbd_world *w)
                 if (lag) ws += bW[p];
             }
         }
-        if (fext) { F[0] += gx; F[1] += gy; F[2] += gz; }
+        if (gauss) {
+            double fw;
+            hcbd_wall_potential(&w->p, w->y[i], &fw);
+            F[1] += fw;
+        }
+        if (morris && hcbd__near_wall(w, w->y[i])) hcbd__morris(w, i, wkey, P);
+        /* G: the body force when it drives only the background */
+        if (fext) {
+            if (fext_dr) { F[0] += gx; F[1] += gy; F[2] += gz; }
+            else { G[0] = gx; G[1] = gy; G[2] = gz; }
+        }
         for (d = 0; d < 3; ++d) dr[d] = F[d] * dt_xi;
         if (gibd) {
             dr[0] += w->vx[i] * dt; dr[1] += w->vy[i] * dt; dr[2] += w->vz[i] * dt;
@@ -1781,9 +2207,9 @@ static hcbd_result hcbd__integrate(hcbd_world *w)
             w->rs0[i] = g.s[0]; w->rs1[i] = g.s[1]; w->rs2[i] = g.s[2]; w->rs3[i] = g.s[3];
         }
         if (gibd) {
-            double vx = w->vx[i] + F[0] * dt_m + P[0] * inv_m;
-            double vy = w->vy[i] + F[1] * dt_m + P[1] * inv_m;
-            double vz = w->vz[i] + F[2] * dt_m + P[2] * inv_m;
+            double vx = w->vx[i] + (F[0] + G[0]) * dt_m + P[0] * inv_m;
+            double vy = w->vy[i] + (F[1] + G[1]) * dt_m + P[1] * inv_m;
+            double vz = w->vz[i] + (F[2] + G[2]) * dt_m + P[2] * inv_m;
             w->vx[i] = (hcbd_real)vx; w->vy[i] = (hcbd_real)vy; w->vz[i] = (hcbd_real)vz;
             v2 = vx * vx + vy * vy + vz * vz;
             if (lag) {
@@ -1813,6 +2239,10 @@ static hcbd_result hcbd__integrate(hcbd_world *w)
             if (r[d] < 0.0 && (hcbd_real)(r[d] + Ld) >= (hcbd_real)Ld) r[d] = 0.0;
             else if (r[d] < Ld && (hcbd_real)r[d] >= (hcbd_real)Ld) r[d] = Ld;
         }
+        if (refl) { /* specular reflection at the interface the particle faces */
+            if (w->y[i] < 0.5 * L1) { if (r[1] < wlo) r[1] = 2.0 * wlo - r[1]; }
+            else if (r[1] > whi) r[1] = 2.0 * whi - r[1];
+        }
         if (le) {
             /* crossing the sheared boundary: x and the velocity variable
                jump (MODEL 5); the carried momentum is the carrier flux */
@@ -1837,6 +2267,10 @@ static hcbd_result hcbd__integrate(hcbd_world *w)
         if (w->x[i] >= (hcbd_real)L0) w->x[i] = 0;
         if (w->y[i] >= (hcbd_real)L1) w->y[i] = 0;
         if (w->z[i] >= (hcbd_real)L2) w->z[i] = 0;
+        if (walls && (w->y[i] < wlo || w->y[i] > whi)) {
+            npen++;
+            if (w->id[i] < pen_id) pen_id = w->id[i];
+        }
         if (track) {
             double e[3], e2;
             hcbd__delta_box(&box, r[0] - w->x0[i], r[1] - w->y0[i], r[2] - w->z0[i], e);
@@ -1846,6 +2280,11 @@ static hcbd_result hcbd__integrate(hcbd_world *w)
     }
     w->disp_max = sqrt(dmax);
     w->rho_current = 0;
+    if (npen) {
+        w->wall_pen += npen;
+        w->wall_pen_step = w->step;
+        w->wall_pen_id = pen_id;
+    }
     if (le) {
         w->le_offset = s_new - L0 * floor(s_new / L0);
         w->le_drift += fabs(w->p.gdot * L1 * dt);
@@ -1923,6 +2362,11 @@ hcbd_result hcbd_step(hcbd_world *w, int nsteps)
     for (s = 0; s < nsteps; ++s) {
         r = hcbd__ensure_list(w);
         if (r != HCBD_OK) return r;
+        if (HCBD__WALLS && w->n_art > 0) {
+            /* this step's artificial particles enter the densities */
+            hcbd__wall_draw(w);
+            w->rho_current = 0;
+        }
         if (w->gibd && hcbd__density_stale(w)) hcbd__density(w);
         if (w->has_pairs) hcbd__forces(w);
         r = hcbd__integrate(w);
@@ -2558,6 +3002,106 @@ int hcbd_msd_result(const hcbd_msd *d, double *lag, double *msd, int64_t *count,
             ++out;
         }
     return out < max ? out : max;
+}
+
+/* >>slab profiles */
+size_t hcbd_profile_bytes(int nslab)
+{
+    return nslab < 1 || nslab > (1 << 20) ? 0 : (size_t)nslab * 15 * sizeof(double);
+}
+
+hcbd_result hcbd_profile_init(hcbd_profile *pr, const hcbd_world *w, int nslab,
+                              int block, void *mem, size_t bytes)
+{
+    if (!pr || !w || !mem) return HCBD_ERR_NULL;
+    memset(pr, 0, sizeof *pr);
+    if (nslab < 1 || nslab > (1 << 20) || block < 1) return HCBD_ERR_PARAM;
+    if (bytes < hcbd_profile_bytes(nslab)) return HCBD_ERR_MEMORY;
+    pr->nslab = nslab;
+    pr->block = block;
+    pr->L[0] = w->p.L[0]; pr->L[1] = w->p.L[1]; pr->L[2] = w->p.L[2];
+    pr->m = w->m;
+    pr->acc = (double *)mem;
+    pr->stat = pr->acc + (size_t)nslab * 7;
+    memset(mem, 0, hcbd_profile_bytes(nslab));
+    return HCBD_OK;
+}
+
+static void hcbd__profile_close(hcbd_profile *pr)
+{
+    const double vslab = pr->L[0] * pr->L[1] * pr->L[2] / pr->nslab;
+    int s, d;
+    for (s = 0; s < pr->nslab; ++s) {
+        double *a = pr->acc + (size_t)7 * s, *t = pr->stat + (size_t)8 * s;
+        double c = a[0], dens = c / (pr->block * vslab);
+        t[1] += c;
+        t[2] += dens;
+        t[3] += dens * dens;
+        if (c > 1.0) {
+            double var = 0.0, vx = a[1] / c, T;
+            for (d = 0; d < 3; ++d) {
+                double mu = a[1 + d] / c;
+                var += (a[4 + d] / c - mu * mu) * c / (c - 1.0);
+            }
+            T = pr->m * var / 3.0;
+            t[0] += 1.0;
+            t[4] += vx;
+            t[5] += vx * vx;
+            t[6] += T;
+            t[7] += T * T;
+        }
+        for (d = 0; d < 7; ++d) a[d] = 0.0;
+    }
+    pr->nblocks++;
+    pr->nsamp = 0;
+}
+
+void hcbd_profile_sample(hcbd_profile *pr, const hcbd_world *w)
+{
+    int k;
+    if (!pr || !w || !pr->acc) return;
+    for (k = 0; k < w->n; ++k) {
+        int i = w->slot[k], s = (int)(w->y[i] / pr->L[1] * pr->nslab);
+        double *a;
+        if (s < 0) s = 0;
+        if (s >= pr->nslab) s = pr->nslab - 1;
+        a = pr->acc + (size_t)7 * s;
+        a[0] += 1.0;
+        if (w->gibd) {
+            double v[3];
+            int d;
+            v[0] = w->vx[i]; v[1] = w->vy[i]; v[2] = w->vz[i];
+            for (d = 0; d < 3; ++d) {
+                a[1 + d] += v[d];
+                a[4 + d] += v[d] * v[d];
+            }
+        }
+    }
+    if (++pr->nsamp == pr->block) hcbd__profile_close(pr);
+}
+
+/* mean and standard error of nb block values with sum s and square sum q */
+static void hcbd__block_stat(double nb, double s, double q, double *mean, double *err)
+{
+    double mu = nb > 0 ? s / nb : 0.0, var = nb > 1 ? (q / nb - mu * mu) * nb / (nb - 1.0) : 0.0;
+    *mean = mu;
+    *err = nb > 1 && var > 0 ? sqrt(var / nb) : (nb > 1 ? 0.0 : NAN);
+}
+
+int64_t hcbd_profile_result(const hcbd_profile *pr, double *out)
+{
+    int s;
+    if (!pr || !out || !pr->stat) return 0;
+    for (s = 0; s < pr->nslab; ++s) {
+        const double *t = pr->stat + (size_t)8 * s, nb = (double)pr->nblocks;
+        double *o = out + (size_t)8 * s;
+        o[0] = (s + 0.5) * pr->L[1] / pr->nslab;
+        hcbd__block_stat(nb, t[2], t[3], &o[1], &o[2]);
+        hcbd__block_stat(t[0], t[4], t[5], &o[3], &o[4]);
+        hcbd__block_stat(t[0], t[6], t[7], &o[5], &o[6]);
+        o[7] = nb > 0 ? t[1] / (nb * pr->block) : 0.0;
+    }
+    return pr->nblocks;
 }
 
 #ifdef __cplusplus

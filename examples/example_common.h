@@ -185,7 +185,7 @@ static void make_figures(const config *c)
 }
 
 /* Mean and standard error of per-block values. */
-static void mean_err(const double *x, int n, double *m, double *e)
+static inline void mean_err(const double *x, int n, double *m, double *e)
 {
     double s = 0, s2 = 0;
     int k;

@@ -1,5 +1,5 @@
 /* Test runner: runs every registered test (or those whose name contains
-   argv[1]); the last line is "N passed, N failed". */
+   one of the arguments); the last line is "N passed, N failed". */
 #define _POSIX_C_SOURCE 200809L /* clock_gettime, mkdir under -std=c99 */
 #include "test.h"
 #include <time.h>
@@ -20,15 +20,19 @@ static const struct { const char *name; void (*fn)(void); } tests[] = {
 int main(int argc, char **argv)
 {
     int k, passed = 0, failed = 0;
-    const char *filter = NULL;
+    int nfilter = 0;
     for (k = 1; k < argc; ++k) {
         if (!strcmp(argv[k], "--quick")) t_quick = 1;
-        else filter = argv[k];
+        else ++nfilter;
     }
     if (getenv("HCBD_TEST_QUICK")) t_quick = 1;
     for (k = 0; k < (int)(sizeof tests / sizeof tests[0]); ++k) {
         struct timespec a, b;
-        if (filter && !strstr(tests[k].name, filter)) continue;
+        if (nfilter) {
+            int a, hit = 0;
+            for (a = 1; a < argc; ++a) hit |= strcmp(argv[a], "--quick") && strstr(tests[k].name, argv[a]);
+            if (!hit) continue;
+        }
         printf("%s\n", tests[k].name);
         fflush(stdout);
         t_fail = 0;

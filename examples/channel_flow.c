@@ -1,0 +1,303 @@
+/* channel_flow: gravity-driven flow of a star-polymer fluid between two
+   solid walls with GI-BD (Ahuja et al. 2016, sec. II C and IV C, Fig. 6).
+
+   The box is periodic; walls normal to y fill 1.5 sigma at the bottom and
+   the top with artificial particles redrawn every step, which hold the
+   background velocity with Morris no-slip velocities (MODEL.md 4).  A body
+   force g per unit mass along x drives the flow.  For each xi'/xi the run
+   accumulates slab profiles (26 slabs over the box height by default) of
+   the number density, the mean background velocity and the temperature
+   (from the velocity variance), with block errors.
+
+   What to look for: layering of the stars next to the walls; a smooth,
+   near-parabolic velocity profile (for stars flatter than the Newtonian
+   parabola, because the fluid thins under shear); a flat temperature, also
+   next to the walls; lower velocities for larger xi'/xi (the background
+   viscosity grows as xi').  With potential=ideal the profile is Newtonian:
+   compare v_max_measured with v_max_newtonian, which uses the mean-field
+   nu = Rc^2/(28 tau) (the measured viscosity of ideal carriers is lower,
+   see README).  wall=gauss (the paper's repulsion) depletes the fluid next
+   to the walls and the flow slips; wall=reflect or wall=noslip remove the
+   slip.
+
+   Writes profile_xip<x>.csv for each xi'/xi and plots.gp (profiles.png with
+   gnuplot); a summary per xi'/xi on stdout. */
+#include "example_common.h"
+
+#define MAXX 8
+
+static double xips[MAXX];
+static int nxip, nslab = 26;
+static double wall_t = 1.5, g_force = 133.4, beta_max = 0, shift = HCBD_AUTO;
+static int wall_mode = HCBD_WALL_GAUSS, bg_only = 0;
+
+static void usage(void)
+{
+    fprintf(stderr,
+            "usage: channel_flow [key=value ...]\n"
+            "  preset=quick|paper  quick (default): 40000 steps per run; paper: 1000000\n"
+            "  xip=a,b,...         background frictions xi' (xi = 1): default 1,2,5\n"
+            "  g=133.4             body force per unit mass along x (F = m g)\n"
+            "  wall=gauss|reflect|noslip  wall_thickness=1.5  slabs=26  beta_max=1.5 (5 for noslip)\n"
+            "  wall_shift=x         noslip: Morris plane x in front of the interface\n"
+            "                      (default: the Boltzmann depletion width)\n"
+            "  body=both|background  the body force drives particles and background, or\n"
+            "                      the background only\n"
+            "  density dt kT xi tau Rc f sigma rcut skin Lx Ly Lz potential=star|ideal\n"
+            "  density_norm=2014|2016 noise=gauss|uniform seed steps threads out\n"
+            "  (N follows from the density and the channel volume)\n");
+}
+
+static int own_key(config *c, const char *key, const char *v)
+{
+    if (!strcmp(key, "preset")) return check_preset(c, v);
+    if (!strcmp(key, "xip")) {
+        char buf[256], *tok, *save = NULL;
+        snprintf(buf, sizeof buf, "%s", v);
+        nxip = 0;
+        for (tok = strtok_r(buf, ",", &save); tok; tok = strtok_r(NULL, ",", &save)) {
+            double d;
+            if (nxip == MAXX) {
+                fprintf(stderr, "channel_flow: more than %d values of xip\n", MAXX);
+                return 0;
+            }
+            if (!parse_double(c, key, tok, &d)) return 0;
+            xips[nxip++] = d;
+        }
+        return nxip > 0;
+    }
+    if (!strcmp(key, "g")) return parse_double(c, key, v, &g_force);
+    if (!strcmp(key, "wall_thickness")) return parse_double(c, key, v, &wall_t);
+    if (!strcmp(key, "beta_max")) return parse_double(c, key, v, &beta_max);
+    if (!strcmp(key, "wall_shift")) return parse_double(c, key, v, &shift);
+    if (!strcmp(key, "slabs")) {
+        if (!parse_int(c, key, v, &nslab)) return 0;
+        if (nslab < 4 || nslab > 10000) {
+            fprintf(stderr, "channel_flow: slabs=%d must be 4..10000\n", nslab);
+            return 0;
+        }
+        return 1;
+    }
+    if (!strcmp(key, "wall")) {
+        if (!strcmp(v, "gauss")) wall_mode = HCBD_WALL_GAUSS;
+        else if (!strcmp(v, "reflect")) wall_mode = HCBD_WALL_REFLECT;
+        else if (!strcmp(v, "noslip")) wall_mode = HCBD_WALL_NOSLIP;
+        else {
+            fprintf(stderr, "channel_flow: wall=%s is not gauss, reflect or noslip\n", v);
+            return 0;
+        }
+        return 1;
+    }
+    if (!strcmp(key, "body")) return parse_choice(c, key, v, "both", "background", &bg_only, 0, 1);
+    if (!strcmp(key, "N")) {
+        fprintf(stderr, "channel_flow: N follows from density and the channel volume\n");
+        return 0;
+    }
+    if (!strcmp(key, "dynamics")) {
+        fprintf(stderr, "channel_flow: dynamics is GI-BD (classical BD carries no background flow)\n");
+        return 0;
+    }
+    return -1;
+}
+
+/* Least-squares parabola v = a + b y + c y^2 through the profile points
+   with weights 1/err^2; C its covariance (the inverse normal matrix). */
+static int fit_parabola(const double *y, const double *v, const double *e, int n, double q[3],
+                        double C[9])
+{
+    double A[9] = {0}, r[3] = {0}, det;
+    int k, i, j;
+    for (k = 0; k < n; ++k) {
+        double b[3] = {1.0, y[k], y[k] * y[k]}, wt = e[k] > 0 ? 1.0 / (e[k] * e[k]) : 1.0;
+        for (i = 0; i < 3; ++i) {
+            r[i] += wt * b[i] * v[k];
+            for (j = 0; j < 3; ++j) A[3 * i + j] += wt * b[i] * b[j];
+        }
+    }
+    det = A[0] * (A[4] * A[8] - A[5] * A[7]) - A[1] * (A[3] * A[8] - A[5] * A[6]) +
+          A[2] * (A[3] * A[7] - A[4] * A[6]);
+    if (n < 3 || det == 0.0) return 0;
+    for (i = 0; i < 3; ++i)
+        for (j = 0; j < 3; ++j) { /* adjugate: cofactor of A[j][i] */
+            int r0 = (j + 1) % 3, r1 = (j + 2) % 3, c0 = (i + 1) % 3, c1 = (i + 2) % 3;
+            C[3 * i + j] = (A[3 * r0 + c0] * A[3 * r1 + c1] - A[3 * r0 + c1] * A[3 * r1 + c0]) / det;
+        }
+    for (i = 0; i < 3; ++i) q[i] = C[3 * i] * r[0] + C[3 * i + 1] * r[1] + C[3 * i + 2] * r[2];
+    return 1;
+}
+
+/* sqrt(g C g): standard error of a linear function g.q of the fit */
+static double fit_err(const double C[9], const double g[3])
+{
+    double s = 0;
+    int i, j;
+    for (i = 0; i < 3; ++i)
+        for (j = 0; j < 3; ++j) s += g[i] * C[3 * i + j] * g[j];
+    return sqrt(fmax(s, 0));
+}
+
+int main(int argc, char **argv)
+{
+    config c;
+    hcbd_params *p;
+    hcbd_theory th;
+    uint64_t checksum = 0;
+    int k, r, paper = 0, start, nblk = 20;
+    struct timespec t0;
+    FILE *f;
+
+    memset(&c, 0, sizeof c);
+    c.name = "channel_flow";
+    c.def = hcbd_world_def_default();
+    c.def.params.tau = 3e-3; /* 2016 sec. IV C */
+    c.N = 2;
+    c.density = 0.24;
+    c.L[0] = c.L[1] = c.L[2] = 13.0;
+    c.box_given = 7;
+    for (k = 1; k < argc; ++k)
+        if (!strcmp(argv[k], "preset=paper")) paper = 1;
+    c.steps = paper ? 1000000 : 40000;
+    xips[0] = 1; xips[1] = 2; xips[2] = 5;
+    nxip = 3;
+    snprintf(c.out, sizeof c.out, "out/channel_flow");
+    if (!parse_args(argc, argv, &c, own_key, usage)) return 2;
+    p = &c.def.params;
+    p->wall_thickness = wall_t;
+    p->wall_mode = (hcbd_wall_mode)wall_mode;
+    /* the no-slip mode needs a firmer grip on the particles next to the
+       Morris plane than the paper's cap (README) */
+    p->wall_beta_max = beta_max > 0 ? beta_max : (wall_mode == HCBD_WALL_NOSLIP ? 5.0 : 1.5);
+    p->wall_shift = shift;
+    p->fext_background_only = bg_only;
+    c.N = (int)floor(c.density * p->L[0] * (p->L[1] - 2 * wall_t) * p->L[2] + 0.5);
+    c.def.capacity = c.N < 2 ? 2 : c.N;
+    mkdirs(c.out);
+    printf("channel_flow: GI-BD %s, N = %d real particles, box %.3g x %.3g x %.3g, walls %.3g thick "
+           "(%s), n# = %g, dt = %g, tau = %g, g = %g (body force on %s), %d steps per run\n",
+           p->potential == HCBD_POT_STAR ? "star polymers" : "ideal particles", c.N, p->L[0],
+           p->L[1], p->L[2], wall_t,
+           wall_mode == HCBD_WALL_GAUSS ? "Gaussian repulsion" :
+           wall_mode == HCBD_WALL_REFLECT ? "reflecting" : "no-slip at the interface",
+           c.density, p->dt, p->tau, g_force, bg_only ? "the background only" : "particles and background",
+           c.steps);
+    fflush(stdout);
+    start = c.steps / 5; /* the flow develops in ~W^2/nu; stars layer at the walls */
+    clock_gettime(CLOCK_MONOTONIC, &t0);
+    for (r = 0; r < nxip; ++r) {
+        hcbd_world w;
+        hcbd_profile prof;
+        double *mem, *out, ys[10000], vs[10000], es[10000], q[3] = {0, 0, 0}, C[9] = {0};
+        double gv[3], gs[3], vmax_err, slip_err;
+        double lo, hi, nbulk = 0, tc = 0, vmax, slip = 0, slope, dep = 0, tdev = 0, meanc = 0;
+        int nint = 0, ncen = 0, s, nc = 0;
+        int64_t pen;
+        size_t bytes = hcbd_profile_bytes(nslab);
+        p->xip = xips[r];
+        p->fext[0] = g_force * p->xip * p->tau; /* F = m g, m = xi' tau */
+        if (hcbd_world_create(&w, &c.def) != HCBD_OK) {
+            fprintf(stderr, "channel_flow: %s\n", w.err.msg);
+            return 2;
+        }
+        hcbd_theory_of(p, &th);
+        mem = (double *)malloc(bytes);
+        out = (double *)malloc((size_t)nslab * 8 * sizeof(double));
+        if (!mem || !out || hcbd_world_place_lattice(&w, c.N) != HCBD_OK ||
+            hcbd_profile_init(&prof, &w, nslab, (c.steps - start) / (10 * nblk), mem, bytes) != HCBD_OK) {
+            fprintf(stderr, "channel_flow: set-up failed: %s\n", w.err.msg);
+            return 2;
+        }
+        if (hcbd_step(&w, start) != HCBD_OK) {
+            fprintf(stderr, "channel_flow: xip = %g: %s\n", xips[r], w.err.msg);
+            return 1;
+        }
+        for (k = 0; k < (c.steps - start) / 10; ++k) {
+            if (hcbd_step(&w, 10) != HCBD_OK) {
+                fprintf(stderr, "channel_flow: xip = %g: %s\n", xips[r], w.err.msg);
+                return 1;
+            }
+            hcbd_profile_sample(&prof, &w);
+            if (k % 1000 == 999)
+                progress(&c, r * c.steps + start + 10 * (k + 1), nxip * c.steps, &t0);
+        }
+        hcbd_profile_result(&prof, out);
+        lo = p->wall_thickness;
+        hi = p->L[1] - p->wall_thickness;
+        /* central fifth of the channel: bulk density and temperature */
+        for (s = 0; s < nslab; ++s) {
+            double y = out[8 * s];
+            if (fabs(y - 0.5 * p->L[1]) <= 0.1 * (hi - lo)) {
+                nbulk += out[8 * s + 1]; tc += out[8 * s + 5]; ++ncen;
+            }
+            if (out[8 * s + 7] > 0) { meanc += out[8 * s + 7]; ++nc; }
+            /* interior profile: slabs at least 1 sigma from the interfaces */
+            if (y > lo + 1.0 && y < hi - 1.0) {
+                ys[nint] = y; vs[nint] = out[8 * s + 3]; es[nint] = out[8 * s + 4]; ++nint;
+            }
+        }
+        nbulk /= ncen; tc /= ncen; meanc /= nc;
+        for (s = 0; s < nslab; ++s) {
+            double a = out[8 * s] - 0.5 * p->L[1] / nslab, b = a + p->L[1] / nslab;
+            double ov = fmin(b, hi) - fmax(a, lo);
+            /* excluded width: integral over the channel of 1 - n/n_bulk,
+               exact for slabs that straddle an interface */
+            if (ov > 0) dep += ov - out[8 * s + 7] / (nbulk * p->L[0] * p->L[2]);
+            if (out[8 * s + 7] >= 0.2 * meanc && tc > 0)
+                tdev = fmax(tdev, fabs(out[8 * s + 5] / tc - 1));
+        }
+        dep *= 0.5;
+        fit_parabola(ys, vs, es, nint, q, C);
+        vmax = q[2] != 0 ? q[0] - q[1] * q[1] / (4 * q[2]) : 0;
+        slope = 0.5 * (fabs(q[1] + 2 * q[2] * lo) + fabs(q[1] + 2 * q[2] * hi));
+        slip = 0.5 * ((q[0] + q[1] * lo + q[2] * lo * lo) + (q[0] + q[1] * hi + q[2] * hi * hi));
+        gv[0] = 1; gv[1] = q[2] != 0 ? -q[1] / (2 * q[2]) : 0; gv[2] = q[2] != 0 ? q[1] * q[1] / (4 * q[2] * q[2]) : 0;
+        gs[0] = 1; gs[1] = 0.5 * (lo + hi); gs[2] = 0.5 * (lo * lo + hi * hi);
+        vmax_err = fit_err(C, gv);
+        slip_err = fit_err(C, gs);
+        pen = hcbd_wall_penetrations(&w, NULL, NULL);
+        checksum = (checksum ^ hcbd_state_checksum(&w)) * 0x100000001B3ULL;
+        {
+            char name[64];
+            snprintf(name, sizeof name, "profile_xip%g.csv", xips[r]);
+            if ((f = open_out(&c, name))) {
+                fprintf(f, "y,density,density_err,vx,vx_err,T_over_kT,T_err,particles\n");
+                for (s = 0; s < nslab; ++s)
+                    fprintf(f, "%.6g,%.6g,%.3g,%.6g,%.3g,%.6g,%.3g,%.6g\n", out[8 * s], out[8 * s + 1],
+                            out[8 * s + 2], out[8 * s + 3], out[8 * s + 4], out[8 * s + 5] / p->kT,
+                            out[8 * s + 6] / p->kT, out[8 * s + 7]);
+                fclose(f);
+            }
+        }
+        printf("# summary xip=%g (xi'/xi = %g)\n", xips[r], xips[r] / p->xi);
+        printf("v_max_measured=%.6g\nv_max_err=%.3g\nv_max_newtonian=%.6g\n", vmax, vmax_err, th.v_max);
+        printf("slip_velocity_ratio=%.4g\nslip_velocity_ratio_err=%.3g\nslip_length=%.4g\n",
+               vmax != 0 ? slip / vmax : 0, vmax != 0 ? slip_err / fabs(vmax) : 0,
+               slope > 0 ? slip / slope : 0);
+        printf("depletion_width=%.4g\ndepletion_width_boltzmann=%.4g\n", dep, th.depletion_width);
+        printf("T_bulk_ratio=%.4g\nT_profile_max_dev=%.4g\n", tc / p->kT, tdev);
+        printf("wall_penetrations=%lld\n", (long long)pen);
+        printf("eta_inf=%.6g\nnu_meanfield=%.6g\nre_max=%.4g\n", th.eta_inf, th.nu, th.re_max);
+        if (th.re_max >= 1)
+            printf("# warning: Re_max = %.3g >= 1 (2016 eq. 37-39): inertia is not negligible "
+                   "here, lower g or raise nu\n", th.re_max);
+        free(mem);
+        free(out);
+        hcbd_world_destroy(&w);
+    }
+    printf("state_checksum=%016llx\n", (unsigned long long)checksum);
+    if ((f = open_out(&c, "plots.gp"))) {
+        fprintf(f, "set datafile separator ','\nset terminal pngcairo size 1500,450\n"
+                   "set output 'profiles.png'\nset multiplot layout 1,3\nset xlabel 'y / sigma'\n");
+        for (k = 0; k < 3; ++k) {
+            static const char *lab[3] = {"number density", "v_x", "T / kT"};
+            fprintf(f, "set ylabel '%s'\nplot ", lab[k]);
+            for (r = 0; r < nxip; ++r)
+                fprintf(f, "%s'profile_xip%g.csv' u 1:%d:%d w yerr t \"xi'/xi = %g\"", r ? ", " : "",
+                        xips[r], 2 + 2 * k, 3 + 2 * k, xips[r] / p->xi);
+            fprintf(f, "\n");
+        }
+        fprintf(f, "unset multiplot\n");
+        fclose(f);
+        make_figures(&c);
+    }
+    return 0;
+}

@@ -1,0 +1,575 @@
+/* Walls (MODEL 4): the repulsion against its gradient, the artificial
+   particles (count, uniformity, their share of the densities), the Morris
+   friction against an independent sum, the temperature profile and its
+   fluctuation-dissipation balance, momentum absorbed by the walls, the two
+   ways of applying the body force, slip and depletion, determinism and bad
+   inputs.  The wall tests need the walled build; the model-switch test
+   runs in both. */
+#include "test.h"
+
+/* The GI-BD build rejects walls by name; the walled build accepts them. */
+void test_model_switch(void)
+{
+    hcbd_world_def d = hcbd_world_def_default();
+    char msg[256];
+    hcbd_result r;
+    d.params.L[1] = 13.0;
+    d.params.wall_thickness = 1.5;
+    r = hcbd_params_check(&d.params, msg, sizeof msg);
+#if HCBD_MODEL == HCBD_MODEL_WALLED
+    CHECK(r == HCBD_OK, "walled build rejected walls: %s", msg);
+#else
+    CHECK(r == HCBD_ERR_PARAM && strstr(msg, "HCBD_MODEL_WALLED"), "GI-BD build: %s", msg);
+#endif
+}
+
+#if HCBD_MODEL == HCBD_MODEL_WALLED
+/* The paper's channel: 13^3 box, walls 1.5 thick, n# = 0.24, 406 real
+   particles; ideal particles unless a test says otherwise. */
+static hcbd_world_def channel(void)
+{
+    hcbd_world_def d = hcbd_world_def_default();
+    d.params.L[0] = d.params.L[1] = d.params.L[2] = 13.0;
+    d.params.wall_thickness = 1.5;
+    d.params.tau = 3e-3;
+    d.params.potential = HCBD_POT_IDEAL;
+    d.capacity = 406;
+    return d;
+}
+
+void test_wall_bad_inputs(void)
+{
+    hcbd_world_def d = channel();
+    hcbd_world w;
+    double xyz[6] = {1, 5, 1, 2, 0.7, 2};
+    hcbd_result r;
+    d.params.wall_thickness = 6.5; /* 2 t = L[1]: no channel */
+    r = hcbd_world_create(&w, &d);
+    CHECK(r == HCBD_ERR_BOX && strstr(w.err.msg, "wall_thickness = 6.5"), "thick: %s", w.err.msg);
+    d.params.wall_thickness = 1.2; /* 2 t < Rc with periodic y */
+    r = hcbd_world_create(&w, &d);
+    CHECK(r == HCBD_ERR_BOX && strstr(w.err.msg, "wall_thickness = 1.2") &&
+          strstr(w.err.msg, "periodic"), "thin: %s", w.err.msg);
+    d = channel();
+    d.params.wall_beta_max = 0.9;
+    r = hcbd_world_create(&w, &d);
+    CHECK(r == HCBD_ERR_PARAM && strstr(w.err.msg, "wall_beta_max = 0.9"), "beta: %s", w.err.msg);
+    d = channel();
+    d.params.gdot = 1.0;
+    r = hcbd_world_create(&w, &d);
+    CHECK(r == HCBD_ERR_PARAM && strstr(w.err.msg, "gdot"), "walls + shear: %s", w.err.msg);
+    d = channel();
+    d.params.wall_mode = (hcbd_wall_mode)7;
+    r = hcbd_world_create(&w, &d);
+    CHECK(r == HCBD_ERR_PARAM && strstr(w.err.msg, "wall_mode = 7"), "mode: %s", w.err.msg);
+    /* a sheared bulk whose offset would move by more than a box per step,
+       in either direction */
+    d = hcbd_world_def_default();
+    d.params.potential = HCBD_POT_IDEAL;
+    d.params.gdot = -2.0 * d.params.L[0] / (d.params.L[1] * d.params.dt);
+    r = hcbd_world_create(&w, &d);
+    CHECK(r == HCBD_ERR_PARAM && strstr(w.err.msg, "gdot = -"), "negative gdot: %s", w.err.msg);
+    /* a particle handed in inside a wall is refused, by id */
+    d = channel();
+    d.capacity = 2;
+    if (!make_world(&w, &d)) return;
+    r = hcbd_world_set_positions(&w, 2, xyz);
+    CHECK(r == HCBD_ERR_PARAM && w.err.id == 1 && strstr(w.err.msg, "inside a wall"),
+          "inside: %s", w.err.msg);
+    hcbd_world_destroy(&w);
+}
+
+/* Force = -dE/dy by central differences; the far plane's share at the
+   interface (MODEL 4: 0.46 kT); the excluded width against a trapezoid
+   integral of an independently written potential. */
+void test_wall_potential(void)
+{
+    hcbd_world_def d = channel();
+    hcbd_theory th;
+    const hcbd_params *p = &d.params;
+    double y, worst = 0, far, dep = 0, h = 1e-4;
+    int k;
+    for (y = 1.3; y < 11.8; y += 0.173) {
+        double f, ep, em;
+        hcbd_wall_potential(p, y, &f);
+        ep = hcbd_wall_potential(p, y + 1e-5, NULL);
+        em = hcbd_wall_potential(p, y - 1e-5, NULL);
+        worst = fmax(worst, fabs(f + (ep - em) / 2e-5) / (1.0 + fabs(f)));
+    }
+    CHECK(worst < 1e-6, "force vs -dE/dy: worst relative error %g", worst);
+    far = hcbd_wall_potential(p, 1.5, NULL) - 300.0 * exp(-2.0 * 1.2 * 1.2);
+    CHECK(fabs(far - 300.0 * exp(-2.0 * 1.8 * 1.8)) < 1e-12 && fabs(far - 0.46) < 0.005,
+          "far plane at the interface: %g kT", far);
+    for (k = 0; k < 50000; ++k) { /* from the interface to the centre */
+        double y0 = 1.5 + k * h, y1 = y0 + h, e0 = 0, e1 = 0, pl[2] = {0.3, 12.7};
+        int q;
+        for (q = 0; q < 2; ++q) {
+            double s0 = y0 - pl[q], s1 = y1 - pl[q];
+            s0 -= 13.0 * round(s0 / 13.0);
+            s1 -= 13.0 * round(s1 / 13.0);
+            e0 += 300.0 * exp(-2.0 * s0 * s0);
+            e1 += 300.0 * exp(-2.0 * s1 * s1);
+        }
+        dep += 0.5 * h * ((1 - exp(-e0)) + (1 - exp(-e1)));
+    }
+    hcbd_theory_of(p, &th);
+    CHECK(fabs(th.depletion_width - dep) < 1e-6, "depletion width %.8f vs %.8f",
+          th.depletion_width, dep);
+    NOTE("excluded width per wall (Boltzmann, ideal): %.4f sigma", dep);
+}
+
+/* round(n# x wall volume) artificial particles, all inside the walls,
+   uniform there, new every step; a real particle at the interface sees
+   half a bulk of them in its density. */
+void test_wall_artificial_particles(void)
+{
+    hcbd_world_def d = channel();
+    hcbd_world w;
+    double xyz[6] = {3.0, 1.5, 3.0, 9.0, 6.5, 9.0}, rho[400], mean, err, want;
+    double cy[6] = {0}, cx[5] = {0}, chi2 = 0, first_x = 0;
+    int s, k, same = 0, outside = 0, nsteps = t_quick ? 100 : 400;
+    d.capacity = 2;
+    if (!make_world(&w, &d)) return;
+    CHECK(w.n_art == 122, "artificial particles: %d, want round(0.24 x 13 x 3 x 13) = 122", w.n_art);
+    d.params.kT = 0; /* no noise and no forces: the two real particles stay put */
+    d.params.wall_mode = HCBD_WALL_REFLECT;
+    hcbd_world_destroy(&w);
+    if (!make_world(&w, &d)) return;
+    hcbd_world_set_positions(&w, 2, xyz);
+    for (s = 0; s < nsteps; ++s) {
+        if (!run(&w, 1)) return;
+        /* the density of this step: the particle at the interface is id 0 */
+        rho[s] = w.rho[w.slot[0]];
+        if (s > 0 && w.ax[0] == first_x) ++same;
+        first_x = w.ax[0];
+        for (k = 0; k < w.n_art; ++k) {
+            double y = w.ay[k] < 6.5 ? w.ay[k] + 13.0 : w.ay[k]; /* slab [11.5, 14.5) */
+            if (y < 11.5 || y >= 14.5) ++outside;
+            cy[(int)((y - 11.5) / 0.5) % 6] += 1;
+            cx[(int)(w.ax[k] / 2.6) % 5] += 1;
+        }
+    }
+    CHECK(outside == 0, "%d artificial particles outside the walls", outside);
+    CHECK(same == 0, "artificial particles not redrawn in %d steps", same);
+    for (k = 0; k < 6; ++k) chi2 += pow(cy[k] - nsteps * 122 / 6.0, 2) / (nsteps * 122 / 6.0);
+    for (k = 0; k < 5; ++k) chi2 += pow(cx[k] - nsteps * 122 / 5.0, 2) / (nsteps * 122 / 5.0);
+    /* 9 degrees of freedom: P(chi2 > 27.9) = 0.001 */
+    CHECK(chi2 < 27.9, "uniformity chi2 = %.1f (9 dof)", chi2);
+    block_stats(rho, nsteps, 20, &mean, &err);
+    /* m rho_norm (w0 + n#/2): half the kernel lies in the wall */
+    want = w.m * w.rho_norm * (w.w0 + 0.5 * 0.24);
+    CHECK(fabs(mean - want) < 4 * err, "rho at the interface %.5f +- %.5f, want %.5f", mean,
+          err, want);
+    hcbd_world_destroy(&w);
+}
+
+/* One step with kT = 0: the velocity change of a particle near a wall is
+   the Morris friction summed independently over this step's artificial
+   particles, plus the wall force.  Checked for both walls, a moving wall,
+   the beta cap, and the no-slip mode's shifted Morris plane. */
+void test_wall_morris_friction(void)
+{
+    int mode, side, capped = 0, free_ = 0;
+    for (mode = 0; mode < 2; ++mode)
+        for (side = 0; side < 2; ++side) {
+            hcbd_world_def d = channel();
+            hcbd_world w;
+            hcbd_theory th;
+            double xyz[6] = {4.0, 2.1, 5.0, 9.0, 6.5, 9.0}, v[6] = {1.0, 0.5, -0.3, 0, 0, 0};
+            double vnew[6], rhoA, P[3] = {0, 0, 0}, fy, plane, Rc = 2.5, m, err = 0;
+            int k;
+            d.capacity = 2;
+            d.params.kT = 0;
+            d.params.wall_vx[0] = 0.2;
+            d.params.wall_vx[1] = -0.7;
+            d.params.wall_mode = mode ? HCBD_WALL_NOSLIP : HCBD_WALL_GAUSS;
+            /* a distance from the Morris plane where some pairs hit the cap */
+            if (mode) xyz[1] = 2.6;
+            if (side) xyz[1] = 13.0 - xyz[1];
+            if (!make_world(&w, &d)) return;
+            hcbd_world_set_positions(&w, 2, xyz);
+            hcbd_world_set_velocities(&w, v);
+            if (!run(&w, 1)) return;
+            hcbd_get_velocities(&w, vnew);
+            hcbd_theory_of(&d.params, &th);
+            m = w.m;
+            plane = 1.5 + (mode ? th.depletion_width : 0.0);
+            rhoA = 0;
+            for (k = 0; k < w.n_art; ++k) { /* density of particle 0 */
+                double dx = xyz[0] - w.ax[k], dy = xyz[1] - w.ay[k], dz = xyz[2] - w.az[k], r;
+                dx -= 13 * round(dx / 13); dy -= 13 * round(dy / 13); dz -= 13 * round(dz / 13);
+                r = sqrt(dx * dx + dy * dy + dz * dz);
+                rhoA += hcbd_wendland(r, Rc);
+            }
+            rhoA = m * w.rho_norm * (hcbd_wendland(0, Rc) + rhoA);
+            for (k = 0; k < w.n_art; ++k) {
+                double dx = xyz[0] - w.ax[k], dy = xyz[1] - w.ay[k], dz = xyz[2] - w.az[k], r;
+                double dA, dB, beta, f, vw;
+                dx -= 13 * round(dx / 13); dy -= 13 * round(dy / 13); dz -= 13 * round(dz / 13);
+                r = sqrt(dx * dx + dy * dy + dz * dz);
+                if (r >= Rc) continue;
+                if (!side) { dA = xyz[1] - plane; dB = plane - (xyz[1] - dy); vw = 0.2; }
+                else { dA = (13.0 - plane) - xyz[1]; dB = (xyz[1] - dy) - (13.0 - plane); vw = -0.7; }
+                beta = 1 + dB / dA;
+                if (beta > 1.5) { beta = 1.5; ++capped; } else ++free_;
+                /* f_AB = 15/(2 pi Rc^3) m (1/rho_A + 1/rho_B)(1 - r/Rc)^3, rho_B = m n# */
+                f = 15.0 / (2 * 3.14159265358979323846 * Rc * Rc * Rc) * m *
+                    (1 / rhoA + 1 / (m * 0.24)) * pow(1 - r / Rc, 3);
+                P[0] -= beta * f / d.params.tau * (v[0] - vw) * d.params.dt;
+                P[1] -= beta * f / d.params.tau * v[1] * d.params.dt;
+                P[2] -= beta * f / d.params.tau * v[2] * d.params.dt;
+            }
+            hcbd_wall_potential(&d.params, xyz[1], &fy);
+            err = fmax(err, fabs(vnew[0] - (v[0] + P[0])));
+            err = fmax(err, fabs(vnew[1] - (v[1] + P[1] + fy * d.params.dt / m)));
+            err = fmax(err, fabs(vnew[2] - (v[2] + P[2])));
+            CHECK(err < 1e-12 && P[0] != 0, "mode %d side %d: |dv - independent| = %g (dv_x %g)",
+                  mode, side, err, P[0]);
+            hcbd_world_destroy(&w);
+        }
+    CHECK(capped > 0 && free_ > 0, "the cases cover %d capped and %d free pairs", capped, free_);
+}
+
+/* Equilibrium channel of ideal particles (Gaussian walls, no body force):
+   slab temperature profile.  Returns the largest relative deviation of a
+   slab holding 20 % of the mean count from the central slabs, the error of
+   that deviation, and the central temperature with its error. */
+static int temperature_profile(double dt, int noise_beta, double time, double *dev, double *dev_err,
+                               double *Tc, double *Tc_err, double *dep)
+{
+    hcbd_world_def d = channel();
+    hcbd_world w;
+    hcbd_profile pr;
+    double mem[26 * 15], out[26 * 8], tc = 0, tce = 0, mc = 0;
+    int k, s, nc = 0, ncen = 0, steps = (int)(time / dt);
+    d.params.dt = dt;
+    d.params.wall_noise_beta = noise_beta;
+    if (!make_world(&w, &d)) return 0;
+    hcbd_world_place_lattice(&w, 406);
+    if (!run(&w, (int)(0.5 / dt))) return 0;
+    hcbd_profile_init(&pr, &w, 26, steps / 200, mem, sizeof mem);
+    for (k = 0; k < steps / 10; ++k) {
+        if (!run(&w, 10)) return 0;
+        hcbd_profile_sample(&pr, &w);
+    }
+    hcbd_profile_result(&pr, out);
+    for (s = 0; s < 26; ++s) {
+        if (fabs(out[8 * s] - 6.5) < 1.5) { /* the central fifth of the channel */
+            tc += out[8 * s + 5] / 6.0;
+            tce += pow(out[8 * s + 6] / 6.0, 2);
+            ++ncen;
+        }
+        if (out[8 * s + 7] > 0) { mc += out[8 * s + 7]; ++nc; }
+    }
+    mc /= nc;
+    if (ncen != 6) { printf("    %d central slabs, want 6\n", ncen); t_fail = 1; }
+    *dev = 0;
+    *dev_err = 0;
+    for (s = 0; s < 26; ++s)
+        if (out[8 * s + 7] >= 0.2 * mc && fabs(out[8 * s + 5] / tc - 1) > fabs(*dev)) {
+            *dev = out[8 * s + 5] / tc - 1;
+            *dev_err = sqrt(pow(out[8 * s + 6], 2) + tce) / tc;
+        }
+    *dep = 0; /* excluded width per wall; slab edges fall on the interfaces */
+    for (s = 0; s < 26; ++s) {
+        double nb = 0;
+        for (k = 10; k < 16; ++k) nb += out[8 * k + 1] / 6.0;
+        if (out[8 * s] > 1.5 && out[8 * s] < 11.5) *dep += 0.25 * (1 - out[8 * s + 1] / nb);
+    }
+    *Tc = tc / d.params.kT;
+    *Tc_err = sqrt(tce) / d.params.kT;
+    hcbd_world_destroy(&w);
+    return 1;
+}
+
+/* Flat temperature with the sqrt(beta) noise, cooling at the walls without
+   it; the central temperature's Euler bias, about (dt/2 tau) <sum_j f_ij>
+   (MODEL 10), halves with dt.  In the same equilibrium runs, the Gaussian
+   walls deplete ideal particles by the Boltzmann factor. */
+void test_wall_temperature_profile(void)
+{
+    double dev, de, T1, T1e, T2, T2e, devn, den, Tn, Tne, time = t_quick ? 1.0 : 4.0, dep, dep2;
+    hcbd_theory th;
+    hcbd_params p = channel().params;
+    hcbd_theory_of(&p, &th);
+    if (!temperature_profile(2e-4, 1, time, &dev, &de, &T1, &T1e, &dep)) return;
+    NOTE("dt = 2e-4: largest slab deviation %.4f +- %.4f, T_centre = %.4f +- %.4f, excluded "
+         "width %.4f (Boltzmann %.4f)", dev, de, T1, T1e, dep, th.depletion_width);
+    CHECK(fabs(dev) < 0.03, "a slab's temperature deviates by %.4f +- %.4f", dev, de);
+    if (!temperature_profile(2e-4, 0, time, &devn, &den, &Tn, &Tne, &dep2)) return;
+    NOTE("without sqrt(beta): largest deviation %.4f +- %.4f", devn, den);
+    CHECK(devn < -0.03 && devn + 3 * den < -0.03,
+          "without sqrt(beta) the wall slabs should cool by more than 3 %%: %.4f +- %.4f", devn, den);
+    if (t_quick) return;
+    if (!temperature_profile(1e-4, 1, time, &dev, &de, &T2, &T2e, &dep2)) return;
+    NOTE("dt = 1e-4: largest slab deviation %.4f +- %.4f, T_centre = %.4f +- %.4f, excluded "
+         "width %.4f", dev, de, T2, T2e, dep2);
+    CHECK(fabs(0.5 * (dep + dep2) / th.depletion_width - 1) < 0.1,
+          "Gaussian walls: excluded width %.4f, %.4f vs Boltzmann %.4f", dep, dep2, th.depletion_width);
+    CHECK(fabs(dev) < 0.03, "a slab's temperature deviates by %.4f +- %.4f", dev, de);
+    /* bias(dt) = b dt: T1 - 1 = 2 (T2 - 1) */
+    CHECK(fabs((T1 - 1) - 2 * (T2 - 1)) < 3 * sqrt(T1e * T1e + 4 * T2e * T2e),
+          "Euler bias %.4f at dt and %.4f at dt/2 are not in ratio 2", T1 - 1, T2 - 1);
+    CHECK(T1 - 1 > 3 * T1e, "no resolved bias at dt = 2e-4 (%.4f +- %.4f)", T1 - 1, T1e);
+}
+
+/* Walls at rest, no body force: with kT = 0 the background momentum of a
+   uniform flow never grows and falls to zero; with noise it decays to the
+   level of equilibrium fluctuations. */
+void test_wall_momentum_decay(void)
+{
+    hcbd_world_def d = channel();
+    hcbd_world w;
+    double v[3 * 406], p[3], prev = HUGE_VAL, p0;
+    int i, b, grew = 0;
+    d.params.kT = 0;
+    if (!make_world(&w, &d)) return;
+    hcbd_world_place_lattice(&w, 406);
+    for (i = 0; i < 406; ++i) { v[3 * i] = 1.0; v[3 * i + 1] = 0.3; v[3 * i + 2] = -0.2; }
+    hcbd_world_set_velocities(&w, v);
+    hcbd_momentum(&w, p);
+    p0 = sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+    for (b = 0; b < 200; ++b) {
+        double a;
+        if (!run(&w, 50)) return;
+        hcbd_momentum(&w, p);
+        a = sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+        if (a > prev * (1 + 1e-12)) ++grew;
+        prev = a;
+    }
+    CHECK(grew == 0, "|P| grew in %d of 200 blocks without noise", grew);
+    CHECK(prev < 0.05 * p0, "|P| fell only from %g to %g in 1 time unit", p0, prev);
+    hcbd_world_destroy(&w);
+}
+
+/* The body force on particles and background, or on the background only:
+   the mean flow velocity (block errors of its time series) and the density
+   profile agree within their errors (2016).  The slab velocities are not
+   compared one by one: the whole profile fluctuates together, so their
+   chi-square is not chi-square distributed. */
+void test_wall_body_force_variants(void)
+{
+    double out[2][26 * 8], chi2n = 0, vm[2], ve[2];
+    static double vs[6000];
+    int v, s, k, nd = 0, steps = t_quick ? 8000 : 60000, ns = steps / 10;
+    for (v = 0; v < 2; ++v) {
+        hcbd_world_def d = channel();
+        hcbd_world w;
+        hcbd_profile pr;
+        double mem[26 * 15], p[3];
+        d.params.tau = 2e-3;
+        d.params.xip = 1.5;
+        d.params.fext[0] = 50.0 * d.params.xip * d.params.tau; /* g = 50 */
+        d.params.fext_background_only = v;
+        d.params.seed = 7 + v;
+        if (!make_world(&w, &d)) return;
+        hcbd_world_place_lattice(&w, 406);
+        if (!run(&w, 10000)) return;
+        hcbd_profile_init(&pr, &w, 26, steps / 200, mem, sizeof mem);
+        for (k = 0; k < ns; ++k) {
+            if (!run(&w, 10)) return;
+            hcbd_profile_sample(&pr, &w);
+            hcbd_momentum(&w, p);
+            vs[k] = p[0] / (w.n * w.m);
+        }
+        block_stats(vs, ns, 20, &vm[v], &ve[v]);
+        hcbd_profile_result(&pr, out[v]);
+        hcbd_world_destroy(&w);
+    }
+    for (s = 0; s < 26; ++s) {
+        const double *a = out[0] + 8 * s, *b = out[1] + 8 * s;
+        if (a[7] < 5 || b[7] < 5) continue;
+        chi2n += pow(a[1] - b[1], 2) / (a[2] * a[2] + b[2] * b[2]);
+        ++nd;
+    }
+    NOTE("mean flow velocity %.3f +- %.3f (both) vs %.3f +- %.3f (background only); density "
+         "chi2 %.1f for %d slabs", vm[0], ve[0], vm[1], ve[1], chi2n, nd);
+    CHECK(fabs(vm[0] - vm[1]) < 3.5 * sqrt(ve[0] * ve[0] + ve[1] * ve[1]) && vm[0] > 10 * ve[0],
+          "mean flow velocities differ: %.3f +- %.3f vs %.3f +- %.3f", vm[0], ve[0], vm[1], ve[1]);
+    /* P(chi2 > nd + 4 sqrt(2 nd)) < 1e-3 for nd ~ 20 */
+    CHECK(chi2n < nd + 4 * sqrt(2.0 * nd), "density profiles differ: chi2 %.1f for %d slabs", chi2n, nd);
+}
+
+/* Same bits for 1 and 2 threads, with sorting on and off, with walls and
+   a moving wall; each wall mode. */
+void test_wall_determinism(void)
+{
+    int mode;
+    for (mode = 0; mode < 3; ++mode) {
+        uint64_t c[3];
+        int k;
+        for (k = 0; k < 3; ++k) {
+            hcbd_world_def d = channel();
+            hcbd_world w;
+            d.params.potential = HCBD_POT_STAR;
+            d.params.wall_mode = (hcbd_wall_mode)mode;
+            d.params.wall_vx[1] = 3.0;
+            d.params.fext[0] = 0.4;
+            d.params.threads = k == 1 ? 2 : 1;
+            d.params.sort = k != 2;
+            if (!make_world(&w, &d)) return;
+            hcbd_world_place_lattice(&w, 406);
+            if (!run(&w, t_quick ? 100 : 1000)) return;
+            c[k] = hcbd_state_checksum(&w);
+            hcbd_world_destroy(&w);
+        }
+        CHECK(c[0] == c[1] && c[0] == c[2], "mode %d: checksums %016llx %016llx %016llx", mode,
+              (unsigned long long)c[0], (unsigned long long)c[1], (unsigned long long)c[2]);
+    }
+}
+#endif
+
+#if HCBD_MODEL == HCBD_MODEL_WALLED
+/* Channel flow of ideal particles (tau = 2e-3, xi' = 1.5, dt = 2e-4, g =
+   200: v_max ~ 30 against thermal velocities ~ 16, Re_max ~ 0.3).  Fits a
+   parabola to the slabs at least 1 sigma from the interfaces and returns
+   its maximum, the slip ratio (the parabola at the interfaces over the
+   maximum) with its error from the fit covariance, and the excluded width
+   per wall, integral of 1 - n(y)/n_bulk over the channel. */
+typedef struct { double vmax, vmax_err, slip, slip_err, dep, pen; } chan_result;
+
+static int channel_run(hcbd_wall_mode mode, double beta_max, double time, chan_result *cr)
+{
+    hcbd_world_def d = channel();
+    hcbd_world w;
+    hcbd_profile pr;
+    double mem[26 * 15], out[26 * 8], A[9] = {0}, r[3] = {0}, C[9], q[3], nb = 0, g[3], det;
+    int k, s, i, j, ncen = 0, steps;
+    d.params.tau = 2e-3;
+    d.params.xip = 1.5;
+    d.params.dt = 2e-4;
+    d.params.fext[0] = 200.0 * d.params.xip * d.params.tau;
+    d.params.wall_mode = mode;
+    d.params.wall_beta_max = beta_max;
+    steps = (int)(time / d.params.dt);
+    if (!make_world(&w, &d)) return 0;
+    hcbd_world_place_lattice(&w, 406);
+    if (!run(&w, (int)(1.0 / d.params.dt))) return 0; /* ~10 W^2/nu */
+    hcbd_profile_init(&pr, &w, 26, steps / 200, mem, sizeof mem);
+    for (k = 0; k < steps / 10; ++k) {
+        if (!run(&w, 10)) return 0;
+        hcbd_profile_sample(&pr, &w);
+    }
+    hcbd_profile_result(&pr, out);
+    cr->pen = (double)hcbd_wall_penetrations(&w, NULL, NULL);
+    hcbd_world_destroy(&w);
+    for (s = 0; s < 26; ++s) {
+        double y = out[8 * s], b[3] = {1, y, y * y}, wt;
+        if (fabs(y - 6.5) < 1.5) { nb += out[8 * s + 1]; ++ncen; }
+        if (y < 2.5 || y > 10.5) continue;
+        wt = 1.0 / (out[8 * s + 4] * out[8 * s + 4]);
+        for (i = 0; i < 3; ++i) {
+            r[i] += wt * b[i] * out[8 * s + 3];
+            for (j = 0; j < 3; ++j) A[3 * i + j] += wt * b[i] * b[j];
+        }
+    }
+    nb /= ncen;
+    det = A[0] * (A[4] * A[8] - A[5] * A[7]) - A[1] * (A[3] * A[8] - A[5] * A[6]) +
+          A[2] * (A[3] * A[7] - A[4] * A[6]);
+    for (i = 0; i < 3; ++i)
+        for (j = 0; j < 3; ++j) {
+            int r0 = (j + 1) % 3, r1 = (j + 2) % 3, c0 = (i + 1) % 3, c1 = (i + 2) % 3;
+            C[3 * i + j] = (A[3 * r0 + c0] * A[3 * r1 + c1] - A[3 * r0 + c1] * A[3 * r1 + c0]) / det;
+        }
+    for (i = 0; i < 3; ++i) q[i] = C[3 * i] * r[0] + C[3 * i + 1] * r[1] + C[3 * i + 2] * r[2];
+    cr->vmax = q[0] - q[1] * q[1] / (4 * q[2]);
+    g[0] = 1; g[1] = -q[1] / (2 * q[2]); g[2] = q[1] * q[1] / (4 * q[2] * q[2]);
+    cr->vmax_err = 0;
+    for (i = 0; i < 3; ++i)
+        for (j = 0; j < 3; ++j) cr->vmax_err += g[i] * C[3 * i + j] * g[j];
+    cr->vmax_err = sqrt(cr->vmax_err);
+    /* mean of the parabola at y = 1.5 and 11.5 */
+    g[0] = 1; g[1] = 6.5; g[2] = 0.5 * (1.5 * 1.5 + 11.5 * 11.5);
+    cr->slip = (g[0] * q[0] + g[1] * q[1] + g[2] * q[2]) / cr->vmax;
+    cr->slip_err = 0;
+    for (i = 0; i < 3; ++i)
+        for (j = 0; j < 3; ++j) cr->slip_err += g[i] * C[3 * i + j] * g[j];
+    cr->slip_err = sqrt(cr->slip_err) / cr->vmax;
+    cr->dep = 0;
+    for (s = 0; s < 26; ++s) /* slab edges fall on the interfaces */
+        if (out[8 * s] > 1.5 && out[8 * s] < 11.5) cr->dep += 0.5 * (1 - out[8 * s + 1] / nb);
+    cr->dep *= 0.5;
+    return 1;
+}
+
+/* The paper's Gaussian walls slip (their depletion is tested in
+   equilibrium, with the temperature profile: strong flow widens it); the no-slip mode (Morris plane at the edge of
+   the depleted layer, beta_max = 5) does not slip.  Reflecting walls are
+   reported: the velocity part of the carriers' motion is damped next to
+   the wall, so ideal carriers pile up there (an Ito drift: density ~ 1 /
+   local diffusivity) and the flow sticks slightly (README). */
+void test_wall_slip_and_depletion(void)
+{
+    hcbd_params p = channel().params;
+    hcbd_theory th;
+    chan_result g, ns, rf;
+    double time = t_quick ? 1.0 : 8.0;
+    hcbd_theory_of(&p, &th);
+    if (!channel_run(HCBD_WALL_GAUSS, 1.5, time, &g)) return;
+    NOTE("gauss:   v_max %.3f +- %.3f, slip %.4f +- %.4f, excluded width %.4f (Boltzmann %.4f)",
+         g.vmax, g.vmax_err, g.slip, g.slip_err, g.dep, th.depletion_width);
+    if (!channel_run(HCBD_WALL_NOSLIP, 5.0, time, &ns)) return;
+    NOTE("noslip:  v_max %.3f +- %.3f, slip %.4f +- %.4f, excluded width %.4f", ns.vmax,
+         ns.vmax_err, ns.slip, ns.slip_err, ns.dep);
+    if (!channel_run(HCBD_WALL_REFLECT, 1.5, time, &rf)) return;
+    NOTE("reflect: v_max %.3f +- %.3f, slip %.4f +- %.4f, excluded width %.4f (pile-up)", rf.vmax,
+         rf.vmax_err, rf.slip, rf.slip_err, rf.dep);
+    CHECK(g.pen == 0 && ns.pen == 0 && rf.pen == 0, "ideal particles entered a wall: %g %g %g",
+          g.pen, ns.pen, rf.pen);
+    if (t_quick) return;
+    CHECK(g.slip > 0.1 && g.slip - 3 * g.slip_err > 0.05, "Gaussian walls should slip: %.4f +- %.4f",
+          g.slip, g.slip_err);
+    CHECK(fabs(ns.slip) + 2 * ns.slip_err < 0.05, "no-slip mode slips: %.4f +- %.4f", ns.slip,
+          ns.slip_err);
+    CHECK(rf.dep < 0, "reflecting walls: no pile-up of ideal carriers (excluded width %.4f)", rf.dep);
+}
+#endif
+
+#if HCBD_MODEL == HCBD_MODEL_WALLED
+/* Real particles found inside a wall are counted exactly (an independent
+   scan after every step, with a wall weak enough to be crossed); in the
+   paper's star-polymer channel under flow none gets deeper than 0.1 sigma
+   past the interface, where the repulsion exceeds 20 kT. */
+void test_wall_penetration(void)
+{
+    int pass;
+    for (pass = 0; pass < 2; ++pass) {
+        hcbd_world_def d = channel();
+        hcbd_world w;
+        int64_t count = 0, last_step = -1, got_step;
+        int s, i, got_id, last_id = -1, steps = pass ? (t_quick ? 2000 : 30000) : 500;
+        double deepest = 0;
+        if (pass == 0) d.params.wall_a = 3.0; /* 3 kT plane, ideal particles */
+        else {
+            d.params.potential = HCBD_POT_STAR;
+            d.params.fext[0] = 133.4 * d.params.xip * d.params.tau;
+        }
+        if (!make_world(&w, &d)) return;
+        hcbd_world_place_lattice(&w, 406);
+        for (s = 0; s < steps; ++s) {
+            int first = INT32_MAX;
+            if (!run(&w, 1)) return;
+            for (i = 0; i < w.n; ++i) {
+                double y = w.y[i], depth = fmax(1.5 - y, y - 11.5);
+                if (depth > 0) {
+                    ++count;
+                    if (w.id[i] < first) first = w.id[i];
+                }
+                deepest = fmax(deepest, depth);
+            }
+            if (first != INT32_MAX) { last_step = w.step - 1; last_id = first; }
+        }
+        CHECK(hcbd_wall_penetrations(&w, &got_step, &got_id) == count && got_step == last_step &&
+              got_id == last_id, "pass %d: counter %lld (last step %lld id %d), scan %lld (%lld, %d)",
+              pass, (long long)hcbd_wall_penetrations(&w, NULL, NULL), (long long)got_step, got_id,
+              (long long)count, (long long)last_step, last_id);
+        if (pass == 0) CHECK(count > 100, "the weak wall was crossed only %lld times", (long long)count);
+        else {
+            NOTE("stars under flow: %lld particle-steps past an interface in %d steps, deepest %.4f sigma",
+                 (long long)count, steps, deepest);
+            CHECK(deepest < 0.1, "a star got %.4f sigma into a wall", deepest);
+        }
+        hcbd_world_destroy(&w);
+    }
+}
+#endif
