@@ -157,8 +157,9 @@ typedef enum hcbd_noise {
 typedef enum hcbd_wall_mode {
     HCBD_WALL_GAUSS = 0,   /* 2016 eq. 18: a exp(-b r^2) from planes inside
                               the walls; depletes the fluid next to them    */
-    HCBD_WALL_REFLECT = 1, /* specular reflection at the interface: uniform
-                              density up to the wall                        */
+    HCBD_WALL_REFLECT = 1, /* specular reflection at the interface: no
+                              depletion (GI-BD carriers still pile up at
+                              the wall, see README)                        */
     HCBD_WALL_NOSLIP = 2   /* the Gaussian repulsion, with the Morris
                               distances measured from the edge of the
                               depleted layer so the no-slip plane is the
