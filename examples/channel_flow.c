@@ -51,21 +51,7 @@ static void usage(void)
 static int own_key(config *c, const char *key, const char *v)
 {
     if (!strcmp(key, "preset")) return check_preset(c, v);
-    if (!strcmp(key, "xip")) {
-        char buf[256], *tok, *save = NULL;
-        snprintf(buf, sizeof buf, "%s", v);
-        nxip = 0;
-        for (tok = strtok_r(buf, ",", &save); tok; tok = strtok_r(NULL, ",", &save)) {
-            double d;
-            if (nxip == MAXX) {
-                fprintf(stderr, "channel_flow: more than %d values of xip\n", MAXX);
-                return 0;
-            }
-            if (!parse_double(c, key, tok, &d)) return 0;
-            xips[nxip++] = d;
-        }
-        return nxip > 0;
-    }
+    if (!strcmp(key, "xip")) return (nxip = parse_list(c, key, v, xips, MAXX)) > 0;
     if (!strcmp(key, "g")) return parse_double(c, key, v, &g_force);
     if (!strcmp(key, "wall_thickness")) return parse_double(c, key, v, &wall_t);
     if (!strcmp(key, "beta_max")) return parse_double(c, key, v, &beta_max);

@@ -63,6 +63,28 @@ static int parse_choice(const config *c, const char *key, const char *v, const c
     return 1;
 }
 
+/* A comma-separated list of positive numbers into x[0..max); returns how
+   many, or 0 after printing what was wrong. */
+static inline int parse_list(const config *c, const char *key, const char *v, double *x, int max)
+{
+    char buf[512], *tok, *save = NULL;
+    int n = 0;
+    snprintf(buf, sizeof buf, "%s", v);
+    for (tok = strtok_r(buf, ",", &save); tok; tok = strtok_r(NULL, ",", &save)) {
+        if (n == max) {
+            fprintf(stderr, "%s: more than %d values of %s\n", c->name, max, key);
+            return 0;
+        }
+        if (!parse_double(c, key, tok, &x[n])) return 0;
+        if (!(x[n] > 0)) {
+            fprintf(stderr, "%s: %s=%s must be positive\n", c->name, key, tok);
+            return 0;
+        }
+        ++n;
+    }
+    return n;
+}
+
 /* preset=quick|paper: read by each example before parse_args (so that
    explicit keys override it); here only checked. */
 static int check_preset(const config *c, const char *v)

@@ -43,25 +43,7 @@ static void usage(void)
 static int own_key(config *c, const char *key, const char *v)
 {
     if (!strcmp(key, "preset")) return check_preset(c, v);
-    if (!strcmp(key, "gdot")) {
-        char buf[512], *tok, *save = NULL;
-        snprintf(buf, sizeof buf, "%s", v);
-        nrates = 0;
-        for (tok = strtok_r(buf, ",", &save); tok; tok = strtok_r(NULL, ",", &save)) {
-            double d;
-            if (nrates == MAXR) {
-                fprintf(stderr, "shear_flow: more than %d shear rates\n", MAXR);
-                return 0;
-            }
-            if (!parse_double(c, key, tok, &d)) return 0;
-            if (!(d > 0)) {
-                fprintf(stderr, "shear_flow: gdot=%s must be positive\n", tok);
-                return 0;
-            }
-            rates[nrates++] = d;
-        }
-        return nrates > 0 ? 1 : 0;
-    }
+    if (!strcmp(key, "gdot")) return (nrates = parse_list(c, key, v, rates, MAXR)) > 0;
     if (!strcmp(key, "dynamics")) {
         fprintf(stderr, "shear_flow: dynamics is GI-BD (classical BD carries no background flow)\n");
         return 0;
