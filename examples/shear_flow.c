@@ -14,19 +14,22 @@
    What to look for: shear thinning (eta falls with gdot) carried by the
    particle part; the background part stays near, but below, eq. 35 (the
    background velocities on a random friction network do not follow the
-   imposed shear exactly); raising xip raises the plateau eta_inf.  Run the
-   three xi'/xi of Fig. 5 with xip=1, xip=2, xip=5.
+   imposed shear exactly); raising xip raises the plateau eta_inf.  The
+   default runs the three xi'/xi of Fig. 5 (xip=1,2,5).
 
    Writes flowcurve.csv and plots.gp (flowcurve.png with gnuplot); the
-   summary gives the viscosities at the lowest rate, the Carreau parameters
-   with errors and a checksum of all runs. */
+   summary per xi' gives the viscosities at the lowest rate, the Carreau
+   parameters with errors and the particle Reynolds number gdot sigma^2 /
+   nu of the fastest rate; a
+   checksum of all runs ends it. */
 #include "example_common.h"
 
 #define NB 5
 #define MAXR 32
+#define MAXX 8
 
-static double rates[MAXR];
-static int nrates;
+static double rates[MAXR], xips[MAXX];
+static int nrates, nxip;
 
 static void usage(void)
 {
@@ -35,7 +38,8 @@ static void usage(void)
             "  preset=quick|paper  quick (default): gdot=2,5,10,20, 20000 steps each;\n"
             "                      paper: 10 rates from 0.3 to 100, 300000 steps each\n"
             "  gdot=a,b,c,...      shear rates (comma-separated)\n"
-            "  N density dt kT xi xip tau Rc f sigma rcut skin Lx Ly Lz potential=star|ideal\n"
+            "  xip=a,b,...         background frictions xi' (xi = 1): default 1,2,5\n"
+            "  N density dt kT xi tau Rc f sigma rcut skin Lx Ly Lz potential=star|ideal\n"
             "  density_norm=2014|2016 lagged=0|1 noise=gauss|uniform seed steps threads out\n"
             "  (steps: per shear rate)\n");
 }
@@ -44,6 +48,7 @@ static int own_key(config *c, const char *key, const char *v)
 {
     if (!strcmp(key, "preset")) return check_preset(c, v);
     if (!strcmp(key, "gdot")) return (nrates = parse_list(c, key, v, rates, MAXR)) > 0;
+    if (!strcmp(key, "xip")) return (nxip = parse_list(c, key, v, xips, MAXX)) > 0;
     if (!strcmp(key, "dynamics")) {
         fprintf(stderr, "shear_flow: dynamics is GI-BD (classical BD carries no background flow)\n");
         return 0;
@@ -55,9 +60,11 @@ int main(int argc, char **argv)
 {
     config c;
     hcbd_params *p;
-    double eta[4][MAXR], err[4][MAXR], eta_inf;
+    static double eta[MAXX][4][MAXR], err[MAXX][4][MAXR];
+    double carreau[MAXX][3];
+    int fitted[MAXX];
     uint64_t checksum = 0;
-    int k, r, b, paper = 0, start;
+    int k, r, b, x, paper = 0, start;
     struct timespec t0;
     FILE *f;
 
@@ -69,7 +76,7 @@ int main(int argc, char **argv)
     c.density = 0.24;
     for (k = 1; k < argc; ++k)
         if (!strcmp(argv[k], "preset=paper")) paper = 1;
-    c.steps = paper ? 300000 : 20000;
+    c.steps = paper ? 300000 : 15000;
     nrates = 0;
     if (paper)
         for (r = 0; r < 10; ++r) rates[nrates++] = 0.3 * pow(100 / 0.3, r / 9.0);
@@ -77,84 +84,111 @@ int main(int argc, char **argv)
         rates[0] = 2; rates[1] = 5; rates[2] = 10; rates[3] = 20;
         nrates = 4;
     }
+    xips[0] = 1; xips[1] = 2; xips[2] = 5;
+    nxip = 3;
     snprintf(c.out, sizeof c.out, "out/shear_flow");
     if (!parse_args(argc, argv, &c, own_key, usage)) return 2;
     p = &c.def.params;
     mkdirs(c.out);
-    eta_inf = p->Rc * p->Rc * c.density * p->xip / 28; /* 2016 eq. 35 */
     printf("shear_flow: GI-BD %s, N = %d, box %.3g x %.3g x %.3g, n# = %g, dt = %g, tau = %g, "
-           "xi'/xi = %g, %d rates, %d steps each\n",
+           "%d values of xi', %d rates, %d steps each\n",
            p->potential == HCBD_POT_STAR ? "star polymers" : "ideal particles", c.N, p->L[0], p->L[1],
-           p->L[2], c.density, p->dt, p->tau, p->xip / p->xi, nrates, c.steps);
+           p->L[2], c.density, p->dt, p->tau, nxip, nrates, c.steps);
     fflush(stdout);
     start = c.steps / 5; /* start-up at each rate: the profile and the structure settle */
     clock_gettime(CLOCK_MONOTONIC, &t0);
-    for (r = 0; r < nrates; ++r) {
-        hcbd_world w;
-        double blk[4][NB];
-        p->gdot = rates[r];
-        if (hcbd_world_create(&w, &c.def) != HCBD_OK) {
-            fprintf(stderr, "shear_flow: %s\n", w.err.msg);
-            return 2;
-        }
-        hcbd_world_place_lattice(&w, c.N);
-        if (hcbd_step(&w, start) != HCBD_OK) {
-            fprintf(stderr, "shear_flow: gdot = %g: %s\n", rates[r], w.err.msg);
-            return 1;
-        }
-        for (b = 0; b < NB; ++b) {
-            double fl[4];
-            hcbd_flux_enable(&w, 1);
-            if (hcbd_step(&w, (c.steps - start) / NB) != HCBD_OK) {
-                fprintf(stderr, "shear_flow: gdot = %g: %s\n", rates[r], w.err.msg);
+    for (x = 0; x < nxip; ++x)
+        for (r = 0; r < nrates; ++r) {
+            hcbd_world w;
+            double blk[4][NB];
+            p->xip = xips[x];
+            p->gdot = rates[r];
+            if (hcbd_world_create(&w, &c.def) != HCBD_OK) {
+                fprintf(stderr, "shear_flow: %s\n", w.err.msg);
+                return 2;
+            }
+            hcbd_world_place_lattice(&w, c.N);
+            if (hcbd_step(&w, start) != HCBD_OK) {
+                fprintf(stderr, "shear_flow: xip = %g, gdot = %g: %s\n", xips[x], rates[r], w.err.msg);
                 return 1;
             }
-            hcbd_flux_read(&w, fl, NULL);
-            for (k = 0; k < 4; ++k) blk[k][b] = fl[k] / rates[r];
+            for (b = 0; b < NB; ++b) {
+                double fl[4];
+                hcbd_flux_enable(&w, 1);
+                if (hcbd_step(&w, (c.steps - start) / NB) != HCBD_OK) {
+                    fprintf(stderr, "shear_flow: xip = %g, gdot = %g: %s\n", xips[x], rates[r], w.err.msg);
+                    return 1;
+                }
+                hcbd_flux_read(&w, fl, NULL);
+                for (k = 0; k < 4; ++k) blk[k][b] = fl[k] / rates[r];
+            }
+            for (k = 0; k < 4; ++k) mean_err(blk[k], NB, &eta[x][k][r], &err[x][k][r]);
+            checksum = (checksum ^ hcbd_state_checksum(&w)) * 0x100000001B3ULL;
+            hcbd_world_destroy(&w);
+            progress(&c, (x * nrates + r + 1) * c.steps, nxip * nrates * c.steps, &t0);
         }
-        for (k = 0; k < 4; ++k) mean_err(blk[k], NB, &eta[k][r], &err[k][r]);
-        checksum = (checksum ^ hcbd_state_checksum(&w)) * 0x100000001B3ULL;
-        hcbd_world_destroy(&w);
-        progress(&c, (r + 1) * c.steps, nrates * c.steps, &t0);
-    }
 
     if ((f = open_out(&c, "flowcurve.csv"))) {
-        fprintf(f, "gdot,eta_total,err_total,eta_particle,err_particle,eta_background,err_background,"
+        fprintf(f, "xip,gdot,eta_total,err_total,eta_particle,err_particle,eta_background,err_background,"
                    "eta_carrier,err_carrier\n");
-        for (r = 0; r < nrates; ++r)
-            fprintf(f, "%.6g,%.6g,%.3g,%.6g,%.3g,%.6g,%.3g,%.6g,%.3g\n", rates[r], eta[3][r], err[3][r],
-                    eta[0][r], err[0][r], eta[1][r], err[1][r], eta[2][r], err[2][r]);
+        for (x = 0; x < nxip; ++x)
+            for (r = 0; r < nrates; ++r)
+                fprintf(f, "%g,%.6g,%.6g,%.3g,%.6g,%.3g,%.6g,%.3g,%.6g,%.3g\n", xips[x], rates[r],
+                        eta[x][3][r], err[x][3][r], eta[x][0][r], err[x][0][r], eta[x][1][r],
+                        err[x][1][r], eta[x][2][r], err[x][2][r]);
         fclose(f);
     }
-    printf("# summary (lowest shear rate; Carreau fit of the total)\n");
-    printf("gdot_lowest=%g\n", rates[0]);
-    printf("eta_total_measured=%.6g\neta_total_err=%.3g\n", eta[3][0], err[3][0]);
-    printf("eta_particle_measured=%.6g\neta_particle_err=%.3g\n", eta[0][0], err[0][0]);
-    printf("eta_background_measured=%.6g\neta_background_err=%.3g\n", eta[1][0], err[1][0]);
-    printf("eta_carrier_measured=%.6g\neta_carrier_err=%.3g\n", eta[2][0], err[2][0]);
-    printf("eta_background_theory=%.6g\n", eta_inf);
-    {
-        double pc[3], pe[3], chi2, e[MAXR];
-        for (r = 0; r < nrates; ++r) e[r] = err[3][r] > 0 ? err[3][r] : 1e-12;
-        if (nrates >= 4 && hcbd_carreau_fit(rates, eta[3], e, nrates, eta_inf, 0, pc, pe, &chi2) == HCBD_OK) {
+    for (x = 0; x < nxip; ++x) {
+        hcbd_theory th;
+        double pc[3], pe[3], chi2, e[MAXR], re;
+        p->xip = xips[x];
+        p->gdot = 0;
+        hcbd_theory_of(p, &th);
+        printf("# summary xip=%g (xi'/xi = %g; lowest shear rate; Carreau fit of the total)\n", xips[x],
+               xips[x] / p->xi);
+        printf("gdot_lowest=%g\n", rates[0]);
+        printf("eta_total_measured=%.6g\neta_total_err=%.3g\n", eta[x][3][0], err[x][3][0]);
+        printf("eta_particle_measured=%.6g\neta_particle_err=%.3g\n", eta[x][0][0], err[x][0][0]);
+        printf("eta_background_measured=%.6g\neta_background_err=%.3g\n", eta[x][1][0], err[x][1][0]);
+        printf("eta_carrier_measured=%.6g\neta_carrier_err=%.3g\n", eta[x][2][0], err[x][2][0]);
+        printf("eta_background_theory=%.6g\n", th.eta_inf);
+        fitted[x] = 0;
+        for (r = 0; r < nrates; ++r) e[r] = err[x][3][r] > 0 ? err[x][3][r] : 1e-12;
+        if (nrates >= 4 && hcbd_carreau_fit(rates, eta[x][3], e, nrates, th.eta_inf, 0, pc, pe, &chi2) == HCBD_OK) {
             printf("eta_inf=%.6g\neta0=%.6g\neta0_err=%.3g\nlambda=%.6g\nlambda_err=%.3g\nn=%.4g\nn_err=%.3g\n",
-                   eta_inf, pc[0], pe[0], pc[1], pe[1], pc[2], pe[2]);
+                   th.eta_inf, pc[0], pe[0], pc[1], pe[1], pc[2], pe[2]);
             printf("carreau_chi2_per_dof=%.3g\n", chi2 / (nrates - 3));
-            if ((f = open_out(&c, "plots.gp"))) {
-                fprintf(f, "set datafile separator ','\nset terminal pngcairo size 800,600\n"
-                           "set output 'flowcurve.png'\nset logscale xy\nset xlabel 'shear rate'\n"
-                           "set ylabel 'viscosity'\nset key top right\n"
-                           "carreau(x) = %.17g + (%.17g - %.17g) * (1 + (%.17g * x)**2)**((%.17g - 1) / 2)\n"
-                           "plot 'flowcurve.csv' u 1:2:3 w yerr t 'total', '' u 1:4:5 w yerr t 'particle', "
-                           "'' u 1:6:7 w yerr t 'background', carreau(x) t 'Carreau fit', %.17g t 'eq. 35'\n",
-                        eta_inf, pc[0], eta_inf, pc[1], pc[2], eta_inf);
-                fclose(f);
-                make_figures(&c);
-            }
+            memcpy(carreau[x], pc, sizeof pc);
+            fitted[x] = 1;
         } else {
             printf("# Carreau fit: needs 4 or more rates with errors, or did not converge\n");
         }
+        /* 2016 eq. 37-39 bound the channel's sigma v_max / nu; a sheared box
+           has no frame-independent v_max, so the particle Reynolds number
+           uses the velocity difference across a particle, gdot sigma */
+        re = rates[nrates - 1] * p->sigma * p->sigma / th.nu;
+        printf("re_max=%.4g\n", re);
+        if (re >= 1)
+            printf("# warning: Re = %.3g >= 1 at gdot = %g (2016 eq. 37-39): inertia is not "
+                   "negligible\n", re, rates[nrates - 1]);
     }
     printf("state_checksum=%016llx\n", (unsigned long long)checksum);
+    if ((f = open_out(&c, "plots.gp"))) {
+        fprintf(f, "set datafile separator ','\nset terminal pngcairo size 800,600\n"
+                   "set output 'flowcurve.png'\nset logscale xy\nset xlabel 'shear rate'\n"
+                   "set ylabel 'viscosity'\nset key top right\nplot ");
+        for (x = 0; x < nxip; ++x) {
+            double ei = p->Rc * p->Rc * c.density * xips[x] / 28;
+            fprintf(f, "%s'flowcurve.csv' u ($1==%g?$2:1/0):3:4 w yerr t \"total, xi'/xi = %g\"", x ? ", " : "",
+                    xips[x], xips[x] / p->xi);
+            if (fitted[x])
+                fprintf(f, ", %.17g + (%.17g - %.17g) * (1 + (%.17g * x)**2)**((%.17g - 1) / 2) t 'Carreau'",
+                        ei, carreau[x][0], ei, carreau[x][1], carreau[x][2]);
+            fprintf(f, ", %.17g t 'eq. 35' dt 2", ei);
+        }
+        fprintf(f, "\n");
+        fclose(f);
+        make_figures(&c);
+    }
     return 0;
 }

@@ -49,6 +49,6 @@ T(test_wall_temperature_profile)
 T(test_wall_momentum_decay)
 T(test_wall_body_force_variants)
 T(test_wall_determinism)
-T(test_wall_slip_and_depletion)
+T(test_wall_channel_flow)
 T(test_wall_penetration)
 #endif
