@@ -12,8 +12,10 @@
    What to look for: layering of the stars next to the walls; a smooth,
    near-parabolic velocity profile (for stars flatter than the Newtonian
    parabola, because the fluid thins under shear); a flat temperature, also
-   next to the walls; lower velocities for larger xi'/xi (the background
-   viscosity grows as xi').  With potential=ideal the profile is Newtonian:
+   next to the walls.  As in the paper, g is held fixed (F = m g grows
+   with m = xi' tau), so the Newtonian estimate is the same for every xi';
+   the stars' share of the viscosity falls as xi'/xi grows, and the profile
+   rises towards the background's parabola.  With potential=ideal the profile is Newtonian:
    compare v_max_measured with v_max_newtonian, which uses the mean-field
    nu = Rc^2/(28 tau) (the measured viscosity of ideal carriers is lower,
    see README).  wall=gauss (the paper's repulsion) depletes the fluid next
@@ -277,8 +279,8 @@ int main(int argc, char **argv)
             static const char *lab[3] = {"number density", "v_x", "T / kT"};
             fprintf(f, "set ylabel '%s'\nplot ", lab[k]);
             for (r = 0; r < nxip; ++r)
-                fprintf(f, "%s'profile_xip%g.csv' u 1:%d:%d w yerr t \"xi'/xi = %g\"", r ? ", " : "",
-                        xips[r], 2 + 2 * k, 3 + 2 * k, xips[r] / p->xi);
+                fprintf(f, "%s'profile_xip%g.csv' u 1:($8>0?$%d:1/0):%d w yerr t \"xi'/xi = %g\"",
+                        r ? ", " : "", xips[r], 2 + 2 * k, 3 + 2 * k, xips[r] / p->xi);
             fprintf(f, "\n");
         }
         fprintf(f, "unset multiplot\n");
