@@ -102,8 +102,8 @@
 #ifndef HCBD_MODEL
 #define HCBD_MODEL HCBD_MODEL_GIBD
 #endif
-#if HCBD_MODEL != HCBD_MODEL_GIBD && HCBD_MODEL != HCBD_MODEL_WALLED
-#error "hcbd: HCBD_MODEL_HCBD is not implemented yet (an open issue)"
+#if HCBD_MODEL != HCBD_MODEL_GIBD && HCBD_MODEL != HCBD_MODEL_WALLED && HCBD_MODEL != HCBD_MODEL_HCBD
+#error "hcbd: HCBD_MODEL must be HCBD_MODEL_GIBD, HCBD_MODEL_WALLED or HCBD_MODEL_HCBD"
 #endif
 
 #ifndef HCBD_REAL
@@ -492,6 +492,222 @@ double hcbd_wendland_dr(double r, double Rc);
 /* Star potential V(r) and force -dV/dr for f arms, core sigma, energy eps. */
 double hcbd_star_potential(double r, double f, double sigma, double eps);
 double hcbd_star_force(double r, double f, double sigma, double eps);
+
+#if HCBD_MODEL == HCBD_MODEL_HCBD
+/* >>HCBD (2018): fluid blobs (SPH) coupled two-way to polymer blobs (RaPiD)
+   ------------------------------------------------------------------------
+   Two species in one world, stored in id order and never re-sorted, so
+   w->fx[i] etc. may be read directly (i = id).  The caller's units must be
+   consistent; hcbd_hc_params_si converts the paper's SI Table I. */
+typedef enum hcbd_coupling {
+    HCBD_COUPLE_SHEPARD = 0, /* psi_ai normalised per polymer (default):
+                                exact momentum conservation and exact
+                                interpolation of a uniform flow          */
+    HCBD_COUPLE_RAW = 1      /* the paper's psi_ai = w(r_ai)/n_i          */
+} hcbd_coupling;
+
+typedef struct hcbd_hc_params {
+    double L[3];          /* box edges (periodic, Lees-Edwards along y)     */
+    double dt, kT;
+    /* fluid blobs (MODEL 6) */
+    double rho;           /* mass density; blob mass m = rho / nbar         */
+    double nbar;          /* mean number density of fluid blobs             */
+    double eta;           /* shear viscosity                                */
+    double P0;            /* Tait pressure coefficient, c_s^2 = 7 P0 / rho  */
+    double h;             /* M4 support; fluid pairs interact within 2h     */
+    int fluctuations;     /* 1: pairwise thermal noise (2018 eq. 18-19)     */
+    double g[3];          /* body force per unit mass on fluid blobs        */
+    int reverse_poiseuille; /* 1: g acts as +g where y >= L/2, -g below   */
+    double gdot;          /* Lees-Edwards shear rate (flow x, gradient y)   */
+    /* polymer blobs (MODEL 7, 8) */
+    double xi;            /* friction against the fluid                     */
+    double sigma, rc;     /* RaPiD kernel core and range                    */
+    double alpha;         /* transient strength; 0 skips the pair variables */
+    double tau_lambda;    /* relaxation time of the pair variables          */
+    double p_kuhn;        /* Kuhn segments per blob (p of Flory-Huggins)    */
+    double n_max;         /* number density of the melt (phi = n / n_max)   */
+    double chi;           /* Flory-Huggins parameter                        */
+    hcbd_coupling coupling;
+    uint64_t seed;
+    int threads;
+} hcbd_hc_params;
+
+/* Table I of the 2018 paper in SI units. */
+typedef struct hcbd_hc_si {
+    double sigma, dt, T, rho, eta, nbar, P0, xi, alpha_kT, tau_lambda, p_kuhn,
+        n_max_cstar, chi, h_sigma, rc_sigma;
+} hcbd_hc_si;
+hcbd_hc_si hcbd_hc_si_table1(void);
+/* Reduced units: length sigma, energy kT, time time_unit (seconds); the
+   mass unit follows as kT time_unit^2 / sigma^2.  The box is the pure-fluid
+   box of 2018 sec. IV A (33.75 x 10 x 10 sigma). */
+hcbd_result hcbd_hc_params_si(const hcbd_hc_si *si, double time_unit,
+                              hcbd_hc_params *p, char *msg, size_t msg_size);
+/* Table I with time unit dt = 1 us (so dt = 1, nu = 0.04 sigma^2/dt). */
+hcbd_hc_params hcbd_hc_params_default(void);
+hcbd_result hcbd_hc_params_check(const hcbd_hc_params *p, char *msg, size_t msg_size);
+
+typedef struct hcbd_hc_def {
+    int fluid_capacity, polymer_capacity;
+    int pair_capacity;    /* transient pairs a polymer owns (partners of
+                             higher id); HCBD_AUTO sizes it from the densest
+                             polymer solution the capacity allows           */
+    hcbd_hc_params params;
+} hcbd_hc_def;
+hcbd_hc_def hcbd_hc_def_default(void);
+
+typedef struct hcbd__grid {
+    int nc[3], ncell;
+    int32_t *start, *list, *sten_start, *sten;
+} hcbd__grid;
+
+/* Stress contributions, S_yx = -(1/V) sum y_ij F_ij,x (the flux of x
+   momentum across y planes, the one Lees-Edwards shear measures; the
+   Morris viscous force is not central, so this is not the xy one). */
+enum {
+    HCBD_HC_S_KINETIC = 0,   /* -(1/V) sum m u_x u_y, u peculiar            */
+    HCBD_HC_S_PRESSURE = 1,
+    HCBD_HC_S_VISCOUS = 2,
+    HCBD_HC_S_NOISE = 3,
+    HCBD_HC_S_FLUID = 4,     /* the four above                              */
+    HCBD_HC_S_CONSERVATIVE = 5, /* Flory-Huggins pair forces               */
+    HCBD_HC_S_TRANSIENT = 6,
+    HCBD_HC_S_POLYMER = 7,   /* the two above                               */
+    HCBD_HC_S_INTERACTION = 8, /* -(1/V) sum_a sum_i y_ia psi_ai F_a,x     */
+    HCBD_HC_S_TOTAL = 9,
+    HCBD_HC_NSTRESS = 10
+};
+
+typedef struct hcbd_hc_world {
+    hcbd_hc_params p;
+    hcbd_error err;
+    int fcap, pcap, pair_cap, nf, np;
+    int64_t step;
+    /* derived */
+    double m, inv_m, m4c, rpA, cs, le_offset, le_vjump;
+    int le_on, transient, has_fc, noise_f, noise_p;
+    uint64_t key_fpair, key_lambda, key_poly;
+    /* fluid blobs, id order */
+    hcbd_real *fx, *fy, *fz, *fvx, *fvy, *fvz;
+    hcbd_real *fn, *fP, *fPn2;   /* density, Tait pressure, P / n^2         */
+    hcbd_real *fax, *fay, *faz;  /* polymer forces redistributed (F^fp)     */
+    hcbd_real *nvx, *nvy, *nvz;  /* velocities of t + dt (scratch)          */
+    double *fs;                  /* 3 x nf stress accumulators              */
+    /* polymer blobs, id order */
+    hcbd_real *px, *py, *pz;
+    hcbd_real *pn, *pmu;         /* RaPiD density, Flory-Huggins mu(phi)     */
+    hcbd_real *pFx, *pFy, *pFz;  /* conservative + transient force          */
+    hcbd_real *pux, *puy, *puz;  /* drift velocity v(r_a) + F_a / xi        */
+    hcbd_real *pS;               /* psi normaliser sum_i w(r_ai) / n_i      */
+    double *ps;                  /* 3 x np stress accumulators              */
+    /* transient pairs owned by a (partners b > a in increasing id):
+       pair_n[a] of them at pair_b/pair_l/pair_eq[a * pair_cap + k] */
+    int32_t *pair_n, *pair_b, *pair_n2, *pair_b2;
+    hcbd_real *pair_l, *pair_eq, *pair_l2, *pair_eq2;
+    int64_t npairs, n_created, n_coincident;
+    /* cells: fluid (edge >= max(2h, rc)) and polymer (edge >= rc) */
+    hcbd__grid gf, gp;
+    int32_t *fcell, *pcell;
+    /* stress accumulation (hcbd_hc_stress_enable) */
+    int stress_on;
+    int64_t stress_steps;
+    double stress_sum[HCBD_HC_NSTRESS];
+    hcbd__zig *zig;
+    int ready;                   /* densities, pairs and forces are current */
+    void *owned_mem;
+} hcbd_hc_world;
+
+size_t hcbd_hc_world_bytes(const hcbd_hc_def *def);
+hcbd_result hcbd_hc_world_init(hcbd_hc_world *w, const hcbd_hc_def *def, void *mem,
+                               size_t bytes);
+hcbd_result hcbd_hc_world_create(hcbd_hc_world *w, const hcbd_hc_def *def);
+void hcbd_hc_world_destroy(hcbd_hc_world *w);
+
+/* Fluid blobs with ids 0..n-1 at xyz (3n, interleaved, inside [0, L)).
+   v (3n, may be NULL): NULL gives the Lees-Edwards profile gdot (y - L/2)
+   plus, with fluctuations, Maxwellian velocities of variance kT/m (total
+   momentum removed).  Resets the step counter and the pair variables. */
+hcbd_result hcbd_hc_set_fluid(hcbd_hc_world *w, int n, const double *xyz, const double *v);
+/* n fluid blobs on a simple orthorhombic lattice with spacings as even as
+   the box allows and at least n sites (n spread evenly over them: exactly
+   uniform when n fills the lattice), v as for NULL. */
+hcbd_result hcbd_hc_place_fluid_lattice(hcbd_hc_world *w, int n);
+/* Polymer blobs with ids 0..n-1 (n may be 0).  Every polymer needs a fluid
+   blob within rc and phi < 1: set the fluid first. */
+hcbd_result hcbd_hc_set_polymers(hcbd_hc_world *w, int n, const double *xyz);
+hcbd_result hcbd_hc_place_polymers_random(hcbd_hc_world *w, int n);
+/* Recomputes densities, transient pairs (kept where they persist, created
+   at lambda_eq, deleted beyond rc) and forces at the present positions
+   without moving anything: the neighbour rebuild the step does first. */
+hcbd_result hcbd_hc_refresh(hcbd_hc_world *w);
+/* Advances nsteps.  HCBD_ERR_PARAM when phi >= 1 or a polymer has no fluid
+   blob within rc, HCBD_ERR_CAPACITY on pair overflow, HCBD_ERR_UNSTABLE
+   when a fluid blob moves more than h/2 or a polymer rc/4 in one step or a
+   density leaves [nbar/2, 3 nbar/2], HCBD_ERR_NONFINITE on non-finite state. */
+hcbd_result hcbd_hc_step(hcbd_hc_world *w, int nsteps);
+
+/* Pair variable of polymers a, b (any order); HCBD_ERR_STATE if the pair
+   does not exist. */
+hcbd_result hcbd_hc_lambda(const hcbd_hc_world *w, int a, int b, double *lambda);
+hcbd_result hcbd_hc_set_lambda(hcbd_hc_world *w, int a, int b, double lambda);
+
+/* Fluid kinetic temperature sum m u^2 / (3 (nf - 1)), u relative to the mean
+   and the Lees-Edwards profile. */
+double hcbd_hc_temperature(const hcbd_hc_world *w);
+/* Total momentum (the fluid's; polymers are massless). */
+void hcbd_hc_momentum(const hcbd_hc_world *w, double p[3]);
+/* Fluid transverse current, as hcbd_transverse_current. */
+hcbd_result hcbd_hc_transverse_current(const hcbd_hc_world *w, int nk, double out[12]);
+/* Conservative polymer energy p kT sum_a (g(phi_a) + 1) + (alpha/2)
+   sum_pairs (lambda - lambda_eq)^2 at the present state (needs refresh or
+   a step after moving particles). */
+double hcbd_hc_polymer_energy(const hcbd_hc_world *w);
+/* out[0] min n_i/nbar, out[1] max n_i/nbar, out[2] min pressure. */
+hcbd_result hcbd_hc_density_range(const hcbd_hc_world *w, double out[3]);
+/* Stress split (the HCBD_HC_S_* indices) averaged over the steps since
+   hcbd_hc_stress_enable(w, 1); off by default, and then it costs nothing. */
+hcbd_result hcbd_hc_stress_enable(hcbd_hc_world *w, int on);
+hcbd_result hcbd_hc_stress_read(const hcbd_hc_world *w, double out[HCBD_HC_NSTRESS],
+                                int64_t *nsteps);
+uint64_t hcbd_hc_state_checksum(const hcbd_hc_world *w);
+
+/* Flow predictions: nu = eta/rho, c_s, blob mass, the reverse-Poiseuille
+   centre velocity of each half g (L/4)^2 / (2 nu), and the explicit limits
+   dt_visc = 0.125 h^2/nu and dt_sound = 0.25 h / c_s. */
+typedef struct hcbd_hc_theory {
+    double nu, cs, m, v_max_rp, dt_visc, dt_sound;
+} hcbd_hc_theory;
+hcbd_result hcbd_hc_theory_of(const hcbd_hc_params *p, hcbd_hc_theory *t);
+
+/* >>kernels of the 2018 model */
+double hcbd_m4(double r, double h);
+double hcbd_m4_dr(double r, double h);
+double hcbd_rapid_w(double r, double sigma, double rc);
+double hcbd_rapid_w_dr(double r, double sigma, double rc);
+/* Flory-Huggins mu(phi) = g'(phi), series for small phi (no cancellation
+   with chi = 1/2), in double and float.  NAN for phi outside (0, 1). */
+double hcbd_flory_mu(double phi, double chi);
+float hcbd_flory_muf(float phi, float chi);
+/* g(phi) + 1 (the constant -1 dropped to keep small-phi digits). */
+double hcbd_flory_g1(double phi, double chi);
+#endif /* HCBD_MODEL_HCBD */
+
+/* Slab profiles across y of any per-particle values, with block errors:
+   add every particle of a sample, then end the sample; blocks of `block`
+   samples.  Result out[(3 + 2 nval) s + c]: c = 0 slab centre, 1 number
+   density, 2 its error, 3 + 2v and 4 + 2v mean and error of value v. */
+typedef struct hcbd_slabs {
+    int nslab, nval, block, nsamp;
+    int64_t nblocks;
+    double L[3];
+    double *acc, *stat;
+} hcbd_slabs;
+size_t hcbd_slabs_bytes(int nslab, int nval);
+hcbd_result hcbd_slabs_init(hcbd_slabs *s, const double L[3], int nslab, int nval,
+                            int block, void *mem, size_t bytes);
+void hcbd_slabs_add(hcbd_slabs *s, double y, const double *vals);
+void hcbd_slabs_end_sample(hcbd_slabs *s);
+int64_t hcbd_slabs_result(const hcbd_slabs *s, double *out);
 
 #ifdef __cplusplus
 }
@@ -3103,6 +3319,1530 @@ int64_t hcbd_profile_result(const hcbd_profile *pr, double *out)
         o[7] = nb > 0 ? t[1] / (nb * pr->block) : 0.0;
     }
     return pr->nblocks;
+}
+
+#if HCBD_MODEL == HCBD_MODEL_HCBD
+/* >>HCBD: kernels (MODEL 1, 8) */
+double hcbd_m4(double r, double h)
+{
+    double q = r / h, c = 1.0 / (4.0 * HCBD__PI * h * h * h), a, b;
+    if (!(q < 2.0)) return 0.0;
+    a = 2.0 - q;
+    if (q >= 1.0) return c * a * a * a;
+    b = 1.0 - q;
+    return c * (a * a * a - 4.0 * b * b * b);
+}
+
+double hcbd_m4_dr(double r, double h)
+{
+    double q = r / h, c = 1.0 / (4.0 * HCBD__PI * h * h * h * h), a, b;
+    if (!(q < 2.0)) return 0.0;
+    a = 2.0 - q;
+    if (q >= 1.0) return -3.0 * c * a * a;
+    b = 1.0 - q;
+    return c * (-3.0 * a * a + 12.0 * b * b);
+}
+
+static double hcbd__rapid_A(double sigma, double rc)
+{
+    return 15.0 / (2.0 * HCBD__PI * (pow(rc, 5) - pow(sigma, 5)));
+}
+
+double hcbd_rapid_w(double r, double sigma, double rc)
+{
+    double A = hcbd__rapid_A(sigma, rc);
+    if (!(r < rc)) return 0.0;
+    if (r <= sigma) return A * (rc - sigma) * (rc + sigma - 2.0 * r);
+    return A * (r - rc) * (r - rc);
+}
+
+double hcbd_rapid_w_dr(double r, double sigma, double rc)
+{
+    double A = hcbd__rapid_A(sigma, rc);
+    if (!(r < rc)) return 0.0;
+    if (r <= sigma) return -2.0 * A * (rc - sigma);
+    return 2.0 * A * (r - rc);
+}
+
+/* mu(phi) = -ln(1-phi)/phi^2 - 1/phi - chi = (1/2 - chi) + sum_{k>=1}
+   phi^k/(k+2).  The closed form cancels for small phi (wrong in every
+   float digit at phi ~ 5e-4, chi = 1/2); the series does not, and 1/2 - chi
+   is exact for the paper's chi.  Above 1/4 the closed form loses < 3 bits. */
+#define HCBD__FLORY_MU(T, LOG1P)                                               \
+    {                                                                          \
+        T s = 0, t = 1;                                                        \
+        int k;                                                                 \
+        if (!(phi > 0 && phi < 1)) return (T)NAN;                              \
+        if (phi >= (T)0.25) return -LOG1P(-phi) / (phi * phi) - (T)1 / phi - chi; \
+        for (k = 1; k < 80; ++k) {                                             \
+            T term;                                                            \
+            t *= phi;                                                          \
+            term = t / (T)(k + 2);                                             \
+            s += term;                                                         \
+            if (term < s * (T)1e-18) break;                                    \
+        }                                                                      \
+        return ((T)0.5 - chi) + s;                                             \
+    }
+double hcbd_flory_mu(double phi, double chi) HCBD__FLORY_MU(double, log1p)
+float hcbd_flory_muf(float phi, float chi) HCBD__FLORY_MU(float, log1pf)
+#undef HCBD__FLORY_MU
+
+static hcbd_real hcbd__mu(hcbd_real phi, hcbd_real chi)
+{
+    return sizeof(hcbd_real) == sizeof(float) ? (hcbd_real)hcbd_flory_muf((float)phi, (float)chi)
+                                              : (hcbd_real)hcbd_flory_mu((double)phi, (double)chi);
+}
+
+/* g(phi) + 1 = (1/2 - chi) phi + sum_{k>=2} phi^k / (k (k-1)) */
+double hcbd_flory_g1(double phi, double chi)
+{
+    double s = 0, t = phi;
+    int k;
+    if (!(phi > 0 && phi < 1)) return NAN;
+    if (phi >= 0.25) return (1.0 - phi) / phi * log1p(-phi) - chi * phi + 1.0;
+    for (k = 2; k < 80; ++k) {
+        double term;
+        t *= phi;
+        term = t / ((double)k * (k - 1));
+        s += term;
+        if (term < s * 1e-18) break;
+    }
+    return (0.5 - chi) * phi + s;
+}
+
+/* >>HCBD: parameters and units */
+hcbd_hc_si hcbd_hc_si_table1(void)
+{
+    hcbd_hc_si s;
+    s.sigma = 5e-6;
+    s.dt = 1e-6;
+    s.T = 300.0;
+    s.rho = 1000.0;
+    s.eta = 1e-3;
+    s.nbar = 1.9099e15;
+    s.P0 = 0.13;
+    s.xi = 1e-7;
+    s.alpha_kT = 500.0;
+    s.tau_lambda = 1.0;
+    s.p_kuhn = 3e5;
+    s.n_max_cstar = 1e4;
+    s.chi = 0.5;
+    s.h_sigma = 2.0;
+    s.rc_sigma = 2.5;
+    return s;
+}
+
+hcbd_result hcbd_hc_params_si(const hcbd_hc_si *si, double time_unit,
+                              hcbd_hc_params *p, char *msg, size_t msg_size)
+{
+    const double kB = 1.380649e-23;
+    double kT, M, len, cstar;
+    if (!si || !p) return HCBD_ERR_NULL;
+    if (!(time_unit > 0) || !isfinite(time_unit))
+        return hcbd__param_fail(msg, msg_size, "time_unit", time_unit, "time_unit > 0");
+    if (!(si->sigma > 0) || !isfinite(si->sigma))
+        return hcbd__param_fail(msg, msg_size, "si.sigma", si->sigma, "sigma > 0");
+    if (!(si->T > 0) || !isfinite(si->T)) return hcbd__param_fail(msg, msg_size, "si.T", si->T, "T > 0");
+    memset(p, 0, sizeof *p);
+    kT = kB * si->T;
+    len = si->sigma;
+    M = kT * time_unit * time_unit / (len * len); /* mass unit */
+    cstar = 3.0 / (4.0 * HCBD__PI);              /* one blob per sphere of radius sigma */
+    p->L[0] = 33.75;
+    p->L[1] = p->L[2] = 10.0;
+    p->dt = si->dt / time_unit;
+    p->kT = 1.0;
+    p->rho = si->rho * len * len * len / M;
+    p->nbar = si->nbar * len * len * len;
+    p->eta = si->eta * len * time_unit / M;
+    p->P0 = si->P0 * len * time_unit * time_unit / M;
+    p->h = si->h_sigma;
+    p->fluctuations = 1;
+    p->xi = si->xi * time_unit / M;
+    p->sigma = 1.0;
+    p->rc = si->rc_sigma;
+    p->alpha = si->alpha_kT;
+    p->tau_lambda = si->tau_lambda / time_unit;
+    p->p_kuhn = si->p_kuhn;
+    p->n_max = si->n_max_cstar * cstar;
+    p->chi = si->chi;
+    p->coupling = HCBD_COUPLE_SHEPARD;
+    p->seed = 1;
+    p->threads = 1;
+    return hcbd_hc_params_check(p, msg, msg_size);
+}
+
+hcbd_hc_params hcbd_hc_params_default(void)
+{
+    hcbd_hc_params p;
+    hcbd_hc_si si = hcbd_hc_si_table1();
+    hcbd_hc_params_si(&si, 1e-6, &p, NULL, 0);
+    return p;
+}
+
+hcbd_hc_def hcbd_hc_def_default(void)
+{
+    hcbd_hc_def d;
+    memset(&d, 0, sizeof d);
+    d.fluid_capacity = 1024;
+    d.polymer_capacity = 0;
+    d.pair_capacity = HCBD_AUTO;
+    d.params = hcbd_hc_params_default();
+    return d;
+}
+
+hcbd_result hcbd_hc_params_check(const hcbd_hc_params *p, char *msg, size_t msg_size)
+{
+    int d;
+    double reach;
+    if (!p) return HCBD_ERR_NULL;
+    for (d = 0; d < 3; ++d) HCBD__CHECK(p->L[d] > 0 && isfinite(p->L[d]), "L", p->L[d]);
+    HCBD__CHECK(p->dt > 0 && isfinite(p->dt), "dt", p->dt);
+    HCBD__CHECK(p->kT >= 0 && isfinite(p->kT), "kT", p->kT);
+    HCBD__CHECK(p->rho > 0 && isfinite(p->rho), "rho", p->rho);
+    HCBD__CHECK(p->nbar > 0 && isfinite(p->nbar), "nbar", p->nbar);
+    HCBD__CHECK(p->eta >= 0 && isfinite(p->eta), "eta", p->eta);
+    HCBD__CHECK(p->P0 >= 0 && isfinite(p->P0), "P0", p->P0);
+    HCBD__CHECK(p->h > 0 && isfinite(p->h), "h", p->h);
+    HCBD__CHECK(p->fluctuations == 0 || p->fluctuations == 1, "fluctuations",
+                (double)p->fluctuations);
+    for (d = 0; d < 3; ++d) HCBD__CHECK(isfinite(p->g[d]), "g", p->g[d]);
+    HCBD__CHECK(p->reverse_poiseuille == 0 || p->reverse_poiseuille == 1,
+                "reverse_poiseuille", (double)p->reverse_poiseuille);
+    HCBD__CHECK(isfinite(p->gdot), "gdot", p->gdot);
+    HCBD__CHECK(!(p->gdot != 0 && p->reverse_poiseuille), "gdot",
+                p->gdot);
+    HCBD__CHECK(p->xi > 0 && isfinite(p->xi), "xi", p->xi);
+    HCBD__CHECK(p->rc > 0 && isfinite(p->rc), "rc", p->rc);
+    HCBD__CHECK(p->sigma > 0 && p->sigma < p->rc, "sigma", p->sigma);
+    HCBD__CHECK(p->alpha >= 0 && isfinite(p->alpha), "alpha", p->alpha);
+    HCBD__CHECK(p->tau_lambda > 0 && isfinite(p->tau_lambda), "tau_lambda", p->tau_lambda);
+    HCBD__CHECK(p->p_kuhn >= 0 && isfinite(p->p_kuhn), "p_kuhn", p->p_kuhn);
+    HCBD__CHECK(p->n_max > 0 && isfinite(p->n_max), "n_max", p->n_max);
+    HCBD__CHECK(isfinite(p->chi), "chi", p->chi);
+    HCBD__CHECK(p->coupling == HCBD_COUPLE_SHEPARD || p->coupling == HCBD_COUPLE_RAW,
+                "coupling", (double)p->coupling);
+    HCBD__CHECK(p->threads >= 1 && p->threads <= 1024, "threads", (double)p->threads);
+    reach = 2.0 * p->h > p->rc ? 2.0 * p->h : p->rc;
+    for (d = 0; d < 3; ++d)
+        if (p->L[d] < 2.0 * reach) {
+            if (msg && msg_size)
+                snprintf(msg, msg_size,
+                         "box L[%d] = %g is shorter than twice the interaction range "
+                         "(2h = %g, rc = %g): a pair would see two images",
+                         d, p->L[d], 2.0 * p->h, p->rc);
+            return HCBD_ERR_BOX;
+        }
+    return HCBD_OK;
+}
+
+hcbd_result hcbd_hc_theory_of(const hcbd_hc_params *p, hcbd_hc_theory *t)
+{
+    if (!p || !t) return HCBD_ERR_NULL;
+    if (!(p->rho > 0) || !(p->nbar > 0) || !(p->h > 0)) return HCBD_ERR_PARAM;
+    t->nu = p->eta / p->rho;
+    t->cs = sqrt(7.0 * p->P0 / p->rho);
+    t->m = p->rho / p->nbar;
+    /* each half of width L/2 is a channel: v_max = g (L/2)^2 / (8 nu) */
+    t->v_max_rp = t->nu > 0 ? p->g[0] * p->L[1] * p->L[1] / (32.0 * t->nu) : HUGE_VAL;
+    t->dt_visc = t->nu > 0 ? 0.125 * p->h * p->h / t->nu : HUGE_VAL;
+    t->dt_sound = t->cs > 0 ? 0.25 * p->h / t->cs : HUGE_VAL;
+    return HCBD_OK;
+}
+
+/* >>HCBD: storage */
+#define HCBD__STREAM_FPAIR 0x11ULL
+#define HCBD__STREAM_LAMBDA 0x12ULL
+#define HCBD__STREAM_POLY 0x13ULL
+#define HCBD__STREAM_FLUID_INIT 0x14ULL
+#define HCBD__STREAM_POLY_PLACE 0x15ULL
+
+static double hcbd__hc_reach(const hcbd_hc_params *p)
+{
+    return 2.0 * p->h > p->rc ? 2.0 * p->h : p->rc;
+}
+
+static void hcbd__grid_dims(const hcbd_hc_params *p, double cut, int nc[3])
+{
+    int d;
+    for (d = 0; d < 3; ++d) {
+        double k = floor(p->L[d] / cut);
+        nc[d] = k < 1 ? 1 : (k > 1024 ? 1024 : (int)k);
+    }
+}
+
+/* Neighbour cells of cell c, each once.  An axis with fewer than three
+   cells is scanned whole.  Under Lees-Edwards the row across the y
+   boundary is scanned whole in x, so the stencil does not depend on the
+   offset. */
+static int hcbd__stencil(const int nc[3], int le, int c, int32_t *out)
+{
+    int cx = c / (nc[1] * nc[2]), cy = (c / nc[2]) % nc[1], cz = c % nc[2];
+    int ally = nc[1] < 3, allz = nc[2] < 3, ny = ally ? nc[1] : 3, nz = allz ? nc[2] : 3;
+    int a, b, e, cnt = 0;
+    for (a = 0; a < ny; ++a) {
+        int yr = ally ? a : cy - 1 + a, cross = ally || yr < 0 || yr >= nc[1];
+        int allx = nc[0] < 3 || (le && cross), nx = allx ? nc[0] : 3;
+        yr = (yr + nc[1]) % nc[1];
+        for (b = 0; b < nx; ++b) {
+            int xr = allx ? b : (cx - 1 + b + nc[0]) % nc[0];
+            for (e = 0; e < nz; ++e) {
+                int zr = allz ? e : (cz - 1 + e + nc[2]) % nc[2];
+                if (out) out[cnt] = (xr * nc[1] + yr) * nc[2] + zr;
+                ++cnt;
+            }
+        }
+    }
+    return cnt;
+}
+
+static int hcbd__hc_pair_cap(const hcbd_hc_def *def)
+{
+    const hcbd_hc_params *p = &def->params;
+    double V = p->L[0] * p->L[1] * p->L[2], nexp;
+    if (def->pair_capacity != HCBD_AUTO) return def->pair_capacity;
+    if (def->polymer_capacity < 2 || p->alpha <= 0) return 0;
+    nexp = def->polymer_capacity / V * 4.0 / 3.0 * HCBD__PI * p->rc * p->rc * p->rc;
+    if (nexp > def->polymer_capacity) nexp = def->polymer_capacity;
+    return (int)ceil(nexp + 5.0 * sqrt(nexp) + 16.0);
+}
+
+static size_t hcbd__hc_layout(const hcbd_hc_def *def, hcbd_hc_world *t, char *base)
+{
+    size_t off = 0, R = sizeof(hcbd_real), I = sizeof(int32_t), D = sizeof(double);
+    size_t nf = (size_t)def->fluid_capacity, np = (size_t)def->polymer_capacity;
+    size_t npc = np * (size_t)hcbd__hc_pair_cap(def);
+    const hcbd_hc_params *p = &def->params;
+    int le = p->gdot != 0, c, g;
+    hcbd_hc_world dummy;
+    if (!t) t = &dummy;
+#define HCBD__HA(ptr, bytes) hcbd__take(base, &off, (bytes), (void **)&(t->ptr))
+    HCBD__HA(fx, nf * R); HCBD__HA(fy, nf * R); HCBD__HA(fz, nf * R);
+    HCBD__HA(fvx, nf * R); HCBD__HA(fvy, nf * R); HCBD__HA(fvz, nf * R);
+    HCBD__HA(fn, nf * R); HCBD__HA(fP, nf * R); HCBD__HA(fPn2, nf * R);
+    HCBD__HA(fax, nf * R); HCBD__HA(fay, nf * R); HCBD__HA(faz, nf * R);
+    HCBD__HA(nvx, nf * R); HCBD__HA(nvy, nf * R); HCBD__HA(nvz, nf * R);
+    HCBD__HA(fs, 3 * nf * D); HCBD__HA(fcell, nf * I);
+    HCBD__HA(px, np * R); HCBD__HA(py, np * R); HCBD__HA(pz, np * R);
+    HCBD__HA(pn, np * R); HCBD__HA(pmu, np * R);
+    HCBD__HA(pFx, np * R); HCBD__HA(pFy, np * R); HCBD__HA(pFz, np * R);
+    HCBD__HA(pux, np * R); HCBD__HA(puy, np * R); HCBD__HA(puz, np * R);
+    HCBD__HA(pS, np * R); HCBD__HA(ps, 3 * np * D); HCBD__HA(pcell, np * I);
+    HCBD__HA(pair_n, np * I); HCBD__HA(pair_n2, np * I);
+    HCBD__HA(pair_b, npc * I); HCBD__HA(pair_b2, npc * I);
+    HCBD__HA(pair_l, npc * R); HCBD__HA(pair_l2, npc * R);
+    HCBD__HA(pair_eq, npc * R); HCBD__HA(pair_eq2, npc * R);
+    HCBD__HA(zig, sizeof(hcbd__zig));
+    for (g = 0; g < 2; ++g) {
+        hcbd__grid *gr = g ? &t->gp : &t->gf;
+        size_t nsten = 0, cap = g ? np : nf;
+        hcbd__grid_dims(p, g ? p->rc : hcbd__hc_reach(p), gr->nc);
+        gr->ncell = gr->nc[0] * gr->nc[1] * gr->nc[2];
+        for (c = 0; c < gr->ncell; ++c) nsten += (size_t)hcbd__stencil(gr->nc, le, c, NULL);
+        hcbd__take(base, &off, ((size_t)gr->ncell + 1) * I, (void **)&gr->start);
+        hcbd__take(base, &off, cap * I, (void **)&gr->list);
+        hcbd__take(base, &off, ((size_t)gr->ncell + 1) * I, (void **)&gr->sten_start);
+        hcbd__take(base, &off, nsten * I, (void **)&gr->sten);
+    }
+#undef HCBD__HA
+    return off + HCBD__ALIGN;
+}
+
+static hcbd_result hcbd__hc_check_def(const hcbd_hc_def *def, char *msg, size_t msg_size)
+{
+    hcbd_result r;
+    if (!def) return HCBD_ERR_NULL;
+    r = hcbd_hc_params_check(&def->params, msg, msg_size);
+    if (r != HCBD_OK) return r;
+    HCBD__CHECK(def->fluid_capacity >= 2 && def->fluid_capacity <= (1 << 28), "fluid_capacity",
+                def->fluid_capacity);
+    HCBD__CHECK(def->polymer_capacity >= 0 && def->polymer_capacity <= (1 << 28),
+                "polymer_capacity", def->polymer_capacity);
+    HCBD__CHECK(def->pair_capacity == HCBD_AUTO ||
+                    (def->pair_capacity >= 0 && def->pair_capacity <= (1 << 20)),
+                "pair_capacity", def->pair_capacity);
+    return HCBD_OK;
+}
+
+static void hcbd__grid_stencils(hcbd__grid *g, int le)
+{
+    int c, k = 0;
+    for (c = 0; c < g->ncell; ++c) {
+        g->sten_start[c] = k;
+        k += hcbd__stencil(g->nc, le, c, g->sten + k);
+    }
+    g->sten_start[g->ncell] = k;
+}
+
+size_t hcbd_hc_world_bytes(const hcbd_hc_def *def)
+{
+    if (hcbd__hc_check_def(def, NULL, 0) != HCBD_OK) return 0;
+    return hcbd__hc_layout(def, NULL, NULL);
+}
+
+hcbd_result hcbd_hc_world_init(hcbd_hc_world *w, const hcbd_hc_def *def, void *mem,
+                               size_t bytes)
+{
+    hcbd_result r;
+    size_t need;
+    char *base;
+    const hcbd_hc_params *p;
+    if (!w) return HCBD_ERR_NULL;
+    memset(w, 0, sizeof *w);
+    hcbd__clear(&w->err);
+    r = hcbd__hc_check_def(def, w->err.msg, sizeof w->err.msg);
+    if (r != HCBD_OK) {
+        w->err.code = r;
+        return r;
+    }
+    need = hcbd__hc_layout(def, NULL, NULL);
+    if (!mem) return hcbd__fail(&w->err, HCBD_ERR_NULL, -1, -1, "memory block is NULL");
+    if (bytes < need)
+        return hcbd__fail(&w->err, HCBD_ERR_MEMORY, -1, -1,
+                          "memory block of %zu bytes is smaller than the %zu bytes "
+                          "hcbd_hc_world_bytes asks for", bytes, need);
+    base = (char *)mem;
+    base += (HCBD__ALIGN - ((uintptr_t)base & (HCBD__ALIGN - 1))) & (HCBD__ALIGN - 1);
+    hcbd__hc_layout(def, w, base);
+    w->p = def->params;
+    p = &w->p;
+    w->fcap = def->fluid_capacity;
+    w->pcap = def->polymer_capacity;
+    w->pair_cap = hcbd__hc_pair_cap(def);
+    w->m = p->rho / p->nbar;
+    w->inv_m = 1.0 / w->m;
+    w->cs = sqrt(7.0 * p->P0 / p->rho);
+    w->le_on = p->gdot != 0;
+    w->le_vjump = p->gdot * p->L[1];
+    w->transient = p->alpha > 0;
+    w->has_fc = p->p_kuhn > 0;
+    w->noise_f = p->fluctuations && p->kT > 0;
+    w->noise_p = p->kT > 0;
+    w->key_fpair = hcbd__mix64(p->seed ^ hcbd__mix64(HCBD__STREAM_FPAIR));
+    w->key_lambda = hcbd__mix64(p->seed ^ hcbd__mix64(HCBD__STREAM_LAMBDA));
+    w->key_poly = hcbd__mix64(p->seed ^ hcbd__mix64(HCBD__STREAM_POLY));
+    hcbd__grid_stencils(&w->gf, w->le_on);
+    hcbd__grid_stencils(&w->gp, w->le_on);
+    hcbd__zig_init(w->zig);
+    return HCBD_OK;
+}
+
+hcbd_result hcbd_hc_world_create(hcbd_hc_world *w, const hcbd_hc_def *def)
+{
+    size_t need;
+    void *mem;
+    hcbd_result r;
+    if (!w) return HCBD_ERR_NULL;
+    memset(w, 0, sizeof *w);
+    hcbd__clear(&w->err);
+    r = hcbd__hc_check_def(def, w->err.msg, sizeof w->err.msg);
+    if (r != HCBD_OK) {
+        w->err.code = r;
+        return r;
+    }
+    need = hcbd_hc_world_bytes(def);
+    mem = HCBD_MALLOC(need);
+    if (!mem) return hcbd__fail(&w->err, HCBD_ERR_MEMORY, -1, -1, "malloc of %zu bytes failed", need);
+    r = hcbd_hc_world_init(w, def, mem, need);
+    if (r != HCBD_OK) {
+        HCBD_FREE(mem);
+        return r;
+    }
+    w->owned_mem = mem;
+    return HCBD_OK;
+}
+
+void hcbd_hc_world_destroy(hcbd_hc_world *w)
+{
+    if (!w) return;
+    if (w->owned_mem) HCBD_FREE(w->owned_mem);
+    memset(w, 0, sizeof *w);
+}
+
+/* >>HCBD: set-up */
+static hcbd_result hcbd__hc_check_xyz(hcbd_hc_world *w, int n, const double *xyz,
+                                      const char *what)
+{
+    int i, d;
+    for (i = 0; i < n; ++i)
+        for (d = 0; d < 3; ++d) {
+            double x = xyz[3 * i + d];
+            if (!isfinite(x))
+                return hcbd__fail(&w->err, HCBD_ERR_NONFINITE, -1, i,
+                                  "%s %d: coordinate %d = %g is not finite", what, i, d, x);
+            if (x < 0 || x >= w->p.L[d])
+                return hcbd__fail(&w->err, HCBD_ERR_PARAM, -1, i,
+                                  "%s %d: coordinate %d = %.17g is outside the box [0, %g)",
+                                  what, i, d, x, w->p.L[d]);
+        }
+    return HCBD_OK;
+}
+
+/* Velocities of the fluid blobs just placed (ids 0..n-1), then the state
+   every set-up ends in: step 0, no pairs, densities and forces current. */
+static hcbd_result hcbd__hc_fluid_finish(hcbd_hc_world *w, int n, const double *v)
+{
+    int i, d;
+    w->nf = n;
+    w->np = 0;
+    w->step = 0;
+    w->le_offset = 0;
+    w->npairs = 0;
+    w->ready = 0;
+    if (v) {
+        for (i = 0; i < n; ++i) {
+            w->fvx[i] = (hcbd_real)v[3 * i];
+            w->fvy[i] = (hcbd_real)v[3 * i + 1];
+            w->fvz[i] = (hcbd_real)v[3 * i + 2];
+        }
+    } else {
+        double mom[3] = {0, 0, 0}, s = w->noise_f ? sqrt(w->p.kT / w->m) : 0.0;
+        hcbd_rng g;
+        hcbd__gen gen;
+        hcbd_rng_seed(&g, hcbd__mix64(w->p.seed ^ hcbd__mix64(HCBD__STREAM_FLUID_INIT)));
+        gen.xo = &g;
+        gen.sm = 0;
+        for (i = 0; i < n; ++i) {
+            double u[3];
+            for (d = 0; d < 3; ++d) {
+                u[d] = s > 0 ? s * hcbd__normal(w->zig, &gen) : 0.0;
+                mom[d] += u[d];
+            }
+            w->fvx[i] = (hcbd_real)u[0];
+            w->fvy[i] = (hcbd_real)u[1];
+            w->fvz[i] = (hcbd_real)u[2];
+        }
+        for (i = 0; i < n; ++i) {
+            w->fvx[i] = (hcbd_real)(w->fvx[i] - mom[0] / n +
+                                    w->p.gdot * (w->fy[i] - 0.5 * w->p.L[1]));
+            w->fvy[i] = (hcbd_real)(w->fvy[i] - mom[1] / n);
+            w->fvz[i] = (hcbd_real)(w->fvz[i] - mom[2] / n);
+        }
+    }
+    return hcbd_hc_refresh(w);
+}
+
+static hcbd_result hcbd__hc_fluid_n(hcbd_hc_world *w, int n)
+{
+    hcbd__clear(&w->err);
+    if (!w->fx) return hcbd__fail(&w->err, HCBD_ERR_STATE, -1, -1, "world is not initialised");
+    if (n < 2 || n > w->fcap)
+        return hcbd__fail(&w->err, HCBD_ERR_CAPACITY, -1, -1,
+                          "fluid N = %d is invalid (need 2 <= N <= fluid_capacity %d)", n, w->fcap);
+    return HCBD_OK;
+}
+
+hcbd_result hcbd_hc_set_fluid(hcbd_hc_world *w, int n, const double *xyz, const double *v)
+{
+    int i;
+    hcbd_result r;
+    if (!w || !xyz) return HCBD_ERR_NULL;
+    if ((r = hcbd__hc_fluid_n(w, n)) != HCBD_OK) return r;
+    if ((r = hcbd__hc_check_xyz(w, n, xyz, "fluid blob")) != HCBD_OK) return r;
+    if (v)
+        for (i = 0; i < 3 * n; ++i)
+            if (!isfinite(v[i]))
+                return hcbd__fail(&w->err, HCBD_ERR_NONFINITE, -1, i / 3,
+                                  "fluid blob %d: velocity %d = %g is not finite", i / 3, i % 3, v[i]);
+    for (i = 0; i < n; ++i) {
+        w->fx[i] = (hcbd_real)xyz[3 * i];
+        w->fy[i] = (hcbd_real)xyz[3 * i + 1];
+        w->fz[i] = (hcbd_real)xyz[3 * i + 2];
+    }
+    return hcbd__hc_fluid_finish(w, n, v);
+}
+
+hcbd_result hcbd_hc_place_fluid_lattice(hcbd_hc_world *w, int n)
+{
+    int k[3], i, d;
+    double a;
+    hcbd_result r;
+    if (!w) return HCBD_ERR_NULL;
+    if ((r = hcbd__hc_fluid_n(w, n)) != HCBD_OK) return r;
+    /* spacing as even as the box allows, then more sites along the axis
+       with the widest spacing until n fit */
+    a = cbrt(w->p.L[0] * w->p.L[1] * w->p.L[2] / n);
+    for (d = 0; d < 3; ++d) {
+        k[d] = (int)floor(w->p.L[d] / a + 0.5);
+        if (k[d] < 1) k[d] = 1;
+    }
+    while ((int64_t)k[0] * k[1] * k[2] < n) {
+        int m = 0;
+        for (d = 1; d < 3; ++d)
+            if (w->p.L[d] / k[d] > w->p.L[m] / k[m]) m = d;
+        k[m]++;
+    }
+    for (i = 0; i < n; ++i) {
+        /* n of the sites, spread evenly */
+        int64_t site = (int64_t)i * k[0] * k[1] * k[2] / n;
+        w->fx[i] = (hcbd_real)(((double)(site % k[0]) + 0.5) * w->p.L[0] / k[0]);
+        w->fy[i] = (hcbd_real)(((double)(site / k[0] % k[1]) + 0.5) * w->p.L[1] / k[1]);
+        w->fz[i] = (hcbd_real)(((double)(site / ((int64_t)k[0] * k[1])) + 0.5) * w->p.L[2] / k[2]);
+    }
+    return hcbd__hc_fluid_finish(w, n, NULL);
+}
+
+static hcbd_result hcbd__hc_poly_n(hcbd_hc_world *w, int n)
+{
+    hcbd__clear(&w->err);
+    if (w->nf < 2) return hcbd__fail(&w->err, HCBD_ERR_STATE, -1, -1, "set the fluid blobs first");
+    if (n < 0 || n > w->pcap)
+        return hcbd__fail(&w->err, HCBD_ERR_CAPACITY, -1, -1,
+                          "polymer N = %d is invalid (need 0 <= N <= polymer_capacity %d)", n,
+                          w->pcap);
+    return HCBD_OK;
+}
+
+static hcbd_result hcbd__hc_poly_finish(hcbd_hc_world *w, int n)
+{
+    hcbd_result r;
+    int i;
+    w->np = n;
+    w->npairs = 0;
+    for (i = 0; i < n; ++i) w->pair_n[i] = 0;
+    r = hcbd_hc_refresh(w);
+    if (r != HCBD_OK) w->np = 0; /* a refused configuration is not kept */
+    return r;
+}
+
+hcbd_result hcbd_hc_set_polymers(hcbd_hc_world *w, int n, const double *xyz)
+{
+    int i;
+    hcbd_result r;
+    if (!w || (n > 0 && !xyz)) return HCBD_ERR_NULL;
+    if ((r = hcbd__hc_poly_n(w, n)) != HCBD_OK) return r;
+    if ((r = hcbd__hc_check_xyz(w, n, xyz, "polymer blob")) != HCBD_OK) return r;
+    for (i = 0; i < n; ++i) {
+        w->px[i] = (hcbd_real)xyz[3 * i];
+        w->py[i] = (hcbd_real)xyz[3 * i + 1];
+        w->pz[i] = (hcbd_real)xyz[3 * i + 2];
+    }
+    return hcbd__hc_poly_finish(w, n);
+}
+
+hcbd_result hcbd_hc_place_polymers_random(hcbd_hc_world *w, int n)
+{
+    int i;
+    hcbd_result r;
+    hcbd_rng g;
+    if (!w) return HCBD_ERR_NULL;
+    if ((r = hcbd__hc_poly_n(w, n)) != HCBD_OK) return r;
+    hcbd_rng_seed(&g, hcbd__mix64(w->p.seed ^ hcbd__mix64(HCBD__STREAM_POLY_PLACE)));
+    for (i = 0; i < n; ++i) {
+        double r3[3];
+        int d;
+        for (d = 0; d < 3; ++d) {
+            r3[d] = hcbd_rng_uniform(&g) * w->p.L[d];
+            if (r3[d] >= w->p.L[d]) r3[d] = 0; /* float rounding up to L */
+        }
+        w->px[i] = (hcbd_real)r3[0];
+        w->py[i] = (hcbd_real)r3[1];
+        w->pz[i] = (hcbd_real)r3[2];
+    }
+    return hcbd__hc_poly_finish(w, n);
+}
+
+/* >>HCBD: cells and pair passes.  Every particle sums over its partners
+   itself (each pair is evaluated from both sides with bitwise opposite
+   results), in a fixed cell and id order: no writes to shared memory, and
+   the same bits for any thread count. */
+static int hcbd__grid_cell(const hcbd__grid *g, const double L[3], double x, double y, double z)
+{
+    double r[3];
+    int c[3], d;
+    r[0] = x; r[1] = y; r[2] = z;
+    for (d = 0; d < 3; ++d) {
+        c[d] = (int)(r[d] * g->nc[d] / L[d]);
+        if (c[d] >= g->nc[d]) c[d] = g->nc[d] - 1;
+        if (c[d] < 0) c[d] = 0;
+    }
+    return (c[0] * g->nc[1] + c[1]) * g->nc[2] + c[2];
+}
+
+/* Counting sort: stable, so ids increase within a cell. */
+static void hcbd__grid_build(hcbd__grid *g, const double L[3], int n, const hcbd_real *x,
+                             const hcbd_real *y, const hcbd_real *z, int32_t *cell)
+{
+    int i, c;
+    for (c = 0; c <= g->ncell; ++c) g->start[c] = 0;
+    for (i = 0; i < n; ++i) {
+        cell[i] = hcbd__grid_cell(g, L, x[i], y[i], z[i]);
+        g->start[cell[i] + 1]++;
+    }
+    for (c = 0; c < g->ncell; ++c) g->start[c + 1] += g->start[c];
+    for (i = 0; i < n; ++i) g->list[g->start[cell[i]]++] = i;
+    for (c = g->ncell; c > 0; --c) g->start[c] = g->start[c - 1];
+    g->start[0] = 0;
+}
+
+static inline hcbd__box hcbd__hc_box(const hcbd_hc_world *w)
+{
+    hcbd__box b;
+    b.L[0] = w->p.L[0]; b.L[1] = w->p.L[1]; b.L[2] = w->p.L[2];
+    b.offset = w->le_offset;
+    b.le = w->le_on;
+    return b;
+}
+
+/* Loop over the particles j of grid g near cell c: sets j. */
+#define HCBD__NEAR(g, c, j)                                                    \
+    for (int hcbd__s = (g)->sten_start[c]; hcbd__s < (g)->sten_start[(c) + 1]; ++hcbd__s) \
+        for (int hcbd__q = (g)->start[(g)->sten[hcbd__s]],                     \
+                 hcbd__e = (g)->start[(g)->sten[hcbd__s] + 1];                 \
+             hcbd__q < hcbd__e && ((j) = (g)->list[hcbd__q], 1); ++hcbd__q)
+
+/* Fluid densities and Tait pressures (MODEL 6). */
+static void hcbd__hc_fluid_density(hcbd_hc_world *w)
+{
+    const int n = w->nf, nt = w->p.threads;
+    const double h = w->p.h, cut2 = 4.0 * h * h, c0 = 1.0 / (4.0 * HCBD__PI * h * h * h);
+    const double inv_nbar = 1.0 / w->p.nbar, P0 = w->p.P0;
+    const hcbd__box box = hcbd__hc_box(w);
+    int i;
+    (void)nt;
+    HCBD__OMP(omp parallel for num_threads(nt) schedule(static))
+    for (i = 0; i < n; ++i) {
+        const double xi = w->fx[i], yi = w->fy[i], zi = w->fz[i];
+        double s = 4.0 * c0, x, x7; /* w(0) */
+        int j;
+        HCBD__NEAR(&w->gf, w->fcell[i], j) {
+            double d[3], r2;
+            if (j == i) continue;
+            hcbd__delta_box(&box, xi - w->fx[j], yi - w->fy[j], zi - w->fz[j], d);
+            r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+            if (r2 < cut2) {
+                double q = sqrt(r2) / h, a = 2.0 - q;
+                s += q >= 1.0 ? c0 * a * a * a
+                              : c0 * (a * a * a - 4.0 * (1.0 - q) * (1.0 - q) * (1.0 - q));
+            }
+        }
+        x = s * inv_nbar;
+        x7 = x * x * x;
+        x7 = x7 * x7 * x;
+        w->fn[i] = (hcbd_real)s;
+        w->fP[i] = (hcbd_real)(P0 * (x7 - 1.0));
+        w->fPn2[i] = (hcbd_real)(P0 * (x7 - 1.0) / (s * s));
+    }
+}
+
+/* Polymer densities and mu(phi) (MODEL 8).  Returns the first id with
+   phi >= 1, or -1. */
+static int hcbd__hc_poly_density(hcbd_hc_world *w)
+{
+    const int n = w->np, nt = w->p.threads, fc = w->has_fc;
+    const double rc = w->p.rc, sg = w->p.sigma, cut2 = rc * rc, A = hcbd__rapid_A(sg, rc);
+    const double w0 = A * (rc - sg) * (rc + sg), inv_nmax = 1.0 / w->p.n_max;
+    const hcbd__box box = hcbd__hc_box(w);
+    int i, bad = INT_MAX;
+    (void)nt;
+    HCBD__OMP(omp parallel for num_threads(nt) schedule(static) reduction(min:bad))
+    for (i = 0; i < n; ++i) {
+        const double xi = w->px[i], yi = w->py[i], zi = w->pz[i];
+        double s = w0, phi;
+        int j;
+        HCBD__NEAR(&w->gp, w->pcell[i], j) {
+            double d[3], r2;
+            if (j == i) continue;
+            hcbd__delta_box(&box, xi - w->px[j], yi - w->py[j], zi - w->pz[j], d);
+            r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+            if (r2 < cut2) {
+                double r = sqrt(r2);
+                s += r <= sg ? A * (rc - sg) * (rc + sg - 2.0 * r) : A * (r - rc) * (r - rc);
+            }
+        }
+        w->pn[i] = (hcbd_real)s;
+        phi = s * inv_nmax;
+        if (!(phi < 1.0)) {
+            if (i < bad) bad = i;
+            w->pmu[i] = 0;
+        } else {
+            w->pmu[i] = fc ? hcbd__mu((hcbd_real)phi, (hcbd_real)w->p.chi) : (hcbd_real)0;
+        }
+    }
+    return bad == INT_MAX ? -1 : bad;
+}
+
+static inline double hcbd__leq(double r, double rc)
+{
+    double u = 1.0 - r / rc;
+    return u * u;
+}
+
+/* Transient pairs at the present positions: the partners b > a within rc,
+   merged with the old list (both sorted by id) so a persisting pair keeps
+   its lambda, a new one starts at lambda_eq, a departed one is dropped.
+   Returns the first polymer whose pairs overflow pair_cap, or -1. */
+static int hcbd__hc_pairs(hcbd_hc_world *w, int *need)
+{
+    const int n = w->np, nt = w->p.threads, cap = w->pair_cap;
+    const double rc = w->p.rc, cut2 = rc * rc;
+    const hcbd__box box = hcbd__hc_box(w);
+    int a, bad = INT_MAX, most = 0;
+    int64_t created = 0, total = 0;
+    (void)nt;
+    HCBD__OMP(omp parallel for num_threads(nt) schedule(static) reduction(min:bad) reduction(max:most) reduction(+:created) reduction(+:total))
+    for (a = 0; a < n; ++a) {
+        const double xa = w->px[a], ya = w->py[a], za = w->pz[a];
+        int32_t *nb = w->pair_b2 + (size_t)a * cap;
+        hcbd_real *nl = w->pair_l2 + (size_t)a * cap, *ne = w->pair_eq2 + (size_t)a * cap;
+        const int32_t *ob = w->pair_b + (size_t)a * cap;
+        const hcbd_real *ol = w->pair_l + (size_t)a * cap;
+        int cnt = 0, k, o = 0, on = w->pair_n[a], b;
+        HCBD__NEAR(&w->gp, w->pcell[a], b) {
+            double d[3], r2;
+            if (b <= a) continue;
+            hcbd__delta_box(&box, xa - w->px[b], ya - w->py[b], za - w->pz[b], d);
+            r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+            if (r2 >= cut2) continue;
+            if (cnt < cap) {
+                /* insertion by id; lists are short */
+                int q = cnt;
+                hcbd_real e = (hcbd_real)hcbd__leq(sqrt(r2), rc);
+                while (q > 0 && nb[q - 1] > b) {
+                    nb[q] = nb[q - 1];
+                    ne[q] = ne[q - 1];
+                    --q;
+                }
+                nb[q] = b;
+                ne[q] = e;
+            }
+            ++cnt;
+        }
+        if (cnt > most) most = cnt;
+        if (cnt > cap) {
+            if (a < bad) bad = a;
+            cnt = cap;
+        }
+        for (k = 0; k < cnt; ++k) {
+            while (o < on && ob[o] < nb[k]) ++o;
+            if (o < on && ob[o] == nb[k]) {
+                nl[k] = ol[o];
+            } else {
+                nl[k] = ne[k];
+                ++created;
+            }
+        }
+        w->pair_n2[a] = cnt;
+        total += cnt;
+    }
+    *need = most;
+    if (bad != INT_MAX) return bad;
+    {
+        int32_t *t32;
+        hcbd_real *tr;
+        t32 = w->pair_n; w->pair_n = w->pair_n2; w->pair_n2 = t32;
+        t32 = w->pair_b; w->pair_b = w->pair_b2; w->pair_b2 = t32;
+        tr = w->pair_l; w->pair_l = w->pair_l2; w->pair_l2 = tr;
+        tr = w->pair_eq; w->pair_eq = w->pair_eq2; w->pair_eq2 = tr;
+    }
+    w->npairs = total;
+    w->n_created += created;
+    return -1;
+}
+
+static int hcbd__hc_find(const hcbd_hc_world *w, int a, int b)
+{
+    const int32_t *l = w->pair_b + (size_t)a * w->pair_cap;
+    int lo = 0, hi = w->pair_n[a];
+    while (lo < hi) {
+        int mid = (lo + hi) / 2;
+        if (l[mid] < b) lo = mid + 1;
+        else hi = mid;
+    }
+    return lo < w->pair_n[a] && l[lo] == b ? lo : -1;
+}
+
+/* Polymer forces: Flory-Huggins and transient (MODEL 8). */
+static void hcbd__hc_poly_forces(hcbd_hc_world *w)
+{
+    const int n = w->np, nt = w->p.threads, tr = w->transient, fc = w->has_fc;
+    const int stress = w->stress_on;
+    const double rc = w->p.rc, sg = w->p.sigma, cut2 = rc * rc, A = hcbd__rapid_A(sg, rc);
+    const double cfh = w->p.p_kuhn * w->p.kT / w->p.n_max, alpha = w->p.alpha;
+    const hcbd__box box = hcbd__hc_box(w);
+    const size_t cap = (size_t)w->pair_cap;
+    int a;
+    int64_t coinc = 0;
+    (void)nt;
+    HCBD__OMP(omp parallel for num_threads(nt) schedule(static) reduction(+:coinc))
+    for (a = 0; a < n; ++a) {
+        const double xa = w->px[a], ya = w->py[a], za = w->pz[a], mua = w->pmu[a];
+        double F[3] = {0, 0, 0}, sc = 0, st = 0;
+        int b;
+        HCBD__NEAR(&w->gp, w->pcell[a], b) {
+            double d[3], r2, r, fr = 0, ft = 0;
+            if (b == a) continue;
+            hcbd__delta_box(&box, xa - w->px[b], ya - w->py[b], za - w->pz[b], d);
+            r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+            if (r2 >= cut2) continue;
+            r = sqrt(r2);
+            if (r < 1e-12 * sg) { /* no direction: counted, no force */
+                ++coinc;
+                continue;
+            }
+            if (fc) {
+                double wd = r <= sg ? -2.0 * A * (rc - sg) : 2.0 * A * (r - rc);
+                fr = -cfh * (mua + w->pmu[b]) * wd / r;
+            }
+            if (tr) {
+                int lo = a < b ? a : b, hi = a < b ? b : a, k = hcbd__hc_find(w, lo, hi);
+                if (k >= 0) {
+                    double u = 1.0 - r / rc;
+                    ft = alpha * (w->pair_l[lo * cap + k] - u * u) * (-2.0 * u / rc) / r;
+                }
+            }
+            F[0] += (fr + ft) * d[0];
+            F[1] += (fr + ft) * d[1];
+            F[2] += (fr + ft) * d[2];
+            if (stress) {
+                sc += 0.5 * d[1] * fr * d[0];
+                st += 0.5 * d[1] * ft * d[0];
+            }
+        }
+        w->pFx[a] = (hcbd_real)F[0];
+        w->pFy[a] = (hcbd_real)F[1];
+        w->pFz[a] = (hcbd_real)F[2];
+        if (stress) {
+            w->ps[3 * a] = sc;
+            w->ps[3 * a + 1] = st;
+        }
+    }
+    w->n_coincident += coinc;
+}
+
+/* Interpolated fluid velocity and drift velocity of every polymer (MODEL 7).
+   Relative to the first neighbour's velocity, so a uniform flow is
+   reproduced bit for bit.  Returns the first polymer with no fluid blob
+   within rc, or -1. */
+static int hcbd__hc_interp(hcbd_hc_world *w)
+{
+    const int n = w->np, nt = w->p.threads, shep = w->p.coupling == HCBD_COUPLE_SHEPARD;
+    const int stress = w->stress_on;
+    const double rc = w->p.rc, sg = w->p.sigma, cut2 = rc * rc, A = hcbd__rapid_A(sg, rc);
+    const double inv_xi = 1.0 / w->p.xi, vj = w->le_vjump;
+    const hcbd__box box = hcbd__hc_box(w);
+    int a, bad = INT_MAX;
+    (void)nt;
+    HCBD__OMP(omp parallel for num_threads(nt) schedule(static) reduction(min:bad))
+    for (a = 0; a < n; ++a) {
+        const double xa = w->px[a], ya = w->py[a], za = w->pz[a];
+        double S = 0, dv[3] = {0, 0, 0}, vref[3] = {0, 0, 0}, ydy = 0, v[3];
+        const int c = hcbd__grid_cell(&w->gf, w->p.L, xa, ya, za);
+        int i, first = 1;
+        HCBD__NEAR(&w->gf, c, i) {
+            double d[3], r2, r, wt, u[3];
+            int k = hcbd__delta_box(&box, xa - w->fx[i], ya - w->fy[i], za - w->fz[i], d);
+            r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+            if (r2 >= cut2) continue;
+            r = sqrt(r2);
+            wt = (r <= sg ? A * (rc - sg) * (rc + sg - 2.0 * r) : A * (r - rc) * (r - rc)) / w->fn[i];
+            /* the image of blob i moves with the velocity of its layer */
+            u[0] = w->fvx[i] + k * vj;
+            u[1] = w->fvy[i];
+            u[2] = w->fvz[i];
+            if (first) {
+                vref[0] = u[0]; vref[1] = u[1]; vref[2] = u[2];
+                first = 0;
+            }
+            S += wt;
+            dv[0] += wt * (u[0] - vref[0]);
+            dv[1] += wt * (u[1] - vref[1]);
+            dv[2] += wt * (u[2] - vref[2]);
+            ydy -= wt * d[1];
+        }
+        if (!(S > 0)) {
+            if (a < bad) bad = a;
+            S = 1;
+        }
+        if (shep) {
+            v[0] = vref[0] + dv[0] / S; v[1] = vref[1] + dv[1] / S; v[2] = vref[2] + dv[2] / S;
+        } else {
+            v[0] = S * vref[0] + dv[0]; v[1] = S * vref[1] + dv[1]; v[2] = S * vref[2] + dv[2];
+        }
+        w->pS[a] = (hcbd_real)(shep ? S : 1.0);
+        w->pux[a] = (hcbd_real)(v[0] + w->pFx[a] * inv_xi);
+        w->puy[a] = (hcbd_real)(v[1] + w->pFy[a] * inv_xi);
+        w->puz[a] = (hcbd_real)(v[2] + w->pFz[a] * inv_xi);
+        if (stress) w->ps[3 * a + 2] = ydy / (shep ? S : 1.0) * w->pFx[a];
+    }
+    return bad == INT_MAX ? -1 : bad;
+}
+
+/* Polymer forces redistributed onto the fluid blobs with the same psi. */
+static void hcbd__hc_redistribute(hcbd_hc_world *w)
+{
+    const int n = w->nf, nt = w->p.threads;
+    const double rc = w->p.rc, sg = w->p.sigma, cut2 = rc * rc, A = hcbd__rapid_A(sg, rc);
+    const hcbd__box box = hcbd__hc_box(w);
+    int i;
+    (void)nt;
+    HCBD__OMP(omp parallel for num_threads(nt) schedule(static))
+    for (i = 0; i < n; ++i) {
+        const double xi = w->fx[i], yi = w->fy[i], zi = w->fz[i];
+        double F[3] = {0, 0, 0};
+        const int c = hcbd__grid_cell(&w->gp, w->p.L, xi, yi, zi);
+        int a;
+        HCBD__NEAR(&w->gp, c, a) {
+            double d[3], r2, r, psi;
+            hcbd__delta_box(&box, w->px[a] - xi, w->py[a] - yi, w->pz[a] - zi, d);
+            r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+            if (r2 >= cut2) continue;
+            r = sqrt(r2);
+            psi = (r <= sg ? A * (rc - sg) * (rc + sg - 2.0 * r) : A * (r - rc) * (r - rc)) /
+                  w->fn[i] / w->pS[a];
+            F[0] += psi * w->pFx[a];
+            F[1] += psi * w->pFy[a];
+            F[2] += psi * w->pFz[a];
+        }
+        w->fax[i] = (hcbd_real)F[0];
+        w->fay[i] = (hcbd_real)F[1];
+        w->faz[i] = (hcbd_real)F[2];
+    }
+}
+
+/* Fluid velocities of t + dt (MODEL 6) into the scratch velocities. */
+static void hcbd__hc_fluid_kick(hcbd_hc_world *w)
+{
+    const int n = w->nf, nt = w->p.threads, noise = w->noise_f, stress = w->stress_on;
+    const int rp = w->p.reverse_poiseuille;
+    const double h = w->p.h, cut2 = 4.0 * h * h, c1 = 1.0 / (4.0 * HCBD__PI * h * h * h * h);
+    const double two_eta = 2.0 * w->p.eta, dt = w->p.dt, dt_m = dt * w->inv_m;
+    const double sn = noise ? sqrt(2.0 * w->p.kT / dt) : 0.0, vj = w->le_vjump;
+    const double gx = w->p.g[0], gy = w->p.g[1], gz = w->p.g[2], half = 0.5 * w->p.L[1];
+    const uint64_t skey = hcbd__mix64(w->key_fpair ^ hcbd__mix64((uint64_t)w->step));
+    const hcbd__box box = hcbd__hc_box(w);
+    int i;
+    (void)nt;
+    HCBD__OMP(omp parallel for num_threads(nt) schedule(static))
+    for (i = 0; i < n; ++i) {
+        const double xi = w->fx[i], yi = w->fy[i], zi = w->fz[i];
+        const double vxi = w->fvx[i], vyi = w->fvy[i], vzi = w->fvz[i];
+        const double Pi = w->fPn2[i], ni = w->fn[i];
+        double F[3], sp = 0, sv = 0, sz = 0, sgn;
+        int j;
+        F[0] = w->fax[i]; F[1] = w->fay[i]; F[2] = w->faz[i];
+        HCBD__NEAR(&w->gf, w->fcell[i], j) {
+            double d[3], r2, r, q, a, wd, fp, f, Fv[3];
+            int k;
+            if (j == i) continue;
+            k = hcbd__delta_box(&box, xi - w->fx[j], yi - w->fy[j], zi - w->fz[j], d);
+            r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+            if (r2 >= cut2) continue;
+            r = sqrt(r2);
+            q = r / h;
+            a = 2.0 - q;
+            wd = q >= 1.0 ? -3.0 * c1 * a * a : c1 * (-3.0 * a * a + 12.0 * (1.0 - q) * (1.0 - q));
+            if (r > 0) {
+                /* -(P_i/n_i^2 + P_j/n_j^2) w' e_ij, and f_ij = -2 eta w'/(n_i n_j r) */
+                fp = -(Pi + w->fPn2[j]) * wd / r;
+                f = -two_eta * wd / (ni * w->fn[j] * r);
+            } else {
+                fp = 0;
+                f = two_eta * 3.0 * c1 / (h * ni * w->fn[j]); /* the r -> 0 limit */
+            }
+            Fv[0] = -f * (vxi - (w->fvx[j] + k * vj));
+            Fv[1] = -f * (vyi - w->fvy[j]);
+            Fv[2] = -f * (vzi - w->fvz[j]);
+            F[0] += fp * d[0] + Fv[0];
+            F[1] += fp * d[1] + Fv[1];
+            F[2] += fp * d[2] + Fv[2];
+            if (stress) {
+                sp += 0.5 * d[1] * fp * d[0];
+                sv += 0.5 * d[1] * Fv[0];
+            }
+            if (noise) {
+                /* dp = sqrt(2 kT f_ij dt) zeta_ij on i, minus on j (2018 eq. 18-19) */
+                double z[3], s;
+                hcbd__gen g;
+                g.xo = NULL;
+                g.sm = hcbd__pair_key(skey, i, j);
+                z[0] = hcbd__normal(w->zig, &g);
+                z[1] = hcbd__normal(w->zig, &g);
+                z[2] = hcbd__normal(w->zig, &g);
+                s = (i < j ? sn : -sn) * sqrt(f);
+                F[0] += s * z[0];
+                F[1] += s * z[1];
+                F[2] += s * z[2];
+                if (stress) sz += 0.5 * d[1] * s * z[0];
+            }
+        }
+        sgn = rp ? (yi >= half ? 1.0 : -1.0) : 1.0;
+        w->nvx[i] = (hcbd_real)(vxi + dt_m * F[0] + sgn * gx * dt);
+        w->nvy[i] = (hcbd_real)(vyi + dt_m * F[1] + sgn * gy * dt);
+        w->nvz[i] = (hcbd_real)(vzi + dt_m * F[2] + sgn * gz * dt);
+        if (stress) {
+            w->fs[3 * i] = sp;
+            w->fs[3 * i + 1] = sv;
+            w->fs[3 * i + 2] = sz;
+        }
+    }
+}
+
+/* Exact Ornstein-Uhlenbeck update of the pair variables over dt with
+   lambda_eq held at its value of t: the equilibrium variance is kT/alpha
+   for any dt/tau_lambda (Euler-Maruyama, the paper's, agrees to first
+   order and is biased when a quick run shortens tau_lambda). */
+static void hcbd__hc_lambda_update(hcbd_hc_world *w)
+{
+    const int n = w->np, nt = w->p.threads, noise = w->noise_p;
+    const double e = exp(-w->p.dt / w->p.tau_lambda);
+    const double s = noise ? sqrt(w->p.kT / w->p.alpha * -expm1(-2.0 * w->p.dt / w->p.tau_lambda)) : 0.0;
+    const uint64_t skey = hcbd__mix64(w->key_lambda ^ hcbd__mix64((uint64_t)w->step));
+    const size_t cap = (size_t)w->pair_cap;
+    int a;
+    (void)nt;
+    HCBD__OMP(omp parallel for num_threads(nt) schedule(static))
+    for (a = 0; a < n; ++a) {
+        hcbd_real *l = w->pair_l + a * cap;
+        const hcbd_real *eq = w->pair_eq + a * cap;
+        const int32_t *b = w->pair_b + a * cap;
+        int k;
+        for (k = 0; k < w->pair_n[a]; ++k) {
+            double x = eq[k] + (l[k] - eq[k]) * e;
+            if (noise) {
+                hcbd__gen g;
+                g.xo = NULL;
+                g.sm = hcbd__pair_key(skey, a, b[k]);
+                x += s * hcbd__normal(w->zig, &g);
+            }
+            l[k] = (hcbd_real)x;
+        }
+    }
+}
+
+/* Moves a particle by dr with periodic and Lees-Edwards wrapping; returns
+   the image crossing in y (+1 up, -1 down, 0). */
+static inline int hcbd__hc_move(const hcbd_hc_world *w, double s_new, double *x, double *y,
+                                double *z)
+{
+    const double *L = w->p.L;
+    int k = 0;
+    if (*y >= L[1]) { *y -= L[1]; k = 1; }
+    else if (*y < 0) { *y += L[1]; k = -1; }
+    if (*y >= L[1] || *y < 0) *y = 0; /* round-off of y - L */
+    if (k && w->le_on) *x -= k * s_new;
+    *x -= L[0] * floor(*x / L[0]);
+    if (*x >= L[0]) *x = 0;
+    *z -= L[2] * floor(*z / L[2]);
+    if (*z >= L[2]) *z = 0;
+    return k;
+}
+
+/* Kick-drift: the velocities of t + dt move the blobs (symplectic Euler).
+   For the reversible pressure forces it keeps phase-space volume, so sound
+   waves neither grow nor decay from the integrator; drifting with the old
+   velocities (explicit Euler) amplifies them every step. */
+static int hcbd__hc_drift(hcbd_hc_world *w, int *why)
+{
+    const int nf = w->nf, np = w->np, nt = w->p.threads, noise = w->noise_p;
+    const double dt = w->p.dt, lim_f = 0.5 * w->p.h, lim_p = 0.25 * w->p.rc, vj = w->le_vjump;
+    const double sdr = sqrt(2.0 * w->p.kT * dt / w->p.xi);
+    const double s_new = fmod(w->le_offset + w->p.gdot * w->p.L[1] * dt, w->p.L[0]);
+    const uint64_t skey = hcbd__mix64(w->key_poly ^ hcbd__mix64((uint64_t)w->step));
+    int i, bad_f = INT_MAX, bad_p = INT_MAX, nan_f = INT_MAX, nan_p = INT_MAX;
+    (void)nt;
+    HCBD__OMP(omp parallel for num_threads(nt) schedule(static) reduction(min:bad_f) reduction(min:nan_f))
+    for (i = 0; i < nf; ++i) {
+        double v[3], x, y, z;
+        int k;
+        v[0] = w->nvx[i]; v[1] = w->nvy[i]; v[2] = w->nvz[i];
+        if (!(isfinite(v[0]) && isfinite(v[1]) && isfinite(v[2]))) {
+            if (i < nan_f) nan_f = i;
+            continue;
+        }
+        if ((v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) * dt * dt > lim_f * lim_f && i < bad_f)
+            bad_f = i;
+        x = w->fx[i] + v[0] * dt;
+        y = w->fy[i] + v[1] * dt;
+        z = w->fz[i] + v[2] * dt;
+        k = hcbd__hc_move(w, s_new, &x, &y, &z);
+        w->fx[i] = (hcbd_real)x;
+        w->fy[i] = (hcbd_real)y;
+        w->fz[i] = (hcbd_real)z;
+        w->fvx[i] = (hcbd_real)(v[0] - k * vj);
+        w->fvy[i] = (hcbd_real)v[1];
+        w->fvz[i] = (hcbd_real)v[2];
+    }
+    HCBD__OMP(omp parallel for num_threads(nt) schedule(static) reduction(min:bad_p) reduction(min:nan_p))
+    for (i = 0; i < np; ++i) {
+        double dr[3], x, y, z;
+        dr[0] = w->pux[i] * dt;
+        dr[1] = w->puy[i] * dt;
+        dr[2] = w->puz[i] * dt;
+        if (noise) {
+            hcbd__gen g;
+            g.xo = NULL;
+            g.sm = hcbd__mix64(skey ^ (uint64_t)(uint32_t)i);
+            dr[0] += sdr * hcbd__normal(w->zig, &g);
+            dr[1] += sdr * hcbd__normal(w->zig, &g);
+            dr[2] += sdr * hcbd__normal(w->zig, &g);
+        }
+        if (!(isfinite(dr[0]) && isfinite(dr[1]) && isfinite(dr[2]))) {
+            if (i < nan_p) nan_p = i;
+            continue;
+        }
+        if (dr[0] * dr[0] + dr[1] * dr[1] + dr[2] * dr[2] > lim_p * lim_p && i < bad_p) bad_p = i;
+        x = w->px[i] + dr[0];
+        y = w->py[i] + dr[1];
+        z = w->pz[i] + dr[2];
+        hcbd__hc_move(w, s_new, &x, &y, &z);
+        w->px[i] = (hcbd_real)x;
+        w->py[i] = (hcbd_real)y;
+        w->pz[i] = (hcbd_real)z;
+    }
+    w->le_offset = s_new;
+    if (nan_f != INT_MAX) { *why = 0; return nan_f; }
+    if (nan_p != INT_MAX) { *why = 1; return nan_p; }
+    if (bad_f != INT_MAX) { *why = 2; return bad_f; }
+    if (bad_p != INT_MAX) { *why = 3; return bad_p; }
+    return -1;
+}
+
+/* Densities, pairs, forces and the coupling at the present positions. */
+static hcbd_result hcbd__hc_prepare(hcbd_hc_world *w, int64_t step)
+{
+    int bad, need = 0;
+    hcbd__grid_build(&w->gf, w->p.L, w->nf, w->fx, w->fy, w->fz, w->fcell);
+    hcbd__grid_build(&w->gp, w->p.L, w->np, w->px, w->py, w->pz, w->pcell);
+    hcbd__hc_fluid_density(w);
+    if (w->np > 0) {
+        bad = hcbd__hc_poly_density(w);
+        if (bad >= 0)
+            return hcbd__fail(&w->err, HCBD_ERR_PARAM, step, bad,
+                              "polymer %d: volume fraction phi = n/n_max = %.17g >= 1 "
+                              "(Flory-Huggins needs phi < 1)", bad, w->pn[bad] / w->p.n_max);
+        if (w->transient) {
+            bad = hcbd__hc_pairs(w, &need);
+            if (bad >= 0)
+                return hcbd__fail(&w->err, HCBD_ERR_CAPACITY, step, bad,
+                                  "polymer %d has %d transient partners of higher id, more "
+                                  "than pair_capacity %d", bad, need, w->pair_cap);
+        }
+        hcbd__hc_poly_forces(w);
+        bad = hcbd__hc_interp(w);
+        if (bad >= 0)
+            return hcbd__fail(&w->err, HCBD_ERR_PARAM, step, bad,
+                              "polymer %d at (%g, %g, %g) has no fluid blob within rc = %g",
+                              bad, (double)w->px[bad], (double)w->py[bad], (double)w->pz[bad],
+                              w->p.rc);
+        hcbd__hc_redistribute(w);
+    } else {
+        memset(w->fax, 0, (size_t)w->nf * sizeof(hcbd_real));
+        memset(w->fay, 0, (size_t)w->nf * sizeof(hcbd_real));
+        memset(w->faz, 0, (size_t)w->nf * sizeof(hcbd_real));
+    }
+    w->ready = 1;
+    return HCBD_OK;
+}
+
+hcbd_result hcbd_hc_refresh(hcbd_hc_world *w)
+{
+    if (!w) return HCBD_ERR_NULL;
+    if (w->nf < 2) return hcbd__fail(&w->err, HCBD_ERR_STATE, -1, -1, "no fluid blobs set");
+    return hcbd__hc_prepare(w, -1);
+}
+
+static void hcbd__hc_stress_add(hcbd_hc_world *w)
+{
+    double s[HCBD_HC_NSTRESS] = {0}, inv_V = 1.0 / (w->p.L[0] * w->p.L[1] * w->p.L[2]);
+    int i, k;
+    for (i = 0; i < w->nf; ++i) {
+        double ux = w->fvx[i] - w->p.gdot * (w->fy[i] - 0.5 * w->p.L[1]);
+        s[HCBD_HC_S_KINETIC] += w->m * ux * w->fvy[i];
+        s[HCBD_HC_S_PRESSURE] += w->fs[3 * i];
+        s[HCBD_HC_S_VISCOUS] += w->fs[3 * i + 1];
+        s[HCBD_HC_S_NOISE] += w->fs[3 * i + 2];
+    }
+    for (i = 0; i < w->np; ++i) {
+        s[HCBD_HC_S_CONSERVATIVE] += w->ps[3 * i];
+        s[HCBD_HC_S_TRANSIENT] += w->ps[3 * i + 1];
+        s[HCBD_HC_S_INTERACTION] += w->ps[3 * i + 2];
+    }
+    s[HCBD_HC_S_FLUID] = s[0] + s[1] + s[2] + s[3];
+    s[HCBD_HC_S_POLYMER] = s[5] + s[6];
+    s[HCBD_HC_S_TOTAL] = s[HCBD_HC_S_FLUID] + s[HCBD_HC_S_POLYMER] + s[HCBD_HC_S_INTERACTION];
+    for (k = 0; k < HCBD_HC_NSTRESS; ++k) w->stress_sum[k] -= s[k] * inv_V;
+    w->stress_steps++;
+}
+
+hcbd_result hcbd_hc_step(hcbd_hc_world *w, int nsteps)
+{
+    static const char *why_s[4] = {"fluid velocity is not finite",
+                                   "polymer displacement is not finite",
+                                   "fluid blob moved more than h/2 in one step",
+                                   "polymer moved more than rc/4 in one step"};
+    int s;
+    if (!w) return HCBD_ERR_NULL;
+    hcbd__clear(&w->err);
+    if (w->nf < 2) return hcbd__fail(&w->err, HCBD_ERR_STATE, -1, -1, "no fluid blobs set");
+    if (nsteps < 0)
+        return hcbd__fail(&w->err, HCBD_ERR_PARAM, -1, -1, "nsteps = %d is negative", nsteps);
+    for (s = 0; s < nsteps; ++s) {
+        hcbd_result r;
+        int bad, why = 0, i;
+        if (!w->ready && (r = hcbd__hc_prepare(w, w->step)) != HCBD_OK) return r;
+        for (i = 0; i < w->nf; ++i) {
+            double x = w->fn[i] / w->p.nbar;
+            if (!(x > 1.0 / 3.0 && x < 3.0))
+                return hcbd__fail(&w->err, HCBD_ERR_UNSTABLE, w->step, i,
+                                  "fluid blob %d: density n/nbar = %g is outside (1/3, 3): "
+                                  "dt too long for the sound speed or the flow", i, x);
+        }
+        hcbd__hc_fluid_kick(w);
+        if (w->stress_on) hcbd__hc_stress_add(w);
+        if (w->transient && w->np > 0) hcbd__hc_lambda_update(w);
+        bad = hcbd__hc_drift(w, &why);
+        w->step++;
+        w->ready = 0;
+        if (bad >= 0)
+            return hcbd__fail(&w->err, why < 2 ? HCBD_ERR_NONFINITE : HCBD_ERR_UNSTABLE,
+                              w->step, bad, "%s (id %d, dt = %g)", why_s[why], bad, w->p.dt);
+    }
+    if (!w->ready) return hcbd__hc_prepare(w, w->step);
+    return HCBD_OK;
+}
+
+/* >>HCBD: observables */
+static int hcbd__hc_pair_slot(const hcbd_hc_world *w, int a, int b, int *lo)
+{
+    if (!w->transient || a < 0 || b < 0 || a >= w->np || b >= w->np || a == b) return -1;
+    *lo = a < b ? a : b;
+    return hcbd__hc_find(w, *lo, a < b ? b : a);
+}
+
+hcbd_result hcbd_hc_lambda(const hcbd_hc_world *w, int a, int b, double *lambda)
+{
+    int lo, k;
+    if (!w || !lambda) return HCBD_ERR_NULL;
+    k = hcbd__hc_pair_slot(w, a, b, &lo);
+    if (k < 0) return HCBD_ERR_STATE;
+    *lambda = w->pair_l[(size_t)lo * w->pair_cap + k];
+    return HCBD_OK;
+}
+
+hcbd_result hcbd_hc_set_lambda(hcbd_hc_world *w, int a, int b, double lambda)
+{
+    int lo, k;
+    if (!w) return HCBD_ERR_NULL;
+    if (!isfinite(lambda))
+        return hcbd__fail(&w->err, HCBD_ERR_NONFINITE, -1, a, "lambda = %g is not finite", lambda);
+    k = hcbd__hc_pair_slot(w, a, b, &lo);
+    if (k < 0)
+        return hcbd__fail(&w->err, HCBD_ERR_STATE, -1, a,
+                          "polymers %d and %d have no pair variable", a, b);
+    w->pair_l[(size_t)lo * w->pair_cap + k] = (hcbd_real)lambda;
+    w->ready = 0;
+    return hcbd_hc_refresh(w);
+}
+
+double hcbd_hc_temperature(const hcbd_hc_world *w)
+{
+    double mean[3] = {0, 0, 0}, s = 0;
+    int i;
+    if (!w || w->nf < 2) return 0.0;
+    for (i = 0; i < w->nf; ++i) {
+        mean[0] += w->fvx[i] - w->p.gdot * (w->fy[i] - 0.5 * w->p.L[1]);
+        mean[1] += w->fvy[i];
+        mean[2] += w->fvz[i];
+    }
+    for (i = 0; i < 3; ++i) mean[i] /= w->nf;
+    for (i = 0; i < w->nf; ++i) {
+        double u0 = w->fvx[i] - w->p.gdot * (w->fy[i] - 0.5 * w->p.L[1]) - mean[0];
+        double u1 = w->fvy[i] - mean[1], u2 = w->fvz[i] - mean[2];
+        s += u0 * u0 + u1 * u1 + u2 * u2;
+    }
+    return w->m * s / (3.0 * (w->nf - 1));
+}
+
+void hcbd_hc_momentum(const hcbd_hc_world *w, double p[3])
+{
+    int i;
+    if (!p) return;
+    p[0] = p[1] = p[2] = 0.0;
+    if (!w) return;
+    for (i = 0; i < w->nf; ++i) {
+        p[0] += w->m * w->fvx[i];
+        p[1] += w->m * w->fvy[i];
+        p[2] += w->m * w->fvz[i];
+    }
+}
+
+hcbd_result hcbd_hc_transverse_current(const hcbd_hc_world *w, int nk, double out[12])
+{
+    int i, k, d;
+    if (!w || !out) return HCBD_ERR_NULL;
+    for (k = 0; k < 12; ++k) out[k] = 0.0;
+    for (i = 0; i < w->nf; ++i) {
+        double r[3], v[3];
+        r[0] = w->fx[i]; r[1] = w->fy[i]; r[2] = w->fz[i];
+        v[0] = w->fvx[i]; v[1] = w->fvy[i]; v[2] = w->fvz[i];
+        for (d = 0; d < 3; ++d) {
+            double ph = 2.0 * HCBD__PI * nk * r[d] / w->p.L[d];
+            double c = cos(ph), s = -sin(ph);
+            int a1 = (d + 1) % 3, a2 = (d + 2) % 3;
+            out[4 * d + 0] += v[a1] * c;
+            out[4 * d + 1] += v[a1] * s;
+            out[4 * d + 2] += v[a2] * c;
+            out[4 * d + 3] += v[a2] * s;
+        }
+    }
+    return HCBD_OK;
+}
+
+double hcbd_hc_polymer_energy(const hcbd_hc_world *w)
+{
+    double e = 0.0, et = 0.0;
+    int a, k;
+    if (!w || !w->ready) return NAN;
+    if (w->has_fc)
+        for (a = 0; a < w->np; ++a) e += hcbd_flory_g1(w->pn[a] / w->p.n_max, w->p.chi);
+    e *= w->p.p_kuhn * w->p.kT;
+    for (a = 0; a < w->np && w->transient; ++a)
+        for (k = 0; k < w->pair_n[a]; ++k) {
+            double u = w->pair_l[(size_t)a * w->pair_cap + k] - w->pair_eq[(size_t)a * w->pair_cap + k];
+            et += u * u;
+        }
+    return e + 0.5 * w->p.alpha * et;
+}
+
+hcbd_result hcbd_hc_density_range(const hcbd_hc_world *w, double out[3])
+{
+    int i;
+    if (!w || !out) return HCBD_ERR_NULL;
+    if (!w->ready || w->nf < 1) return HCBD_ERR_STATE;
+    out[0] = out[1] = w->fn[0] / w->p.nbar;
+    out[2] = w->fP[0];
+    for (i = 1; i < w->nf; ++i) {
+        double x = w->fn[i] / w->p.nbar;
+        if (x < out[0]) out[0] = x;
+        if (x > out[1]) out[1] = x;
+        if (w->fP[i] < out[2]) out[2] = w->fP[i];
+    }
+    return HCBD_OK;
+}
+
+hcbd_result hcbd_hc_stress_enable(hcbd_hc_world *w, int on)
+{
+    int k;
+    if (!w) return HCBD_ERR_NULL;
+    w->stress_on = on != 0;
+    w->stress_steps = 0;
+    for (k = 0; k < HCBD_HC_NSTRESS; ++k) w->stress_sum[k] = 0.0;
+    w->ready = 0; /* the next step's passes must fill the accumulators */
+    return HCBD_OK;
+}
+
+hcbd_result hcbd_hc_stress_read(const hcbd_hc_world *w, double out[HCBD_HC_NSTRESS],
+                                int64_t *nsteps)
+{
+    int k;
+    if (!w || !out) return HCBD_ERR_NULL;
+    for (k = 0; k < HCBD_HC_NSTRESS; ++k)
+        out[k] = w->stress_steps ? w->stress_sum[k] / w->stress_steps : 0.0;
+    if (nsteps) *nsteps = w->stress_steps;
+    return HCBD_OK;
+}
+
+uint64_t hcbd_hc_state_checksum(const hcbd_hc_world *w)
+{
+    uint64_t h = 0xCBF29CE484222325ULL;
+    size_t R = sizeof(hcbd_real), nf, np;
+    int a;
+    if (!w) return 0;
+    nf = (size_t)w->nf;
+    np = (size_t)w->np;
+    h = hcbd__hash(h, &w->step, sizeof w->step);
+    h = hcbd__hash(h, &w->le_offset, sizeof w->le_offset);
+    h = hcbd__hash(h, w->fx, nf * R); h = hcbd__hash(h, w->fy, nf * R); h = hcbd__hash(h, w->fz, nf * R);
+    h = hcbd__hash(h, w->fvx, nf * R); h = hcbd__hash(h, w->fvy, nf * R); h = hcbd__hash(h, w->fvz, nf * R);
+    h = hcbd__hash(h, w->px, np * R); h = hcbd__hash(h, w->py, np * R); h = hcbd__hash(h, w->pz, np * R);
+    for (a = 0; a < w->np && w->transient; ++a) {
+        size_t o = (size_t)a * w->pair_cap, k = (size_t)w->pair_n[a];
+        h = hcbd__hash(h, &w->pair_n[a], sizeof(int32_t));
+        h = hcbd__hash(h, w->pair_b + o, k * sizeof(int32_t));
+        h = hcbd__hash(h, w->pair_l + o, k * R);
+    }
+    return h;
+}
+#endif /* HCBD_MODEL_HCBD */
+
+/* >>slabs */
+size_t hcbd_slabs_bytes(int nslab, int nval)
+{
+    if (nslab < 1 || nslab > (1 << 20) || nval < 0 || nval > 64) return 0;
+    return (size_t)nslab * (5 + 3 * (size_t)nval) * sizeof(double);
+}
+
+hcbd_result hcbd_slabs_init(hcbd_slabs *s, const double L[3], int nslab, int nval,
+                            int block, void *mem, size_t bytes)
+{
+    if (!s || !L || !mem) return HCBD_ERR_NULL;
+    memset(s, 0, sizeof *s);
+    if (!hcbd_slabs_bytes(nslab, nval) || block < 1) return HCBD_ERR_PARAM;
+    if (!(L[0] > 0 && L[1] > 0 && L[2] > 0)) return HCBD_ERR_PARAM;
+    if (bytes < hcbd_slabs_bytes(nslab, nval)) return HCBD_ERR_MEMORY;
+    s->nslab = nslab;
+    s->nval = nval;
+    s->block = block;
+    s->L[0] = L[0]; s->L[1] = L[1]; s->L[2] = L[2];
+    s->acc = (double *)mem;
+    s->stat = s->acc + (size_t)nslab * (1 + nval);
+    memset(mem, 0, hcbd_slabs_bytes(nslab, nval));
+    return HCBD_OK;
+}
+
+void hcbd_slabs_add(hcbd_slabs *s, double y, const double *vals)
+{
+    int k, c;
+    double *a;
+    if (!s || !s->acc || !isfinite(y)) return;
+    k = (int)floor(y / s->L[1] * s->nslab);
+    k = ((k % s->nslab) + s->nslab) % s->nslab;
+    a = s->acc + (size_t)k * (1 + s->nval);
+    a[0] += 1.0;
+    for (c = 0; c < s->nval && vals; ++c) a[1 + c] += vals[c];
+}
+
+/* stat per slab: [0] blocks with particles, [1] count sum, then sums and
+   squares of the block density and of each block mean */
+void hcbd_slabs_end_sample(hcbd_slabs *s)
+{
+    const int nv = s ? s->nval : 0, ns = 2 + 2 * (1 + nv);
+    int k, c;
+    if (!s || !s->acc || ++s->nsamp < s->block) return;
+    for (k = 0; k < s->nslab; ++k) {
+        double *a = s->acc + (size_t)k * (1 + nv), *t = s->stat + (size_t)k * ns;
+        double cnt = a[0], dens = cnt / (s->block * s->L[0] * s->L[1] * s->L[2] / s->nslab);
+        t[1] += cnt;
+        t[2] += dens;
+        t[3] += dens * dens;
+        if (cnt > 0) {
+            t[0] += 1.0;
+            for (c = 0; c < nv; ++c) {
+                double m = a[1 + c] / cnt;
+                t[4 + 2 * c] += m;
+                t[5 + 2 * c] += m * m;
+            }
+        }
+        for (c = 0; c <= nv; ++c) a[c] = 0.0;
+    }
+    s->nblocks++;
+    s->nsamp = 0;
+}
+
+int64_t hcbd_slabs_result(const hcbd_slabs *s, double *out)
+{
+    const int nv = s ? s->nval : 0, ns = 2 + 2 * (1 + nv), no = 3 + 2 * nv;
+    int k, c;
+    if (!s || !out || !s->stat) return 0;
+    for (k = 0; k < s->nslab; ++k) {
+        const double *t = s->stat + (size_t)k * ns;
+        double *o = out + (size_t)k * no;
+        o[0] = (k + 0.5) * s->L[1] / s->nslab;
+        hcbd__block_stat((double)s->nblocks, t[2], t[3], &o[1], &o[2]);
+        for (c = 0; c < nv; ++c) hcbd__block_stat(t[0], t[4 + 2 * c], t[5 + 2 * c], &o[3 + 2 * c], &o[4 + 2 * c]);
+    }
+    return s->nblocks;
 }
 
 #ifdef __cplusplus
