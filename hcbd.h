@@ -3393,7 +3393,7 @@ static hcbd_real hcbd__mu(hcbd_real phi, hcbd_real chi)
                                               : (hcbd_real)hcbd_flory_mu((double)phi, (double)chi);
 }
 
-/* g(phi) + 1 = (1/2 - chi) phi + sum_{k>=2} phi^k / (k (k-1)) */
+/* g(phi) + 1 = (1/2 - chi) phi + sum_{k>=2} phi^k / (k (k+1)) */
 double hcbd_flory_g1(double phi, double chi)
 {
     double s = 0, t = phi;
@@ -3403,7 +3403,7 @@ double hcbd_flory_g1(double phi, double chi)
     for (k = 2; k < 80; ++k) {
         double term;
         t *= phi;
-        term = t / ((double)k * (k - 1));
+        term = t / ((double)k * (k + 1));
         s += term;
         if (term < s * 1e-18) break;
     }

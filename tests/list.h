@@ -52,3 +52,18 @@ T(test_wall_determinism)
 T(test_wall_channel_flow)
 T(test_wall_penetration)
 #endif
+#if HCBD_MODEL == HCBD_MODEL_HCBD
+T(test_hc_kernels)
+T(test_hc_flory_huggins_mu)
+T(test_hc_polymer_forces_vs_energy)
+T(test_hc_lambda_statistics)
+T(test_hc_pair_lifecycle)
+T(test_hc_coupling_momentum)
+T(test_hc_uniform_flow)
+T(test_hc_lees_edwards_two_species)
+T(test_hc_determinism)
+T(test_hc_bad_inputs)
+T(test_hc_fluid_equipartition)
+T(test_hc_fluid_viscosity)
+T(test_hc_poiseuille_no_lag)
+#endif
