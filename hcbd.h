@@ -9,8 +9,10 @@
      with the corrections of Ahuja et al. 2016), and classical Brownian
      dynamics in the same kernel; Lees-Edwards shear and body forces; in
      the walled build solid walls (2016: artificial particles with Morris
-     no-slip velocities) for channel flow.  HCBD (2018) will build on the
-     same storage, neighbour search, random numbers and observables.
+     no-slip velocities) for channel flow; in the HCBD build the 2018 model:
+     Brownian polymer blobs with RaPiD pair variables coupled two-way to a
+     moving SPH fluid (hcbd_hc_*), on the same random numbers, Lees-Edwards
+     routine and observables.
 
    USAGE
      In exactly one C or C++ file:
@@ -26,8 +28,9 @@
                    artificial particles, Morris no-slip velocities, wall
                    repulsion or reflection).  The GI-BD build compiles no
                    wall code and rejects wall parameters.
-                   HCBD_MODEL_HCBD: not implemented yet; selecting it is a
-                   compile-time error, not a stub.
+                   HCBD_MODEL_HCBD: the GI-BD API plus the 2018 model, a
+                   world of SPH fluid blobs and RaPiD polymer blobs
+                   (hcbd_hc_world, hcbd_hc_step; no wall code).
      HCBD_REAL     double (default) or float: storage and pair arithmetic.
                    Conservation sums and observables are accumulated in
                    double either way.
