@@ -520,7 +520,8 @@ typedef struct hcbd_hc_params {
     double h;             /* M4 support; fluid pairs interact within 2h     */
     int fluctuations;     /* 1: pairwise thermal noise (2018 eq. 18-19)     */
     double g[3];          /* body force per unit mass on fluid blobs        */
-    int reverse_poiseuille; /* 1: g acts as +g where y >= L/2, -g below   */
+    int reverse_poiseuille; /* 1: g acts as +g where y >= L/2, -g below,
+                             less the mean over blobs (no net force)     */
     double gdot;          /* Lees-Edwards shear rate (flow x, gradient y)   */
     /* polymer blobs (MODEL 7, 8) */
     double xi;            /* friction against the fluid                     */
@@ -633,7 +634,8 @@ void hcbd_hc_world_destroy(hcbd_hc_world *w);
 hcbd_result hcbd_hc_set_fluid(hcbd_hc_world *w, int n, const double *xyz, const double *v);
 /* n fluid blobs on a simple orthorhombic lattice with spacings as even as
    the box allows and at least n sites (n spread evenly over them: exactly
-   uniform when n fills the lattice), v as for NULL. */
+   uniform when n fills the lattice; otherwise the vacancies relax slowly),
+   rows in y a quarter spacing off centre; v as for NULL. */
 hcbd_result hcbd_hc_place_fluid_lattice(hcbd_hc_world *w, int n);
 /* Polymer blobs with ids 0..n-1 (n may be 0).  Every polymer needs a fluid
    blob within rc and phi < 1: set the fluid first. */
@@ -3863,7 +3865,8 @@ hcbd_result hcbd_hc_place_fluid_lattice(hcbd_hc_world *w, int n)
     if (!w) return HCBD_ERR_NULL;
     if ((r = hcbd__hc_fluid_n(w, n)) != HCBD_OK) return r;
     /* spacing as even as the box allows, then more sites along the axis
-       with the widest spacing until n fit */
+       with the widest spacing until n fit; rows in y sit a quarter spacing
+       off centre so none lies on y = L/2, where reverse Poiseuille flips */
     a = cbrt(w->p.L[0] * w->p.L[1] * w->p.L[2] / n);
     for (d = 0; d < 3; ++d) {
         k[d] = (int)floor(w->p.L[d] / a + 0.5);
@@ -3879,7 +3882,7 @@ hcbd_result hcbd_hc_place_fluid_lattice(hcbd_hc_world *w, int n)
         /* n of the sites, spread evenly */
         int64_t site = (int64_t)i * k[0] * k[1] * k[2] / n;
         w->fx[i] = (hcbd_real)(((double)(site % k[0]) + 0.5) * w->p.L[0] / k[0]);
-        w->fy[i] = (hcbd_real)(((double)(site / k[0] % k[1]) + 0.5) * w->p.L[1] / k[1]);
+        w->fy[i] = (hcbd_real)(((double)(site / k[0] % k[1]) + 0.75) * w->p.L[1] / k[1]);
         w->fz[i] = (hcbd_real)(((double)(site / ((int64_t)k[0] * k[1])) + 0.5) * w->p.L[2] / k[2]);
     }
     return hcbd__hc_fluid_finish(w, n, NULL);
@@ -4314,8 +4317,15 @@ static void hcbd__hc_fluid_kick(hcbd_hc_world *w)
     const double gx = w->p.g[0], gy = w->p.g[1], gz = w->p.g[2], half = 0.5 * w->p.L[1];
     const uint64_t skey = hcbd__mix64(w->key_fpair ^ hcbd__mix64((uint64_t)w->step));
     const hcbd__box box = hcbd__hc_box(w);
+    double gmean = 0;
     int i;
     (void)nt;
+    if (rp) {
+        /* halves holding different numbers of blobs would get a net force
+           and the whole fluid would drift: remove the mean */
+        for (i = 0; i < n; ++i) gmean += w->fy[i] >= half ? 1.0 : -1.0;
+        gmean /= n;
+    }
     HCBD__OMP(omp parallel for num_threads(nt) schedule(static))
     for (i = 0; i < n; ++i) {
         const double xi = w->fx[i], yi = w->fy[i], zi = w->fz[i];
@@ -4369,7 +4379,7 @@ static void hcbd__hc_fluid_kick(hcbd_hc_world *w)
                 if (stress) sz += 0.5 * d[1] * s * z[0];
             }
         }
-        sgn = rp ? (yi >= half ? 1.0 : -1.0) : 1.0;
+        sgn = rp ? (yi >= half ? 1.0 : -1.0) - gmean : 1.0;
         w->nvx[i] = (hcbd_real)(vxi + dt_m * F[0] + sgn * gx * dt);
         w->nvy[i] = (hcbd_real)(vyi + dt_m * F[1] + sgn * gy * dt);
         w->nvz[i] = (hcbd_real)(vzi + dt_m * F[2] + sgn * gz * dt);

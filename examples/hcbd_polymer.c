@@ -1,0 +1,1004 @@
+/* hcbd_polymer: polymer solutions in HCBD (Ahuja et al. 2018, sec. IV B,
+   Figs. 4-6): RaPiD polymer blobs coupled two-way to the SPH fluid of
+   Table I, at C1 = 2.5 C* and C2 = 5 C* (C* = 3 / (4 pi sigma^3), one
+   polymer blob per sphere of radius sigma; C* = nbar in Table I).
+
+   Units: Table I is given in SI; the run works in reduced units (length
+   sigma, energy kT, time time_unit, default 1 us so dt = 1) and prints
+   both, with every value that differs from Table I marked.  As in the
+   paper the fluid carries no thermal fluctuations once polymers are
+   present; the polymers and their pair variables keep kT = 1.  The fluid
+   blobs start on a lattice (nbar V of them), the polymers at random.
+
+   For each concentration:
+     Fig. 4  Lees-Edwards flow curve, eta = S_yx / gdot split into the fluid
+             (kinetic, pressure, viscous), polymer (Flory-Huggins +
+             transient pairs) and interaction (coupling) parts, with block
+             errors; Carreau fit of the total with eta_inf fixed at the
+             fluid's eta (2018 eq. 36)                         flowcurve.csv
+     Fig. 5  reverse Poiseuille (+g above L/2, -g below): slab profiles of
+             the fluid velocity v_x and the polymer drift velocity u_x =
+             v(r_a) + F_a/xi (whose mean is the polymers' mean velocity)
+             against the Newtonian profile with the zero-shear viscosity,
+             (g / 2 nu0) y' (L/2 - y') per half (MODEL.md 10), and against
+             the Carreau fluid of the fit (the paper's COMSOL curve).  g is
+             chosen so that the stress at the edges of the halves equals the
+             one measured at the fastest shear rate: the profile then spans
+             the measured flow curve                         profile_C<C>.csv
+     Fig. 6  the same run: densities of both species across y over their
+             mean, from the per-particle kernel densities (n_i with M4, n_a
+             with W-RaPiD, as the paper normalises them) and from counts;
+             the shear rate is largest at y = 0 and L/2, zero at L/4, 3L/4
+   and one short equilibrium run (no shear, no body force) at the highest
+   concentration measures the drift of the total momentum.
+
+   Without fluctuations the fluid blobs flow in laminar sheets and keep the
+   rows of their start lattice (~1.6 sigma apart): a slab between rows
+   holds a few strays, so the fluid's velocity profile is read only from
+   slabs with at least half the mean count (fluid_slabs_populated; the
+   centre velocity is the fastest of them in each half), and the depletion
+   compares the high-shear half of the box (within Ly/8 of y = 0,
+   L/2) with the low-shear half.  A lattice row lying on a plane where g
+   flips would tear into two sheets sliding past each other, so the
+   reverse-Poiseuille box is stretched along y by whole rows until no row
+   lies on y = 0 or L/2 (8 sigma: 5 rows, one on L/2; 9.6 sigma: 6 rows).
+
+   The quick preset cannot use the paper's tau_lambda = 1 s (10^6 steps:
+   a flow curve would take days).  It shortens tau_lambda to 200 us and
+   scales alpha by the same factor as tau_lambda shrinks (the polymer
+   viscosity goes as alpha tau_lambda, and the polymer slip F/(xi gdot L)
+   at a given Weissenberg number gdot tau_lambda is unchanged); it raises
+   P0 (c_s = 2 m/s, dt = 0.8 dt_sound) so that the shear rates that reach
+   gdot tau_lambda = 2 stay at Mach gdot Ly / c_s <= 0.2; and it uses an
+   8^3 sigma box.  Each run lasts 3 tau_lambda, of which the last one is
+   measured: the stress settles only roughly (startup_rise_lowest_rate:
+   how much the stress still rose over the measured window at the lowest
+   rate; rp_center_change: the same for the reverse-Poiseuille centre
+   velocity), and the block errors, from blocks shorter than tau_lambda,
+   are too small.  preset=paper keeps Table I (10^6-step tau_lambda, box
+   10^3) and takes about a week on one core.
+
+   What to look for: shear thinning (eta falls once gdot tau_lambda ~ 1),
+   carried by the transient part of the polymer stress, stronger at C2;
+   the fluid part stays near eta (above it once the blobs disorder), the
+   interaction part is small.  In reverse Poiseuille the polymers follow
+   the fluid velocity interpolated at their positions closely (slip_max);
+   lag_max, against the blob velocities of the same slab, is larger: the
+   polymer profile is the kernel average over rc = 2.5 sigma of a fluid
+   resolved by ~3 rows per half, and it rounds off the turn of the profile
+   at the high-shear planes.  The profile is blunter than the parabola
+   (profile_fill above its Newtonian value) and, at the same force, faster
+   than the Newtonian eta0 profile (flattening > 1).  In the quick runs it
+   is faster even than the Carreau fluid of the flow curve
+   (flattening_carreau > 1): the velocity changes mostly between the rows
+   of blobs on either side of the high-shear planes, which the polymers
+   leave (polymer_depletion > 0, against the random start,
+   polymer_depletion_initial), so the flow is not the homogeneous shear of
+   the flow curve.  The fluid stays uniform.
+
+   Writes flowcurve.csv, profile_C<C>.csv, rp_start_C<C>.csv (centre
+   velocity against time) and plots.gp (flowcurve.png, velocity.png,
+   density.png, rp_start.png with gnuplot); a "# summary" block per
+   concentration and a final one on stdout. */
+#include "example_common.h"
+
+#include <limits.h>
+
+#define PI 3.14159265358979323846
+#define KB 1.380649e-23
+#define MAXC 4    /* concentrations */
+#define MAXG 16   /* shear rates */
+#define MAXB 20   /* blocks */
+#define MAXS 202  /* slabs */
+#define NCOMP 4   /* total, fluid, polymer, interaction */
+#define NTS 300   /* rows of the start-up series */
+
+static const char *comp_name[NCOMP] = {"total", "fluid", "polymer", "interaction"};
+static const int comp_index[NCOMP] = {HCBD_HC_S_TOTAL, HCBD_HC_S_FLUID, HCBD_HC_S_POLYMER,
+                                      HCBD_HC_S_INTERACTION};
+
+static struct {
+    double time_unit;         /* seconds per reduced time unit            */
+    double conc[MAXC];        /* polymer concentrations in C*            */
+    int nconc;
+    double gdot_si[MAXG];     /* shear rates, 1/s                         */
+    int ngdot;
+    double tau_si, alpha, P0_si, g_si, L[3];  /* alpha in kT; g_si 0: automatic */
+    int alpha_given;
+    int le_steps, rp_steps, eq_steps, nblk, nslab;
+} opt;
+
+/* Progress over all runs, reported at most every few seconds. */
+static struct {
+    config *c;
+    int64_t done, total;
+    struct timespec t0, last;
+} prog;
+
+/* Slab profile rows (hcbd_slabs_result): y, count density, its error,
+   then mean and error of each value. */
+enum { SF_V = 3, SF_N = 5, SF = 7,              /* fluid: v_x, n_i           */
+       SP_U = 3, SP_N = 5, SP_SLIP = 7, SP = 9, /* polymer: u_x, n_a, F_x/xi */
+       S0_N = 3, S0 = 5 };                      /* polymer at t = 0: n_a     */
+
+/* Depletion measures: 1 - (high-shear half) / (low-shear half). */
+enum { D_PCOUNT, D_PKERNEL, D_FKERNEL, ND };
+static const char *dep_name[ND] = {"polymer_depletion", "polymer_depletion_kernel",
+                                   "fluid_depletion_kernel"};
+
+typedef struct {
+    double C;                  /* in C* */
+    int np, np_rp;             /* polymers in the Lees-Edwards, reverse-Poiseuille box */
+    double eta[NCOMP][MAXG], err[NCOMP][MAXG], rise[MAXG];
+    int fitted;
+    double pc[3], pe[3], chi2; /* Carreau eta0, lambda, n */
+    double eta0;               /* zero-shear viscosity of the Newtonian profile */
+    double g;                  /* reverse-Poiseuille body force per unit mass */
+    double prof_f[SF * MAXS], prof_p[SP * MAXS], prof_p0[S0 * MAXS];
+    double nf_kernel, np_kernel, np0_kernel; /* mean kernel densities */
+    double dep[ND][2], dep0[ND]; /* depletion with error; at t = 0 */
+    double ts[NTS][3];         /* t, centre velocity of fluid, of polymers */
+    int nts, ts_from;          /* rows, first row of the measured window */
+} conc_run;
+
+static void usage(void)
+{
+    fprintf(stderr,
+            "usage: hcbd_polymer [key=value ...]\n"
+            "  preset=quick|paper  quick (default, about a minute on one core): tau_lambda=2e-4\n"
+            "                      (alpha scaled to keep alpha tau_lambda), P0=571.4 (c_s = 2 m/s),\n"
+            "                      box 8^3, gdot=1000,2154,4642,10000, le_steps=rp_steps=600,\n"
+            "                      eq_steps=100, blocks=5;\n"
+            "                      paper: Table I as printed (tau_lambda = 1 s = 10^6 steps), box\n"
+            "                      10^3, gdot=0.1,0.3,1,3,10,30, le_steps=rp_steps=3000000,\n"
+            "                      eq_steps=10000, blocks=10 (about a week on one core:\n"
+            "                      use threads=N)\n"
+            "  C=2.5,5             polymer concentrations in C* = 3/(4 pi sigma^3)\n"
+            "  gdot=a,b,...        Lees-Edwards shear rates in 1/s\n"
+            "  tau_lambda=s        relaxation time of the transient pairs, seconds\n"
+            "  alpha=a             transient strength in kT (default 500 x (1 s / tau_lambda))\n"
+            "  P0=Pa               Tait pressure coefficient (c_s = sqrt(7 P0 / rho))\n"
+            "  g=m/s^2             reverse-Poiseuille body force (default: rho g Ly / 4, the\n"
+            "                      stress at the edges of the halves, is the one measured at\n"
+            "                      the largest gdot)\n"
+            "  Lx Ly Lz            box edges in sigma (at least 8)\n"
+            "  le_steps=N          per Lees-Edwards run (the first 2/3 are start-up)\n"
+            "  rp_steps=N          reverse-Poiseuille run (the first 2/3 are start-up)\n"
+            "  eq_steps=N          equilibrium run for the momentum drift\n"
+            "  blocks=N slabs=N    blocks for the errors (2..20); slabs across y (4k+2, <= 202)\n"
+            "  time_unit=1e-6      reduced time unit in seconds (dt of Table I = 1)\n"
+            "  seed threads out    (out default out/hcbd_polymer)\n");
+}
+
+static int int_range(const config *c, const char *key, const char *v, int *x, int lo, int hi)
+{
+    if (!parse_int(c, key, v, x)) return 0;
+    if (*x < lo || *x > hi) {
+        fprintf(stderr, "%s: %s=%s must be %d..%d\n", c->name, key, v, lo, hi);
+        return 0;
+    }
+    return 1;
+}
+
+static int positive(const config *c, const char *key, const char *v, double *x)
+{
+    if (!parse_double(c, key, v, x)) return 0;
+    if (*x > 0) return 1;
+    fprintf(stderr, "%s: %s=%s must be positive\n", c->name, key, v);
+    return 0;
+}
+
+/* The physical keys of parse_args belong to GI-BD: refuse them here, so
+   that only seed, threads and out reach it. */
+static int own_key(config *c, const char *key, const char *v)
+{
+    if (!strcmp(key, "preset")) return check_preset(c, v);
+    if (!strcmp(key, "time_unit")) return positive(c, key, v, &opt.time_unit);
+    if (!strcmp(key, "C")) return (opt.nconc = parse_list(c, key, v, opt.conc, MAXC)) > 0;
+    if (!strcmp(key, "gdot")) return (opt.ngdot = parse_list(c, key, v, opt.gdot_si, MAXG)) > 0;
+    if (!strcmp(key, "tau_lambda")) return positive(c, key, v, &opt.tau_si);
+    if (!strcmp(key, "alpha")) return (opt.alpha_given = positive(c, key, v, &opt.alpha));
+    if (!strcmp(key, "P0")) return positive(c, key, v, &opt.P0_si);
+    if (!strcmp(key, "g")) return positive(c, key, v, &opt.g_si);
+    if (!strcmp(key, "Lx") || !strcmp(key, "Ly") || !strcmp(key, "Lz")) {
+        double *x = &opt.L[key[1] - 'x'];
+        if (!parse_double(c, key, v, x)) return 0;
+        if (*x >= 8) return 1;
+        fprintf(stderr, "%s: %s=%s must be at least 8 (sigma)\n", c->name, key, v);
+        return 0;
+    }
+    if (!strcmp(key, "le_steps")) return int_range(c, key, v, &opt.le_steps, 30, 1000000000);
+    if (!strcmp(key, "rp_steps")) return int_range(c, key, v, &opt.rp_steps, 30, 1000000000);
+    if (!strcmp(key, "eq_steps")) return int_range(c, key, v, &opt.eq_steps, 1, 1000000000);
+    if (!strcmp(key, "blocks")) return int_range(c, key, v, &opt.nblk, 2, MAXB);
+    if (!strcmp(key, "slabs")) {
+        if (!int_range(c, key, v, &opt.nslab, 6, MAXS)) return 0;
+        if (opt.nslab % 4 == 2) return 1;
+        /* a slab must be centred on each half's centre, y = L/4 and 3L/4 */
+        fprintf(stderr, "%s: slabs=%s must be 4k+2\n", c->name, v);
+        return 0;
+    }
+    if (!strcmp(key, "seed") || !strcmp(key, "threads") || !strcmp(key, "out")) return -1;
+    fprintf(stderr, "%s: unknown key '%s'\n", c->name, key);
+    usage();
+    return 0;
+}
+
+static double seconds_since(const struct timespec *t0)
+{
+    struct timespec t1;
+    clock_gettime(CLOCK_MONOTONIC, &t1);
+    return (t1.tv_sec - t0->tv_sec) + 1e-9 * (t1.tv_nsec - t0->tv_nsec);
+}
+
+static void report_progress(int force)
+{
+    int64_t unit = 1 + prog.total / INT_MAX; /* progress() counts in int */
+    if (!force && seconds_since(&prog.last) < 5.0) return;
+    clock_gettime(CLOCK_MONOTONIC, &prog.last);
+    progress(prog.c, (int)(prog.done / unit), (int)(prog.total / unit), &prog.t0);
+}
+
+/* Steps with progress; on failure prints the library's message. */
+static int advance(hcbd_hc_world *w, int n, const char *what)
+{
+    while (n > 0) {
+        int k = n < 1000 ? n : 1000;
+        if (hcbd_hc_step(w, k) != HCBD_OK) {
+            fprintf(stderr, "\nhcbd_polymer: %s: %s\n", what, w->err.msg);
+            return 0;
+        }
+        n -= k;
+        prog.done += k;
+        report_progress(0);
+    }
+    return 1;
+}
+
+static int new_world(hcbd_hc_world *w, const hcbd_hc_params *p, int nf, int np, const char *what)
+{
+    hcbd_hc_def def = hcbd_hc_def_default();
+    def.params = *p;
+    def.fluid_capacity = nf;
+    def.polymer_capacity = np;
+    def.pair_capacity = HCBD_AUTO;
+    if (hcbd_hc_world_create(w, &def) != HCBD_OK) {
+        fprintf(stderr, "hcbd_polymer: %s: %s\n", what, w->err.msg);
+        return 0;
+    }
+    if (hcbd_hc_place_fluid_lattice(w, nf) != HCBD_OK || hcbd_hc_place_polymers_random(w, np) != HCBD_OK) {
+        fprintf(stderr, "hcbd_polymer: %s: %s\n", what, w->err.msg);
+        hcbd_hc_world_destroy(w);
+        return 0;
+    }
+    return 1;
+}
+
+static int blobs_in(const hcbd_hc_params *p)
+{
+    return (int)floor(p->nbar * p->L[0] * p->L[1] * p->L[2] + 0.5);
+}
+
+static int polymers_in(const hcbd_hc_params *p, double C)
+{
+    double cstar = 3.0 / (4.0 * PI * p->sigma * p->sigma * p->sigma);
+    return (int)floor(C * cstar * p->L[0] * p->L[1] * p->L[2] + 0.5);
+}
+
+static void mix_checksum(uint64_t *sum, const hcbd_hc_world *w)
+{
+    *sum = (*sum ^ hcbd_hc_state_checksum(w)) * 0x100000001B3ULL;
+}
+
+/* One Lees-Edwards run: viscosities of the four parts at shear rate gd
+   with block errors; rise = (last block - first block) / mean of the
+   total, a measure of how far from steady the stress still is. */
+static int shear_run(const hcbd_hc_params *base, conc_run *cr, int r, double gd, uint64_t *checksum)
+{
+    hcbd_hc_params p = *base;
+    hcbd_hc_world w;
+    double blk[NCOMP][MAXB];
+    int per = (opt.le_steps - 2 * opt.le_steps / 3) / opt.nblk, b, k;
+    char what[96];
+    snprintf(what, sizeof what, "C = %g C*, gdot = %g 1/s", cr->C, opt.gdot_si[r]);
+    p.gdot = gd;
+    if (!new_world(&w, &p, blobs_in(&p), cr->np, what)) return 0;
+    if (!advance(&w, opt.le_steps - per * opt.nblk, what)) goto fail;
+    for (b = 0; b < opt.nblk; ++b) {
+        double s[HCBD_HC_NSTRESS];
+        hcbd_hc_stress_enable(&w, 1);
+        if (!advance(&w, per, what)) goto fail;
+        hcbd_hc_stress_read(&w, s, NULL);
+        for (k = 0; k < NCOMP; ++k) blk[k][b] = s[comp_index[k]] / gd;
+    }
+    for (k = 0; k < NCOMP; ++k) mean_err(blk[k], opt.nblk, &cr->eta[k][r], &cr->err[k][r]);
+    cr->rise[r] = (blk[0][opt.nblk - 1] - blk[0][0]) / cr->eta[0][r];
+    mix_checksum(checksum, &w);
+    hcbd_hc_world_destroy(&w);
+    return 1;
+fail:
+    hcbd_hc_world_destroy(&w);
+    return 0;
+}
+
+/* Within Ly/8 of a plane where the reverse-Poiseuille force flips. */
+static int high_shear(double y, double Ly)
+{
+    double d = fmod(y, 0.5 * Ly);
+    return d < Ly / 8 || d > 0.5 * Ly - Ly / 8;
+}
+
+/* Height of the reverse-Poiseuille box: base->L[1], stretched by whole
+   lattice rows (spacing nbar^(-1/3)) until no blob of the start lattice
+   lies within a quarter row of y = 0 or L/2. */
+static int rp_height(const hcbd_hc_params *base, double *Ly)
+{
+    hcbd_hc_params p = *base;
+    double a = 1 / cbrt(p.nbar);
+    int k, i;
+    p.gdot = 0;
+    for (k = 0; k < 4; ++k, p.L[1] += a) {
+        hcbd_hc_def def = hcbd_hc_def_default();
+        hcbd_hc_world w;
+        int on_plane = 0, nf = blobs_in(&p);
+        def.params = p;
+        def.fluid_capacity = nf;
+        def.polymer_capacity = 0;
+        if (hcbd_hc_world_create(&w, &def) != HCBD_OK || hcbd_hc_place_fluid_lattice(&w, nf) != HCBD_OK) {
+            fprintf(stderr, "hcbd_polymer: reverse-Poiseuille box: %s\n", w.err.msg);
+            hcbd_hc_world_destroy(&w);
+            return 0;
+        }
+        for (i = 0; i < nf; ++i) {
+            double d = fmod(w.fy[i], 0.5 * p.L[1]);
+            if (d < 0.25 * a || d > 0.5 * p.L[1] - 0.25 * a) on_plane = 1;
+        }
+        hcbd_hc_world_destroy(&w);
+        if (!on_plane) {
+            *Ly = p.L[1];
+            return 1;
+        }
+    }
+    printf("# warning: lattice rows lie on y = 0 or L/2 for every box height tried\n");
+    *Ly = base->L[1];
+    return 1;
+}
+
+/* Mean signed velocity of the particles within L/8 of the centre planes
+   y = L/4 (flow along -x) and 3L/4 (+x): wide enough to hold a row of
+   fluid blobs. */
+static double centre_velocity(const hcbd_real *y, const hcbd_real *v, int n, double Ly)
+{
+    double s = 0;
+    int i, cnt = 0;
+    for (i = 0; i < n; ++i) {
+        if (fabs(y[i] - 0.75 * Ly) < Ly / 8) { s += v[i]; ++cnt; }
+        else if (fabs(y[i] - 0.25 * Ly) < Ly / 8) { s -= v[i]; ++cnt; }
+    }
+    return cnt ? s / cnt : 0.0;
+}
+
+/* Sums over the two halves of the box (high and low shear) for the
+   depletion measures. */
+typedef struct { double pc[2], pn[2], fc[2], fn[2]; } zone_sums;
+
+static void zones_add(zone_sums *z, const hcbd_hc_world *w)
+{
+    int i;
+    for (i = 0; i < w->nf; ++i) {
+        int h = high_shear(w->fy[i], w->p.L[1]);
+        z->fc[h] += 1;
+        z->fn[h] += w->fn[i];
+    }
+    for (i = 0; i < w->np; ++i) {
+        int h = high_shear(w->py[i], w->p.L[1]);
+        z->pc[h] += 1;
+        z->pn[h] += w->pn[i];
+    }
+}
+
+static void zones_depletion(const zone_sums *z, double d[ND])
+{
+    d[D_PCOUNT] = 1 - z->pc[1] / z->pc[0];
+    d[D_PKERNEL] = 1 - (z->pn[1] / z->pc[1]) / (z->pn[0] / z->pc[0]);
+    d[D_FKERNEL] = 1 - (z->fn[1] / z->fc[1]) / (z->fn[0] / z->fc[0]);
+}
+
+/* The reverse-Poiseuille run: slab profiles and depletion of both species
+   over the last third (the polymers' also at the start, the reference for
+   their migration), the centre velocities over the whole run. */
+static int rp_run(const hcbd_hc_params *base, conc_run *cr, uint64_t *checksum)
+{
+    hcbd_hc_params p = *base;
+    hcbd_hc_world w;
+    hcbd_slabs sf, sp, s0;
+    zone_sums z;
+    size_t bf = hcbd_slabs_bytes(opt.nslab, 2), bp = hcbd_slabs_bytes(opt.nslab, 3);
+    size_t b0 = hcbd_slabs_bytes(opt.nslab, 1);
+    void *mf = malloc(bf), *mp = malloc(bp), *m0 = malloc(b0);
+    int unit = opt.rp_steps / NTS > 1 ? opt.rp_steps / NTS : 1, nunit = opt.rp_steps / unit;
+    int start = 2 * nunit / 3, nsamp = nunit - start, block, k, i, d, nb = 0, ok = 0;
+    int nf = blobs_in(&p);
+    double sum_nf = 0, sum_np = 0, blk[ND][MAXB];
+    char what[96];
+    snprintf(what, sizeof what, "C = %g C*, reverse Poiseuille", cr->C);
+    p.gdot = 0;
+    p.reverse_poiseuille = 1;
+    p.g[0] = cr->g;
+    block = nsamp / opt.nblk > 0 ? nsamp / opt.nblk : 1;
+    if (!mf || !mp || !m0) {
+        fprintf(stderr, "hcbd_polymer: out of memory\n");
+        goto done;
+    }
+    if (!new_world(&w, &p, nf, cr->np_rp, what)) goto done;
+    hcbd_slabs_init(&sf, p.L, opt.nslab, 2, block, mf, bf);
+    hcbd_slabs_init(&sp, p.L, opt.nslab, 3, block, mp, bp);
+    hcbd_slabs_init(&s0, p.L, opt.nslab, 1, 1, m0, b0);
+    cr->np0_kernel = 0;
+    for (i = 0; i < cr->np_rp; ++i) {
+        double n = w.pn[i];
+        hcbd_slabs_add(&s0, w.py[i], &n);
+        cr->np0_kernel += n / cr->np_rp;
+    }
+    hcbd_slabs_end_sample(&s0);
+    hcbd_slabs_result(&s0, cr->prof_p0);
+    memset(&z, 0, sizeof z);
+    zones_add(&z, &w);
+    zones_depletion(&z, cr->dep0);
+    memset(&z, 0, sizeof z);
+    /* the remainder of rp_steps / unit first, as start-up */
+    if (!advance(&w, opt.rp_steps - nunit * unit, what)) goto fail;
+    cr->nts = 0;
+    cr->ts_from = start;
+    for (k = 0; k < nunit; ++k) {
+        if (!advance(&w, unit, what)) goto fail;
+        if (cr->nts < NTS) {
+            cr->ts[cr->nts][0] = (double)w.step * p.dt;
+            cr->ts[cr->nts][1] = centre_velocity(w.fy, w.fvx, nf, p.L[1]);
+            cr->ts[cr->nts][2] = centre_velocity(w.py, w.pux, cr->np_rp, p.L[1]);
+            cr->nts++;
+        }
+        if (k < start) continue;
+        for (i = 0; i < nf; ++i) {
+            double v[2];
+            v[0] = w.fvx[i];
+            v[1] = w.fn[i];
+            sum_nf += v[1];
+            hcbd_slabs_add(&sf, w.fy[i], v);
+        }
+        for (i = 0; i < cr->np_rp; ++i) {
+            double u[3];
+            u[0] = w.pux[i];
+            u[1] = w.pn[i];
+            u[2] = w.pFx[i] / p.xi; /* u_x - v_x(r_a): the polymer's slip */
+            sum_np += u[1];
+            hcbd_slabs_add(&sp, w.py[i], u);
+        }
+        hcbd_slabs_end_sample(&sf);
+        hcbd_slabs_end_sample(&sp);
+        zones_add(&z, &w);
+        if ((k - start + 1) % block == 0 && nb < opt.nblk) {
+            double dz[ND];
+            zones_depletion(&z, dz);
+            for (d = 0; d < ND; ++d) blk[d][nb] = dz[d];
+            ++nb;
+            memset(&z, 0, sizeof z);
+        }
+    }
+    hcbd_slabs_result(&sf, cr->prof_f);
+    hcbd_slabs_result(&sp, cr->prof_p);
+    cr->nf_kernel = sum_nf / ((double)nf * nsamp);
+    cr->np_kernel = sum_np / ((double)cr->np_rp * nsamp);
+    for (d = 0; d < ND; ++d) mean_err(blk[d], nb, &cr->dep[d][0], &cr->dep[d][1]);
+    mix_checksum(checksum, &w);
+    ok = 1;
+fail:
+    hcbd_hc_world_destroy(&w);
+done:
+    free(mf);
+    free(mp);
+    free(m0);
+    return ok;
+}
+
+/* Carreau law (2018 eq. 36) and the shear rate at which it carries the
+   shear stress s: the stress grows monotonically for n >= 0, and
+   eta >= eta_inf bounds the root by s / eta_inf. */
+static double carreau_eta(const double pc[3], double eta_inf, double gd)
+{
+    return eta_inf + (pc[0] - eta_inf) * pow(1 + pc[1] * pc[1] * gd * gd, 0.5 * (pc[2] - 1));
+}
+
+static double carreau_rate(const double pc[3], double eta_inf, double s)
+{
+    double lo = 0, hi = s / eta_inf;
+    int k;
+    for (k = 0; k < 200 && hi - lo > 1e-14 * hi; ++k) {
+        double mid = 0.5 * (lo + hi);
+        if (carreau_eta(pc, eta_inf, mid) * mid < s) lo = mid;
+        else hi = mid;
+    }
+    return 0.5 * (lo + hi);
+}
+
+/* Speed of a half of width W driven by rho g at distance y from its edge:
+   the stress falls linearly to zero at the centre, |S| = rho g (W/2 - s),
+   and v(y) integrates the Carreau shear rate from the edge (midpoint rule). */
+static double carreau_speed(const double pc[3], double eta_inf, double rho_g, double W, double y)
+{
+    double a = y < W - y ? y : W - y, sum = 0;
+    int k, n = 400;
+    for (k = 0; k < n; ++k) sum += carreau_rate(pc, eta_inf, rho_g * (0.5 * W - (k + 0.5) * a / n));
+    return sum * a / n;
+}
+
+/* Newtonian speed of a half (MODEL.md 10): (g / 2 nu) y (W - y). */
+static double newton_speed(double g, double nu, double W, double y)
+{
+    return g / (2 * nu) * y * (W - y);
+}
+
+/* What the reverse-Poiseuille velocity profiles say (see the summary). */
+typedef struct {
+    double vc, vc_err, vc_polymer, vn_c, vcar_c, fill, fill_n, lag, lag_err, slip, change;
+    int populated[MAXS], npop;
+} rp_metrics;
+
+static void rp_analyse(const conc_run *cr, const hcbd_hc_params *p, rp_metrics *m)
+{
+    const int ns = opt.nslab, q1 = (ns - 2) / 4, q3 = ns / 2 + q1;
+    const double W = 0.5 * p->L[1], nu0 = cr->eta0 / p->rho;
+    const double nf_mean = blobs_in(p) / (p->L[0] * p->L[1] * p->L[2]);
+    double vmax = 0, best[2] = {-HUGE_VAL, -HUGE_VAL}, best_err[2] = {0, 0}, m1 = 0, m2 = 0;
+    int s, k, n1 = 0, n2 = 0;
+    memset(m, 0, sizeof *m);
+    for (s = 0; s < ns; ++s) {
+        const double *a = cr->prof_f + SF * s;
+        int h = a[0] >= W;
+        m->populated[s] = a[1] >= 0.5 * nf_mean;
+        if (!m->populated[s]) continue;
+        m->npop++;
+        vmax = fmax(vmax, fabs(a[SF_V]));
+        if ((h ? 1 : -1) * a[SF_V] > best[h]) {
+            best[h] = (h ? 1 : -1) * a[SF_V];
+            best_err[h] = a[SF_V + 1];
+        }
+    }
+    /* centre velocity: the fastest populated slab of each half */
+    m->vc = 0.5 * (best[0] + best[1]);
+    m->vc_err = 0.5 * hypot(best_err[0], best_err[1]);
+    m->vc_polymer = 0.5 * (cr->prof_p[SP * q3 + SP_U] - cr->prof_p[SP * q1 + SP_U]);
+    m->vn_c = newton_speed(cr->g, nu0, W, 0.5 * W);
+    if (cr->fitted) m->vcar_c = carreau_speed(cr->pc, p->eta, p->rho * cr->g, W, 0.5 * W);
+    for (s = 0; s < ns; ++s) {
+        const double *a = cr->prof_f + SF * s, *b = cr->prof_p + SP * s;
+        double y = a[0], sg = y >= W ? 1 : -1, yh = y >= W ? y - W : y;
+        m->slip = fmax(m->slip, fabs(b[SP_SLIP]));
+        if (!m->populated[s]) continue;
+        if (fabs(b[SP_U] - a[SF_V]) > m->lag) {
+            m->lag = fabs(b[SP_U] - a[SF_V]);
+            m->lag_err = hypot(a[SF_V + 1], b[SP_U + 1]);
+        }
+        m->fill += sg * a[SF_V] / m->vc;
+        m->fill_n += newton_speed(cr->g, nu0, W, yh) / m->vn_c;
+    }
+    if (m->npop) {
+        m->fill /= m->npop;
+        m->fill_n /= m->npop;
+    }
+    if (vmax > 0) {
+        m->lag /= vmax;
+        m->lag_err /= vmax;
+        m->slip /= vmax;
+    }
+    for (k = cr->ts_from; k < cr->nts; ++k) {
+        if (2 * (k - cr->ts_from) < cr->nts - cr->ts_from) { m1 += cr->ts[k][1]; ++n1; }
+        else { m2 += cr->ts[k][1]; ++n2; }
+    }
+    m->change = n1 && n2 && m1 != 0 ? (m2 / n2 - m1 / n1) / (m1 / n1) : 0;
+}
+
+/* Total momentum before and after an equilibrium run (no shear, no body
+   force), against the gross impulse the polymers hand to the fluid,
+   dt sum_steps sum_a |F_a|: pair forces cancel in the sum, so the
+   momentum may change only by round-off. */
+static int momentum_run(const hcbd_hc_params *base, int np, double *dp, double *scale,
+                        uint64_t *checksum)
+{
+    hcbd_hc_params p = *base;
+    hcbd_hc_world w;
+    double P0[3], P1[3];
+    int s, a;
+    p.gdot = 0;
+    p.reverse_poiseuille = 0;
+    p.g[0] = p.g[1] = p.g[2] = 0;
+    if (!new_world(&w, &p, blobs_in(&p), np, "momentum run")) return 0;
+    hcbd_hc_momentum(&w, P0);
+    *scale = 0;
+    for (s = 0; s < opt.eq_steps; ++s) {
+        for (a = 0; a < w.np; ++a)
+            *scale += p.dt * sqrt((double)w.pFx[a] * w.pFx[a] + (double)w.pFy[a] * w.pFy[a] +
+                                  (double)w.pFz[a] * w.pFz[a]);
+        if (!advance(&w, 1, "momentum run")) {
+            hcbd_hc_world_destroy(&w);
+            return 0;
+        }
+    }
+    hcbd_hc_momentum(&w, P1);
+    *dp = sqrt((P1[0] - P0[0]) * (P1[0] - P0[0]) + (P1[1] - P0[1]) * (P1[1] - P0[1]) +
+               (P1[2] - P0[2]) * (P1[2] - P0[2]));
+    mix_checksum(checksum, &w);
+    hcbd_hc_world_destroy(&w);
+    return 1;
+}
+
+/* Conversion of reduced values to SI. */
+typedef struct { double len, t, kT, M, v, eta, P, acc; } units;
+
+static void print_parameters(const units *u, const hcbd_hc_params *p, const hcbd_hc_params *tab)
+{
+    const double V = u->len * u->len * u->len;
+    struct row { const char *name, *unit; double used, table, to_si; } rows[] = {
+        {"dt", "s", p->dt, tab->dt, u->t},
+        {"rho", "kg/m^3", p->rho, tab->rho, u->M / V},
+        {"nbar", "m^-3", p->nbar, tab->nbar, 1 / V},
+        {"eta", "Pa s", p->eta, tab->eta, u->eta},
+        {"P0", "Pa", p->P0, tab->P0, u->P},
+        {"h", "m", p->h, tab->h, u->len},
+        {"xi", "kg/s", p->xi, tab->xi, u->M / u->t},
+        {"sigma", "m", p->sigma, tab->sigma, u->len},
+        {"rc", "m", p->rc, tab->rc, u->len},
+        {"alpha", "J", p->alpha, tab->alpha, u->kT},
+        {"tau_lambda", "s", p->tau_lambda, tab->tau_lambda, u->t},
+        {"p", "-", p->p_kuhn, tab->p_kuhn, 1},
+        {"n_max", "m^-3", p->n_max, tab->n_max, 1 / V},
+        {"chi", "-", p->chi, tab->chi, 1},
+    };
+    int k;
+    printf("# %-11s %14s %-8s %14s %14s\n", "parameter", "SI (used)", "unit", "reduced used", "Table I");
+    for (k = 0; k < (int)(sizeof rows / sizeof rows[0]); ++k) {
+        int same = fabs(rows[k].used - rows[k].table) <= 1e-12 * fabs(rows[k].table);
+        printf("# %-11s %14.6g %-8s %14.6g %14.6g", rows[k].name, rows[k].used * rows[k].to_si, rows[k].unit,
+               rows[k].used, rows[k].table);
+        if (same) printf("\n");
+        else printf("   <- differs from Table I (x %.4g)\n", rows[k].used / rows[k].table);
+    }
+}
+
+static void write_flowcurve(const config *c, const conc_run *runs, const units *u)
+{
+    FILE *f = open_out(c, "flowcurve.csv");
+    int ci, r, k;
+    if (!f) return;
+    fprintf(f, "C,gdot_per_s,gdot,Wi");
+    for (k = 0; k < NCOMP; ++k) fprintf(f, ",eta_%s,eta_%s_err", comp_name[k], comp_name[k]);
+    for (k = 0; k < NCOMP; ++k) fprintf(f, ",eta_%s_mPas,eta_%s_err_mPas", comp_name[k], comp_name[k]);
+    fprintf(f, ",startup_rise\n");
+    for (ci = 0; ci < opt.nconc; ++ci)
+        for (r = 0; r < opt.ngdot; ++r) {
+            fprintf(f, "%g,%.6g,%.6g,%.4g", runs[ci].C, opt.gdot_si[r], opt.gdot_si[r] * u->t,
+                    opt.gdot_si[r] * opt.tau_si);
+            for (k = 0; k < NCOMP; ++k) fprintf(f, ",%.6g,%.3g", runs[ci].eta[k][r], runs[ci].err[k][r]);
+            for (k = 0; k < NCOMP; ++k)
+                fprintf(f, ",%.6g,%.3g", runs[ci].eta[k][r] * u->eta * 1e3, runs[ci].err[k][r] * u->eta * 1e3);
+            fprintf(f, ",%.4g\n", runs[ci].rise[r]);
+        }
+    fclose(f);
+}
+
+/* profile_C<C>.csv (Figs. 5, 6) and rp_start_C<C>.csv */
+static void write_profiles(const config *c, const conc_run *cr, const hcbd_hc_params *p, const rp_metrics *m,
+                           const units *u)
+{
+    const double W = 0.5 * p->L[1], nu0 = cr->eta0 / p->rho, V = p->L[0] * p->L[1] * p->L[2];
+    const double nfm = blobs_in(p) / V, npm = cr->np_rp / V;
+    char name[64];
+    FILE *f;
+    int s, k;
+    snprintf(name, sizeof name, "profile_C%g.csv", cr->C);
+    if ((f = open_out(c, name))) {
+        fprintf(f, "y,fluid_kernel_density_over_mean,fluid_kernel_density_err,"
+                   "polymer_kernel_density_over_mean,polymer_kernel_density_err,"
+                   "polymer_kernel_density_initial,fluid_count_density_over_mean,fluid_count_err,"
+                   "polymer_count_density_over_mean,polymer_count_err,polymer_count_density_initial,"
+                   "v_fluid,v_fluid_err,u_polymer,u_polymer_err,slip,slip_err,v_newtonian_eta0,"
+                   "v_carreau,fluid_populated\n");
+        for (s = 0; s < opt.nslab; ++s) {
+            const double *a = cr->prof_f + SF * s, *b = cr->prof_p + SP * s, *b0 = cr->prof_p0 + S0 * s;
+            double y = a[0], sg = y >= W ? 1 : -1, yh = y >= W ? y - W : y;
+            fprintf(f, "%.6g,%.6g,%.3g,%.6g,%.3g,%.6g,", y, a[SF_N] / cr->nf_kernel, a[SF_N + 1] / cr->nf_kernel,
+                    b[SP_N] / cr->np_kernel, b[SP_N + 1] / cr->np_kernel, b0[S0_N] / cr->np0_kernel);
+            fprintf(f, "%.6g,%.3g,%.6g,%.3g,%.6g,", a[1] / nfm, a[2] / nfm, b[1] / npm, b[2] / npm, b0[1] / npm);
+            fprintf(f, "%.6g,%.3g,%.6g,%.3g,%.6g,%.3g,%.6g,", a[SF_V], a[SF_V + 1], b[SP_U], b[SP_U + 1],
+                    b[SP_SLIP], b[SP_SLIP + 1], sg * newton_speed(cr->g, nu0, W, yh));
+            if (cr->fitted) fprintf(f, "%.6g", sg * carreau_speed(cr->pc, p->eta, p->rho * cr->g, W, yh));
+            fprintf(f, ",%d\n", m->populated[s]);
+        }
+        fclose(f);
+    }
+    snprintf(name, sizeof name, "rp_start_C%g.csv", cr->C);
+    if ((f = open_out(c, name))) {
+        fprintf(f, "t,t_s,v_center_fluid,u_center_polymer,measured\n");
+        for (k = 0; k < cr->nts; ++k)
+            fprintf(f, "%.6g,%.6g,%.6g,%.6g,%d\n", cr->ts[k][0], cr->ts[k][0] * u->t, cr->ts[k][1], cr->ts[k][2],
+                    k >= cr->ts_from);
+        fclose(f);
+    }
+}
+
+static void print_summary(const conc_run *cr, const hcbd_hc_params *p, const rp_metrics *m, const units *u,
+                          double mach, double Ly_rp)
+{
+    const int hi = opt.ngdot - 1;
+    const double thin = cr->eta[0][hi] / cr->eta[0][0];
+    int k;
+    printf("# summary C=%g (C/C* = %g, %d polymers; reduced units: sigma, kT, time unit %g s; "
+           "viscosities also in mPa s)\n", cr->C, cr->C, cr->np, u->t);
+    printf("eta_inf=%.6g\neta_inf_mPas=%.6g\n", p->eta, p->eta * u->eta * 1e3);
+    if (cr->fitted) {
+        printf("eta0=%.6g\neta0_err=%.3g\neta0_mPas=%.6g\neta0_over_eta=%.4g\n", cr->pc[0], cr->pe[0],
+               cr->pc[0] * u->eta * 1e3, cr->pc[0] / p->eta);
+        printf("lambda=%.6g\nlambda_err=%.3g\nlambda_s=%.6g\nlambda_over_tau_lambda=%.4g\n", cr->pc[1], cr->pe[1],
+               cr->pc[1] * u->t, cr->pc[1] / p->tau_lambda);
+        printf("n=%.4g\nn_err=%.3g\n", cr->pc[2], cr->pe[2]);
+        printf("carreau_chi2_per_dof=%.3g\n", opt.ngdot > 3 ? cr->chi2 / (opt.ngdot - 3) : 0.0);
+    } else {
+        printf("# no Carreau fit (fewer than 4 rates, or eta0 <= eta_inf, lambda <= 0 or n < 0):\n"
+               "# eta0 is the viscosity at the lowest rate\n");
+        printf("eta0=%.6g\neta0_err=%.3g\neta0_mPas=%.6g\neta0_over_eta=%.4g\n", cr->eta0, cr->err[0][0],
+               cr->eta0 * u->eta * 1e3, cr->eta0 / p->eta);
+    }
+    if (cr->C == 2.5 || cr->C == 5) /* Table II, with eta = 1 mPa s */
+        printf("eta0_over_eta_paper=%g\nlambda_over_tau_lambda_paper=%g\nn_paper=%g\n", cr->C == 2.5 ? 2.526 : 6.6688,
+               cr->C == 2.5 ? 3.0504 : 2.1408, cr->C == 2.5 ? 0.3441 : 0.0008);
+    for (k = 0; k < NCOMP; ++k)
+        printf("eta_%s_lowest_rate=%.6g\neta_%s_lowest_rate_err=%.3g\n", comp_name[k], cr->eta[k][0], comp_name[k],
+               cr->err[k][0]);
+    printf("shear_thinning=%.4g\nshear_thinning_err=%.3g\n", thin,
+           thin * hypot(cr->err[0][hi] / cr->eta[0][hi], cr->err[0][0] / cr->eta[0][0]));
+    printf("startup_rise_lowest_rate=%.3g\nmach_max=%.4g\n", cr->rise[0], mach);
+    printf("rp_Ly=%.4g\nrp_polymers=%d\ng=%.6g\ng_si=%.6g\n", Ly_rp, cr->np_rp, cr->g, cr->g * u->acc);
+    printf("v_center=%.6g\nv_center_err=%.3g\nv_center_polymer=%.6g\nv_center_newtonian=%.6g\n", m->vc, m->vc_err,
+           m->vc_polymer, m->vn_c);
+    printf("flattening=%.4g\nflattening_err=%.3g\n", m->vc / m->vn_c, m->vc_err / m->vn_c);
+    if (cr->fitted) printf("v_center_carreau=%.6g\nflattening_carreau=%.4g\n", m->vcar_c, m->vc / m->vcar_c);
+    printf("profile_fill=%.4g\nprofile_fill_newtonian=%.4g\nfluid_slabs_populated=%d\n", m->fill, m->fill_n,
+           m->npop);
+    printf("lag_max=%.4g\nlag_max_err=%.3g\nslip_max=%.3g\n", m->lag, m->lag_err, m->slip);
+    for (k = 0; k < ND; ++k)
+        printf("%s=%.4g\n%s_err=%.3g\n%s_initial=%.4g\n", dep_name[k], cr->dep[k][0], dep_name[k], cr->dep[k][1],
+               dep_name[k], cr->dep0[k]);
+    printf("rp_center_change=%.3g\n", m->change);
+}
+
+static void write_plots(const config *c, const conc_run *runs, const hcbd_hc_params *p, double Ly,
+                        const units *u)
+{
+    const double ei = p->eta * u->eta * 1e3;
+    FILE *f = open_out(c, "plots.gp");
+    int ci, k;
+    if (!f) return;
+    fprintf(f, "set datafile separator ','\nset terminal pngcairo size %d,450\n", 500 * opt.nconc);
+    fprintf(f, "set output 'flowcurve.png'\nset multiplot layout 1,%d\nset logscale xy\n"
+               "set xlabel 'shear rate [1/s]'\nset ylabel 'viscosity [mPa s]'\nset key top right\n", opt.nconc);
+    for (ci = 0; ci < opt.nconc; ++ci) {
+        const conc_run *cr = &runs[ci];
+        fprintf(f, "set title 'C = %g C*'\nplot ", cr->C);
+        for (k = 0; k < NCOMP; ++k)
+            fprintf(f, "%s'flowcurve.csv' u ($1==%g&&$%d>0?$2:1/0):%d:%d w yerr pt %d t '%s'", k ? ", " : "",
+                    cr->C, 13 + 2 * k, 13 + 2 * k, 14 + 2 * k, 7 - k, comp_name[k]);
+        if (cr->fitted)
+            fprintf(f, ", %.17g + (%.17g - %.17g) * (1 + (%.17g * x)**2)**((%.17g - 1) / 2) t 'Carreau'", ei,
+                    cr->pc[0] * u->eta * 1e3, ei, cr->pc[1] * u->t, cr->pc[2]);
+        fprintf(f, "\n");
+    }
+    fprintf(f, "unset multiplot\nunset logscale\nset output 'velocity.png'\nset multiplot layout 1,%d\n"
+               "set xlabel 'y / sigma'\nset ylabel 'v_x [sigma / time unit]'\nset key top left\n", opt.nconc);
+    for (ci = 0; ci < opt.nconc; ++ci) {
+        const conc_run *cr = &runs[ci];
+        double A = cr->g / (2 * cr->eta0 / p->rho);
+        fprintf(f, "set title 'C = %g C*'\nplot [0:%g] 'profile_C%g.csv' u 1:($20>0?$12:1/0):13 w yerr pt 7 "
+                   "t 'fluid', '' u 1:14:15 w yerr pt 6 t 'polymer', ", cr->C, Ly, cr->C);
+        fprintf(f, "(x < %.17g ? -%.17g * x * (%.17g - x) : %.17g * (x - %.17g) * (%.17g - x)) "
+                   "t 'Newtonian, eta0' dt 2", 0.5 * Ly, A, 0.5 * Ly, A, 0.5 * Ly, Ly);
+        if (cr->fitted) fprintf(f, ", '' u 1:19 w l t 'Carreau fit'");
+        fprintf(f, "\n");
+    }
+    fprintf(f, "unset multiplot\nset output 'density.png'\nset multiplot layout 1,%d\n"
+               "set ylabel 'density / mean'\nset arrow from %g, graph 0 to %g, graph 1 nohead dt 3\n",
+            opt.nconc, 0.5 * Ly, 0.5 * Ly);
+    for (ci = 0; ci < opt.nconc; ++ci)
+        fprintf(f, "set title 'C = %g C*'\nplot [0:%g] 'profile_C%g.csv' u 1:($20>0?$2:1/0):3 w yerr pt 7 "
+                   "t 'fluid (kernel)', '' u 1:4:5 w yerr pt 6 t 'polymer (kernel)', '' u 1:6 w l dt 3 "
+                   "t 'polymer (kernel), t = 0', '' u 1:9:10 w yerr pt 1 t 'polymer (counts)', 1 t '' dt 2\n",
+                runs[ci].C, Ly, runs[ci].C);
+    fprintf(f, "unset multiplot\nunset arrow\nset output 'rp_start.png'\nset multiplot layout 1,%d\n"
+               "set xlabel 't [time units]'\nset ylabel 'centre velocity'\n", opt.nconc);
+    for (ci = 0; ci < opt.nconc; ++ci)
+        fprintf(f, "set title 'C = %g C*'\nplot 'rp_start_C%g.csv' u 1:3 w l t 'fluid', '' u 1:4 w l "
+                   "t 'polymer', %.17g t 'Newtonian, eta0' dt 2\n", runs[ci].C, runs[ci].C,
+                newton_speed(runs[ci].g, runs[ci].eta0 / p->rho, 0.5 * Ly, 0.25 * Ly));
+    fprintf(f, "unset multiplot\n");
+    fclose(f);
+    make_figures(c);
+}
+
+int main(int argc, char **argv)
+{
+    static conc_run runs[MAXC];
+    config c;
+    hcbd_hc_si si = hcbd_hc_si_table1();
+    hcbd_hc_params tab, par, prp, *p = &par;
+    hcbd_hc_theory th;
+    units u;
+    char msg[256];
+    uint64_t checksum = 0;
+    double gmax = 0, mach, dp = 0, dscale = 0;
+    int paper = 0, k, r, ci, nmom;
+
+    memset(&c, 0, sizeof c);
+    c.name = "hcbd_polymer";
+    c.def = hcbd_world_def_default(); /* carries seed and threads from parse_args */
+    c.N = 2;
+    c.density = 1;
+    c.steps = 1000;
+    for (k = 1; k < argc; ++k) /* the preset first: explicit keys override it */
+        if (!strcmp(argv[k], "preset=paper")) paper = 1;
+    opt.time_unit = 1e-6;
+    opt.conc[0] = 2.5;
+    opt.conc[1] = 5;
+    opt.nconc = 2;
+    if (paper) {
+        static const double gp[6] = {0.1, 0.3, 1, 3, 10, 30};
+        memcpy(opt.gdot_si, gp, sizeof gp);
+        opt.ngdot = 6;
+        opt.tau_si = si.tau_lambda;
+        opt.P0_si = si.P0;
+        opt.L[0] = opt.L[1] = opt.L[2] = 10;
+        opt.le_steps = opt.rp_steps = 3000000;
+        opt.eq_steps = 10000;
+        opt.nblk = 10;
+    } else {
+        static const double gq[4] = {1000, 2154, 4642, 10000};
+        memcpy(opt.gdot_si, gq, sizeof gq);
+        opt.ngdot = 4;
+        opt.tau_si = 2e-4;
+        opt.P0_si = si.rho * 2.0 * 2.0 / 7; /* c_s = 2 m/s */
+        opt.L[0] = opt.L[1] = opt.L[2] = 8;
+        opt.le_steps = opt.rp_steps = 600;
+        opt.eq_steps = 100;
+        opt.nblk = 5;
+    }
+    opt.nslab = 18;
+    snprintf(c.out, sizeof c.out, "out/hcbd_polymer");
+    if (!parse_args(argc, argv, &c, own_key, usage)) return 2;
+    for (k = 1; k < opt.ngdot; ++k) /* ascending: the summary compares the ends */
+        for (r = k; r > 0 && opt.gdot_si[r] < opt.gdot_si[r - 1]; --r) {
+            double t = opt.gdot_si[r];
+            opt.gdot_si[r] = opt.gdot_si[r - 1];
+            opt.gdot_si[r - 1] = t;
+        }
+    if (!opt.alpha_given) opt.alpha = si.alpha_kT * si.tau_lambda / opt.tau_si;
+    if ((opt.le_steps - 2 * opt.le_steps / 3) / opt.nblk < 1) {
+        fprintf(stderr, "hcbd_polymer: le_steps=%d is too short for %d blocks\n", opt.le_steps, opt.nblk);
+        return 2;
+    }
+
+    /* ---- units and parameters ---- */
+    if (hcbd_hc_params_si(&si, opt.time_unit, &tab, msg, sizeof msg) != HCBD_OK) {
+        fprintf(stderr, "hcbd_polymer: %s\n", msg);
+        return 2;
+    }
+    u.len = si.sigma;
+    u.t = opt.time_unit;
+    u.kT = KB * si.T;
+    u.M = u.kT * u.t * u.t / (u.len * u.len);
+    u.v = u.len / u.t;
+    u.eta = u.M / (u.len * u.t);
+    u.P = u.M / (u.len * u.t * u.t);
+    u.acc = u.len / (u.t * u.t);
+    par = tab;
+    memcpy(p->L, opt.L, sizeof opt.L);
+    p->fluctuations = 0; /* the paper's choice with polymers present (sec. IV A 3) */
+    p->P0 = opt.P0_si / u.P;
+    p->tau_lambda = opt.tau_si / u.t;
+    p->alpha = opt.alpha;
+    p->seed = c.def.params.seed;
+    p->threads = c.def.params.threads;
+    if (hcbd_hc_params_check(p, msg, sizeof msg) != HCBD_OK) {
+        fprintf(stderr, "hcbd_polymer: %s\n", msg);
+        return 2;
+    }
+    hcbd_hc_theory_of(p, &th);
+    prp = par;
+    if (!rp_height(p, &prp.L[1])) return 2;
+    for (ci = 0; ci < opt.nconc; ++ci) {
+        runs[ci].C = opt.conc[ci];
+        runs[ci].np = polymers_in(p, opt.conc[ci]);
+        runs[ci].np_rp = polymers_in(&prp, opt.conc[ci]);
+    }
+    for (r = 0; r < opt.ngdot; ++r) gmax = fmax(gmax, opt.gdot_si[r] * u.t);
+    mach = gmax * p->L[1] / th.cs;
+    mkdirs(c.out);
+
+    printf("hcbd_polymer: HCBD polymer solutions (2018 sec. IV B), preset %s, box %.4g x %.4g x %.4g sigma "
+           "(reverse Poiseuille %.4g x %.4g x %.4g), fluid blobs %d (%d), polymers", paper ? "paper" : "quick",
+           p->L[0], p->L[1], p->L[2], prp.L[0], prp.L[1], prp.L[2], blobs_in(p), blobs_in(&prp));
+    for (ci = 0; ci < opt.nconc; ++ci) printf(" %d (%d) at C = %g C*", runs[ci].np, runs[ci].np_rp, runs[ci].C);
+    printf(", threads = %d, seed = %llu\n", p->threads, (unsigned long long)p->seed);
+    printf("# reduced units: sigma = %g m, kT = %.6g J (T = %g K), time unit = %g s, mass unit "
+           "kT t^2/sigma^2 = %.6g kg\n", u.len, u.kT, si.T, u.t, u.M);
+    print_parameters(&u, p, &tab);
+    printf("# derived: blob mass m = %.6g (%.4g kg), nu = eta/rho = %.6g, c_s = %.6g (%.4g m/s; Table I "
+           "%.4g m/s), dt limits: viscous %.4g, sound %.4g (dt = %g)\n", th.m, th.m * u.M, th.nu, th.cs,
+           th.cs * u.v, sqrt(7 * si.P0 / si.rho), th.dt_visc, th.dt_sound, p->dt);
+    printf("# kT = %g for the polymer noise and pair variables; fluid fluctuations off (as in the paper with "
+           "polymers)\n", p->kT);
+    if (fabs(p->tau_lambda - tab.tau_lambda) > 1e-12 * tab.tau_lambda)
+        printf("# NOTE tau_lambda = %g s = %g steps here; the paper's is %g s = %g steps\n", opt.tau_si,
+               p->tau_lambda / p->dt, si.tau_lambda, tab.tau_lambda / p->dt);
+    if (fabs(p->alpha - tab.alpha) > 1e-12 * tab.alpha)
+        printf("# NOTE alpha = %g kT (paper %g kT)%s\n", p->alpha, si.alpha_kT,
+               opt.alpha_given ? "" : ": scaled with 1/tau_lambda to keep the polymer viscosity ~ alpha tau_lambda");
+    if (fabs(p->P0 - tab.P0) > 1e-12 * tab.P0)
+        printf("# NOTE P0 = %g Pa (Table I %g Pa): c_s = %.4g m/s keeps the fastest shear at Mach %.3g\n",
+               opt.P0_si, si.P0, th.cs * u.v, mach);
+    printf("# shear rates [1/s] (Wi = gdot tau_lambda):");
+    for (r = 0; r < opt.ngdot; ++r) printf(" %g (%.3g)", opt.gdot_si[r], opt.gdot_si[r] * opt.tau_si);
+    printf("; Mach gdot_max Ly / c_s = %.3g\n", mach);
+    printf("# runs per concentration: Lees-Edwards %d steps (%.3g tau_lambda) x %d rates, reverse Poiseuille "
+           "%d steps; equilibrium %d steps; %d blocks, %d slabs\n", opt.le_steps,
+           opt.le_steps * p->dt / p->tau_lambda, opt.ngdot, opt.rp_steps, opt.eq_steps, opt.nblk, opt.nslab);
+    if (p->dt >= th.dt_sound || p->dt >= th.dt_visc)
+        printf("# warning: dt = %g is not below the explicit limits (sound %.4g, viscous %.4g)\n", p->dt,
+               th.dt_sound, th.dt_visc);
+    if (mach > 0.3) printf("# warning: Mach %.3g: the fastest shear is not well below the sound speed\n", mach);
+    fflush(stdout);
+
+    /* ---- the runs ---- */
+    prog.c = &c;
+    prog.total = (int64_t)opt.nconc * ((int64_t)opt.ngdot * opt.le_steps + opt.rp_steps) + opt.eq_steps;
+    clock_gettime(CLOCK_MONOTONIC, &prog.t0);
+    prog.last = prog.t0;
+    for (ci = 0; ci < opt.nconc; ++ci) {
+        conc_run *cr = &runs[ci];
+        double e[MAXG], g_red[MAXG];
+        for (r = 0; r < opt.ngdot; ++r) {
+            g_red[r] = opt.gdot_si[r] * u.t;
+            if (!shear_run(p, cr, r, g_red[r], &checksum)) return 1;
+        }
+        for (r = 0; r < opt.ngdot; ++r) e[r] = cr->err[0][r] > 0 ? cr->err[0][r] : 1e-12 * fabs(cr->eta[0][r]);
+        cr->fitted = opt.ngdot >= 4 &&
+                     hcbd_carreau_fit(g_red, cr->eta[0], e, opt.ngdot, p->eta, 0, cr->pc, cr->pe, &cr->chi2) ==
+                         HCBD_OK &&
+                     cr->pc[0] > p->eta && cr->pc[1] > 0 && cr->pc[2] >= 0;
+        /* the fit's eta0 where it is usable, else the slowest rate's viscosity */
+        cr->eta0 = cr->fitted ? cr->pc[0] : cr->eta[0][0];
+        /* the stress at the edges of the halves, rho g Ly / 4, is the one
+           measured at the fastest rate: the profile spans the flow curve */
+        cr->g = opt.g_si > 0 ? opt.g_si / u.acc : 4 * cr->eta[0][opt.ngdot - 1] * gmax / (p->rho * prp.L[1]);
+        if (!rp_run(&prp, cr, &checksum)) return 1;
+    }
+    nmom = opt.nconc - 1;
+    for (ci = 0; ci < opt.nconc; ++ci)
+        if (runs[ci].C > runs[nmom].C) nmom = ci;
+    if (!momentum_run(p, runs[nmom].np, &dp, &dscale, &checksum)) return 1;
+    report_progress(1);
+
+    /* ---- output ---- */
+    write_flowcurve(&c, runs, &u);
+    for (ci = 0; ci < opt.nconc; ++ci) {
+        rp_metrics m;
+        rp_analyse(&runs[ci], &prp, &m);
+        write_profiles(&c, &runs[ci], &prp, &m, &u);
+        print_summary(&runs[ci], p, &m, &u, mach, prp.L[1]);
+    }
+    printf("# summary (all runs; momentum: equilibrium run at C = %g C*)\n", runs[nmom].C);
+    printf("momentum_drift=%.3g\nmomentum_change=%.3g\nmomentum_scale=%.4g\n", dscale > 0 ? dp / dscale : 0, dp,
+           dscale);
+    printf("run_time_s=%.1f\n", seconds_since(&prog.t0));
+    printf("state_checksum=%016llx\n", (unsigned long long)checksum);
+    fflush(stdout);
+    write_plots(&c, runs, &prp, prp.L[1], &u);
+    return 0;
+}
