@@ -693,6 +693,7 @@ void test_hc_fluid_viscosity(void)
          "reverse Poiseuille %.3f +- %.3f", nu_t / nu0, et / nu0, nu_le / nu0, ele / nu0,
          nu_rp / nu0, erp / nu0);
     NOTE("slab density: largest deviation %.4f +- %.4f", flat, flat_err);
+    if (t_quick) return; /* blocks shorter than the flow's correlation time */
     CHECK(fabs(nu_t - nu_le) < 3 * sqrt(et * et + ele * ele) + 0.1 * nu_le, "transverse vs LE");
     CHECK(fabs(nu_rp - nu_le) < 3 * sqrt(erp * erp + ele * ele) + 0.1 * nu_le, "Poiseuille vs LE");
     CHECK(fabs(nu_rp - nu_t) < 3 * sqrt(erp * erp + et * et) + 0.1 * nu_t, "Poiseuille vs transverse");
@@ -765,7 +766,8 @@ void test_hc_poiseuille_no_lag(void)
     block_stats(lag, nb, nb, &m, &e);
     NOTE("fluid nu %.3f, v_max %.3f; polymer lag behind the fluid at their positions %.4f +- %.4f "
          "of v_max (kernel smoothing taken out: %.4f)", nu, vmax, -m, e, g / nu * 0.5 * dy2 / vmax);
-    CHECK(fabs(m) < 3 * e + 0.01, "polymers move with the fluid");
+    if (!t_quick) /* quick blocks are shorter than the polymers' correlation time */
+        CHECK(fabs(m) < 3 * e + 0.01, "polymers move with the fluid");
     free(mf);
     hcbd_hc_world_destroy(&w);
 }
