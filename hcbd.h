@@ -2780,19 +2780,21 @@ hcbd_result hcbd_friction_average(hcbd_world *w, int nk, double out[3])
     return HCBD_OK;
 }
 
-hcbd_result hcbd_transverse_current(const hcbd_world *w, int nk, double out[12])
+/* Transverse current of n particles visited in id order (idx maps the
+   k-th id to its storage slot; NULL when storage is in id order). */
+static void hcbd__tcurrent(int n, const int32_t *idx, const hcbd_real *x, const hcbd_real *y,
+                           const hcbd_real *z, const hcbd_real *vx, const hcbd_real *vy,
+                           const hcbd_real *vz, const double L[3], int nk, double out[12])
 {
-    int i, k, d;
-    if (!w || !out) return HCBD_ERR_NULL;
-    for (i = 0; i < 12; ++i) out[i] = 0.0;
-    if (!w->gibd) return HCBD_OK;
-    for (k = 0; k < w->n; ++k) {
-        int q = w->slot[k];
+    int k, d;
+    for (k = 0; k < 12; ++k) out[k] = 0.0;
+    for (k = 0; k < n; ++k) {
+        int q = idx ? idx[k] : k;
         double r[3], v[3];
-        r[0] = w->x[q]; r[1] = w->y[q]; r[2] = w->z[q];
-        v[0] = w->vx[q]; v[1] = w->vy[q]; v[2] = w->vz[q];
+        r[0] = x[q]; r[1] = y[q]; r[2] = z[q];
+        v[0] = vx[q]; v[1] = vy[q]; v[2] = vz[q];
         for (d = 0; d < 3; ++d) {
-            double ph = 2.0 * HCBD__PI * nk * r[d] / w->p.L[d];
+            double ph = 2.0 * HCBD__PI * nk * r[d] / L[d];
             double c = cos(ph), s = -sin(ph);
             int a1 = (d + 1) % 3, a2 = (d + 2) % 3;
             out[4 * d + 0] += v[a1] * c;
@@ -2801,6 +2803,15 @@ hcbd_result hcbd_transverse_current(const hcbd_world *w, int nk, double out[12])
             out[4 * d + 3] += v[a2] * s;
         }
     }
+}
+
+hcbd_result hcbd_transverse_current(const hcbd_world *w, int nk, double out[12])
+{
+    int i;
+    if (!w || !out) return HCBD_ERR_NULL;
+    for (i = 0; i < 12; ++i) out[i] = 0.0;
+    if (!w->gibd) return HCBD_OK;
+    hcbd__tcurrent(w->n, w->slot, w->x, w->y, w->z, w->vx, w->vy, w->vz, w->p.L, nk, out);
     return HCBD_OK;
 }
 
@@ -3353,12 +3364,16 @@ static double hcbd__rapid_A(double sigma, double rc)
     return 15.0 / (2.0 * HCBD__PI * (pow(rc, 5) - pow(sigma, 5)));
 }
 
+/* W-RaPiD inside its range, with the normalisation A precomputed */
+static inline double hcbd__rapid(double r, double sg, double rc, double A)
+{
+    return r <= sg ? A * (rc - sg) * (rc + sg - 2.0 * r) : A * (r - rc) * (r - rc);
+}
+
 double hcbd_rapid_w(double r, double sigma, double rc)
 {
-    double A = hcbd__rapid_A(sigma, rc);
     if (!(r < rc)) return 0.0;
-    if (r <= sigma) return A * (rc - sigma) * (rc + sigma - 2.0 * r);
-    return A * (r - rc) * (r - rc);
+    return hcbd__rapid(r, sigma, rc, hcbd__rapid_A(sigma, rc));
 }
 
 double hcbd_rapid_w_dr(double r, double sigma, double rc)
@@ -4053,7 +4068,7 @@ static int hcbd__hc_poly_density(hcbd_hc_world *w)
             r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
             if (r2 < cut2) {
                 double r = sqrt(r2);
-                s += r <= sg ? A * (rc - sg) * (rc + sg - 2.0 * r) : A * (r - rc) * (r - rc);
+                s += hcbd__rapid(r, sg, rc, A);
             }
         }
         w->pn[i] = (hcbd_real)s;
@@ -4241,7 +4256,7 @@ static int hcbd__hc_interp(hcbd_hc_world *w)
             r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
             if (r2 >= cut2) continue;
             r = sqrt(r2);
-            wt = (r <= sg ? A * (rc - sg) * (rc + sg - 2.0 * r) : A * (r - rc) * (r - rc)) / w->fn[i];
+            wt = hcbd__rapid(r, sg, rc, A) / w->fn[i];
             /* the image of blob i moves with the velocity of its layer */
             u[0] = w->fvx[i] + k * vj;
             u[1] = w->fvy[i];
@@ -4294,7 +4309,7 @@ static void hcbd__hc_redistribute(hcbd_hc_world *w)
             r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
             if (r2 >= cut2) continue;
             r = sqrt(r2);
-            psi = (r <= sg ? A * (rc - sg) * (rc + sg - 2.0 * r) : A * (r - rc) * (r - rc)) /
+            psi = hcbd__rapid(r, sg, rc, A) /
                   w->fn[i] / w->pS[a];
             F[0] += psi * w->pFx[a];
             F[1] += psi * w->pFy[a];
@@ -4682,23 +4697,8 @@ void hcbd_hc_momentum(const hcbd_hc_world *w, double p[3])
 
 hcbd_result hcbd_hc_transverse_current(const hcbd_hc_world *w, int nk, double out[12])
 {
-    int i, k, d;
     if (!w || !out) return HCBD_ERR_NULL;
-    for (k = 0; k < 12; ++k) out[k] = 0.0;
-    for (i = 0; i < w->nf; ++i) {
-        double r[3], v[3];
-        r[0] = w->fx[i]; r[1] = w->fy[i]; r[2] = w->fz[i];
-        v[0] = w->fvx[i]; v[1] = w->fvy[i]; v[2] = w->fvz[i];
-        for (d = 0; d < 3; ++d) {
-            double ph = 2.0 * HCBD__PI * nk * r[d] / w->p.L[d];
-            double c = cos(ph), s = -sin(ph);
-            int a1 = (d + 1) % 3, a2 = (d + 2) % 3;
-            out[4 * d + 0] += v[a1] * c;
-            out[4 * d + 1] += v[a1] * s;
-            out[4 * d + 2] += v[a2] * c;
-            out[4 * d + 3] += v[a2] * s;
-        }
-    }
+    hcbd__tcurrent(w->nf, NULL, w->fx, w->fy, w->fz, w->fvx, w->fvy, w->fvz, w->p.L, nk, out);
     return HCBD_OK;
 }
 
