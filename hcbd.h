@@ -157,6 +157,16 @@ typedef enum hcbd_noise {
     HCBD_NOISE_UNIFORM = 1  /* pair noise only; uniform with unit variance */
 } hcbd_noise;
 
+typedef enum hcbd_pair_integrator {
+    HCBD_PAIR_EULER = 0,    /* the papers: all pair exchanges from v(t); the
+                               temperature is high by O(dt/tau)           */
+    HCBD_PAIR_SHARDLOW = 1  /* not in the papers: each pair's friction and
+                               noise solved exactly (pairwise Ornstein-
+                               Uhlenbeck) in a sweep over pairs in (min id,
+                               max id) order (Shardlow 2003); no O(dt/tau)
+                               temperature bias.  The sweep is serial.     */
+} hcbd_pair_integrator;
+
 typedef enum hcbd_wall_mode {
     HCBD_WALL_GAUSS = 0,   /* 2016 eq. 18: a exp(-b r^2) from planes inside
                               the walls; depletes the fluid next to them    */
@@ -185,6 +195,7 @@ typedef struct hcbd_params {
     hcbd_dynamics dynamics;
     hcbd_potential potential;
     hcbd_noise noise;
+    hcbd_pair_integrator pair_integrator; /* GI-BD pairs and walls        */
     double f;             /* star arms                                       */
     double sigma;         /* star core size                                  */
     double star_eps;      /* energy unit of the star potential (kT of 2014)  */
@@ -251,7 +262,7 @@ typedef struct hcbd_world {
     /* derived constants */
     double m, inv_m, w0, cw, cf, rho_norm, rlist, cutmax;
     double star_a, star_b, star_s, star_ab, star_s_sigma;
-    int has_pairs, has_fext, has_noise, gibd;
+    int has_pairs, has_fext, has_noise, gibd, shardlow;
     /* statistics */
     int64_t n_rebuilds, n_rescans; /* list builds; second scans after overflow */
     /* per-particle arrays (struct of arrays), storage order */
@@ -824,6 +835,7 @@ hcbd_params hcbd_params_default(void)
     p.dynamics = HCBD_DYN_GIBD;
     p.potential = HCBD_POT_STAR;
     p.noise = HCBD_NOISE_GAUSS;
+    p.pair_integrator = HCBD_PAIR_EULER;
     p.f = 128.0;
     p.sigma = 1.0;
     p.star_eps = 1.0;
@@ -906,12 +918,15 @@ hcbd_result hcbd_params_check(const hcbd_params *p, char *msg, size_t msg_size)
                 p->potential == HCBD_POT_TABLE, "potential", p->potential);
     HCBD__CHECK(p->noise == HCBD_NOISE_GAUSS || p->noise == HCBD_NOISE_UNIFORM,
                 "noise", p->noise);
+    HCBD__CHECK(p->pair_integrator == HCBD_PAIR_EULER || p->pair_integrator == HCBD_PAIR_SHARDLOW,
+                "pair_integrator", p->pair_integrator);
     if (p->dynamics == HCBD_DYN_GIBD) {
         HCBD__CHECK(isfinite(p->xip) && p->xip > 0, "xip", p->xip);
         HCBD__CHECK(isfinite(p->tau) && p->tau > 0, "tau", p->tau);
         /* Explicit Euler friction overshoots for tau < dt; 2014 eq. 27 asks
-           tau >= 10 dt for accuracy, which stays the caller's trade-off. */
-        HCBD__CHECK(p->tau >= p->dt, "tau", p->tau);
+           tau >= 10 dt for accuracy, which stays the caller's trade-off.
+           The exact pair solution has no such limit. */
+        if (p->pair_integrator == HCBD_PAIR_EULER) HCBD__CHECK(p->tau >= p->dt, "tau", p->tau);
         HCBD__CHECK(isfinite(p->Rc) && p->Rc > 0, "Rc", p->Rc);
         HCBD__CHECK(p->density_norm == 2014 || p->density_norm == 2016,
                     "density_norm", p->density_norm);
@@ -1510,6 +1525,7 @@ hcbd_result hcbd_world_init(hcbd_world *w, const hcbd_world_def *def, void *mem,
     w->has_pairs = hcbd__needs_pairs(p);
     w->has_fext = p->fext[0] != 0.0 || p->fext[1] != 0.0 || p->fext[2] != 0.0;
     w->has_noise = p->kT > 0.0;
+    w->shardlow = w->gibd && p->pair_integrator == HCBD_PAIR_SHARDLOW;
     w->le_on = p->gdot != 0.0;
     w->le_vjump = p->gdot * p->L[1];
     w->walls = HCBD__WALLS && p->wall_thickness > 0;
@@ -1860,21 +1876,22 @@ static double hcbd__art_wsum(const hcbd_world *w, double x, double y, double z)
    distances from the interface between them (the Morris plane); the noise
    carries sqrt(beta) so the pair keeps its fluctuation-dissipation balance.
    The wall absorbs the momentum. */
-static void hcbd__morris(const hcbd_world *w, int i, uint64_t key, double P[3])
+static void hcbd__morris(hcbd_world *w, int i, uint64_t key, double P[3], int exact)
 {
     const double Rc2 = w->p.Rc * w->p.Rc, invRc = 1.0 / w->p.Rc;
     const double cs = w->cf * w->m * w->m * w->p.dt / w->p.tau, two_kT = 2.0 * w->p.kT;
-    const double bmax = w->p.wall_beta_max;
-    const double xi = w->x[i], yi = w->y[i], zi = w->z[i];
-    const double vx = w->vx[i], vy = w->vy[i], vz = w->vz[i], iri = w->inv_rho[i];
+    const double bmax = w->p.wall_beta_max, m = w->m, inv_m = w->inv_m;
+    const double xi = w->x[i], yi = w->y[i], zi = w->z[i], iri = w->inv_rho[i];
     const uint64_t idk = (uint64_t)(uint32_t)w->id[i] << 32;
-    int cols[9], nc = hcbd__art_cols(w, xi, zi, cols), c;
+    double v[3];
+    int cols[9], nc = hcbd__art_cols(w, xi, zi, cols), c, d;
+    v[0] = w->vx[i]; v[1] = w->vy[i]; v[2] = w->vz[i];
     for (c = 0; c < nc; ++c) {
         int32_t k;
         for (k = w->acol_start[cols[c]]; k < w->acol_start[cols[c] + 1]; ++k) {
             double dx = hcbd__mi(xi - w->ax[k], w->p.L[0]), dy = hcbd__mi(yi - w->ay[k], w->p.L[1]);
             double dz = hcbd__mi(zi - w->az[k], w->p.L[2]), r2 = dx * dx + dy * dy + dz * dz;
-            double q, a, sdt, dA, dB, vw, beta;
+            double q, a, sdt, dA, dB, vw[3] = {0, 0, 0}, beta, nb, z3[3] = {0, 0, 0};
             if (r2 >= Rc2) continue;
             q = sqrt(r2) * invRc;
             a = 1.0 - q;
@@ -1882,24 +1899,29 @@ static void hcbd__morris(const hcbd_world *w, int i, uint64_t key, double P[3])
             if (dy > 0.0) { /* B below i: behind the bottom interface */
                 dA = yi - w->morris_lo;
                 dB = w->morris_lo - (yi - dy);
-                vw = w->p.wall_vx[0];
+                vw[0] = w->p.wall_vx[0];
             } else {
                 dA = w->morris_hi - yi;
                 dB = (yi - dy) - w->morris_hi;
-                vw = w->p.wall_vx[1];
+                vw[0] = w->p.wall_vx[1];
             }
             beta = (dA > 0.0 && dB >= 0.0) ? 1.0 + dB / dA : bmax;
             if (beta > bmax) beta = bmax;
-            P[0] -= beta * sdt * (vx - vw);
-            P[1] -= beta * sdt * vy;
-            P[2] -= beta * sdt * vz;
-            if (two_kT > 0.0) {
-                double z3[3], b = sqrt(two_kT * sdt * (w->p.wall_noise_beta ? beta : 1.0));
-                hcbd__pair_noise(w, hcbd__mix64(key ^ idk ^ (uint64_t)k), z3);
-                P[0] += b * z3[0]; P[1] += b * z3[1]; P[2] += b * z3[2];
+            nb = w->p.wall_noise_beta ? 1.0 : 1.0 / beta; /* noise variance factor */
+            if (two_kT > 0.0) hcbd__pair_noise(w, hcbd__mix64(key ^ idk ^ (uint64_t)k), z3);
+            if (exact) {
+                /* the wall is a reservoir: v - v_wall relaxes at the rate
+                   beta sdt / (m dt), solved over the step */
+                const double om = -expm1(-beta * sdt * inv_m);
+                const double b = sqrt(0.5 * two_kT * m * om * (2.0 - om) * nb);
+                for (d = 0; d < 3; ++d) v[d] += (-m * om * (v[d] - vw[d]) + b * z3[d]) * inv_m;
+            } else {
+                const double b = sqrt(two_kT * sdt * beta * nb);
+                for (d = 0; d < 3; ++d) P[d] += -beta * sdt * (v[d] - vw[d]) + b * z3[d];
             }
         }
     }
+    if (exact) { w->vx[i] = (hcbd_real)v[0]; w->vy[i] = (hcbd_real)v[1]; w->vz[i] = (hcbd_real)v[2]; }
 }
 
 int64_t hcbd_wall_penetrations(const hcbd_world *w, int64_t *last_step, int *last_id)
@@ -2259,6 +2281,7 @@ static void hcbd__forces(hcbd_world *w)
 {
     const int n = w->n, nt = w->p.threads;
     const int pot = w->p.potential != HCBD_POT_IDEAL, gibd = w->gibd;
+    const int fric = gibd && !w->shardlow; /* else the sweep does them */
     const int noise = w->has_noise, lag = w->p.lagged_density, flux = w->flux_on;
     const double vle = w->le_vjump;
     const hcbd__box box = hcbd__box_of(w);
@@ -2270,9 +2293,9 @@ static void hcbd__forces(hcbd_world *w)
     hcbd_real *HCBD__RESTRICT bFx = pot ? w->buf[w->bF] : NULL;
     hcbd_real *HCBD__RESTRICT bFy = pot ? w->buf[w->bF + 1] : NULL;
     hcbd_real *HCBD__RESTRICT bFz = pot ? w->buf[w->bF + 2] : NULL;
-    hcbd_real *HCBD__RESTRICT bPx = gibd ? w->buf[w->bP] : NULL;
-    hcbd_real *HCBD__RESTRICT bPy = gibd ? w->buf[w->bP + 1] : NULL;
-    hcbd_real *HCBD__RESTRICT bPz = gibd ? w->buf[w->bP + 2] : NULL;
+    hcbd_real *HCBD__RESTRICT bPx = fric ? w->buf[w->bP] : NULL;
+    hcbd_real *HCBD__RESTRICT bPy = fric ? w->buf[w->bP + 1] : NULL;
+    hcbd_real *HCBD__RESTRICT bPz = fric ? w->buf[w->bP + 2] : NULL;
     hcbd_real *HCBD__RESTRICT bW = lag ? w->buf[w->bW] : NULL;
     int i;
     (void)nt;
@@ -2297,7 +2320,7 @@ static void hcbd__forces(hcbd_world *w)
                     double fr = hcbd__force_over_r(w, r, r2);
                     Fx = fr * dx; Fy = fr * dy; Fz = fr * dz;
                 }
-                if (gibd && r2 < Rc2) {
+                if (fric && r2 < Rc2) {
                     double q = r * invRc, a = 1.0 - q;
                     double sdt = cs * (iri + w->inv_rho[j]) * a * a * a; /* S dt/tau */
                     /* j's image across the sheared boundary moves faster
@@ -2311,13 +2334,16 @@ static void hcbd__forces(hcbd_world *w)
                         Px += b * z3[0]; Py += b * z3[1]; Pz += b * z3[2];
                     }
                     if (lag) wv = cw * a * a * a * a * (4.0 * q + 1.0);
+                } else if (lag && r2 < Rc2) {
+                    double q = r * invRc, a = 1.0 - q;
+                    wv = cw * a * a * a * a * (4.0 * q + 1.0);
                 }
             }
             if (pot) {
                 fxs += Fx; fys += Fy; fzs += Fz;
                 bFx[p] = (hcbd_real)Fx; bFy[p] = (hcbd_real)Fy; bFz[p] = (hcbd_real)Fz;
             }
-            if (gibd) {
+            if (fric) {
                 /* the owner gets exactly the negative of what the partner
                    gets, so momentum is conserved to round-off in the sums */
                 pxs += (hcbd_real)Px; pys += (hcbd_real)Py; pzs += (hcbd_real)Pz;
@@ -2334,11 +2360,65 @@ static void hcbd__forces(hcbd_world *w)
         }
         if (flux) {
             w->fl_p[i] = (hcbd_real)sp;
-            w->fl_b[i] = (hcbd_real)sb;
+            if (fric) w->fl_b[i] = (hcbd_real)sb;
         }
         if (pot) { w->fx[i] = (hcbd_real)fxs; w->fy[i] = (hcbd_real)fys; w->fz[i] = (hcbd_real)fzs; }
-        if (gibd) { w->px[i] = (hcbd_real)pxs; w->py[i] = (hcbd_real)pys; w->pz[i] = (hcbd_real)pzs; }
+        if (fric) { w->px[i] = (hcbd_real)pxs; w->py[i] = (hcbd_real)pys; w->pz[i] = (hcbd_real)pzs; }
         if (lag) w->wown[i] = (hcbd_real)ws;
+    }
+}
+
+/* HCBD_PAIR_SHARDLOW: the friction and noise of each pair solved exactly
+   in turn.  For the pair, u = v_i - v_j obeys du = -(2 S/m) u dt + noise
+   with stationary variance 2 kT/m, so u' = u e + sqrt(2kT/m (1 - e^2)) z,
+   e = exp(-2 S dt/m), S dt = sdt as in the Euler scheme; i gets
+   P = (m/2)(u' - u) and j gets -P (momentum exact, Galilean invariant).
+   Every step of the sweep keeps the Maxwell distribution, so no
+   O(dt/tau) excess remains.  The pairs are visited by increasing owner id,
+   then partner id: the order, hence the bits, depend on neither threads
+   nor storage. */
+static void hcbd__shardlow(hcbd_world *w)
+{
+    const double m = w->m, inv_m = w->inv_m, kT = w->p.kT, vle = w->le_vjump;
+    const double Rc2 = w->p.Rc * w->p.Rc, invRc = 1.0 / w->p.Rc;
+    const double cs = w->cf * m * m * w->p.dt / w->p.tau;
+    const int noise = w->has_noise, flux = w->flux_on;
+    const int morris = HCBD__WALLS && w->walls && w->n_art > 0;
+    const uint64_t skey = hcbd__step_key(w, w->step);
+    const uint64_t wkey = morris ? hcbd__mix64(w->wall_pair_key ^ hcbd__mix64((uint64_t)w->step)) : 0;
+    const hcbd__box box = hcbd__box_of(w);
+    hcbd_real *HCBD__RESTRICT vx = w->vx, *HCBD__RESTRICT vy = w->vy, *HCBD__RESTRICT vz = w->vz;
+    int k;
+    for (k = 0; k < w->n; ++k) {
+        const int i = w->slot[k];
+        const double xi = w->x[i], yi = w->y[i], zi = w->z[i], iri = w->inv_rho[i];
+        double sb = 0.0;
+        int32_t p;
+        for (p = w->nb_start[i]; p < w->nb_start[i + 1]; ++p) {
+            const int j = w->nb_j[p];
+            double d[3], r2, a, sdt, om, c, Px, Py, Pz;
+            const int kk = hcbd__delta_box(&box, xi - w->x[j], yi - w->y[j], zi - w->z[j], d);
+            r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+            if (r2 >= Rc2) continue;
+            a = 1.0 - sqrt(r2) * invRc;
+            sdt = cs * (iri + w->inv_rho[j]) * a * a * a;
+            om = -expm1(-2.0 * sdt * inv_m); /* 1 - e */
+            c = 0.5 * m * om;
+            Px = -c * (vx[i] - vx[j] - kk * vle);
+            Py = -c * (vy[i] - vy[j]);
+            Pz = -c * (vz[i] - vz[j]);
+            if (noise) {
+                double z3[3], b = sqrt(0.5 * kT * m * om * (2.0 - om));
+                hcbd__pair_noise(w, hcbd__pair_key(skey, w->id[i], w->id[j]), z3);
+                Px += b * z3[0]; Py += b * z3[1]; Pz += b * z3[2];
+            }
+            vx[i] = (hcbd_real)(vx[i] + Px * inv_m); vx[j] = (hcbd_real)(vx[j] - Px * inv_m);
+            vy[i] = (hcbd_real)(vy[i] + Py * inv_m); vy[j] = (hcbd_real)(vy[j] - Py * inv_m);
+            vz[i] = (hcbd_real)(vz[i] + Pz * inv_m); vz[j] = (hcbd_real)(vz[j] - Pz * inv_m);
+            sb += d[1] * Px;
+        }
+        if (morris && hcbd__near_wall(w, yi)) hcbd__morris(w, i, wkey, NULL, 1);
+        if (flux) w->fl_b[i] = (hcbd_real)sb;
     }
 }
 
@@ -2348,6 +2428,7 @@ static hcbd_result hcbd__integrate(hcbd_world *w)
 {
     const int n = w->n, nt = w->p.threads;
     const int pot = w->p.potential != HCBD_POT_IDEAL, gibd = w->gibd;
+    const int fric = gibd && !w->shardlow;
     const int noise = w->has_noise, lag = gibd && w->p.lagged_density, fext = w->has_fext;
     const double dt = w->p.dt, dt_xi = dt / w->p.xi, sdr = sqrt(2.0 * w->p.kT * dt / w->p.xi);
     const double inv_m = w->inv_m, dt_m = dt * w->inv_m;
@@ -2357,7 +2438,7 @@ static hcbd_result hcbd__integrate(hcbd_world *w)
     const int track = w->has_pairs; /* displacement since the list build */
     const int fext_dr = w->fext_dr, walls = HCBD__WALLS && w->walls;
     const int gauss = walls && w->has_gauss, refl = walls && w->has_refl;
-    const int morris = walls && w->n_art > 0;
+    const int morris = walls && w->n_art > 0 && fric;
     const double wlo = w->wall_lo, whi = w->wall_hi;
     const uint64_t wkey = morris ? hcbd__mix64(w->wall_pair_key ^ hcbd__mix64((uint64_t)w->step)) : 0;
     int64_t npen = 0;
@@ -2370,9 +2451,9 @@ static hcbd_result hcbd__integrate(hcbd_world *w)
     const hcbd_real *HCBD__RESTRICT bFx = pot ? w->buf[w->bF] : NULL;
     const hcbd_real *HCBD__RESTRICT bFy = pot ? w->buf[w->bF + 1] : NULL;
     const hcbd_real *HCBD__RESTRICT bFz = pot ? w->buf[w->bF + 2] : NULL;
-    const hcbd_real *HCBD__RESTRICT bPx = gibd ? w->buf[w->bP] : NULL;
-    const hcbd_real *HCBD__RESTRICT bPy = gibd ? w->buf[w->bP + 1] : NULL;
-    const hcbd_real *HCBD__RESTRICT bPz = gibd ? w->buf[w->bP + 2] : NULL;
+    const hcbd_real *HCBD__RESTRICT bPx = fric ? w->buf[w->bP] : NULL;
+    const hcbd_real *HCBD__RESTRICT bPy = fric ? w->buf[w->bP + 1] : NULL;
+    const hcbd_real *HCBD__RESTRICT bPz = fric ? w->buf[w->bP + 2] : NULL;
     const hcbd_real *HCBD__RESTRICT bW = lag ? w->buf[w->bW] : NULL;
     double dmax = 0.0;
     int bad_step = INT_MAX, bad_nan = INT_MAX, i;
@@ -2394,7 +2475,7 @@ static hcbd_result hcbd__integrate(hcbd_world *w)
                 F[2] -= bFz[p];
             }
         }
-        if (gibd) {
+        if (fric) {
             P[0] = w->px[i]; P[1] = w->py[i]; P[2] = w->pz[i];
             for (q = w->rev_start[i]; q < w->rev_start[i + 1]; ++q) {
                 int32_t p = w->rev_p[q];
@@ -2403,20 +2484,22 @@ static hcbd_result hcbd__integrate(hcbd_world *w)
                 P[2] -= bPz[p];
                 if (lag) ws += bW[p];
             }
+        } else if (lag) {
+            for (q = w->rev_start[i]; q < w->rev_start[i + 1]; ++q) ws += bW[w->rev_p[q]];
         }
         if (gauss) {
             double fw;
             hcbd_wall_potential(&w->p, w->y[i], &fw);
             F[1] += fw;
         }
-        if (morris && hcbd__near_wall(w, w->y[i])) hcbd__morris(w, i, wkey, P);
+        if (morris && hcbd__near_wall(w, w->y[i])) hcbd__morris(w, i, wkey, P, 0);
         /* G: the body force when it drives only the background */
         if (fext) {
             if (fext_dr) { F[0] += gx; F[1] += gy; F[2] += gz; }
             else { G[0] = gx; G[1] = gy; G[2] = gz; }
         }
         for (d = 0; d < 3; ++d) dr[d] = F[d] * dt_xi;
-        if (gibd) {
+        if (fric) {
             dr[0] += w->vx[i] * dt; dr[1] += w->vy[i] * dt; dr[2] += w->vz[i] * dt;
         }
         if (noise) {
@@ -2434,6 +2517,9 @@ static hcbd_result hcbd__integrate(hcbd_world *w)
             double vz = w->vz[i] + (F[2] + G[2]) * dt_m + P[2] * inv_m;
             w->vx[i] = (hcbd_real)vx; w->vy[i] = (hcbd_real)vy; w->vz[i] = (hcbd_real)vz;
             v2 = vx * vx + vy * vy + vz * vz;
+            /* with the exact pair sweep, kick before drift (symplectic
+               Euler): the explicit drift with the old v heats by O(dt) */
+            if (!fric) { dr[0] += vx * dt; dr[1] += vy * dt; dr[2] += vz * dt; }
             if (lag) {
                 double rho = w->m * w->rho_norm * (w->w0 + ws);
                 w->rho[i] = (hcbd_real)rho;
@@ -2590,7 +2676,10 @@ hcbd_result hcbd_step(hcbd_world *w, int nsteps)
             w->rho_current = 0;
         }
         if (w->gibd && hcbd__density_stale(w)) hcbd__density(w);
-        if (w->has_pairs) hcbd__forces(w);
+        if (w->has_pairs && !(w->shardlow && w->p.potential == HCBD_POT_IDEAL &&
+                              !w->p.lagged_density && !w->flux_on))
+            hcbd__forces(w);
+        if (w->shardlow) hcbd__shardlow(w);
         r = hcbd__integrate(w);
         if (r == HCBD_OK && w->flux_on) hcbd__flux_add(w);
         w->step++;
