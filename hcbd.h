@@ -543,6 +543,15 @@ typedef struct hcbd_hc_params {
     double n_max;         /* number density of the melt (phi = n / n_max)   */
     double chi;           /* Flory-Huggins parameter                        */
     hcbd_coupling coupling;
+    /* Integration (not in the paper).  pair_integrator: HCBD_PAIR_SHARDLOW
+       solves each fluid pair's viscous friction and noise exactly in a
+       serial sweep (no O(dt) temperature excess); the pressure stays
+       explicit.  substeps: fluid steps of dt/substeps per polymer step of
+       dt (multiple time stepping); the polymer forces on the fluid are
+       held over the step and the polymers move with the fluid velocity
+       interpolated at its start, as with substeps = 1. */
+    hcbd_pair_integrator pair_integrator;
+    int substeps;
     uint64_t seed;
     int threads;
 } hcbd_hc_params;
@@ -3567,6 +3576,8 @@ hcbd_result hcbd_hc_params_si(const hcbd_hc_si *si, double time_unit,
     p->P0 = si->P0 * len * time_unit * time_unit / M;
     p->h = si->h_sigma;
     p->fluctuations = 1;
+    p->pair_integrator = HCBD_PAIR_EULER;
+    p->substeps = 1;
     p->xi = si->xi * time_unit / M;
     p->sigma = 1.0;
     p->rc = si->rc_sigma;
@@ -3631,6 +3642,9 @@ hcbd_result hcbd_hc_params_check(const hcbd_hc_params *p, char *msg, size_t msg_
     HCBD__CHECK(isfinite(p->chi), "chi", p->chi);
     HCBD__CHECK(p->coupling == HCBD_COUPLE_SHEPARD || p->coupling == HCBD_COUPLE_RAW,
                 "coupling", (double)p->coupling);
+    HCBD__CHECK(p->pair_integrator == HCBD_PAIR_EULER || p->pair_integrator == HCBD_PAIR_SHARDLOW,
+                "pair_integrator", (double)p->pair_integrator);
+    HCBD__CHECK(p->substeps >= 1 && p->substeps <= 1000, "substeps", (double)p->substeps);
     HCBD__CHECK(p->threads >= 1 && p->threads <= 1024, "threads", (double)p->threads);
     reach = 2.0 * p->h > p->rc ? 2.0 * p->h : p->rc;
     for (d = 0; d < 3; ++d)
@@ -4410,16 +4424,85 @@ static void hcbd__hc_redistribute(hcbd_hc_world *w)
     }
 }
 
-/* Fluid velocities of t + dt (MODEL 6) into the scratch velocities. */
-static void hcbd__hc_fluid_kick(hcbd_hc_world *w)
+/* The M4 kernel's derivative w'(r) for 0 <= r < 2h, c1 = 1/(4 pi h^4). */
+static inline double hcbd__m4d(double r, double h, double c1)
 {
-    const int n = w->nf, nt = w->p.threads, noise = w->noise_f, stress = w->stress_on;
+    const double q = r / h, a = 2.0 - q;
+    return q >= 1.0 ? -3.0 * c1 * a * a : c1 * (-3.0 * a * a + 12.0 * (1.0 - q) * (1.0 - q));
+}
+
+/* Morris friction f_ij = -2 eta w'/(n_i n_j r) of a fluid pair, with its
+   r -> 0 limit. */
+static inline double hcbd__morris_f(double two_eta, double r, double h, double c1, double ni,
+                                    double nj)
+{
+    return r > 0 ? -two_eta * hcbd__m4d(r, h, c1) / (ni * nj * r) : two_eta * 3.0 * c1 / (h * ni * nj);
+}
+
+/* HCBD_PAIR_SHARDLOW for the fluid: each pair's Morris friction and noise
+   solved exactly in turn (the pair's relative velocity is an Ornstein-
+   Uhlenbeck process with rate 2 f/m and variance 2 kT/m, as in
+   hcbd__shardlow), pairs i < j by i, then by cell order of j; serial, so
+   the bits do not depend on threads.  The viscous and noise stresses go
+   together into the viscous column. */
+static void hcbd__hc_fluid_shardlow(hcbd_hc_world *w, double dt, uint64_t skey)
+{
+    const int n = w->nf, noise = w->noise_f, stress = w->stress_on;
+    const double h = w->p.h, cut2 = 4.0 * h * h, c1 = 1.0 / (4.0 * HCBD__PI * h * h * h * h);
+    const double two_eta = 2.0 * w->p.eta, m = w->m, inv_m = w->inv_m, kT = w->p.kT;
+    const double vj = w->le_vjump;
+    const hcbd__box box = hcbd__hc_box(w);
+    hcbd_real *HCBD__RESTRICT vx = w->fvx, *HCBD__RESTRICT vy = w->fvy, *HCBD__RESTRICT vz = w->fvz;
+    int i;
+    for (i = 0; i < n; ++i) {
+        const double xi = w->fx[i], yi = w->fy[i], zi = w->fz[i], ni = w->fn[i];
+        double sv = 0;
+        int j;
+        HCBD__NEAR(&w->gf, w->fcell[i], j) {
+            double d[3], r2, om, c, P[3];
+            int k;
+            if (j <= i) continue;
+            k = hcbd__delta_box(&box, xi - w->fx[j], yi - w->fy[j], zi - w->fz[j], d);
+            r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+            if (r2 >= cut2) continue;
+            om = -expm1(-2.0 * dt * inv_m * hcbd__morris_f(two_eta, sqrt(r2), h, c1, ni, w->fn[j]));
+            c = 0.5 * m * om;
+            P[0] = -c * (vx[i] - vx[j] - k * vj);
+            P[1] = -c * (vy[i] - vy[j]);
+            P[2] = -c * (vz[i] - vz[j]);
+            if (noise) {
+                const double b = sqrt(0.5 * kT * m * om * (2.0 - om));
+                hcbd__gen g;
+                g.xo = NULL;
+                g.sm = hcbd__pair_key(skey, i, j);
+                P[0] += b * hcbd__normal(w->zig, &g);
+                P[1] += b * hcbd__normal(w->zig, &g);
+                P[2] += b * hcbd__normal(w->zig, &g);
+            }
+            vx[i] = (hcbd_real)(vx[i] + P[0] * inv_m); vx[j] = (hcbd_real)(vx[j] - P[0] * inv_m);
+            vy[i] = (hcbd_real)(vy[i] + P[1] * inv_m); vy[j] = (hcbd_real)(vy[j] - P[1] * inv_m);
+            vz[i] = (hcbd_real)(vz[i] + P[2] * inv_m); vz[j] = (hcbd_real)(vz[j] - P[2] * inv_m);
+            sv += d[1] * P[0] / dt;
+        }
+        if (stress) {
+            w->fs[3 * i + 1] = sv;
+            w->fs[3 * i + 2] = 0;
+        }
+    }
+}
+
+/* Fluid velocities of t + dt (MODEL 6) into the scratch velocities.  With
+   the Shardlow sweep the viscous pairs are done and only pressure, body and
+   polymer forces remain. */
+static void hcbd__hc_fluid_kick(hcbd_hc_world *w, double dt, uint64_t skey)
+{
+    const int n = w->nf, nt = w->p.threads, stress = w->stress_on;
+    const int visc = w->p.pair_integrator == HCBD_PAIR_EULER, noise = visc && w->noise_f;
     const int rp = w->p.reverse_poiseuille;
     const double h = w->p.h, cut2 = 4.0 * h * h, c1 = 1.0 / (4.0 * HCBD__PI * h * h * h * h);
-    const double two_eta = 2.0 * w->p.eta, dt = w->p.dt, dt_m = dt * w->inv_m;
+    const double two_eta = 2.0 * w->p.eta, dt_m = dt * w->inv_m;
     const double sn = noise ? sqrt(2.0 * w->p.kT / dt) : 0.0, vj = w->le_vjump;
     const double gx = w->p.g[0], gy = w->p.g[1], gz = w->p.g[2], half = 0.5 * w->p.L[1];
-    const uint64_t skey = hcbd__mix64(w->key_fpair ^ hcbd__mix64((uint64_t)w->step));
     const hcbd__box box = hcbd__hc_box(w);
     double gmean = 0;
     int i;
@@ -4439,27 +4522,21 @@ static void hcbd__hc_fluid_kick(hcbd_hc_world *w)
         int j;
         F[0] = w->fax[i]; F[1] = w->fay[i]; F[2] = w->faz[i];
         HCBD__NEAR(&w->gf, w->fcell[i], j) {
-            double d[3], r2, r, q, a, wd, fp, f, Fv[3];
+            double d[3], r2, r, fp, f = 0, Fv[3] = {0, 0, 0};
             int k;
             if (j == i) continue;
             k = hcbd__delta_box(&box, xi - w->fx[j], yi - w->fy[j], zi - w->fz[j], d);
             r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
             if (r2 >= cut2) continue;
             r = sqrt(r2);
-            q = r / h;
-            a = 2.0 - q;
-            wd = q >= 1.0 ? -3.0 * c1 * a * a : c1 * (-3.0 * a * a + 12.0 * (1.0 - q) * (1.0 - q));
-            if (r > 0) {
-                /* -(P_i/n_i^2 + P_j/n_j^2) w' e_ij, and f_ij = -2 eta w'/(n_i n_j r) */
-                fp = -(Pi + w->fPn2[j]) * wd / r;
-                f = -two_eta * wd / (ni * w->fn[j] * r);
-            } else {
-                fp = 0;
-                f = two_eta * 3.0 * c1 / (h * ni * w->fn[j]); /* the r -> 0 limit */
+            /* -(P_i/n_i^2 + P_j/n_j^2) w' e_ij */
+            fp = r > 0 ? -(Pi + w->fPn2[j]) * hcbd__m4d(r, h, c1) / r : 0.0;
+            if (visc) {
+                f = hcbd__morris_f(two_eta, r, h, c1, ni, w->fn[j]);
+                Fv[0] = -f * (vxi - (w->fvx[j] + k * vj));
+                Fv[1] = -f * (vyi - w->fvy[j]);
+                Fv[2] = -f * (vzi - w->fvz[j]);
             }
-            Fv[0] = -f * (vxi - (w->fvx[j] + k * vj));
-            Fv[1] = -f * (vyi - w->fvy[j]);
-            Fv[2] = -f * (vzi - w->fvz[j]);
             F[0] += fp * d[0] + Fv[0];
             F[1] += fp * d[1] + Fv[1];
             F[2] += fp * d[2] + Fv[2];
@@ -4489,8 +4566,10 @@ static void hcbd__hc_fluid_kick(hcbd_hc_world *w)
         w->nvz[i] = (hcbd_real)(vzi + dt_m * F[2] + sgn * gz * dt);
         if (stress) {
             w->fs[3 * i] = sp;
-            w->fs[3 * i + 1] = sv;
-            w->fs[3 * i + 2] = sz;
+            if (visc) {
+                w->fs[3 * i + 1] = sv;
+                w->fs[3 * i + 2] = sz;
+            }
         }
     }
 }
@@ -4549,12 +4628,15 @@ static inline int hcbd__hc_move(const hcbd_hc_world *w, double s_new, double *x,
    For the reversible pressure forces it keeps phase-space volume, so sound
    waves neither grow nor decay from the integrator; drifting with the old
    velocities (explicit Euler) amplifies them every step. */
-static int hcbd__hc_drift(hcbd_hc_world *w, int *why)
+/* Moves the fluid over dt_f (advancing the Lees-Edwards offset) and/or
+   the polymers over dt (with the offset as it then stands). */
+static int hcbd__hc_drift(hcbd_hc_world *w, double dt_f, int fluid, int poly, int *why)
 {
-    const int nf = w->nf, np = w->np, nt = w->p.threads, noise = w->noise_p;
+    const int nf = fluid ? w->nf : 0, np = poly ? w->np : 0, nt = w->p.threads, noise = w->noise_p;
     const double dt = w->p.dt, lim_f = 0.5 * w->p.h, lim_p = 0.25 * w->p.rc, vj = w->le_vjump;
     const double sdr = sqrt(2.0 * w->p.kT * dt / w->p.xi);
-    const double s_new = fmod(w->le_offset + w->p.gdot * w->p.L[1] * dt, w->p.L[0]);
+    const double s_new = fluid ? fmod(w->le_offset + w->p.gdot * w->p.L[1] * dt_f, w->p.L[0])
+                               : w->le_offset;
     const uint64_t skey = hcbd__mix64(w->key_poly ^ hcbd__mix64((uint64_t)w->step));
     int i, bad_f = INT_MAX, bad_p = INT_MAX, nan_f = INT_MAX, nan_p = INT_MAX;
     (void)nt;
@@ -4567,11 +4649,11 @@ static int hcbd__hc_drift(hcbd_hc_world *w, int *why)
             if (i < nan_f) nan_f = i;
             continue;
         }
-        if ((v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) * dt * dt > lim_f * lim_f && i < bad_f)
+        if ((v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) * dt_f * dt_f > lim_f * lim_f && i < bad_f)
             bad_f = i;
-        x = w->fx[i] + v[0] * dt;
-        y = w->fy[i] + v[1] * dt;
-        z = w->fz[i] + v[2] * dt;
+        x = w->fx[i] + v[0] * dt_f;
+        y = w->fy[i] + v[1] * dt_f;
+        z = w->fz[i] + v[2] * dt_f;
         k = hcbd__hc_move(w, s_new, &x, &y, &z);
         w->fx[i] = (hcbd_real)x;
         w->fy[i] = (hcbd_real)y;
@@ -4695,25 +4777,39 @@ hcbd_result hcbd_hc_step(hcbd_hc_world *w, int nsteps)
     if (nsteps < 0)
         return hcbd__fail(&w->err, HCBD_ERR_PARAM, -1, -1, "nsteps = %d is negative", nsteps);
     for (s = 0; s < nsteps; ++s) {
+        const int nsub = w->p.substeps;
+        const double dt_f = w->p.dt / nsub;
         hcbd_result r;
-        int bad, why = 0, i;
+        int bad = -1, why = 0, i, k;
         if (!w->ready && (r = hcbd__hc_prepare(w, w->step)) != HCBD_OK) return r;
-        for (i = 0; i < w->nf; ++i) {
-            double x = w->fn[i] / w->p.nbar;
-            if (!(x > 1.0 / 3.0 && x < 3.0))
-                return hcbd__fail(&w->err, HCBD_ERR_UNSTABLE, w->step, i,
-                                  "fluid blob %d: density n/nbar = %g is outside (1/3, 3): "
-                                  "dt too long for the sound speed or the flow", i, x);
+        for (k = 0; k < nsub && bad < 0; ++k) {
+            const uint64_t skey = hcbd__mix64(w->key_fpair ^ hcbd__mix64((uint64_t)(w->step * nsub + k)));
+            if (k > 0) { /* the fluid alone moved: its own grid and densities */
+                hcbd__grid_build(&w->gf, w->p.L, w->nf, w->fx, w->fy, w->fz, w->fcell);
+                hcbd__hc_fluid_density(w);
+            }
+            for (i = 0; i < w->nf; ++i) {
+                double x = w->fn[i] / w->p.nbar;
+                if (!(x > 1.0 / 3.0 && x < 3.0))
+                    return hcbd__fail(&w->err, HCBD_ERR_UNSTABLE, w->step, i,
+                                      "fluid blob %d: density n/nbar = %g is outside (1/3, 3): "
+                                      "dt too long for the sound speed or the flow", i, x);
+            }
+            if (w->p.pair_integrator == HCBD_PAIR_SHARDLOW) hcbd__hc_fluid_shardlow(w, dt_f, skey);
+            hcbd__hc_fluid_kick(w, dt_f, skey);
+            if (k == nsub - 1) {
+                if (w->stress_on) hcbd__hc_stress_add(w);
+                if (w->transient && w->np > 0) hcbd__hc_lambda_update(w);
+            }
+            bad = hcbd__hc_drift(w, dt_f, 1, nsub == 1, &why);
         }
-        hcbd__hc_fluid_kick(w);
-        if (w->stress_on) hcbd__hc_stress_add(w);
-        if (w->transient && w->np > 0) hcbd__hc_lambda_update(w);
-        bad = hcbd__hc_drift(w, &why);
+        if (bad < 0 && nsub > 1) bad = hcbd__hc_drift(w, dt_f, 0, 1, &why);
         w->step++;
         w->ready = 0;
         if (bad >= 0)
             return hcbd__fail(&w->err, why < 2 ? HCBD_ERR_NONFINITE : HCBD_ERR_UNSTABLE,
-                              w->step, bad, "%s (id %d, dt = %g)", why_s[why], bad, w->p.dt);
+                              w->step, bad, "%s (id %d, dt = %g, substeps %d)", why_s[why], bad,
+                              w->p.dt, nsub);
     }
     if (!w->ready) return hcbd__hc_prepare(w, w->step);
     return HCBD_OK;

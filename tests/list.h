@@ -65,6 +65,7 @@ T(test_hc_lees_edwards_two_species)
 T(test_hc_determinism)
 T(test_hc_bad_inputs)
 T(test_hc_fluid_equipartition)
+T(test_hc_fluid_equipartition_shardlow)
 T(test_hc_fluid_viscosity)
 T(test_hc_poiseuille_no_lag)
 #endif
