@@ -394,6 +394,23 @@ typedef struct hcbd_theory {
 } hcbd_theory;
 hcbd_result hcbd_theory_of(const hcbd_params *p, hcbd_theory *t);
 
+/* >>stability: the limits of a scene, each as a value against its bound in
+   the same units (mostly dt against a largest dt) with margin bound/value
+   (> 1 inside, < 1 crossed).  guard names what stops a run that crosses it
+   (a result code), or "accuracy" where crossing costs only accuracy, or
+   "speed".  bench/stability measures where runs really fail. */
+typedef struct hcbd_limit {
+    const char *name;   /* the limit and its source                         */
+    const char *guard;
+    double value, bound, margin;
+} hcbd_limit;
+#define HCBD_MAX_LIMITS 8
+/* Fills out[0..*n-1] (room for HCBD_MAX_LIMITS). */
+hcbd_result hcbd_stability(const hcbd_params *p, hcbd_limit *out, int *n);
+/* One line per limit into buf (always terminated); returns the length
+   the full text needs, as snprintf does. */
+int hcbd_limits_format(const hcbd_limit *l, int n, char *buf, size_t size);
+
 /* Slab profiles across y: number density, mean background velocity and
    temperature (m times the velocity variance about the slab mean, averaged
    over components, 2016 sec. IV B), each with the standard error of its
@@ -703,6 +720,9 @@ typedef struct hcbd_hc_theory {
     double nu, cs, m, v_max_rp, dt_visc, dt_sound;
 } hcbd_hc_theory;
 hcbd_result hcbd_hc_theory_of(const hcbd_hc_params *p, hcbd_hc_theory *t);
+/* The 2018 model's limits (see hcbd_stability); fluid limits apply to the
+   fluid sub-step dt/substeps. */
+hcbd_result hcbd_hc_stability(const hcbd_hc_params *p, hcbd_limit *out, int *n);
 
 /* >>kernels of the 2018 model */
 double hcbd_m4(double r, double h);
@@ -1338,6 +1358,102 @@ hcbd_result hcbd_theory_of(const hcbd_params *p, hcbd_theory *t)
     t->v_max = t->g * t->width * t->width / (8.0 * t->nu);
     t->re_max = p->sigma * fabs(t->v_max) / t->nu;
     t->depletion_width = hcbd__depletion(p);
+    return HCBD_OK;
+}
+
+static void hcbd__limit(hcbd_limit *out, int *n, const char *name, const char *guard, double value,
+                        double bound)
+{
+    hcbd_limit *l = out + (*n)++;
+    l->name = name;
+    l->guard = guard;
+    l->value = value;
+    l->bound = bound;
+    l->margin = value > 0 ? bound / value : HUGE_VAL;
+}
+
+int hcbd_limits_format(const hcbd_limit *l, int n, char *buf, size_t size)
+{
+    int k, len = 0;
+    if (buf && size) buf[0] = 0;
+    for (k = 0; l && k < n; ++k) {
+        const int room = buf && (size_t)len < size;
+        int c = snprintf(room ? buf + len : NULL, room ? size - (size_t)len : 0,
+                         "  %-56s %10.3g / %-10.3g margin %8.3g  %s%s\n", l[k].name, l[k].value,
+                         l[k].bound, l[k].margin, l[k].guard, l[k].margin < 1 ? "  CROSSED" : "");
+        if (c > 0) len += c;
+    }
+    return len;
+}
+
+/* Stiffness |dF/dr| of the pair force at r (central difference). */
+static double hcbd__stiffness(const hcbd_params *p, double r)
+{
+    const double e = 1e-4 * p->sigma;
+    if (p->potential == HCBD_POT_STAR)
+        return fabs(hcbd_star_force(r + e, p->f, p->sigma, p->star_eps) -
+                    hcbd_star_force(r - e, p->f, p->sigma, p->star_eps)) / (2 * e);
+    if (p->potential == HCBD_POT_TABLE && p->table_F && p->table_n > 1) {
+        const double dr = (p->rcut - p->table_r0) / (p->table_n - 1);
+        double k = 0;
+        int i;
+        for (i = 1; i < p->table_n; ++i)
+            if (p->table_r0 + i * dr >= r - dr) { /* closer pairs are rare */
+                double s = fabs(p->table_F[i] - p->table_F[i - 1]) / dr;
+                if (s > k) k = s;
+            }
+        return k;
+    }
+    return 0;
+}
+
+hcbd_result hcbd_stability(const hcbd_params *p, hcbd_limit *out, int *n)
+{
+    hcbd_theory th;
+    hcbd_result r;
+    const int gibd = p && p->dynamics == HCBD_DYN_GIBD;
+    double k, disp, m = 0;
+    if (!p || !out || !n) return HCBD_ERR_NULL;
+    *n = 0;
+    if ((r = hcbd_theory_of(p, &th)) != HCBD_OK) return r;
+    if (gibd) m = th.m;
+    if (gibd && p->pair_integrator == HCBD_PAIR_EULER) {
+        hcbd__limit(out, n, "Euler pair friction: tau >= 10 dt (2014 eq. 27)", "accuracy", p->dt,
+                    0.1 * p->tau);
+        /* a pair's Euler factor 1 - 2 sum_j f_ij dt/tau, sum_j f_ij ~ 1 */
+        hcbd__limit(out, n, "Euler pair friction: dt < tau (overshoot)", "HCBD_ERR_PARAM", p->dt,
+                    p->tau);
+    }
+    if (p->potential != HCBD_POT_IDEAL) {
+        /* the stiffest pair of a liquid sits near the core (stars) or the
+           table's closest tenth; explicit Euler of x' = -k x / xi is stable
+           for dt < 2 xi / k */
+        double rk = p->potential == HCBD_POT_STAR ? p->sigma
+                                                  : p->table_r0 + 0.1 * (p->rcut - p->table_r0);
+        k = hcbd__stiffness(p, rk);
+        if (k > 0) {
+            hcbd__limit(out, n, "force: dt < 2 xi / k, k = |F'| at the core", "HCBD_ERR_UNSTABLE",
+                        p->dt, 2.0 * p->xi / k);
+            if (gibd)
+                hcbd__limit(out, n, "force on the background: dt < 2 sqrt(m / k)", "HCBD_ERR_NONFINITE",
+                            p->dt, 2.0 * sqrt(m / k));
+        }
+    }
+    /* rms displacement per step: Brownian plus the carried velocity */
+    disp = sqrt(6.0 * p->kT * p->dt / p->xi) + (gibd ? sqrt(3.0 * p->kT / m) * p->dt : 0.0);
+    if (hcbd__needs_pairs(p)) {
+        hcbd__limit(out, n, "rms step vs skin/2 (list every step beyond)", "speed", disp,
+                    0.5 * p->skin);
+        hcbd__limit(out, n, "rms step vs half the interaction range / 4", "HCBD_ERR_UNSTABLE", disp,
+                    0.125 * hcbd__cutmax(p));
+    }
+    if (gibd && (th.g != 0 || p->gdot != 0)) {
+        double re = th.re_max;
+        if (p->gdot != 0) re = p->sigma * fabs(p->gdot) * p->L[1] / th.nu;
+        hcbd__limit(out, n, p->gdot != 0 ? "Reynolds sigma gdot L / nu < 1"
+                                         : "Reynolds sigma g L^2/(8 nu^2) < 1 (2016 eq. 39)",
+                    "accuracy", re, 1.0);
+    }
     return HCBD_OK;
 }
 
@@ -3670,6 +3786,42 @@ hcbd_result hcbd_hc_theory_of(const hcbd_hc_params *p, hcbd_hc_theory *t)
     t->v_max_rp = t->nu > 0 ? p->g[0] * p->L[1] * p->L[1] / (32.0 * t->nu) : HUGE_VAL;
     t->dt_visc = t->nu > 0 ? 0.125 * p->h * p->h / t->nu : HUGE_VAL;
     t->dt_sound = t->cs > 0 ? 0.25 * p->h / t->cs : HUGE_VAL;
+    return HCBD_OK;
+}
+
+hcbd_result hcbd_hc_stability(const hcbd_hc_params *p, hcbd_limit *out, int *n)
+{
+    hcbd_hc_theory th;
+    hcbd_result r;
+    double dtf, g, disp;
+    char msg[8];
+    if (!p || !out || !n) return HCBD_ERR_NULL;
+    *n = 0;
+    if ((r = hcbd_hc_params_check(p, msg, sizeof msg)) != HCBD_OK) return r;
+    hcbd_hc_theory_of(p, &th);
+    dtf = p->dt / p->substeps;
+    g = sqrt(p->g[0] * p->g[0] + p->g[1] * p->g[1] + p->g[2] * p->g[2]);
+    /* Morris et al. 1997 eq. 9-11 */
+    hcbd__limit(out, n, "viscous: dt_f < 0.125 h^2 / nu", "HCBD_ERR_UNSTABLE (density)", dtf,
+                th.dt_visc);
+    hcbd__limit(out, n, "acoustic: dt_f < 0.25 h / c_s", "HCBD_ERR_UNSTABLE (density)", dtf,
+                th.dt_sound);
+    if (g > 0)
+        hcbd__limit(out, n, "body force: dt_f < 0.25 sqrt(h / g)", "HCBD_ERR_UNSTABLE (density)", dtf,
+                    0.25 * sqrt(p->h / g));
+    if (p->fluctuations && p->pair_integrator == HCBD_PAIR_EULER)
+        /* measured: T/kT - 1 = 0.33 dt_f / dt_visc (tests, hcbd_fluid) */
+        hcbd__limit(out, n, "Euler viscous noise: T excess 0.33 dt_f/dt_visc < 1 %",
+                    "accuracy", dtf, 0.03 * th.dt_visc);
+    /* polymers: Brownian step plus the fastest flow against the rc/4 guard */
+    disp = sqrt(6.0 * p->kT * p->dt / p->xi) +
+           (fabs(th.v_max_rp) < HUGE_VAL && p->reverse_poiseuille ? fabs(th.v_max_rp) : 0.0) * p->dt +
+           fabs(p->gdot) * 0.5 * p->L[1] * p->dt;
+    hcbd__limit(out, n, "polymer step vs rc/4", "HCBD_ERR_UNSTABLE", disp, 0.25 * p->rc);
+    if (p->alpha > 0)
+        /* one transient spring is as stiff as alpha lambda_eq'^2 <= 4 alpha / rc^2 */
+        hcbd__limit(out, n, "transient spring: dt < xi rc^2 / (2 alpha) per partner",
+                    "HCBD_ERR_UNSTABLE", p->dt, p->xi * p->rc * p->rc / (2.0 * p->alpha));
     return HCBD_OK;
 }
 

@@ -182,6 +182,7 @@ int main(int argc, char **argv)
         size_t bytes = hcbd_profile_bytes(nslab);
         p->xip = xips[r];
         p->fext[0] = g_force * p->xip * p->tau; /* F = m g, m = xi' tau */
+        print_limits(p);
         if (hcbd_world_create(&w, &c.def) != HCBD_OK) {
             fprintf(stderr, "channel_flow: %s\n", w.err.msg);
             return 2;

@@ -228,4 +228,24 @@ static void progress(const config *c, int done, int total, const struct timespec
             c->name, done, total, 100.0 * done / total, el, done ? el / done * (total - done) : 0.0,
             tty ? (done == total ? "\n" : "") : "\n");
 }
+
+/* The scene's stability limits with their margins (hcbd_stability),
+   printed at start. */
+#if HCBD_MODEL == HCBD_MODEL_HCBD
+static void print_limits(const hcbd_hc_params *p)
+#else
+static void print_limits(const hcbd_params *p)
+#endif
+{
+    hcbd_limit l[HCBD_MAX_LIMITS];
+    char buf[4096];
+    int n = 0;
+#if HCBD_MODEL == HCBD_MODEL_HCBD
+    if (hcbd_hc_stability(p, l, &n) != HCBD_OK) return;
+#else
+    if (hcbd_stability(p, l, &n) != HCBD_OK) return;
+#endif
+    hcbd_limits_format(l, n, buf, sizeof buf);
+    printf("# stability limits (value / bound, margin = bound / value):\n%s", buf);
+}
 #endif

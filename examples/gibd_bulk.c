@@ -148,6 +148,7 @@ int main(int argc, char **argv)
     if (!parse_args(argc, argv, &c, own_key, usage)) return 2;
     p = &c.def.params;
     gibd = p->dynamics == HCBD_DYN_GIBD;
+    print_limits(p);
     if (hcbd_world_create(&w, &c.def) != HCBD_OK) {
         fprintf(stderr, "gibd_bulk: %s\n", w.err.msg);
         return 2;

@@ -214,6 +214,7 @@ static int prepare(ctx *x, hcbd_hc_world *w)
         d.params.P0 *= opt.relax_stiffness;
         d.params.fluctuations = 0;
     }
+    print_limits(&x->def.params);
     if (hcbd_hc_world_create(w, &d) != HCBD_OK) return fail("world", w);
     if (hcbd_hc_place_fluid_lattice(w, x->N) != HCBD_OK) return fail("lattice", w);
     for (s = 0; s < opt.relax_steps; s += n) {

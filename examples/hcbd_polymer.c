@@ -262,6 +262,7 @@ static int new_world(hcbd_hc_world *w, const hcbd_hc_params *p, int nf, int np, 
     def.fluid_capacity = nf;
     def.polymer_capacity = np;
     def.pair_capacity = HCBD_AUTO;
+    print_limits(&def.params);
     if (hcbd_hc_world_create(w, &def) != HCBD_OK) {
         fprintf(stderr, "hcbd_polymer: %s: %s\n", what, w->err.msg);
         return 0;

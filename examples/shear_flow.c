@@ -103,6 +103,7 @@ int main(int argc, char **argv)
             double blk[4][NB];
             p->xip = xips[x];
             p->gdot = rates[r];
+            if (x == 0 && r == nrates - 1) print_limits(p); /* the fastest shear */
             if (hcbd_world_create(&w, &c.def) != HCBD_OK) {
                 fprintf(stderr, "shear_flow: %s\n", w.err.msg);
                 return 2;

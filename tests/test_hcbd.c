@@ -801,3 +801,39 @@ void test_hc_poiseuille_no_lag(void)
     hcbd_hc_world_destroy(&w);
 }
 #endif
+
+/* hcbd_hc_stability's viscous limit against Table I runs (806 blobs): half
+   of it runs, four times it is stopped by a guard; sub-steps scale the
+   fluid limits. */
+void test_hc_stability_limits(void)
+{
+    hcbd_limit l[HCBD_MAX_LIMITS];
+    int n = 0, visc = -1, k;
+    double f, b;
+    hcbd_hc_def d = hcbd_hc_def_default();
+    CHECK(hcbd_hc_stability(&d.params, l, &n) == HCBD_OK && n >= 4, "%d limits", n);
+    for (k = 0; k < n; ++k)
+        if (strstr(l[k].name, "viscous: dt_f")) visc = k;
+    if (visc < 0) { CHECK(0, "no viscous limit"); return; }
+    b = l[visc].bound;
+    d.params.substeps = 4;
+    hcbd_hc_stability(&d.params, l, &n);
+    CHECK(fabs(l[visc].margin / (4 * b / d.params.dt) - 1) < 1e-12, "sub-steps: margin %g", l[visc].margin);
+    for (f = 0.5; f < 5; f *= 8) {
+        hcbd_hc_world w;
+        hcbd_result r;
+        d = hcbd_hc_def_default();
+        d.fluid_capacity = 806;
+        d.params.dt = f * b;
+        if (hcbd_hc_world_create(&w, &d) != HCBD_OK || hcbd_hc_place_fluid_lattice(&w, 806) != HCBD_OK) {
+            CHECK(0, "%s", w.err.msg);
+            return;
+        }
+        r = hcbd_hc_step(&w, t_quick ? 100 : 300);
+        NOTE("dt = %.2f x viscous limit: %s at step %lld, T/kT %.3g", f, hcbd_result_name(r),
+             (long long)w.err.step, hcbd_hc_temperature(&w));
+        if (f < 1) CHECK(r == HCBD_OK, "half the viscous limit: %s", w.err.msg);
+        else CHECK(r == HCBD_ERR_UNSTABLE || r == HCBD_ERR_NONFINITE, "4x the limit: %s", hcbd_result_name(r));
+        hcbd_hc_world_destroy(&w);
+    }
+}
