@@ -31,7 +31,7 @@ HC_EXAMPLES := $(B)/hcbd_fluid $(B)/hcbd_polymer
 HEADERS  := hcbd.h
 TEST_SRC := $(wildcard tests/test_*.c) tests/main.c
 
-.PHONY: all run test test-main test-float test-gibd test-hcbd test-sanitize test-build bench clean
+.PHONY: all run test test-main test-float test-gibd test-hcbd test-sanitize test-build bench bench-wp bench-stability bench-peers clean
 
 all: $(B)/hcbd_impl.o $(EXAMPLES) $(HC_EXAMPLES)
 
@@ -108,8 +108,8 @@ test-build: | $(B)
 	done; done; \
 	for cxx in g++ clang++; do \
 	  $$cxx -x c++ -std=c++11 -Wall -Wextra -Werror -O2 -DHCBD_MODEL=HCBD_MODEL_$$m -c $(B)/compile_test.c -o $(B)/ct.o || exit 1; done; done
-	for cc in gcc clang; do $$cc $(WARN) $(MODELFLAG) -fsyntax-only $(filter-out examples/hcbd_%,$(wildcard examples/*.c)) $(filter-out bench/bench_hcbd.c,$(wildcard bench/*.c)) || exit 1; \
-	  $$cc $(WARN) $(HCBDFLAG) -fsyntax-only $(wildcard examples/hcbd_*.c bench/bench_hcbd.c) || exit 1; done
+	for cc in gcc clang; do $$cc $(WARN) $(MODELFLAG) -fsyntax-only $(filter-out examples/hcbd_%,$(wildcard examples/*.c)) $(filter-out bench/bench_hcbd.c bench/bench_wp_hcbd.c,$(wildcard bench/*.c)) || exit 1; \
+	  $$cc $(WARN) $(HCBDFLAG) -fsyntax-only $(wildcard examples/hcbd_*.c bench/bench_hcbd.c bench/bench_wp_hcbd.c bench/stability.c) || exit 1; done
 	@echo "test-build: header compiles as C99, C11 and C++11 with gcc and clang, GI-BD, walled and HCBD; examples and bench too"
 
 bench: $(B)/bench_speed $(B)/bench_hcbd
@@ -121,6 +121,40 @@ $(B)/bench_hcbd: bench/bench_hcbd.c $(B)/hcbd_impl_hc.o $(HEADERS)
 
 $(B)/bench_speed: bench/bench_speed.c $(B)/hcbd_impl.o $(HEADERS)
 	$(CC) $(ALL_CFLAGS) $< $(B)/hcbd_impl.o -o $@ $(LDLIBS)
+
+# Work-precision: run time per unit of simulated time against the error
+# from theory, over dt (and h), integrators, precision and noise; CSV and
+# figure in out/bench (bench/wp.sh).
+WP_BINS := $(B)/bench_wp $(B)/bench_wp_float $(B)/bench_wp_hcbd $(B)/bench_wp_hcbd_float
+bench-wp: $(WP_BINS)
+	bench/wp.sh out/bench
+
+$(B)/bench_wp: bench/bench_wp.c $(B)/hcbd_impl.o $(HEADERS)
+	$(CC) $(ALL_CFLAGS) $< $(B)/hcbd_impl.o -o $@ $(LDLIBS)
+
+$(B)/bench_wp_float: bench/bench_wp.c hcbd_impl.c $(HEADERS) | $(B)
+	$(CC) $(ALL_CFLAGS) -DHCBD_REAL=float $< hcbd_impl.c -o $@ $(LDLIBS)
+
+$(B)/bench_wp_hcbd: bench/bench_wp_hcbd.c $(B)/hcbd_impl_hc.o $(HEADERS)
+	$(CC) $(HC_CFLAGS) $< $(B)/hcbd_impl_hc.o -o $@ $(LDLIBS)
+
+$(B)/bench_wp_hcbd_float: bench/bench_wp_hcbd.c hcbd_impl.c $(HEADERS) | $(B)
+	$(CC) $(HC_CFLAGS) -DHCBD_REAL=float $< hcbd_impl.c -o $@ $(LDLIBS)
+
+# Stability map: the largest dt before a guard or a 10 % temperature error,
+# against hcbd_stability's limits (bench/stability.sh).
+bench-stability: $(B)/bench_stability $(B)/bench_stability_hcbd
+	bench/stability.sh out/bench
+
+$(B)/bench_stability: bench/stability.c $(B)/hcbd_impl.o $(HEADERS)
+	$(CC) $(ALL_CFLAGS) $< $(B)/hcbd_impl.o -o $@ $(LDLIBS)
+
+$(B)/bench_stability_hcbd: bench/stability.c $(B)/hcbd_impl_hc.o $(HEADERS)
+	$(CC) $(HC_CFLAGS) $< $(B)/hcbd_impl_hc.o -o $@ $(LDLIBS)
+
+# Side by side with LAMMPS (skipped with a message when lmp is missing).
+bench-peers: $(B)/bench_speed $(B)/bench_hcbd
+	bench/peers/run.sh
 
 clean:
 	rm -rf $(B) out
