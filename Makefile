@@ -31,7 +31,7 @@ HC_EXAMPLES := $(B)/hcbd_fluid $(B)/hcbd_polymer
 HEADERS  := hcbd.h
 TEST_SRC := $(wildcard tests/test_*.c) tests/main.c
 
-.PHONY: all run test test-main test-float test-gibd test-hcbd test-sanitize test-build bench bench-wp bench-stability bench-peers clean
+.PHONY: all run test test-main test-float test-gibd test-hcbd test-sanitize test-build bench bench-wp bench-stability bench-peers bench-parts clean
 
 all: $(B)/hcbd_impl.o $(EXAMPLES) $(HC_EXAMPLES)
 
@@ -109,7 +109,7 @@ test-build: | $(B)
 	for cxx in g++ clang++; do \
 	  $$cxx -x c++ -std=c++11 -Wall -Wextra -Werror -O2 -DHCBD_MODEL=HCBD_MODEL_$$m -c $(B)/compile_test.c -o $(B)/ct.o || exit 1; done; done
 	for cc in gcc clang; do $$cc $(WARN) $(MODELFLAG) -fsyntax-only $(filter-out examples/hcbd_%,$(wildcard examples/*.c)) $(filter-out bench/bench_hcbd.c bench/bench_wp_hcbd.c,$(wildcard bench/*.c)) || exit 1; \
-	  $$cc $(WARN) $(HCBDFLAG) -fsyntax-only $(wildcard examples/hcbd_*.c bench/bench_hcbd.c bench/bench_wp_hcbd.c bench/stability.c) || exit 1; done
+	  $$cc $(WARN) $(HCBDFLAG) -fsyntax-only $(wildcard examples/hcbd_*.c bench/bench_hcbd.c bench/bench_wp_hcbd.c bench/stability.c bench/bench_parts.c) || exit 1; done
 	@echo "test-build: header compiles as C99, C11 and C++11 with gcc and clang, GI-BD, walled and HCBD; examples and bench too"
 
 bench: $(B)/bench_speed $(B)/bench_hcbd
@@ -150,6 +150,21 @@ $(B)/bench_stability: bench/stability.c $(B)/hcbd_impl.o $(HEADERS)
 	$(CC) $(ALL_CFLAGS) $< $(B)/hcbd_impl.o -o $@ $(LDLIBS)
 
 $(B)/bench_stability_hcbd: bench/stability.c $(B)/hcbd_impl_hc.o $(HEADERS)
+	$(CC) $(HC_CFLAGS) $< $(B)/hcbd_impl_hc.o -o $@ $(LDLIBS)
+
+# Cost of each optional part of a scene, on and off, in all three builds.
+bench-parts: $(B)/bench_parts $(B)/bench_parts_gibd $(B)/bench_parts_hcbd
+	./$(B)/bench_parts_gibd out=out/bench
+	./$(B)/bench_parts out=out/bench
+	./$(B)/bench_parts_hcbd out=out/bench
+
+$(B)/bench_parts: bench/bench_parts.c $(B)/hcbd_impl.o $(HEADERS)
+	$(CC) $(ALL_CFLAGS) $< $(B)/hcbd_impl.o -o $@ $(LDLIBS)
+
+$(B)/bench_parts_gibd: bench/bench_parts.c hcbd_impl.c $(HEADERS) | $(B)
+	$(CC) $(WARN) $(FP) $(CFLAGS) $(OMPFLAG) -DHCBD_MODEL=HCBD_MODEL_GIBD $< hcbd_impl.c -o $@ $(LDLIBS)
+
+$(B)/bench_parts_hcbd: bench/bench_parts.c $(B)/hcbd_impl_hc.o $(HEADERS)
 	$(CC) $(HC_CFLAGS) $< $(B)/hcbd_impl_hc.o -o $@ $(LDLIBS)
 
 # Side by side with LAMMPS (skipped with a message when lmp is missing).

@@ -1,0 +1,182 @@
+/* bench_parts: what each optional part of a scene costs (ns per
+   particle-step, 1 thread, minimum over repeats), one row per part switched
+   on or off against the first row.  An off part must cost nothing: the
+   GI-BD build (no wall code compiled) and the walled build with walls off
+   give the same baseline, and each part's cost is its own row's excess.
+
+   GI-BD/walled build: 4096 stars (2014 scene), from one melted
+   configuration: the baseline (GI-BD, kT = 1, Euler), then kT = 0, lagged
+   densities, the Shardlow sweep, Lees-Edwards shear, stress flux
+   accumulation, walls (walled build only), classical BD.  HCBD build: 8000 fluid blobs
+   at Table I plus 8000 polymer blobs, parts: fluid fluctuations, polymer
+   noise, Flory-Huggins forces, transient pairs, Shardlow, stress.
+
+   usage: bench_parts [out=out/bench] [scale=1] (scale multiplies the
+   number of steps timed) */
+#define _POSIX_C_SOURCE 200809L /* clock_gettime, mkdir under -std=c99 */
+#include "../hcbd.h"
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include <sys/stat.h>
+
+static double now(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return t.tv_sec + 1e-9 * t.tv_nsec;
+}
+
+#if HCBD_MODEL == HCBD_MODEL_HCBD
+static const char *build = "hcbd";
+enum { NPART = 7 };
+static const char *part_name[NPART] = {"all off (no noise, no polymer forces)", "fluid fluctuations", "polymer noise",
+                                       "Flory-Huggins forces", "transient pairs",
+                                       "Shardlow fluid sweep", "stress accumulation"};
+
+static double time_part(int part, double scale, int *n)
+{
+    hcbd_hc_def d = hcbd_hc_def_default();
+    hcbd_hc_world w;
+    const int nf = 8000, np = 8000;
+    const double L = cbrt(nf / (3.0 / (4.0 * 3.14159265358979323846)));
+    double best = 1e30;
+    int rep, steps = (int)(20 * scale) < 2 ? 2 : (int)(20 * scale);
+    d.params.L[0] = d.params.L[1] = d.params.L[2] = L;
+    d.params.fluctuations = part == 1 || part == 5;
+    d.params.kT = part == 2 ? 1.0 : 0.0; /* kT = 0 also silences the fluid noise */
+    if (part == 1 || part == 5) d.params.kT = 1.0;
+    d.params.p_kuhn = part == 3 ? d.params.p_kuhn : 0.0;
+    d.params.alpha = part == 4 ? d.params.alpha : 0.0;
+    if (part == 5) d.params.pair_integrator = HCBD_PAIR_SHARDLOW;
+    d.params.threads = 1;
+    d.fluid_capacity = nf;
+    d.polymer_capacity = np;
+    *n = nf + np;
+    if (hcbd_hc_world_create(&w, &d) != HCBD_OK || hcbd_hc_place_fluid_lattice(&w, nf) != HCBD_OK ||
+        hcbd_hc_place_polymers_random(&w, np) != HCBD_OK ||
+        (part == 6 && hcbd_hc_stress_enable(&w, 1) != HCBD_OK) || hcbd_hc_step(&w, 2) != HCBD_OK) {
+        fprintf(stderr, "bench_parts: %s\n", w.err.msg);
+        return -1;
+    }
+    for (rep = 0; rep < 3; ++rep) {
+        double t0 = now();
+        if (hcbd_hc_step(&w, steps) != HCBD_OK) {
+            fprintf(stderr, "bench_parts: %s\n", w.err.msg);
+            best = -1;
+            break;
+        }
+        if ((now() - t0) / steps < best) best = (now() - t0) / steps;
+    }
+    hcbd_hc_world_destroy(&w);
+    return best;
+}
+#else
+static const char *build = HCBD_MODEL == HCBD_MODEL_WALLED ? "walled" : "gibd";
+enum { NPART = 8 };
+static const char *part_name[NPART] = {"baseline: GI-BD stars, kT = 1, Euler", "kT = 0 (no random numbers)",
+                                       "+ lagged densities", "+ Shardlow pair sweep",
+                                       "+ Lees-Edwards shear", "+ stress flux", "+ walls",
+                                       "classical BD (no background)"};
+static double *melt; /* a liquid configuration shared by all rows */
+
+static double time_part(int part, double scale, int *n)
+{
+    hcbd_world_def d = hcbd_world_def_default();
+    hcbd_world w;
+    const int N = 4096;
+    double best = 1e30, L = cbrt(N / 0.24);
+    int rep, steps = (int)(300 * scale) < 5 ? 5 : (int)(300 * scale);
+    if (part == 6 && HCBD_MODEL != HCBD_MODEL_WALLED) return 0;
+    d.capacity = N;
+    d.params.L[0] = d.params.L[1] = d.params.L[2] = L;
+    d.params.kT = part == 1 ? 0.0 : 1.0;
+    d.params.lagged_density = part == 2;
+    if (part == 3) d.params.pair_integrator = HCBD_PAIR_SHARDLOW;
+    if (part == 4) d.params.gdot = 5.0;
+    if (part == 6) { /* walls added outside the liquid's box */
+        d.params.L[1] = L + 3.0;
+        d.params.wall_thickness = 1.5;
+    }
+    if (part == 7) d.params.dynamics = HCBD_DYN_BD;
+    d.params.threads = 1;
+    *n = N;
+    if (hcbd_world_create(&w, &d) != HCBD_OK) {
+        fprintf(stderr, "bench_parts: %s\n", w.err.msg);
+        return -1;
+    }
+    if (!melt) {
+        melt = (double *)malloc(3 * sizeof(double) * N);
+        if (!melt || hcbd_world_place_lattice(&w, N) != HCBD_OK || hcbd_step(&w, 300) != HCBD_OK ||
+            hcbd_get_positions(&w, melt, 0) != HCBD_OK) {
+            fprintf(stderr, "bench_parts: melting failed: %s\n", w.err.msg);
+            return -1;
+        }
+    }
+    if (part == 6) {
+        int i;
+        for (i = 0; i < N; ++i) melt[3 * i + 1] += 1.5;
+    }
+    if (hcbd_world_set_positions(&w, N, melt) != HCBD_OK || hcbd_step(&w, 20) != HCBD_OK) {
+        fprintf(stderr, "bench_parts: %s\n", w.err.msg);
+        return -1;
+    }
+    if (part == 6) {
+        int i;
+        for (i = 0; i < N; ++i) melt[3 * i + 1] -= 1.5;
+    }
+    if (part == 5) hcbd_flux_enable(&w, 1);
+    for (rep = 0; rep < 3; ++rep) {
+        double t0 = now();
+        if (hcbd_step(&w, steps) != HCBD_OK) {
+            fprintf(stderr, "bench_parts: %s\n", w.err.msg);
+            best = -1;
+            break;
+        }
+        if ((now() - t0) / steps < best) best = (now() - t0) / steps;
+    }
+    hcbd_world_destroy(&w);
+    return best;
+}
+#endif
+
+int main(int argc, char **argv)
+{
+    char out[512] = "out/bench", path[600];
+    double scale = 1.0, base = 0;
+    FILE *csv;
+    int k;
+    for (k = 1; k < argc; ++k) {
+        if (!strncmp(argv[k], "out=", 4)) snprintf(out, sizeof out, "%s", argv[k] + 4);
+        else if (!strncmp(argv[k], "scale=", 6)) scale = atof(argv[k] + 6);
+        else {
+            fprintf(stderr, "bench_parts: unknown argument '%s' (out=, scale=)\n", argv[k]);
+            return 2;
+        }
+    }
+    mkdir("out", 0755);
+    mkdir(out, 0755);
+    snprintf(path, sizeof path, "%s/parts_%s.csv", out, build);
+    csv = fopen(path, "w");
+    if (!csv) {
+        fprintf(stderr, "bench_parts: cannot write %s\n", path);
+        return 1;
+    }
+    fprintf(csv, "build,part,ns_per_particle_step,over_first_row\n");
+    printf("| build | scene | ns/particle-step | x first row |\n|---|---|---:|---:|\n");
+    for (k = 0; k < NPART; ++k) {
+        int n = 1;
+        double t = time_part(k, scale, &n);
+        if (t < 0) return 1;
+        if (t == 0) continue; /* not in this build */
+        t *= 1e9 / n;
+        if (k == 0) base = t;
+        printf("| %s | %s | %.0f | %.2f |\n", build, part_name[k], t, t / base);
+        fprintf(csv, "%s,%s,%.1f,%.3f\n", build, part_name[k], t, t / base);
+        fflush(stdout);
+    }
+    fclose(csv);
+    return 0;
+}
