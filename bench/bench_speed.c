@@ -1,14 +1,15 @@
 /* bench_speed: nanoseconds per particle-step for the 2014 star-polymer
    scene (f = 128, n# = 0.24, Rc = rcut = 2.5, skin 0.4, dt = 1e-4,
-   tau = 3.6e-3) at N = 512, 4096, 32768, 262144, classical BD and GI-BD,
-   1 and 2 threads, GI-BD under Lees-Edwards shear (gdot = 5, with the
-   stress split accumulated every step), and (walled build) the 2016
-   channel: Gaussian walls 1.5 thick added above and below a cube of N real
-   particles, tau = 3e-3, g = 133.4.  Times are per real particle-step; the
-   artificial particles (redrawn every step) are listed separately.  Each point: warm up from a lattice (so the neighbour
-   list rebuilds at its liquid rate), then the minimum over repeats of the
-   time per particle-step; the state checksum of each run shows that the
-   thread counts give identical bits.
+   tau = 3.6e-3) at N = 512, 4096, 32768, 262144 (and 1048576 with
+   Nmax=1048576), classical BD and GI-BD, 1 and 2 threads, GI-BD under
+   Lees-Edwards shear (gdot = 5, with the stress split accumulated every
+   step), and (walled build) the 2016 channel: Gaussian walls 1.5 thick
+   added above and below a cube of N real particles, tau = 3e-3,
+   g = 133.4.  Times are per real particle-step; the artificial particles
+   (redrawn every step) are listed separately.  Each point: warm up from a
+   lattice (so the neighbour list rebuilds at its liquid rate), then the
+   minimum over repeats of the time per particle-step; the state checksum
+   of each run shows that the thread counts give identical bits.
 
    usage: bench_speed [Nmax=262144] [threads=2] [out=out/bench] */
 #define _POSIX_C_SOURCE 200809L /* clock_gettime, mkdir under -std=c99 */
@@ -29,7 +30,7 @@ static double now(void)
 
 int main(int argc, char **argv)
 {
-    int sizes[4] = {512, 4096, 32768, 262144}, Nmax = 262144, maxth = 2, k, dyn, th;
+    int sizes[5] = {512, 4096, 32768, 262144, 1048576}, Nmax = 262144, maxth = 2, k, dyn, th;
     char out[512] = "out/bench", path[600];
     FILE *csv;
     for (k = 1; k < argc; ++k) {
@@ -54,7 +55,7 @@ int main(int argc, char **argv)
                  "pairs_per_particle,checksum\n");
     printf("%-8s %8s %6s %7s %14s %10s %10s %18s\n", "scene", "N", "artif.", "threads",
            "ns/particle-step", "rebuild%", "pairs/N", "checksum");
-    for (k = 0; k < 4; ++k) {
+    for (k = 0; k < 5; ++k) {
         int N = sizes[k];
         if (N > Nmax) break;
         for (dyn = 0; dyn < (HCBD_MODEL == HCBD_MODEL_WALLED ? 4 : 3); ++dyn)
