@@ -800,7 +800,6 @@ void test_hc_poiseuille_no_lag(void)
     free(mf);
     hcbd_hc_world_destroy(&w);
 }
-#endif
 
 /* hcbd_hc_stability's viscous limit against Table I runs (806 blobs): half
    of it runs, four times it is stopped by a guard; sub-steps scale the
@@ -837,3 +836,4 @@ void test_hc_stability_limits(void)
         hcbd_hc_world_destroy(&w);
     }
 }
+#endif
