@@ -95,6 +95,7 @@
 
 #include <stddef.h>
 #include <stdint.h>
+#include <stdio.h>
 
 #define HCBD_VERSION_MAJOR 0
 #define HCBD_VERSION_MINOR 1
@@ -128,7 +129,15 @@ typedef enum hcbd_result {
     HCBD_ERR_MEMORY = 5,     /* memory block too small, or malloc failed    */
     HCBD_ERR_NONFINITE = 6,  /* a non-finite value in input or state        */
     HCBD_ERR_UNSTABLE = 7,   /* a stability limit was crossed during a step */
-    HCBD_ERR_STATE = 8       /* call not valid in the world's present state */
+    HCBD_ERR_STATE = 8,      /* call not valid in the world's present state */
+    HCBD_ERR_IO = 9,         /* a file could not be opened, read or written */
+    HCBD_ERR_FORMAT = 10,    /* checkpoint truncated, corrupted or not one  */
+    HCBD_ERR_VERSION = 11,   /* checkpoint of another format version        */
+    HCBD_ERR_MODEL = 12,     /* checkpoint of another model, world kind or
+                                precision (HCBD_REAL)                       */
+    HCBD_ERR_OVERLAP = 13,   /* two particles closer than min_distance      */
+    HCBD_ERR_OUTSIDE = 14,   /* a particle outside the box (run-time guard) */
+    HCBD_ERR_WALL = 15       /* a particle inside a wall, with guard_walls  */
 } hcbd_result;
 
 const char *hcbd_result_name(hcbd_result r);
@@ -228,6 +237,21 @@ typedef struct hcbd_params {
     int sort;             /* 1: re-sort storage by cell at each rebuild      */
     uint64_t seed;
     int threads;          /* OpenMP threads (ignored without OpenMP)         */
+    /* Checks of the input and of the run (they change no result).       */
+    double min_distance;  /* set-up refuses two particles closer than this
+                             (HCBD_ERR_OVERLAP): star cores that would blow
+                             up the first step; 0 accepts any            */
+    int guard_every;      /* every k-th step scans the whole state (non-
+                             finite values, particles outside the box or
+                             inside a wall, densities); 0 never.  Each
+                             moved particle's displacement and finiteness
+                             are checked every step regardless.          */
+    int guard_walls;      /* 1: a particle found inside a wall stops the
+                             run (HCBD_ERR_WALL); 0 only counts it       */
+    double guard_step;    /* largest displacement in one step before
+                             HCBD_ERR_UNSTABLE; HCBD_AUTO: half the
+                             interaction range (a smaller value, e.g. the
+                             skin, stops a run earlier)                  */
 } hcbd_params;
 
 /* The 2014/2016 star-polymer scene: f = 128, n# = 0.24, N = 512, L = 12.9,
@@ -571,6 +595,10 @@ typedef struct hcbd_hc_params {
     int substeps;
     uint64_t seed;
     int threads;
+    int guard_every;      /* every k-th step scans the whole state (non-
+                             finite values, particles outside the box,
+                             pair variables); 0 never.  Displacements and
+                             fluid densities are checked every step.     */
 } hcbd_hc_params;
 
 /* Table I of the 2018 paper in SI units. */
@@ -639,6 +667,7 @@ typedef struct hcbd_hc_world {
     hcbd_real *pn, *pmu;         /* RaPiD density, Flory-Huggins mu(phi)     */
     hcbd_real *pFx, *pFy, *pFz;  /* conservative + transient force          */
     hcbd_real *pux, *puy, *puz;  /* drift velocity v(r_a) + F_a / xi        */
+    hcbd_real *pbx, *pby, *pbz;  /* positions kept while a new set is tried */
     hcbd_real *pS;               /* psi normaliser sum_i w(r_ai) / n_i      */
     double *ps;                  /* 3 x np stress accumulators              */
     /* transient pairs owned by a (partners b > a in increasing id):
@@ -646,6 +675,7 @@ typedef struct hcbd_hc_world {
     int32_t *pair_n, *pair_b, *pair_n2, *pair_b2;
     hcbd_real *pair_l, *pair_eq, *pair_l2, *pair_eq2;
     int64_t npairs, n_created, n_coincident;
+    int fresh_pairs;             /* 1: the next pair search keeps no pair   */
     /* cells: fluid (edge >= max(2h, rc)) and polymer (edge >= rc) */
     hcbd__grid gf, gp;
     int32_t *fcell, *pcell;
@@ -737,6 +767,62 @@ float hcbd_flory_muf(float phi, float chi);
 double hcbd_flory_g1(double phi, double chi);
 #endif /* HCBD_MODEL_HCBD */
 
+/* >>checkpoint/restart: the complete state of a world (every parameter,
+   tables included, positions, images, velocities, generator states,
+   densities, pair variables, step, Lees-Edwards offset, flux and stress
+   sums) in a versioned format of little-endian 64-bit fields in id order,
+   so a file is portable between machines and thread counts and a run of
+   n + n steps equals n steps, save, load, n steps bit for bit.  The header
+   carries a magic, HCBD_CHECKPOINT_VERSION, the model, the precision, the
+   world kind, the payload length and a 64-bit FNV-1a checksum of the
+   payload; a truncated or corrupted buffer is HCBD_ERR_FORMAT, another
+   version HCBD_ERR_VERSION, another model, world kind or HCBD_REAL
+   HCBD_ERR_MODEL.  Loading never reads past size.  load creates the world
+   (free it with hcbd_world_destroy); it allocates like hcbd_world_create.
+   hcbd_save writes path.tmp and renames it, so a crash while writing never
+   leaves a truncated checkpoint under path. */
+#define HCBD_CHECKPOINT_VERSION 1
+size_t hcbd_checkpoint_size(const hcbd_world *w);
+hcbd_result hcbd_checkpoint_save(hcbd_world *w, void *buf, size_t size);
+hcbd_result hcbd_checkpoint_load(hcbd_world *w, const void *buf, size_t size);
+hcbd_result hcbd_save(hcbd_world *w, const char *path);
+hcbd_result hcbd_load(hcbd_world *w, const char *path);
+/* The thread count may change at any time (results do not). */
+hcbd_result hcbd_set_threads(hcbd_world *w, int threads);
+
+/* >>trajectories and logs (called by the caller between steps: nothing
+   runs, and nothing costs, unless called).
+   hcbd_xyz_write: one extended XYZ frame (OVITO, ASE) of the particles in
+   id order, or of ids[0..nids-1] if ids is non-NULL: Lattice, pbc,
+   Properties=species:S:1:pos:R:3:velo:R:3:id:I:1, Time, Step and the
+   Lees-Edwards offset le_offset in the comment line; positions wrapped
+   into the box, %.17g.  Species "S" (GI-BD).  hcbd_xyz_offenders writes
+   the particle of the last error (w->err.id) and every particle within
+   the interaction range of it, with error=<code> in the comment line. */
+hcbd_result hcbd_xyz_write(const hcbd_world *w, FILE *f, const int *ids, int nids);
+hcbd_result hcbd_xyz_offenders(const hcbd_world *w, FILE *f);
+/* Thermo log: a header line and one line per call, space separated:
+   step time T px py pz pairs wall_pen ns_pstep (ns_pstep as the caller
+   measured it; NAN prints "-").  Both return the length the full text
+   needs, as snprintf does. */
+int hcbd_thermo_header(char *buf, size_t size);
+int hcbd_thermo_line(const hcbd_world *w, double ns_pstep, char *buf, size_t size);
+
+#if HCBD_MODEL == HCBD_MODEL_HCBD
+/* The same for the 2018 world: fluid blobs are species "F", polymers "P"
+   (velocity: their drift velocity); the thermo line has step time T_fluid
+   px py pz max_phi pairs ns_pstep (polymers are massless: no temperature). */
+size_t hcbd_hc_checkpoint_size(const hcbd_hc_world *w);
+hcbd_result hcbd_hc_checkpoint_save(hcbd_hc_world *w, void *buf, size_t size);
+hcbd_result hcbd_hc_checkpoint_load(hcbd_hc_world *w, const void *buf, size_t size);
+hcbd_result hcbd_hc_save(hcbd_hc_world *w, const char *path);
+hcbd_result hcbd_hc_load(hcbd_hc_world *w, const char *path);
+hcbd_result hcbd_hc_set_threads(hcbd_hc_world *w, int threads);
+hcbd_result hcbd_hc_xyz_write(const hcbd_hc_world *w, FILE *f);
+int hcbd_hc_thermo_header(char *buf, size_t size);
+int hcbd_hc_thermo_line(const hcbd_hc_world *w, double ns_pstep, char *buf, size_t size);
+#endif
+
 /* Slab profiles across y of any per-particle values, with block errors:
    add every particle of a sample, then end the sample; blocks of `block`
    samples.  Result out[(3 + 2 nval) s + c]: c = 0 slab centre, 1 number
@@ -818,6 +904,13 @@ const char *hcbd_result_name(hcbd_result r)
     case HCBD_ERR_NONFINITE: return "HCBD_ERR_NONFINITE";
     case HCBD_ERR_UNSTABLE: return "HCBD_ERR_UNSTABLE";
     case HCBD_ERR_STATE: return "HCBD_ERR_STATE";
+    case HCBD_ERR_IO: return "HCBD_ERR_IO";
+    case HCBD_ERR_FORMAT: return "HCBD_ERR_FORMAT";
+    case HCBD_ERR_VERSION: return "HCBD_ERR_VERSION";
+    case HCBD_ERR_MODEL: return "HCBD_ERR_MODEL";
+    case HCBD_ERR_OVERLAP: return "HCBD_ERR_OVERLAP";
+    case HCBD_ERR_OUTSIDE: return "HCBD_ERR_OUTSIDE";
+    case HCBD_ERR_WALL: return "HCBD_ERR_WALL";
     }
     return "HCBD_ERR_UNKNOWN";
 }
@@ -886,6 +979,10 @@ hcbd_params hcbd_params_default(void)
     p.sort = 1;
     p.seed = 1;
     p.threads = 1;
+    p.min_distance = 0.0;
+    p.guard_every = 1;
+    p.guard_walls = 0;
+    p.guard_step = HCBD_AUTO;
     return p;
 }
 
@@ -942,13 +1039,13 @@ hcbd_result hcbd_params_check(const hcbd_params *p, char *msg, size_t msg_size)
     HCBD__CHECK(isfinite(p->kT) && p->kT >= 0, "kT", p->kT);
     HCBD__CHECK(isfinite(p->xi) && p->xi > 0, "xi", p->xi);
     HCBD__CHECK(p->dynamics == HCBD_DYN_GIBD || p->dynamics == HCBD_DYN_BD,
-                "dynamics", p->dynamics);
+                "dynamics", (int)p->dynamics);
     HCBD__CHECK(p->potential == HCBD_POT_IDEAL || p->potential == HCBD_POT_STAR ||
-                p->potential == HCBD_POT_TABLE, "potential", p->potential);
+                p->potential == HCBD_POT_TABLE, "potential", (int)p->potential);
     HCBD__CHECK(p->noise == HCBD_NOISE_GAUSS || p->noise == HCBD_NOISE_UNIFORM,
-                "noise", p->noise);
+                "noise", (int)p->noise);
     HCBD__CHECK(p->pair_integrator == HCBD_PAIR_EULER || p->pair_integrator == HCBD_PAIR_SHARDLOW,
-                "pair_integrator", p->pair_integrator);
+                "pair_integrator", (int)p->pair_integrator);
     if (p->dynamics == HCBD_DYN_GIBD) {
         HCBD__CHECK(isfinite(p->xip) && p->xip > 0, "xip", p->xip);
         HCBD__CHECK(isfinite(p->tau) && p->tau > 0, "tau", p->tau);
@@ -983,10 +1080,14 @@ hcbd_result hcbd_params_check(const hcbd_params *p, char *msg, size_t msg_size)
         HCBD__CHECK(p->table_n >= 2, "table_n", p->table_n);
         HCBD__CHECK(isfinite(p->table_r0) && p->table_r0 >= 0 &&
                     p->table_r0 < p->rcut, "table_r0", p->table_r0);
-        for (k = 0; k < p->table_n; ++k) {
-            HCBD__CHECK(isfinite(p->table_F[k]), "table_F[k]", p->table_F[k]);
-            HCBD__CHECK(isfinite(p->table_V[k]), "table_V[k]", p->table_V[k]);
-        }
+        for (k = 0; k < p->table_n; ++k)
+            if (!isfinite(p->table_F[k]) || !isfinite(p->table_V[k])) {
+                const int F = !isfinite(p->table_F[k]);
+                if (msg && msg_size)
+                    snprintf(msg, msg_size, "parameter %s[%d] = %.17g is invalid (need finite)",
+                             F ? "table_F" : "table_V", k, F ? p->table_F[k] : p->table_V[k]);
+                return HCBD_ERR_PARAM;
+            }
     }
     HCBD__CHECK(isfinite(p->skin) && p->skin >= 0, "skin", p->skin);
     HCBD__CHECK(isfinite(p->gdot), "gdot", p->gdot);
@@ -1042,7 +1143,7 @@ hcbd_result hcbd_params_check(const hcbd_params *p, char *msg, size_t msg_size)
         HCBD__CHECK(isfinite(p->wall_beta_max) && p->wall_beta_max >= 1.0,
                     "wall_beta_max", p->wall_beta_max);
         HCBD__CHECK(p->wall_mode == HCBD_WALL_GAUSS || p->wall_mode == HCBD_WALL_REFLECT ||
-                    p->wall_mode == HCBD_WALL_NOSLIP, "wall_mode", p->wall_mode);
+                    p->wall_mode == HCBD_WALL_NOSLIP, "wall_mode", (int)p->wall_mode);
         HCBD__CHECK(p->wall_noise_beta == 0 || p->wall_noise_beta == 1,
                     "wall_noise_beta", p->wall_noise_beta);
         if (p->wall_mode != HCBD_WALL_REFLECT) {
@@ -1062,6 +1163,12 @@ hcbd_result hcbd_params_check(const hcbd_params *p, char *msg, size_t msg_size)
     }
     HCBD__CHECK(p->sort == 0 || p->sort == 1, "sort", p->sort);
     HCBD__CHECK(p->threads >= 1 && p->threads <= 1024, "threads", p->threads);
+    HCBD__CHECK(isfinite(p->min_distance) && p->min_distance >= 0, "min_distance",
+                p->min_distance);
+    HCBD__CHECK(p->guard_every >= 0, "guard_every", p->guard_every);
+    HCBD__CHECK(p->guard_walls == 0 || p->guard_walls == 1, "guard_walls", p->guard_walls);
+    HCBD__CHECK(p->guard_step == HCBD_AUTO || (isfinite(p->guard_step) && p->guard_step > 0),
+                "guard_step", p->guard_step);
     if (hcbd__needs_pairs(p)) {
         double rl = hcbd__cutmax(p) + p->skin;
         for (d = 0; d < 3; ++d)
@@ -1449,7 +1556,9 @@ hcbd_result hcbd_stability(const hcbd_params *p, hcbd_limit *out, int *n)
     double k, disp, m = 0;
     if (!p || !out || !n) return HCBD_ERR_NULL;
     *n = 0;
-    if ((r = hcbd_theory_of(p, &th)) != HCBD_OK) return r;
+    memset(&th, 0, sizeof th);
+    if ((r = hcbd_params_check(p, NULL, 0)) != HCBD_OK) return r;
+    if (gibd && (r = hcbd_theory_of(p, &th)) != HCBD_OK) return r;
     if (gibd) m = th.m;
     if (gibd && p->pair_integrator == HCBD_PAIR_EULER) {
         hcbd__limit(out, n, "Euler pair friction: tau >= 10 dt (2014 eq. 27)", "accuracy", p->dt,
@@ -1675,6 +1784,7 @@ hcbd_result hcbd_world_init(hcbd_world *w, const hcbd_world_def *def, void *mem,
        range jumps through neighbours and means dt is unstable. */
     w->step_limit = 0.5 * w->cutmax;
     if (!hcbd__needs_pairs(p)) w->step_limit = HUGE_VAL;
+    if (p->guard_step != HCBD_AUTO) w->step_limit = p->guard_step;
     w->star_a = p->star_eps * (5.0 / 18.0) * pow(p->f, 1.5);
     w->star_b = 1.0 / (1.0 + 0.5 * sqrt(p->f));
     w->star_s = 0.5 * sqrt(p->f);
@@ -1774,11 +1884,18 @@ static inline void hcbd__wrap(double L, double *x, int32_t *img)
     if (*x < 0) *x = 0;
 }
 
+/* Minimum image of a difference of two wrapped coordinates (|d| < L). */
+static inline double hcbd__mi(double d, double L)
+{
+    double h = 0.5 * L;
+    return d > h ? d - L : (d < -h ? d + L : d);
+}
+
 /* Position source for the shared set-up path: the caller's array, a
    lattice or uniform random points (no temporary allocation). */
 typedef struct hcbd__src {
     const double *xyz;
-    int lattice_k;
+    int lattice_k, n;
     hcbd_rng g;
 } hcbd__src;
 
@@ -1790,7 +1907,7 @@ static void hcbd__src_get(const hcbd_world *w, hcbd__src *s, int i, double r[3])
     } else if (s->lattice_k > 0) {
         /* n of the k^3 sites, spread evenly so no region is left empty */
         int k = s->lattice_k, c[3];
-        int64_t site = (int64_t)i * k * k * k / w->n;
+        int64_t site = (int64_t)i * k * k * k / s->n;
         c[0] = (int)(site % k); c[1] = (int)(site / k % k); c[2] = (int)(site / ((int64_t)k * k));
         for (d = 0; d < 3; ++d) r[d] = (c[d] + 0.5) * w->p.L[d] / k;
     } else {
@@ -1801,11 +1918,13 @@ static void hcbd__src_get(const hcbd_world *w, hcbd__src *s, int i, double r[3])
 static hcbd_result hcbd__set_particles(hcbd_world *w, int n, hcbd__src *src)
 {
     int i, d;
+    hcbd__src src0;
     double mom[3] = {0, 0, 0};
-    if (n < 1 || n > w->capacity)
+    if (n > w->capacity)
         return hcbd__fail(&w->err, HCBD_ERR_CAPACITY, -1, -1,
-                          "N = %d is invalid (need 1 <= N <= capacity %d)", n,
-                          w->capacity);
+                          "N = %d exceeds the capacity %d", n, w->capacity);
+    if (n < 1)
+        return hcbd__fail(&w->err, HCBD_ERR_PARAM, -1, -1, "N = %d is invalid (need N >= 1)", n);
     if (w->gibd && n < 2)
         return hcbd__fail(&w->err, HCBD_ERR_PARAM, -1, -1,
                           "N = %d: GI-BD needs at least 2 particles", n);
@@ -1822,27 +1941,59 @@ static hcbd_result hcbd__set_particles(hcbd_world *w, int n, hcbd__src *src)
                                   "box lengths from the box", "xyz"[i % 3], i / 3,
                                   src->xyz[i]);
         }
-    w->n = n;
+    /* Positions go to the force scratch arrays first and are checked there,
+       so a refused configuration leaves the world as it was; the source is
+       replayed for the images at commit. */
+    src->n = n;
+    src0 = *src;
     for (i = 0; i < n; ++i) {
         double r[3];
         int32_t img[3] = {0, 0, 0};
-        hcbd_rng g;
         hcbd__src_get(w, src, i, r);
         /* generated positions fill the channel only */
         if (w->walls && !src->xyz)
             r[1] = w->wall_lo + r[1] / w->p.L[1] * (w->wall_hi - w->wall_lo);
         for (d = 0; d < 3; ++d) hcbd__wrap(w->p.L[d], &r[d], &img[d]);
-        if (w->walls && (r[1] < w->wall_lo || r[1] > w->wall_hi)) {
-            w->n = 0;
-            return hcbd__fail(&w->err, HCBD_ERR_PARAM, -1, i,
+        if (w->walls && (r[1] < w->wall_lo || r[1] > w->wall_hi))
+            return hcbd__fail(&w->err, HCBD_ERR_WALL, -1, i,
                               "particle %d at y = %g is inside a wall (the channel is "
                               "%g <= y <= %g)", i, r[1], w->wall_lo, w->wall_hi);
-        }
-        w->x[i] = (hcbd_real)r[0]; w->y[i] = (hcbd_real)r[1]; w->z[i] = (hcbd_real)r[2];
+        w->fx[i] = (hcbd_real)r[0]; w->fy[i] = (hcbd_real)r[1]; w->fz[i] = (hcbd_real)r[2];
         /* A position that rounds to L in float storage belongs at 0. */
-        if (w->x[i] >= (hcbd_real)w->p.L[0]) w->x[i] = 0;
-        if (w->y[i] >= (hcbd_real)w->p.L[1]) w->y[i] = 0;
-        if (w->z[i] >= (hcbd_real)w->p.L[2]) w->z[i] = 0;
+        if (w->fx[i] >= (hcbd_real)w->p.L[0]) w->fx[i] = 0;
+        if (w->fy[i] >= (hcbd_real)w->p.L[1]) w->fy[i] = 0;
+        if (w->fz[i] >= (hcbd_real)w->p.L[2]) w->fz[i] = 0;
+    }
+    if (w->p.min_distance > 0) {
+        /* O(N^2), once at set-up; in id order, so the first pair reported
+           is the same whatever the storage */
+        const double m2 = w->p.min_distance * w->p.min_distance;
+        int j;
+        for (i = 0; i < n; ++i)
+            for (j = i + 1; j < n; ++j) {
+                double e[3];
+                e[0] = hcbd__mi((double)w->fx[i] - w->fx[j], w->p.L[0]);
+                e[1] = hcbd__mi((double)w->fy[i] - w->fy[j], w->p.L[1]);
+                e[2] = hcbd__mi((double)w->fz[i] - w->fz[j], w->p.L[2]);
+                if (e[0] * e[0] + e[1] * e[1] + e[2] * e[2] < m2)
+                    return hcbd__fail(&w->err, HCBD_ERR_OVERLAP, -1, i,
+                                      "particles %d and %d are %.17g apart, closer than "
+                                      "min_distance = %.17g", i, j,
+                                      sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]),
+                                      w->p.min_distance);
+            }
+    }
+    w->n = n;
+    *src = src0;
+    for (i = 0; i < n; ++i) {
+        hcbd_rng g;
+        double r[3];
+        int32_t img[3] = {0, 0, 0};
+        hcbd__src_get(w, src, i, r);
+        if (w->walls && !src->xyz)
+            r[1] = w->wall_lo + r[1] / w->p.L[1] * (w->wall_hi - w->wall_lo);
+        for (d = 0; d < 3; ++d) hcbd__wrap(w->p.L[d], &r[d], &img[d]);
+        w->x[i] = w->fx[i]; w->y[i] = w->fy[i]; w->z[i] = w->fz[i];
         w->ix[i] = img[0]; w->iy[i] = img[1]; w->iz[i] = img[2];
         w->id[i] = i;
         w->slot[i] = i;
@@ -1935,12 +2086,6 @@ hcbd_result hcbd_world_set_velocities(hcbd_world *w, const double *v)
 }
 
 /* >>neighbour search */
-/* Minimum image of a difference of two wrapped coordinates (|d| < L). */
-static inline double hcbd__mi(double d, double L)
-{
-    double h = 0.5 * L;
-    return d > h ? d - L : (d < -h ? d + L : d);
-}
 
 /* >>wall passes: artificial particles are redrawn every step from a
    counter-based stream keyed by (seed, step), uniform in the wall slab
@@ -2763,7 +2908,8 @@ static hcbd_result hcbd__integrate(hcbd_world *w)
     if (bad_step != INT_MAX)
         return hcbd__fail(&w->err, HCBD_ERR_UNSTABLE, w->step, bad_step,
                           "step %lld: particle id %d moved more than the per-step "
-                          "limit %g (half the interaction range); reduce dt = %g",
+                          "limit guard_step = %g (default: half the interaction range); "
+                          "reduce dt = %g",
                           (long long)w->step, bad_step, w->step_limit, dt);
     return HCBD_OK;
 }
@@ -2813,6 +2959,8 @@ hcbd_result hcbd_flux_read(const hcbd_world *w, double out[4], int64_t *nsteps)
     return HCBD_OK;
 }
 
+static hcbd_result hcbd__guard(hcbd_world *w);
+
 hcbd_result hcbd_step(hcbd_world *w, int nsteps)
 {
     int s;
@@ -2840,7 +2988,13 @@ hcbd_result hcbd_step(hcbd_world *w, int nsteps)
         if (w->shardlow) hcbd__shardlow(w);
         r = hcbd__integrate(w);
         if (r == HCBD_OK && w->flux_on) hcbd__flux_add(w);
+        if (r == HCBD_OK && w->p.guard_walls && w->wall_pen_step == w->step)
+            r = hcbd__fail(&w->err, HCBD_ERR_WALL, w->step, w->wall_pen_id,
+                           "step %lld: particle %d entered a wall (guard_walls = 1)",
+                           (long long)w->step, w->wall_pen_id);
         w->step++;
+        if (r == HCBD_OK && w->p.guard_every > 0 && w->step % w->p.guard_every == 0)
+            r = hcbd__guard(w);
         if (r != HCBD_OK) return r;
     }
     return HCBD_OK;
@@ -2963,7 +3117,9 @@ hcbd_result hcbd_stress(hcbd_world *w, double s[9])
     hcbd__stress_ctx c;
     hcbd_result r;
     int k;
-    if (!w || !s) return HCBD_ERR_NULL;
+    if (!w) return HCBD_ERR_NULL;
+    hcbd__clear(&w->err);
+    if (!s) return hcbd__fail(&w->err, HCBD_ERR_NULL, w->step, -1, "s is NULL");
     memset(&c, 0, sizeof c);
     c.w = w;
     if (w->p.potential != HCBD_POT_IDEAL && w->n > 0) {
@@ -3007,8 +3163,11 @@ hcbd_result hcbd_friction_average(hcbd_world *w, int nk, double out[3])
     hcbd__fric_ctx c;
     hcbd_result r;
     int d;
-    if (!w || !out) return HCBD_ERR_NULL;
+    if (!w) return HCBD_ERR_NULL;
     hcbd__clear(&w->err);
+    if (!out) return hcbd__fail(&w->err, HCBD_ERR_NULL, w->step, -1, "out is NULL");
+    if (nk < 1)
+        return hcbd__fail(&w->err, HCBD_ERR_PARAM, w->step, -1, "nk = %d is invalid (need nk >= 1)", nk);
     if (!w->gibd)
         return hcbd__fail(&w->err, HCBD_ERR_STATE, w->step, -1,
                           "friction averages need GI-BD dynamics");
@@ -3056,6 +3215,7 @@ hcbd_result hcbd_transverse_current(const hcbd_world *w, int nk, double out[12])
 {
     int i;
     if (!w || !out) return HCBD_ERR_NULL;
+    if (nk < 1) return HCBD_ERR_PARAM;
     for (i = 0; i < 12; ++i) out[i] = 0.0;
     if (!w->gibd) return HCBD_OK;
     hcbd__tcurrent(w->n, w->slot, w->x, w->y, w->z, w->vx, w->vy, w->vz, w->p.L, nk, out);
@@ -3126,7 +3286,9 @@ hcbd_result hcbd_rdf_sample(hcbd_rdf *g, hcbd_world *w)
 {
     double V;
     int i, j;
-    if (!g || !w) return HCBD_ERR_NULL;
+    if (!w) return HCBD_ERR_NULL;
+    hcbd__clear(&w->err);
+    if (!g) return hcbd__fail(&w->err, HCBD_ERR_NULL, w->step, -1, "g is NULL");
     if (w->n < 2)
         return hcbd__fail(&w->err, HCBD_ERR_STATE, w->step, -1, "g(r) needs particles");
     if (g->rmax > 0.5 * w->p.L[0] || g->rmax > 0.5 * w->p.L[1] || g->rmax > 0.5 * w->p.L[2])
@@ -3342,6 +3504,8 @@ hcbd_result hcbd_carreau_fit(const double *gdot, const double *eta, const double
     int k, it;
     if (!gdot || !eta || !err || !p || !perr) return HCBD_ERR_NULL;
     if (n_points < 4 || !isfinite(eta_inf)) return HCBD_ERR_PARAM;
+    if (p_start && !(isfinite(p[0]) && isfinite(p[1]) && p[1] > 0 && isfinite(p[2])))
+        return HCBD_ERR_PARAM;
     for (k = 0; k < n_points; ++k)
         if (!(gdot[k] > 0) || !(err[k] > 0) || !isfinite(eta[k]) || !isfinite(gdot[k]) ||
             !isfinite(err[k]))
@@ -3704,7 +3868,10 @@ hcbd_result hcbd_hc_params_si(const hcbd_hc_si *si, double time_unit,
 {
     const double kB = 1.380649e-23;
     double kT, M, len, cstar;
-    if (!si || !p) return HCBD_ERR_NULL;
+    if (!si || !p) {
+        if (msg && msg_size) snprintf(msg, msg_size, "%s is NULL", si ? "p" : "si");
+        return HCBD_ERR_NULL;
+    }
     if (!(time_unit > 0) || !isfinite(time_unit))
         return hcbd__param_fail(msg, msg_size, "time_unit", time_unit, "time_unit > 0");
     if (!(si->sigma > 0) || !isfinite(si->sigma))
@@ -3738,6 +3905,7 @@ hcbd_result hcbd_hc_params_si(const hcbd_hc_si *si, double time_unit,
     p->coupling = HCBD_COUPLE_SHEPARD;
     p->seed = 1;
     p->threads = 1;
+    p->guard_every = 1;
     return hcbd_hc_params_check(p, msg, msg_size);
 }
 
@@ -3762,10 +3930,14 @@ hcbd_hc_def hcbd_hc_def_default(void)
 
 hcbd_result hcbd_hc_params_check(const hcbd_hc_params *p, char *msg, size_t msg_size)
 {
+    static const char *Ln[3] = {"L[0]", "L[1]", "L[2]"}, *gn[3] = {"g[0]", "g[1]", "g[2]"};
     int d;
     double reach;
-    if (!p) return HCBD_ERR_NULL;
-    for (d = 0; d < 3; ++d) HCBD__CHECK(p->L[d] > 0 && isfinite(p->L[d]), "L", p->L[d]);
+    if (!p) {
+        if (msg && msg_size) snprintf(msg, msg_size, "params is NULL");
+        return HCBD_ERR_NULL;
+    }
+    for (d = 0; d < 3; ++d) HCBD__CHECK(p->L[d] > 0 && isfinite(p->L[d]), Ln[d], p->L[d]);
     HCBD__CHECK(p->dt > 0 && isfinite(p->dt), "dt", p->dt);
     HCBD__CHECK(p->kT >= 0 && isfinite(p->kT), "kT", p->kT);
     HCBD__CHECK(p->rho > 0 && isfinite(p->rho), "rho", p->rho);
@@ -3775,12 +3947,14 @@ hcbd_result hcbd_hc_params_check(const hcbd_hc_params *p, char *msg, size_t msg_
     HCBD__CHECK(p->h > 0 && isfinite(p->h), "h", p->h);
     HCBD__CHECK(p->fluctuations == 0 || p->fluctuations == 1, "fluctuations",
                 (double)p->fluctuations);
-    for (d = 0; d < 3; ++d) HCBD__CHECK(isfinite(p->g[d]), "g", p->g[d]);
+    for (d = 0; d < 3; ++d) HCBD__CHECK(isfinite(p->g[d]), gn[d], p->g[d]);
     HCBD__CHECK(p->reverse_poiseuille == 0 || p->reverse_poiseuille == 1,
                 "reverse_poiseuille", (double)p->reverse_poiseuille);
     HCBD__CHECK(isfinite(p->gdot), "gdot", p->gdot);
     HCBD__CHECK(!(p->gdot != 0 && p->reverse_poiseuille), "gdot",
                 p->gdot);
+    /* the offset may move by less than a box edge per step */
+    HCBD__CHECK(fabs(p->gdot * p->L[1] * p->dt) < p->L[0], "gdot", p->gdot);
     HCBD__CHECK(p->xi > 0 && isfinite(p->xi), "xi", p->xi);
     HCBD__CHECK(p->rc > 0 && isfinite(p->rc), "rc", p->rc);
     HCBD__CHECK(p->sigma > 0 && p->sigma < p->rc, "sigma", p->sigma);
@@ -3790,11 +3964,12 @@ hcbd_result hcbd_hc_params_check(const hcbd_hc_params *p, char *msg, size_t msg_
     HCBD__CHECK(p->n_max > 0 && isfinite(p->n_max), "n_max", p->n_max);
     HCBD__CHECK(isfinite(p->chi), "chi", p->chi);
     HCBD__CHECK(p->coupling == HCBD_COUPLE_SHEPARD || p->coupling == HCBD_COUPLE_RAW,
-                "coupling", (double)p->coupling);
+                "coupling", (double)(int)p->coupling);
     HCBD__CHECK(p->pair_integrator == HCBD_PAIR_EULER || p->pair_integrator == HCBD_PAIR_SHARDLOW,
-                "pair_integrator", (double)p->pair_integrator);
+                "pair_integrator", (double)(int)p->pair_integrator);
     HCBD__CHECK(p->substeps >= 1 && p->substeps <= 1000, "substeps", (double)p->substeps);
     HCBD__CHECK(p->threads >= 1 && p->threads <= 1024, "threads", (double)p->threads);
+    HCBD__CHECK(p->guard_every >= 0, "guard_every", (double)p->guard_every);
     reach = 2.0 * p->h > p->rc ? 2.0 * p->h : p->rc;
     for (d = 0; d < 3; ++d)
         if (p->L[d] < 2.0 * reach) {
@@ -3810,8 +3985,9 @@ hcbd_result hcbd_hc_params_check(const hcbd_hc_params *p, char *msg, size_t msg_
 
 hcbd_result hcbd_hc_theory_of(const hcbd_hc_params *p, hcbd_hc_theory *t)
 {
+    hcbd_result r;
     if (!p || !t) return HCBD_ERR_NULL;
-    if (!(p->rho > 0) || !(p->nbar > 0) || !(p->h > 0)) return HCBD_ERR_PARAM;
+    if ((r = hcbd_hc_params_check(p, NULL, 0)) != HCBD_OK) return r;
     t->nu = p->eta / p->rho;
     t->cs = sqrt(7.0 * p->P0 / p->rho);
     t->m = p->rho / p->nbar;
@@ -3941,6 +4117,7 @@ static size_t hcbd__hc_layout(const hcbd_hc_def *def, hcbd_hc_world *t, char *ba
     HCBD__HA(pn, np * R); HCBD__HA(pmu, np * R);
     HCBD__HA(pFx, np * R); HCBD__HA(pFy, np * R); HCBD__HA(pFz, np * R);
     HCBD__HA(pux, np * R); HCBD__HA(puy, np * R); HCBD__HA(puz, np * R);
+    HCBD__HA(pbx, np * R); HCBD__HA(pby, np * R); HCBD__HA(pbz, np * R);
     HCBD__HA(pS, np * R); HCBD__HA(ps, 3 * np * D); HCBD__HA(pcell, np * I);
     HCBD__HA(pair_n, np * I); HCBD__HA(pair_n2, np * I);
     HCBD__HA(pair_b, npc * I); HCBD__HA(pair_b2, npc * I);
@@ -3965,7 +4142,10 @@ static size_t hcbd__hc_layout(const hcbd_hc_def *def, hcbd_hc_world *t, char *ba
 static hcbd_result hcbd__hc_check_def(const hcbd_hc_def *def, char *msg, size_t msg_size)
 {
     hcbd_result r;
-    if (!def) return HCBD_ERR_NULL;
+    if (!def) {
+        if (msg && msg_size) snprintf(msg, msg_size, "world definition is NULL");
+        return HCBD_ERR_NULL;
+    }
     r = hcbd_hc_params_check(&def->params, msg, msg_size);
     if (r != HCBD_OK) return r;
     HCBD__CHECK(def->fluid_capacity >= 2 && def->fluid_capacity <= (1 << 28), "fluid_capacity",
@@ -4140,9 +4320,12 @@ static hcbd_result hcbd__hc_fluid_n(hcbd_hc_world *w, int n)
 {
     hcbd__clear(&w->err);
     if (!w->fx) return hcbd__fail(&w->err, HCBD_ERR_STATE, -1, -1, "world is not initialised");
-    if (n < 2 || n > w->fcap)
+    if (n > w->fcap)
         return hcbd__fail(&w->err, HCBD_ERR_CAPACITY, -1, -1,
-                          "fluid N = %d is invalid (need 2 <= N <= fluid_capacity %d)", n, w->fcap);
+                          "fluid N = %d exceeds fluid_capacity %d", n, w->fcap);
+    if (n < 2)
+        return hcbd__fail(&w->err, HCBD_ERR_PARAM, -1, -1,
+                          "fluid N = %d is invalid (need N >= 2)", n);
     return HCBD_OK;
 }
 
@@ -4150,7 +4333,9 @@ hcbd_result hcbd_hc_set_fluid(hcbd_hc_world *w, int n, const double *xyz, const 
 {
     int i;
     hcbd_result r;
-    if (!w || !xyz) return HCBD_ERR_NULL;
+    if (!w) return HCBD_ERR_NULL;
+    hcbd__clear(&w->err);
+    if (!xyz) return hcbd__fail(&w->err, HCBD_ERR_NULL, -1, -1, "xyz is NULL");
     if ((r = hcbd__hc_fluid_n(w, n)) != HCBD_OK) return r;
     if ((r = hcbd__hc_check_xyz(w, n, xyz, "fluid blob")) != HCBD_OK) return r;
     if (v)
@@ -4201,22 +4386,62 @@ static hcbd_result hcbd__hc_poly_n(hcbd_hc_world *w, int n)
 {
     hcbd__clear(&w->err);
     if (w->nf < 2) return hcbd__fail(&w->err, HCBD_ERR_STATE, -1, -1, "set the fluid blobs first");
-    if (n < 0 || n > w->pcap)
+    if (n > w->pcap)
         return hcbd__fail(&w->err, HCBD_ERR_CAPACITY, -1, -1,
-                          "polymer N = %d is invalid (need 0 <= N <= polymer_capacity %d)", n,
-                          w->pcap);
+                          "polymer N = %d exceeds polymer_capacity %d", n, w->pcap);
+    if (n < 0)
+        return hcbd__fail(&w->err, HCBD_ERR_PARAM, -1, -1, "polymer N = %d is negative", n);
     return HCBD_OK;
 }
 
+/* The pair lists are double-buffered: a search writes the spare set and
+   swaps only when it succeeds. */
+static void hcbd__hc_swap_pairs(hcbd_hc_world *w)
+{
+    int32_t *t32;
+    hcbd_real *tr;
+    t32 = w->pair_n; w->pair_n = w->pair_n2; w->pair_n2 = t32;
+    t32 = w->pair_b; w->pair_b = w->pair_b2; w->pair_b2 = t32;
+    tr = w->pair_l; w->pair_l = w->pair_l2; w->pair_l2 = tr;
+    tr = w->pair_eq; w->pair_eq = w->pair_eq2; w->pair_eq2 = tr;
+}
+
+/* The present polymers, kept before a new set is written. */
+static void hcbd__hc_poly_keep(hcbd_hc_world *w)
+{
+    const size_t b = (size_t)w->np * sizeof(hcbd_real);
+    if (!b) return;
+    memcpy(w->pbx, w->px, b);
+    memcpy(w->pby, w->py, b);
+    memcpy(w->pbz, w->pz, b);
+}
+
+/* A new set starts with no pair variables; a refused set is undone: the
+   kept positions and the old pair lists (still in the spare buffers, or
+   never swapped out) come back, and their densities and forces are
+   recomputed, so the world is as it was. */
 static hcbd_result hcbd__hc_poly_finish(hcbd_hc_world *w, int n)
 {
+    const int np0 = w->np;
+    const int64_t npairs0 = w->npairs, created0 = w->n_created;
+    const int32_t *pn0 = w->pair_n;
     hcbd_result r;
-    int i;
+    hcbd_error e;
     w->np = n;
-    w->npairs = 0;
-    for (i = 0; i < n; ++i) w->pair_n[i] = 0;
+    w->fresh_pairs = 1;
     r = hcbd_hc_refresh(w);
-    if (r != HCBD_OK) w->np = 0; /* a refused configuration is not kept */
+    w->fresh_pairs = 0;
+    if (r == HCBD_OK) return r;
+    e = w->err;
+    if (w->pair_n != pn0) hcbd__hc_swap_pairs(w);
+    w->np = np0;
+    memcpy(w->px, w->pbx, (size_t)np0 * sizeof(hcbd_real));
+    memcpy(w->py, w->pby, (size_t)np0 * sizeof(hcbd_real));
+    memcpy(w->pz, w->pbz, (size_t)np0 * sizeof(hcbd_real));
+    w->npairs = npairs0;
+    hcbd_hc_refresh(w);
+    w->n_created = created0;
+    w->err = e;
     return r;
 }
 
@@ -4224,9 +4449,12 @@ hcbd_result hcbd_hc_set_polymers(hcbd_hc_world *w, int n, const double *xyz)
 {
     int i;
     hcbd_result r;
-    if (!w || (n > 0 && !xyz)) return HCBD_ERR_NULL;
+    if (!w) return HCBD_ERR_NULL;
+    hcbd__clear(&w->err);
+    if (n > 0 && !xyz) return hcbd__fail(&w->err, HCBD_ERR_NULL, -1, -1, "xyz is NULL");
     if ((r = hcbd__hc_poly_n(w, n)) != HCBD_OK) return r;
     if ((r = hcbd__hc_check_xyz(w, n, xyz, "polymer blob")) != HCBD_OK) return r;
+    hcbd__hc_poly_keep(w);
     for (i = 0; i < n; ++i) {
         w->px[i] = (hcbd_real)xyz[3 * i];
         w->py[i] = (hcbd_real)xyz[3 * i + 1];
@@ -4243,6 +4471,7 @@ hcbd_result hcbd_hc_place_polymers_random(hcbd_hc_world *w, int n)
     if (!w) return HCBD_ERR_NULL;
     if ((r = hcbd__hc_poly_n(w, n)) != HCBD_OK) return r;
     hcbd_rng_seed(&g, hcbd__mix64(w->p.seed ^ hcbd__mix64(HCBD__STREAM_POLY_PLACE)));
+    hcbd__hc_poly_keep(w);
     for (i = 0; i < n; ++i) {
         double r3[3];
         int d;
@@ -4402,7 +4631,7 @@ static int hcbd__hc_pairs(hcbd_hc_world *w, int *need)
         hcbd_real *nl = w->pair_l2 + (size_t)a * cap, *ne = w->pair_eq2 + (size_t)a * cap;
         const int32_t *ob = w->pair_b + (size_t)a * cap;
         const hcbd_real *ol = w->pair_l + (size_t)a * cap;
-        int cnt = 0, k, o = 0, on = w->pair_n[a], b;
+        int cnt = 0, k, o = 0, on = w->fresh_pairs ? 0 : w->pair_n[a], b;
         HCBD__NEAR(&w->gp, w->pcell[a], b) {
             double d[3], r2;
             if (b <= a) continue;
@@ -4442,14 +4671,7 @@ static int hcbd__hc_pairs(hcbd_hc_world *w, int *need)
     }
     *need = most;
     if (bad != INT_MAX) return bad;
-    {
-        int32_t *t32;
-        hcbd_real *tr;
-        t32 = w->pair_n; w->pair_n = w->pair_n2; w->pair_n2 = t32;
-        t32 = w->pair_b; w->pair_b = w->pair_b2; w->pair_b2 = t32;
-        tr = w->pair_l; w->pair_l = w->pair_l2; w->pair_l2 = tr;
-        tr = w->pair_eq; w->pair_eq = w->pair_eq2; w->pair_eq2 = tr;
-    }
+    hcbd__hc_swap_pairs(w);
     w->npairs = total;
     w->n_created += created;
     return -1;
@@ -4955,6 +5177,8 @@ static void hcbd__hc_stress_add(hcbd_hc_world *w)
     w->stress_steps++;
 }
 
+static hcbd_result hcbd__hc_guard(hcbd_hc_world *w);
+
 hcbd_result hcbd_hc_step(hcbd_hc_world *w, int nsteps)
 {
     static const char *why_s[4] = {"fluid velocity is not finite",
@@ -5001,6 +5225,9 @@ hcbd_result hcbd_hc_step(hcbd_hc_world *w, int nsteps)
             return hcbd__fail(&w->err, why < 2 ? HCBD_ERR_NONFINITE : HCBD_ERR_UNSTABLE,
                               w->step, bad, "%s (id %d, dt = %g, substeps %d)", why_s[why], bad,
                               w->p.dt, nsub);
+        if (w->p.guard_every > 0 && w->step % w->p.guard_every == 0 &&
+            (r = hcbd__hc_guard(w)) != HCBD_OK)
+            return r;
     }
     if (!w->ready) return hcbd__hc_prepare(w, w->step);
     return HCBD_OK;
@@ -5018,6 +5245,7 @@ hcbd_result hcbd_hc_lambda(const hcbd_hc_world *w, int a, int b, double *lambda)
 {
     int lo, k;
     if (!w || !lambda) return HCBD_ERR_NULL;
+    if (a < 0 || b < 0 || a >= w->np || b >= w->np || a == b) return HCBD_ERR_PARAM;
     k = hcbd__hc_pair_slot(w, a, b, &lo);
     if (k < 0) return HCBD_ERR_STATE;
     *lambda = w->pair_l[(size_t)lo * w->pair_cap + k];
@@ -5028,6 +5256,11 @@ hcbd_result hcbd_hc_set_lambda(hcbd_hc_world *w, int a, int b, double lambda)
 {
     int lo, k;
     if (!w) return HCBD_ERR_NULL;
+    hcbd__clear(&w->err);
+    if (a < 0 || a >= w->np || b < 0 || b >= w->np || a == b)
+        return hcbd__fail(&w->err, HCBD_ERR_PARAM, -1, a,
+                          "a = %d, b = %d are not two polymer ids (need 0 <= a != b < %d)", a, b,
+                          w->np);
     if (!isfinite(lambda))
         return hcbd__fail(&w->err, HCBD_ERR_NONFINITE, -1, a, "lambda = %g is not finite", lambda);
     k = hcbd__hc_pair_slot(w, a, b, &lo);
@@ -5074,6 +5307,7 @@ void hcbd_hc_momentum(const hcbd_hc_world *w, double p[3])
 hcbd_result hcbd_hc_transverse_current(const hcbd_hc_world *w, int nk, double out[12])
 {
     if (!w || !out) return HCBD_ERR_NULL;
+    if (nk < 1) return HCBD_ERR_PARAM;
     hcbd__tcurrent(w->nf, NULL, w->fx, w->fy, w->fz, w->fvx, w->fvy, w->fvz, w->p.L, nk, out);
     return HCBD_OK;
 }
@@ -5114,7 +5348,10 @@ hcbd_result hcbd_hc_stress_enable(hcbd_hc_world *w, int on)
 {
     int k;
     if (!w) return HCBD_ERR_NULL;
-    w->stress_on = on != 0;
+    hcbd__clear(&w->err);
+    if (on != 0 && on != 1)
+        return hcbd__fail(&w->err, HCBD_ERR_PARAM, w->step, -1, "on = %d is not 0 or 1", on);
+    w->stress_on = on;
     w->stress_steps = 0;
     for (k = 0; k < HCBD_HC_NSTRESS; ++k) w->stress_sum[k] = 0.0;
     w->ready = 0; /* the next step's passes must fill the accumulators */
@@ -5168,7 +5405,8 @@ hcbd_result hcbd_slabs_init(hcbd_slabs *s, const double L[3], int nslab, int nva
     if (!s || !L || !mem) return HCBD_ERR_NULL;
     memset(s, 0, sizeof *s);
     if (!hcbd_slabs_bytes(nslab, nval) || block < 1) return HCBD_ERR_PARAM;
-    if (!(L[0] > 0 && L[1] > 0 && L[2] > 0)) return HCBD_ERR_PARAM;
+    if (!(L[0] > 0 && L[1] > 0 && L[2] > 0 && isfinite(L[0]) && isfinite(L[1]) && isfinite(L[2])))
+        return HCBD_ERR_PARAM;
     if (bytes < hcbd_slabs_bytes(nslab, nval)) return HCBD_ERR_MEMORY;
     s->nslab = nslab;
     s->nval = nval;
@@ -5233,6 +5471,915 @@ int64_t hcbd_slabs_result(const hcbd_slabs *s, double *out)
     }
     return s->nblocks;
 }
+
+/* >>set-up after creation */
+hcbd_result hcbd_set_threads(hcbd_world *w, int threads)
+{
+    if (!w) return HCBD_ERR_NULL;
+    hcbd__clear(&w->err);
+    if (threads < 1 || threads > 1024)
+        return hcbd__fail(&w->err, HCBD_ERR_PARAM, w->step, -1,
+                          "threads = %d is invalid (need 1..1024)", threads);
+    w->p.threads = threads;
+    return HCBD_OK;
+}
+
+/* >>run-time guard: the whole state, in id order so the particle reported
+   is the lowest offending id whatever the storage. */
+static hcbd_result hcbd__guard(hcbd_world *w)
+{
+    const double L0 = w->p.L[0], L1 = w->p.L[1], L2 = w->p.L[2];
+    int k;
+    for (k = 0; k < w->n; ++k) {
+        const int i = w->slot[k];
+        const double x = w->x[i], y = w->y[i], z = w->z[i];
+        if (!(isfinite(x) && isfinite(y) && isfinite(z)))
+            return hcbd__fail(&w->err, HCBD_ERR_NONFINITE, w->step, k,
+                              "guard at step %lld: particle %d has position (%g, %g, %g)",
+                              (long long)w->step, k, x, y, z);
+        if (w->gibd && !(isfinite(w->vx[i]) && isfinite(w->vy[i]) && isfinite(w->vz[i])))
+            return hcbd__fail(&w->err, HCBD_ERR_NONFINITE, w->step, k,
+                              "guard at step %lld: particle %d has velocity (%g, %g, %g)",
+                              (long long)w->step, k, (double)w->vx[i], (double)w->vy[i],
+                              (double)w->vz[i]);
+        /* images within int32 with room for another box per step */
+        if (!(x >= 0 && x < L0 && y >= 0 && y < L1 && z >= 0 && z < L2) ||
+            abs(w->ix[i]) > 0x3FFFFFFF || abs(w->iy[i]) > 0x3FFFFFFF ||
+            abs(w->iz[i]) > 0x3FFFFFFF)
+            return hcbd__fail(&w->err, HCBD_ERR_OUTSIDE, w->step, k,
+                              "guard at step %lld: particle %d at (%.17g, %.17g, %.17g), "
+                              "images (%d, %d, %d), is outside the box [0, %g) x [0, %g) "
+                              "x [0, %g) or its image count is near overflow",
+                              (long long)w->step, k, x, y, z, (int)w->ix[i], (int)w->iy[i],
+                              (int)w->iz[i], L0, L1, L2);
+        if (w->walls && w->p.guard_walls && (y < w->wall_lo || y > w->wall_hi))
+            return hcbd__fail(&w->err, HCBD_ERR_WALL, w->step, k,
+                              "guard at step %lld: particle %d at y = %.17g is inside a "
+                              "wall (the channel is %g <= y <= %g)",
+                              (long long)w->step, k, y, w->wall_lo, w->wall_hi);
+        if (w->gibd && w->rho_valid && !(w->rho[i] > 0 && isfinite(w->rho[i])))
+            return hcbd__fail(&w->err, HCBD_ERR_NONFINITE, w->step, k,
+                              "guard at step %lld: particle %d has density %g",
+                              (long long)w->step, k, (double)w->rho[i]);
+    }
+    return HCBD_OK;
+}
+
+/* >>checkpoint: a header of seven little-endian 64-bit words (magic,
+   version, model, sizeof(hcbd_real), world kind, payload bytes, FNV-1a of
+   the payload), then the payload as 64-bit words.  One walker per world
+   both writes (out != NULL), measures (out == in == NULL) and reads, so
+   the two directions cannot disagree. */
+#ifndef HCBD_LOAD_MAX_BYTES
+#define HCBD_LOAD_MAX_BYTES ((size_t)-1) /* fuzzers cap the world a file may ask for */
+#endif
+#define HCBD__CK_HEAD 56
+#define HCBD__CK_WORLD 1
+#define HCBD__CK_HC 2
+static const char hcbd__ck_magic[8] = {'H', 'C', 'B', 'D', 'C', 'K', 'P', 'T'};
+
+typedef struct hcbd__ck {
+    unsigned char *out;
+    const unsigned char *in;
+    size_t size, off;
+    int bad; /* a read past the end or an out-of-range integer */
+} hcbd__ck;
+
+static void hcbd__ck_u64(hcbd__ck *c, uint64_t *v)
+{
+    int k;
+    if (c->in) {
+        uint64_t x = 0;
+        if (c->bad || c->off > c->size || c->size - c->off < 8) {
+            c->bad = 1;
+            *v = 0;
+            return;
+        }
+        for (k = 0; k < 8; ++k) x |= (uint64_t)c->in[c->off + k] << (8 * k);
+        *v = x;
+    } else if (c->out) {
+        for (k = 0; k < 8; ++k) c->out[c->off + k] = (unsigned char)(*v >> (8 * k));
+    }
+    c->off += 8;
+}
+
+static void hcbd__ck_f64(hcbd__ck *c, double *v)
+{
+    uint64_t u = 0;
+    if (!c->in) memcpy(&u, v, 8);
+    hcbd__ck_u64(c, &u);
+    if (c->in) memcpy(v, &u, 8);
+}
+
+static void hcbd__ck_i64(hcbd__ck *c, int64_t *v)
+{
+    uint64_t u = c->in ? 0 : (uint64_t)*v;
+    hcbd__ck_u64(c, &u);
+    if (c->in) *v = (int64_t)u;
+}
+
+static void hcbd__ck_int(hcbd__ck *c, int *v)
+{
+    int64_t x = c->in ? 0 : *v;
+    hcbd__ck_i64(c, &x);
+    if (c->in) {
+        if (x < INT_MIN || x > INT_MAX) c->bad = 1;
+        *v = c->bad ? 0 : (int)x;
+    }
+}
+
+#define HCBD__CK_ENUM(c, field, type)                                         \
+    do {                                                                       \
+        int e_ = (int)(field);                                                 \
+        hcbd__ck_int((c), &e_);                                                \
+        if ((c)->in) (field) = (type)e_;                                       \
+    } while (0)
+
+/* n reals, or int32s, or u64s, at a[map[k]] (map NULL: a[k]); stored as
+   doubles, so a float world's values are exact too */
+static void hcbd__ck_reals(hcbd__ck *c, hcbd_real *a, const int32_t *map, int n)
+{
+    int k;
+    for (k = 0; k < n; ++k) {
+        double v = c->in ? 0.0 : (double)a[map ? map[k] : k];
+        hcbd__ck_f64(c, &v);
+        if (c->in) a[k] = (hcbd_real)v;
+    }
+}
+
+static void hcbd__ck_i32s(hcbd__ck *c, int32_t *a, const int32_t *map, int n)
+{
+    int k;
+    for (k = 0; k < n; ++k) {
+        int64_t v = c->in ? 0 : a[map ? map[k] : k];
+        hcbd__ck_i64(c, &v);
+        if (c->in) {
+            if (v < INT32_MIN || v > INT32_MAX) c->bad = 1;
+            a[k] = c->bad ? 0 : (int32_t)v;
+        }
+    }
+}
+
+static void hcbd__ck_u64s(hcbd__ck *c, uint64_t *a, const int32_t *map, int n)
+{
+    int k;
+    for (k = 0; k < n; ++k) {
+        uint64_t v = c->in ? 0 : a[map ? map[k] : k];
+        hcbd__ck_u64(c, &v);
+        if (c->in) a[k] = v;
+    }
+}
+
+static void hcbd__ck_f64s(hcbd__ck *c, double *a, const int32_t *map, int n)
+{
+    int k;
+    for (k = 0; k < n; ++k) {
+        double v = c->in ? 0.0 : a[map ? map[k] : k];
+        hcbd__ck_f64(c, &v);
+        if (c->in) a[k] = v;
+    }
+}
+
+static const char *hcbd__model_name(uint64_t m)
+{
+    return m == HCBD_MODEL_GIBD ? "GI-BD" : m == HCBD_MODEL_WALLED ? "walled"
+                                          : m == HCBD_MODEL_HCBD ? "HCBD" : "unknown";
+}
+
+static void hcbd__ck_head(unsigned char *b, uint64_t kind, size_t payload)
+{
+    hcbd__ck c;
+    uint64_t v[6];
+    int k;
+    memcpy(b, hcbd__ck_magic, 8);
+    v[0] = HCBD_CHECKPOINT_VERSION;
+    v[1] = HCBD_MODEL;
+    v[2] = sizeof(hcbd_real);
+    v[3] = kind;
+    v[4] = payload;
+    v[5] = hcbd__hash(0xCBF29CE484222325ULL, b + HCBD__CK_HEAD, payload);
+    memset(&c, 0, sizeof c);
+    c.out = b;
+    c.off = 8;
+    for (k = 0; k < 6; ++k) hcbd__ck_u64(&c, &v[k]);
+}
+
+/* Checks the header; on success c reads the payload. */
+static hcbd_result hcbd__ck_open(hcbd_error *e, const void *buf, size_t size, uint64_t kind,
+                                 hcbd__ck *c)
+{
+    static const char *kinds[3] = {"unknown", "hcbd_world (GI-BD/walled)", "hcbd_hc_world (HCBD)"};
+    uint64_t v[6];
+    int k;
+    memset(c, 0, sizeof *c);
+    if (!buf) return hcbd__fail(e, HCBD_ERR_NULL, -1, -1, "checkpoint buffer is NULL");
+    if (size < HCBD__CK_HEAD)
+        return hcbd__fail(e, HCBD_ERR_FORMAT, -1, -1,
+                          "checkpoint of %zu bytes is shorter than its %d-byte header "
+                          "(truncated)", size, HCBD__CK_HEAD);
+    if (memcmp(buf, hcbd__ck_magic, 8))
+        return hcbd__fail(e, HCBD_ERR_FORMAT, -1, -1,
+                          "not an hcbd checkpoint: the first 8 bytes are not \"HCBDCKPT\"");
+    c->in = (const unsigned char *)buf;
+    c->size = HCBD__CK_HEAD;
+    c->off = 8;
+    for (k = 0; k < 6; ++k) hcbd__ck_u64(c, &v[k]);
+    if (v[0] != HCBD_CHECKPOINT_VERSION)
+        return hcbd__fail(e, HCBD_ERR_VERSION, -1, -1,
+                          "checkpoint format version %llu; this build reads version %d",
+                          (unsigned long long)v[0], HCBD_CHECKPOINT_VERSION);
+    if (v[1] != HCBD_MODEL)
+        return hcbd__fail(e, HCBD_ERR_MODEL, -1, -1,
+                          "checkpoint model %llu (%s); this is the %s build",
+                          (unsigned long long)v[1], hcbd__model_name(v[1]),
+                          hcbd__model_name(HCBD_MODEL));
+    if (v[2] != sizeof(hcbd_real))
+        return hcbd__fail(e, HCBD_ERR_MODEL, -1, -1,
+                          "checkpoint precision: hcbd_real of %llu bytes; this build's is %d",
+                          (unsigned long long)v[2], (int)sizeof(hcbd_real));
+    if (v[3] != kind)
+        return hcbd__fail(e, HCBD_ERR_MODEL, -1, -1,
+                          "checkpoint world kind %llu (%s); expected %s",
+                          (unsigned long long)v[3], kinds[v[3] < 3 ? v[3] : 0], kinds[kind]);
+    if (v[4] != size - HCBD__CK_HEAD)
+        return hcbd__fail(e, HCBD_ERR_FORMAT, -1, -1,
+                          "checkpoint payload should be %llu bytes but %zu follow the "
+                          "header (truncated or padded)", (unsigned long long)v[4],
+                          size - HCBD__CK_HEAD);
+    if (v[5] != hcbd__hash(0xCBF29CE484222325ULL, c->in + HCBD__CK_HEAD, size - HCBD__CK_HEAD))
+        return hcbd__fail(e, HCBD_ERR_FORMAT, -1, -1,
+                          "checkpoint checksum mismatch: the payload is corrupted");
+    c->in += HCBD__CK_HEAD;
+    c->size = size - HCBD__CK_HEAD;
+    c->off = 0;
+    return HCBD_OK;
+}
+
+/* e->msg = a b e->msg, cut to fit */
+static void hcbd__prefix(hcbd_error *e, const char *a, const char *b)
+{
+    char m[sizeof e->msg];
+    const char *part[3];
+    size_t k = 0, j;
+    int q;
+    part[0] = a; part[1] = b; part[2] = e->msg;
+    for (q = 0; q < 3; ++q)
+        for (j = 0; part[q][j] && k + 1 < sizeof m; ++j) m[k++] = part[q][j];
+    m[k] = 0;
+    memcpy(e->msg, m, k + 1);
+}
+
+static hcbd_result hcbd__ck_bad(hcbd_error *e, const hcbd__ck *c, const char *where)
+{
+    return hcbd__fail(e, HCBD_ERR_FORMAT, -1, -1,
+                      "checkpoint %s at byte %zu of the %zu-byte payload", where,
+                      c->off + HCBD__CK_HEAD, c->size);
+}
+
+static hcbd_result hcbd__save_file(hcbd_error *e, const unsigned char *b, size_t n,
+                                   const char *path)
+{
+    char tmp[4096];
+    FILE *f;
+    size_t len = strlen(path);
+    if (len == 0 || len + 5 > sizeof tmp)
+        return hcbd__fail(e, HCBD_ERR_PARAM, -1, -1,
+                          "path of %zu characters (need 1..%d)", len, (int)sizeof tmp - 5);
+    snprintf(tmp, sizeof tmp, "%s.tmp", path);
+    f = fopen(tmp, "wb");
+    if (!f) return hcbd__fail(e, HCBD_ERR_IO, -1, -1, "cannot open %s for writing", tmp);
+    if (fwrite(b, 1, n, f) != n) {
+        fclose(f);
+        remove(tmp);
+        return hcbd__fail(e, HCBD_ERR_IO, -1, -1, "writing %zu bytes to %s failed", n, tmp);
+    }
+    if (fclose(f) != 0) {
+        remove(tmp);
+        return hcbd__fail(e, HCBD_ERR_IO, -1, -1, "closing %s failed (disk full?)", tmp);
+    }
+    if (rename(tmp, path) != 0) {
+        remove(tmp);
+        return hcbd__fail(e, HCBD_ERR_IO, -1, -1, "renaming %s to %s failed", tmp, path);
+    }
+    return HCBD_OK;
+}
+
+/* Whole file into a fresh block (caller frees). */
+static hcbd_result hcbd__read_file(hcbd_error *e, const char *path, unsigned char **b, size_t *n)
+{
+    FILE *f;
+    long len;
+    *b = NULL;
+    *n = 0;
+    f = fopen(path, "rb");
+    if (!f) return hcbd__fail(e, HCBD_ERR_IO, -1, -1, "cannot open %s for reading", path);
+    if (fseek(f, 0, SEEK_END) != 0 || (len = ftell(f)) < 0 || fseek(f, 0, SEEK_SET) != 0) {
+        fclose(f);
+        return hcbd__fail(e, HCBD_ERR_IO, -1, -1, "cannot find the size of %s", path);
+    }
+    *b = (unsigned char *)HCBD_MALLOC(len > 0 ? (size_t)len : 1);
+    if (!*b) {
+        fclose(f);
+        return hcbd__fail(e, HCBD_ERR_MEMORY, -1, -1, "malloc of %ld bytes for %s failed",
+                          len, path);
+    }
+    if (fread(*b, 1, (size_t)len, f) != (size_t)len) {
+        fclose(f);
+        HCBD_FREE(*b);
+        *b = NULL;
+        return hcbd__fail(e, HCBD_ERR_IO, -1, -1, "reading %ld bytes of %s failed", len, path);
+    }
+    fclose(f);
+    *n = (size_t)len;
+    return HCBD_OK;
+}
+
+static void hcbd__ck_params(hcbd__ck *c, hcbd_params *p)
+{
+    int d;
+    for (d = 0; d < 3; ++d) hcbd__ck_f64(c, &p->L[d]);
+    hcbd__ck_f64(c, &p->dt); hcbd__ck_f64(c, &p->kT); hcbd__ck_f64(c, &p->xi);
+    hcbd__ck_f64(c, &p->xip); hcbd__ck_f64(c, &p->tau); hcbd__ck_f64(c, &p->Rc);
+    hcbd__ck_f64(c, &p->density);
+    hcbd__ck_int(c, &p->density_norm); hcbd__ck_int(c, &p->lagged_density);
+    HCBD__CK_ENUM(c, p->dynamics, hcbd_dynamics);
+    HCBD__CK_ENUM(c, p->potential, hcbd_potential);
+    HCBD__CK_ENUM(c, p->noise, hcbd_noise);
+    HCBD__CK_ENUM(c, p->pair_integrator, hcbd_pair_integrator);
+    hcbd__ck_f64(c, &p->f); hcbd__ck_f64(c, &p->sigma); hcbd__ck_f64(c, &p->star_eps);
+    hcbd__ck_f64(c, &p->rcut);
+    hcbd__ck_int(c, &p->table_n); hcbd__ck_f64(c, &p->table_r0);
+    for (d = 0; d < 3; ++d) hcbd__ck_f64(c, &p->fext[d]);
+    hcbd__ck_int(c, &p->fext_background_only);
+    hcbd__ck_f64(c, &p->gdot);
+    hcbd__ck_f64(c, &p->wall_thickness);
+    hcbd__ck_f64(c, &p->wall_vx[0]); hcbd__ck_f64(c, &p->wall_vx[1]);
+    hcbd__ck_f64(c, &p->wall_beta_max);
+    HCBD__CK_ENUM(c, p->wall_mode, hcbd_wall_mode);
+    hcbd__ck_f64(c, &p->wall_a); hcbd__ck_f64(c, &p->wall_b);
+    hcbd__ck_f64(c, &p->wall_plane); hcbd__ck_f64(c, &p->wall_shift);
+    hcbd__ck_int(c, &p->wall_noise_beta);
+    hcbd__ck_f64(c, &p->skin);
+    hcbd__ck_int(c, &p->sort);
+    hcbd__ck_u64(c, &p->seed);
+    hcbd__ck_int(c, &p->threads);
+    hcbd__ck_f64(c, &p->min_distance);
+    hcbd__ck_int(c, &p->guard_every); hcbd__ck_int(c, &p->guard_walls);
+    hcbd__ck_f64(c, &p->guard_step);
+}
+
+/* Everything after the definition, per particle in id order (map = slot
+   when writing; a loaded world is stored in id order). */
+static void hcbd__ck_state(hcbd__ck *c, hcbd_world *w)
+{
+    const int32_t *map = c->in ? NULL : w->slot;
+    const int n = w->n;
+    int d;
+    hcbd__ck_i64(c, &w->step);
+    hcbd__ck_f64(c, &w->le_offset);
+    hcbd__ck_int(c, &w->flux_on);
+    hcbd__ck_i64(c, &w->flux_steps);
+    for (d = 0; d < 3; ++d) hcbd__ck_f64(c, &w->flux_sum[d]);
+    hcbd__ck_i64(c, &w->wall_pen);
+    hcbd__ck_i64(c, &w->wall_pen_step);
+    hcbd__ck_int(c, &w->wall_pen_id);
+    hcbd__ck_int(c, &w->rho_valid);
+    hcbd__ck_int(c, &w->rho_current);
+    hcbd__ck_i64(c, &w->n_rebuilds);
+    hcbd__ck_i64(c, &w->n_rescans);
+    hcbd__ck_reals(c, w->x, map, n); hcbd__ck_reals(c, w->y, map, n); hcbd__ck_reals(c, w->z, map, n);
+    hcbd__ck_i32s(c, w->ix, map, n); hcbd__ck_i32s(c, w->iy, map, n); hcbd__ck_i32s(c, w->iz, map, n);
+    hcbd__ck_f64s(c, w->lx, map, n);
+    hcbd__ck_u64s(c, w->rs0, map, n); hcbd__ck_u64s(c, w->rs1, map, n);
+    hcbd__ck_u64s(c, w->rs2, map, n); hcbd__ck_u64s(c, w->rs3, map, n);
+    if (w->gibd) {
+        hcbd__ck_reals(c, w->vx, map, n); hcbd__ck_reals(c, w->vy, map, n);
+        hcbd__ck_reals(c, w->vz, map, n);
+        hcbd__ck_reals(c, w->rho, map, n); hcbd__ck_reals(c, w->inv_rho, map, n);
+        hcbd__ck_reals(c, w->wown, map, n);
+    }
+}
+
+/* capacity, max_pairs, n, parameters, table; the state follows */
+static void hcbd__ck_world(hcbd__ck *c, hcbd_world *w)
+{
+    int64_t cap = w->capacity, mp = w->max_pairs;
+    hcbd__ck_i64(c, &cap);
+    hcbd__ck_i64(c, &mp);
+    hcbd__ck_int(c, &w->n);
+    hcbd__ck_params(c, &w->p);
+    if (w->p.potential == HCBD_POT_TABLE) {
+        hcbd__ck_f64s(c, w->tab_F, NULL, w->p.table_n);
+        hcbd__ck_f64s(c, w->tab_V, NULL, w->p.table_n);
+    }
+    hcbd__ck_state(c, w);
+}
+
+size_t hcbd_checkpoint_size(const hcbd_world *w)
+{
+    hcbd__ck c;
+    if (!w) return 0;
+    memset(&c, 0, sizeof c);
+    hcbd__ck_world(&c, (hcbd_world *)w); /* measures only: nothing is written */
+    return HCBD__CK_HEAD + c.off;
+}
+
+hcbd_result hcbd_checkpoint_save(hcbd_world *w, void *buf, size_t size)
+{
+    hcbd__ck c;
+    size_t need;
+    if (!w) return HCBD_ERR_NULL;
+    hcbd__clear(&w->err);
+    if (!buf) return hcbd__fail(&w->err, HCBD_ERR_NULL, w->step, -1, "checkpoint buffer is NULL");
+    need = hcbd_checkpoint_size(w);
+    if (size < need)
+        return hcbd__fail(&w->err, HCBD_ERR_MEMORY, w->step, -1,
+                          "checkpoint buffer of %zu bytes is smaller than the %zu bytes "
+                          "hcbd_checkpoint_size asks for", size, need);
+    memset(&c, 0, sizeof c);
+    c.out = (unsigned char *)buf + HCBD__CK_HEAD;
+    c.size = need - HCBD__CK_HEAD;
+    hcbd__ck_world(&c, w);
+    hcbd__ck_head((unsigned char *)buf, HCBD__CK_WORLD, c.off);
+    return HCBD_OK;
+}
+
+/* The definition is read into a scratch world struct first (it only
+   holds values), then the real world is created from it. */
+hcbd_result hcbd_checkpoint_load(hcbd_world *w, const void *buf, size_t size)
+{
+    hcbd__ck c;
+    hcbd_world_def def;
+    int64_t cap = 0, mp = 0;
+    int n = 0, k;
+    double *tab = NULL;
+    hcbd_result r;
+    size_t bytes;
+    if (!w) return HCBD_ERR_NULL;
+    memset(w, 0, sizeof *w);
+    hcbd__clear(&w->err);
+    if ((r = hcbd__ck_open(&w->err, buf, size, HCBD__CK_WORLD, &c)) != HCBD_OK) return r;
+    memset(&def, 0, sizeof def);
+    hcbd__ck_i64(&c, &cap);
+    hcbd__ck_i64(&c, &mp);
+    hcbd__ck_int(&c, &n);
+    hcbd__ck_params(&c, &def.params);
+    if (c.bad) return hcbd__ck_bad(&w->err, &c, "ends inside the parameters");
+    if (cap < 1 || cap > INT32_MAX || n < 0 || n > cap)
+        return hcbd__fail(&w->err, HCBD_ERR_FORMAT, -1, -1,
+                          "checkpoint holds n = %d particles for capacity %lld", n,
+                          (long long)cap);
+    def.capacity = (int)cap;
+    def.max_pairs = mp;
+    def.params.table_F = def.params.table_V = NULL;
+    if (def.params.potential == HCBD_POT_TABLE) {
+        const int tn = def.params.table_n;
+        if (tn < 2 || (size_t)tn > (c.size - c.off) / 16)
+            return hcbd__ck_bad(&w->err, &c, "table_n does not fit the rest");
+        tab = (double *)HCBD_MALLOC(2 * (size_t)tn * sizeof(double));
+        if (!tab) return hcbd__fail(&w->err, HCBD_ERR_MEMORY, -1, -1, "malloc of the table failed");
+        hcbd__ck_f64s(&c, tab, NULL, tn);
+        hcbd__ck_f64s(&c, tab + tn, NULL, tn);
+        def.params.table_F = tab;
+        def.params.table_V = tab + tn;
+    }
+    /* every particle takes at least 11 words: a short file is refused
+       before its capacity is allocated */
+    if ((size_t)n > (c.size - c.off) / (11 * 8)) {
+        HCBD_FREE(tab);
+        return hcbd__ck_bad(&w->err, &c, "is shorter than its particles");
+    }
+    bytes = hcbd_world_bytes(&def);
+    if (bytes > HCBD_LOAD_MAX_BYTES) {
+        HCBD_FREE(tab);
+        return hcbd__fail(&w->err, HCBD_ERR_MEMORY, -1, -1,
+                          "checkpoint world needs %zu bytes, more than HCBD_LOAD_MAX_BYTES",
+                          bytes);
+    }
+    r = hcbd_world_create(w, &def);
+    HCBD_FREE(tab);
+    if (r != HCBD_OK) return r; /* w->err names the parameter */
+    w->n = n;
+    hcbd__ck_state(&c, w);
+    if (c.bad || c.off != c.size) {
+        hcbd_error e = w->err;
+        hcbd__ck_bad(&e, &c, c.bad ? "ends inside the particle state" : "has trailing bytes");
+        hcbd_world_destroy(w);
+        w->err = e;
+        return e.code;
+    }
+    for (k = 0; k < n; ++k) {
+        w->id[k] = k;
+        w->slot[k] = k;
+    }
+    w->list_valid = 0;
+    w->le_drift = 0.0;
+    /* a checksum-valid file from elsewhere may still hold nonsense */
+    r = hcbd__guard(w);
+    if (r == HCBD_OK && (w->flux_on & ~1))
+        r = hcbd__fail(&w->err, HCBD_ERR_FORMAT, -1, -1, "flux_on = %d", w->flux_on);
+    if (r != HCBD_OK) {
+        hcbd_error e = w->err;
+        hcbd_world_destroy(w);
+        w->err = e;
+        hcbd__prefix(&w->err, "checkpoint state refused: ", "");
+        return r;
+    }
+    hcbd__clear(&w->err);
+    return HCBD_OK;
+}
+
+hcbd_result hcbd_save(hcbd_world *w, const char *path)
+{
+    size_t n;
+    unsigned char *b;
+    hcbd_result r;
+    if (!w) return HCBD_ERR_NULL;
+    hcbd__clear(&w->err);
+    if (!path) return hcbd__fail(&w->err, HCBD_ERR_NULL, w->step, -1, "path is NULL");
+    n = hcbd_checkpoint_size(w);
+    b = (unsigned char *)HCBD_MALLOC(n);
+    if (!b) return hcbd__fail(&w->err, HCBD_ERR_MEMORY, w->step, -1, "malloc of %zu bytes failed", n);
+    r = hcbd_checkpoint_save(w, b, n);
+    if (r == HCBD_OK) r = hcbd__save_file(&w->err, b, n, path);
+    HCBD_FREE(b);
+    return r;
+}
+
+hcbd_result hcbd_load(hcbd_world *w, const char *path)
+{
+    unsigned char *b;
+    size_t n;
+    hcbd_result r;
+    if (!w) return HCBD_ERR_NULL;
+    memset(w, 0, sizeof *w);
+    hcbd__clear(&w->err);
+    if (!path) return hcbd__fail(&w->err, HCBD_ERR_NULL, -1, -1, "path is NULL");
+    if ((r = hcbd__read_file(&w->err, path, &b, &n)) != HCBD_OK) return r;
+    r = hcbd_checkpoint_load(w, b, n);
+    HCBD_FREE(b);
+    if (r != HCBD_OK) hcbd__prefix(&w->err, path, ": ");
+    return r;
+}
+
+/* >>extended XYZ and thermo lines */
+static void hcbd__xyz_head(FILE *f, int n, const double L[3], double time, int64_t step,
+                           double le_offset, const char *extra)
+{
+    fprintf(f, "%d\nLattice=\"%.17g 0 0 0 %.17g 0 0 0 %.17g\" Origin=\"0 0 0\" "
+               "Properties=species:S:1:pos:R:3:velo:R:3:id:I:1 pbc=\"T T T\" "
+               "Time=%.17g Step=%lld le_offset=%.17g%s\n",
+            n, L[0], L[1], L[2], time, (long long)step, le_offset, extra);
+}
+
+static void hcbd__xyz_atom(FILE *f, const char *sp, double x, double y, double z, double vx,
+                           double vy, double vz, int id)
+{
+    fprintf(f, "%s %.17g %.17g %.17g %.17g %.17g %.17g %d\n", sp, x, y, z, vx, vy, vz, id);
+}
+
+static hcbd_result hcbd__xyz(const hcbd_world *w, FILE *f, const int *ids, int nids,
+                             const char *extra)
+{
+    int k;
+    if (!w || !f) return HCBD_ERR_NULL;
+    if (!ids) nids = w->n;
+    if (nids < 0 || nids > w->n) return HCBD_ERR_PARAM;
+    for (k = 0; ids && k < nids; ++k)
+        if (ids[k] < 0 || ids[k] >= w->n) return HCBD_ERR_PARAM;
+    hcbd__xyz_head(f, nids, w->p.L, (double)w->step * w->p.dt, w->step, w->le_offset, extra);
+    for (k = 0; k < nids; ++k) {
+        const int id = ids ? ids[k] : k, i = w->slot[id];
+        hcbd__xyz_atom(f, "S", w->x[i], w->y[i], w->z[i], w->gibd ? (double)w->vx[i] : 0.0,
+                       w->gibd ? (double)w->vy[i] : 0.0, w->gibd ? (double)w->vz[i] : 0.0, id);
+    }
+    return ferror(f) ? HCBD_ERR_IO : HCBD_OK;
+}
+
+hcbd_result hcbd_xyz_write(const hcbd_world *w, FILE *f, const int *ids, int nids)
+{
+    return hcbd__xyz(w, f, ids, nids, "");
+}
+
+hcbd_result hcbd_xyz_offenders(const hcbd_world *w, FILE *f)
+{
+    char extra[96];
+    int k, m = 0, *ids;
+    const int bad = w ? (int)w->err.id : -1;
+    hcbd_result r;
+    if (!w || !f) return HCBD_ERR_NULL;
+    if (bad < 0 || bad >= w->n) return HCBD_ERR_STATE;
+    /* the scratch area holds n ints; the frame needs no allocation */
+    ids = (int *)w->scratch;
+    {
+        const double rr = w->rlist > 0 ? w->rlist : 0.0;
+        const int i = w->slot[bad];
+        for (k = 0; k < w->n; ++k) {
+            const int j = w->slot[k];
+            double e[3];
+            e[0] = hcbd__mi((double)w->x[i] - w->x[j], w->p.L[0]);
+            e[1] = hcbd__mi((double)w->y[i] - w->y[j], w->p.L[1]);
+            e[2] = hcbd__mi((double)w->z[i] - w->z[j], w->p.L[2]);
+            if (k == bad || !(e[0] * e[0] + e[1] * e[1] + e[2] * e[2] > rr * rr)) ids[m++] = k;
+        }
+    }
+    snprintf(extra, sizeof extra, " error=%s offender=%d", hcbd_result_name(w->err.code), bad);
+    r = hcbd__xyz(w, f, ids, m, extra);
+    return r;
+}
+
+int hcbd_thermo_header(char *buf, size_t size)
+{
+    return snprintf(buf, size, "# step time T px py pz pairs wall_pen ns_pstep");
+}
+
+int hcbd_thermo_line(const hcbd_world *w, double ns_pstep, char *buf, size_t size)
+{
+    double p[3];
+    char ns[32];
+    if (!w) return snprintf(buf, size, "# no world");
+    hcbd_momentum(w, p);
+    if (isfinite(ns_pstep)) snprintf(ns, sizeof ns, "%.4g", ns_pstep);
+    else snprintf(ns, sizeof ns, "-");
+    return snprintf(buf, size, "%lld %.9g %.9g %.6e %.6e %.6e %lld %lld %s",
+                    (long long)w->step, (double)w->step * w->p.dt, hcbd_temperature(w), p[0],
+                    p[1], p[2], (long long)w->npairs, (long long)w->wall_pen, ns);
+}
+
+#if HCBD_MODEL == HCBD_MODEL_HCBD
+hcbd_result hcbd_hc_set_threads(hcbd_hc_world *w, int threads)
+{
+    if (!w) return HCBD_ERR_NULL;
+    hcbd__clear(&w->err);
+    if (threads < 1 || threads > 1024)
+        return hcbd__fail(&w->err, HCBD_ERR_PARAM, w->step, -1,
+                          "threads = %d is invalid (need 1..1024)", threads);
+    w->p.threads = threads;
+    return HCBD_OK;
+}
+
+/* Positions inside the box, finite velocities and pair variables. */
+static hcbd_result hcbd__hc_guard(hcbd_hc_world *w)
+{
+    const double *L = w->p.L;
+    int i, k;
+    for (i = 0; i < w->nf; ++i) {
+        const double x = w->fx[i], y = w->fy[i], z = w->fz[i];
+        if (!(isfinite(w->fvx[i]) && isfinite(w->fvy[i]) && isfinite(w->fvz[i])))
+            return hcbd__fail(&w->err, HCBD_ERR_NONFINITE, w->step, i,
+                              "guard at step %lld: fluid blob %d has velocity (%g, %g, %g)",
+                              (long long)w->step, i, (double)w->fvx[i], (double)w->fvy[i],
+                              (double)w->fvz[i]);
+        if (!(x >= 0 && x < L[0] && y >= 0 && y < L[1] && z >= 0 && z < L[2]))
+            return hcbd__fail(&w->err, HCBD_ERR_OUTSIDE, w->step, i,
+                              "guard at step %lld: fluid blob %d at (%.17g, %.17g, %.17g) is "
+                              "outside the box", (long long)w->step, i, x, y, z);
+    }
+    for (i = 0; i < w->np; ++i) {
+        const double x = w->px[i], y = w->py[i], z = w->pz[i];
+        if (!(x >= 0 && x < L[0] && y >= 0 && y < L[1] && z >= 0 && z < L[2]))
+            return hcbd__fail(&w->err, HCBD_ERR_OUTSIDE, w->step, w->nf + i,
+                              "guard at step %lld: polymer %d at (%.17g, %.17g, %.17g) is "
+                              "outside the box", (long long)w->step, i, x, y, z);
+        for (k = 0; w->transient && k < w->pair_n[i]; ++k)
+            if (!isfinite(w->pair_l[(size_t)i * w->pair_cap + k]))
+                return hcbd__fail(&w->err, HCBD_ERR_NONFINITE, w->step, w->nf + i,
+                                  "guard at step %lld: polymer %d's pair variable with %d "
+                                  "is not finite", (long long)w->step, i,
+                                  (int)w->pair_b[(size_t)i * w->pair_cap + k]);
+    }
+    return HCBD_OK;
+}
+
+static void hcbd__ck_hc_params(hcbd__ck *c, hcbd_hc_params *p)
+{
+    int d;
+    for (d = 0; d < 3; ++d) hcbd__ck_f64(c, &p->L[d]);
+    hcbd__ck_f64(c, &p->dt); hcbd__ck_f64(c, &p->kT); hcbd__ck_f64(c, &p->rho);
+    hcbd__ck_f64(c, &p->nbar); hcbd__ck_f64(c, &p->eta); hcbd__ck_f64(c, &p->P0);
+    hcbd__ck_f64(c, &p->h);
+    hcbd__ck_int(c, &p->fluctuations);
+    for (d = 0; d < 3; ++d) hcbd__ck_f64(c, &p->g[d]);
+    hcbd__ck_int(c, &p->reverse_poiseuille);
+    hcbd__ck_f64(c, &p->gdot); hcbd__ck_f64(c, &p->xi); hcbd__ck_f64(c, &p->sigma);
+    hcbd__ck_f64(c, &p->rc); hcbd__ck_f64(c, &p->alpha); hcbd__ck_f64(c, &p->tau_lambda);
+    hcbd__ck_f64(c, &p->p_kuhn); hcbd__ck_f64(c, &p->n_max); hcbd__ck_f64(c, &p->chi);
+    HCBD__CK_ENUM(c, p->coupling, hcbd_coupling);
+    HCBD__CK_ENUM(c, p->pair_integrator, hcbd_pair_integrator);
+    hcbd__ck_int(c, &p->substeps);
+    hcbd__ck_u64(c, &p->seed);
+    hcbd__ck_int(c, &p->threads);
+    hcbd__ck_int(c, &p->guard_every);
+}
+
+/* The state after the definition; pairs per owner in increasing partner
+   id, as the world keeps them. */
+static void hcbd__ck_hc_state(hcbd__ck *c, hcbd_hc_world *w)
+{
+    int a, k;
+    hcbd__ck_i64(c, &w->step);
+    hcbd__ck_f64(c, &w->le_offset);
+    hcbd__ck_int(c, &w->stress_on);
+    hcbd__ck_i64(c, &w->stress_steps);
+    for (k = 0; k < HCBD_HC_NSTRESS; ++k) hcbd__ck_f64(c, &w->stress_sum[k]);
+    hcbd__ck_i64(c, &w->n_created);
+    hcbd__ck_i64(c, &w->n_coincident);
+    hcbd__ck_int(c, &w->ready);
+    hcbd__ck_reals(c, w->fx, NULL, w->nf); hcbd__ck_reals(c, w->fy, NULL, w->nf);
+    hcbd__ck_reals(c, w->fz, NULL, w->nf);
+    hcbd__ck_reals(c, w->fvx, NULL, w->nf); hcbd__ck_reals(c, w->fvy, NULL, w->nf);
+    hcbd__ck_reals(c, w->fvz, NULL, w->nf);
+    hcbd__ck_reals(c, w->px, NULL, w->np); hcbd__ck_reals(c, w->py, NULL, w->np);
+    hcbd__ck_reals(c, w->pz, NULL, w->np);
+    for (a = 0; w->transient && a < w->np && !c->bad; ++a) {
+        const size_t o = (size_t)a * w->pair_cap;
+        int32_t *b = w->pair_b + o;
+        hcbd__ck_i32s(c, &w->pair_n[a], NULL, 1);
+        if (w->pair_n[a] < 0 || w->pair_n[a] > w->pair_cap) {
+            c->bad = 1;
+            break;
+        }
+        hcbd__ck_i32s(c, b, NULL, w->pair_n[a]);
+        hcbd__ck_reals(c, w->pair_l + o, NULL, w->pair_n[a]);
+        hcbd__ck_reals(c, w->pair_eq + o, NULL, w->pair_n[a]);
+        /* partners of higher id, increasing: what the pair search assumes */
+        for (k = 0; c->in && k < w->pair_n[a]; ++k)
+            if (b[k] <= (k ? b[k - 1] : a) || b[k] >= w->np) c->bad = 1;
+    }
+}
+
+static void hcbd__ck_hc_world(hcbd__ck *c, hcbd_hc_world *w)
+{
+    int64_t cap[3];
+    cap[0] = w->fcap; cap[1] = w->pcap; cap[2] = w->pair_cap;
+    hcbd__ck_i64(c, &cap[0]); hcbd__ck_i64(c, &cap[1]); hcbd__ck_i64(c, &cap[2]);
+    hcbd__ck_int(c, &w->nf); hcbd__ck_int(c, &w->np);
+    hcbd__ck_hc_params(c, &w->p);
+    hcbd__ck_hc_state(c, w);
+}
+
+size_t hcbd_hc_checkpoint_size(const hcbd_hc_world *w)
+{
+    hcbd__ck c;
+    if (!w) return 0;
+    memset(&c, 0, sizeof c);
+    hcbd__ck_hc_world(&c, (hcbd_hc_world *)w); /* measures only */
+    return HCBD__CK_HEAD + c.off;
+}
+
+hcbd_result hcbd_hc_checkpoint_save(hcbd_hc_world *w, void *buf, size_t size)
+{
+    hcbd__ck c;
+    size_t need;
+    if (!w) return HCBD_ERR_NULL;
+    hcbd__clear(&w->err);
+    if (!buf) return hcbd__fail(&w->err, HCBD_ERR_NULL, w->step, -1, "checkpoint buffer is NULL");
+    need = hcbd_hc_checkpoint_size(w);
+    if (size < need)
+        return hcbd__fail(&w->err, HCBD_ERR_MEMORY, w->step, -1,
+                          "checkpoint buffer of %zu bytes is smaller than the %zu bytes "
+                          "hcbd_hc_checkpoint_size asks for", size, need);
+    memset(&c, 0, sizeof c);
+    c.out = (unsigned char *)buf + HCBD__CK_HEAD;
+    c.size = need - HCBD__CK_HEAD;
+    hcbd__ck_hc_world(&c, w);
+    hcbd__ck_head((unsigned char *)buf, HCBD__CK_HC, c.off);
+    return HCBD_OK;
+}
+
+hcbd_result hcbd_hc_checkpoint_load(hcbd_hc_world *w, const void *buf, size_t size)
+{
+    hcbd__ck c;
+    hcbd_hc_def def;
+    int64_t cap[3] = {0, 0, 0};
+    int nf = 0, np = 0, ready = 0;
+    hcbd_result r;
+    size_t bytes;
+    if (!w) return HCBD_ERR_NULL;
+    memset(w, 0, sizeof *w);
+    hcbd__clear(&w->err);
+    if ((r = hcbd__ck_open(&w->err, buf, size, HCBD__CK_HC, &c)) != HCBD_OK) return r;
+    memset(&def, 0, sizeof def);
+    hcbd__ck_i64(&c, &cap[0]); hcbd__ck_i64(&c, &cap[1]); hcbd__ck_i64(&c, &cap[2]);
+    hcbd__ck_int(&c, &nf); hcbd__ck_int(&c, &np);
+    hcbd__ck_hc_params(&c, &def.params);
+    if (c.bad) return hcbd__ck_bad(&w->err, &c, "ends inside the parameters");
+    if (cap[0] < 2 || cap[0] > INT32_MAX || cap[1] < 0 || cap[1] > INT32_MAX || cap[2] < 0 ||
+        cap[2] > INT32_MAX || nf < 2 || nf > cap[0] || np < 0 || np > cap[1])
+        return hcbd__fail(&w->err, HCBD_ERR_FORMAT, -1, -1,
+                          "checkpoint holds %d fluid and %d polymer blobs for capacities "
+                          "%lld and %lld", nf, np, (long long)cap[0], (long long)cap[1]);
+    /* 6 words per fluid blob, 3 per polymer: a short file is refused
+       before its capacity is allocated */
+    if ((size_t)nf + (size_t)np > (c.size - c.off) / (3 * 8))
+        return hcbd__ck_bad(&w->err, &c, "is shorter than its particles");
+    def.fluid_capacity = (int)cap[0];
+    def.polymer_capacity = (int)cap[1];
+    def.pair_capacity = (int)cap[2];
+    bytes = hcbd_hc_world_bytes(&def);
+    if (bytes > HCBD_LOAD_MAX_BYTES)
+        return hcbd__fail(&w->err, HCBD_ERR_MEMORY, -1, -1,
+                          "checkpoint world needs %zu bytes, more than HCBD_LOAD_MAX_BYTES",
+                          bytes);
+    if ((r = hcbd_hc_world_create(w, &def)) != HCBD_OK) return r;
+    w->nf = nf;
+    w->np = np;
+    hcbd__ck_hc_state(&c, w);
+    ready = w->ready;
+    w->ready = 0;
+    if (c.bad || c.off != c.size || (ready & ~1) || (w->stress_on & ~1)) {
+        hcbd_error e = w->err;
+        hcbd__ck_bad(&e, &c, c.bad ? "ends inside, or holds invalid, particle state"
+                                   : c.off != c.size ? "has trailing bytes" : "has a bad flag");
+        hcbd_hc_world_destroy(w);
+        w->err = e;
+        return e.code;
+    }
+    for (np = 0; np < w->np && w->transient; ++np) w->npairs += w->pair_n[np];
+    r = hcbd__hc_guard(w);
+    /* the densities and forces of the saved step, recomputed from the
+       same positions and pairs (the pair merge keeps every saved pair) */
+    if (r == HCBD_OK && ready) r = hcbd__hc_prepare(w, w->step);
+    if (r != HCBD_OK) {
+        hcbd_error e = w->err;
+        hcbd_hc_world_destroy(w);
+        w->err = e;
+        hcbd__prefix(&w->err, "checkpoint state refused: ", "");
+        return r;
+    }
+    hcbd__clear(&w->err);
+    return HCBD_OK;
+}
+
+hcbd_result hcbd_hc_save(hcbd_hc_world *w, const char *path)
+{
+    size_t n;
+    unsigned char *b;
+    hcbd_result r;
+    if (!w) return HCBD_ERR_NULL;
+    hcbd__clear(&w->err);
+    if (!path) return hcbd__fail(&w->err, HCBD_ERR_NULL, w->step, -1, "path is NULL");
+    n = hcbd_hc_checkpoint_size(w);
+    b = (unsigned char *)HCBD_MALLOC(n);
+    if (!b) return hcbd__fail(&w->err, HCBD_ERR_MEMORY, w->step, -1, "malloc of %zu bytes failed", n);
+    r = hcbd_hc_checkpoint_save(w, b, n);
+    if (r == HCBD_OK) r = hcbd__save_file(&w->err, b, n, path);
+    HCBD_FREE(b);
+    return r;
+}
+
+hcbd_result hcbd_hc_load(hcbd_hc_world *w, const char *path)
+{
+    unsigned char *b;
+    size_t n;
+    hcbd_result r;
+    if (!w) return HCBD_ERR_NULL;
+    memset(w, 0, sizeof *w);
+    hcbd__clear(&w->err);
+    if (!path) return hcbd__fail(&w->err, HCBD_ERR_NULL, -1, -1, "path is NULL");
+    if ((r = hcbd__read_file(&w->err, path, &b, &n)) != HCBD_OK) return r;
+    r = hcbd_hc_checkpoint_load(w, b, n);
+    HCBD_FREE(b);
+    if (r != HCBD_OK) hcbd__prefix(&w->err, path, ": ");
+    return r;
+}
+
+hcbd_result hcbd_hc_xyz_write(const hcbd_hc_world *w, FILE *f)
+{
+    int i;
+    if (!w || !f) return HCBD_ERR_NULL;
+    hcbd__xyz_head(f, w->nf + w->np, w->p.L, (double)w->step * w->p.dt, w->step, w->le_offset, "");
+    for (i = 0; i < w->nf; ++i)
+        hcbd__xyz_atom(f, "F", w->fx[i], w->fy[i], w->fz[i], w->fvx[i], w->fvy[i], w->fvz[i], i);
+    /* polymer ids follow the fluid's so a frame's ids are unique */
+    for (i = 0; i < w->np; ++i)
+        hcbd__xyz_atom(f, "P", w->px[i], w->py[i], w->pz[i], w->ready ? (double)w->pux[i] : 0.0,
+                       w->ready ? (double)w->puy[i] : 0.0, w->ready ? (double)w->puz[i] : 0.0,
+                       w->nf + i);
+    return ferror(f) ? HCBD_ERR_IO : HCBD_OK;
+}
+
+int hcbd_hc_thermo_header(char *buf, size_t size)
+{
+    return snprintf(buf, size, "# step time T_fluid px py pz max_phi pairs ns_pstep");
+}
+
+int hcbd_hc_thermo_line(const hcbd_hc_world *w, double ns_pstep, char *buf, size_t size)
+{
+    double p[3], phi = 0.0;
+    char ns[32];
+    int i;
+    if (!w) return snprintf(buf, size, "# no world");
+    hcbd_hc_momentum(w, p);
+    for (i = 0; w->ready && i < w->np; ++i)
+        if (w->pn[i] / w->p.n_max > phi) phi = w->pn[i] / w->p.n_max;
+    if (isfinite(ns_pstep)) snprintf(ns, sizeof ns, "%.4g", ns_pstep);
+    else snprintf(ns, sizeof ns, "-");
+    return snprintf(buf, size, "%lld %.9g %.9g %.6e %.6e %.6e %.6g %lld %s",
+                    (long long)w->step, (double)w->step * w->p.dt, hcbd_hc_temperature(w),
+                    p[0], p[1], p[2], phi, (long long)w->npairs, ns);
+}
+#endif /* HCBD_MODEL_HCBD */
 
 #ifdef __cplusplus
 }

@@ -22,6 +22,11 @@ typedef struct {
     double L[3];
     int box_given;
     char out[512];
+    /* run output (all off by default): extended XYZ frames every xyz_every
+       steps, a thermo line every thermo_every steps, a checkpoint at the
+       end, a start from a checkpoint */
+    char xyz[512], checkpoint[512], restart[512];
+    int xyz_every, thermo_every;
 } config;
 
 /* An example's own key: 1 taken, 0 error (already reported), -1 unknown. */
@@ -156,6 +161,14 @@ static int parse_args(int argc, char **argv, config *c, own_key_fn own, void (*u
             p->noise = (hcbd_noise)x;
         }
         else if (!strcmp(key, "out")) snprintf(c->out, sizeof c->out, "%s", v);
+        else if (!strcmp(key, "xyz")) snprintf(c->xyz, sizeof c->xyz, "%s", v);
+        else if (!strcmp(key, "checkpoint")) snprintf(c->checkpoint, sizeof c->checkpoint, "%s", v);
+        else if (!strcmp(key, "restart")) snprintf(c->restart, sizeof c->restart, "%s", v);
+        else if (!strcmp(key, "xyz_every") || !strcmp(key, "thermo_every")) {
+            int *x = key[0] == 'x' ? &c->xyz_every : &c->thermo_every;
+            if (!parse_int(c, key, v, x)) return 0;
+            if (*x < 0) { fprintf(stderr, "%s: %s=%s must not be negative\n", c->name, key, v); return 0; }
+        }
         else {
             fprintf(stderr, "%s: unknown key '%s'\n", c->name, key);
             usage();
@@ -228,6 +241,68 @@ static void progress(const config *c, int done, int total, const struct timespec
             c->name, done, total, 100.0 * done / total, el, done ? el / done * (total - done) : 0.0,
             tty ? (done == total ? "\n" : "") : "\n");
 }
+
+#if HCBD_MODEL != HCBD_MODEL_HCBD
+/* Run output of the GI-BD examples; call run_out_step after every step
+   (a compare when off). */
+typedef struct {
+    FILE *xyz;
+    struct timespec t0;
+    int64_t step0;
+} run_out;
+
+static int run_out_open(const config *c, run_out *o, const hcbd_world *w)
+{
+    memset(o, 0, sizeof *o);
+    if (c->xyz[0] && !(o->xyz = fopen(c->xyz, "w"))) {
+        fprintf(stderr, "%s: cannot write %s\n", c->name, c->xyz);
+        return 0;
+    }
+    if (c->xyz[0] && c->xyz_every == 0) {
+        fprintf(stderr, "%s: xyz=%s needs xyz_every=k > 0\n", c->name, c->xyz);
+        return 0;
+    }
+    if (c->thermo_every > 0) {
+        char head[256];
+        hcbd_thermo_header(head, sizeof head);
+        printf("%s\n", head);
+    }
+    clock_gettime(CLOCK_MONOTONIC, &o->t0);
+    o->step0 = w->step;
+    if (o->xyz) hcbd_xyz_write(w, o->xyz, NULL, 0);
+    return 1;
+}
+
+static void run_out_step(const config *c, run_out *o, const hcbd_world *w)
+{
+    if (o->xyz && w->step % c->xyz_every == 0) hcbd_xyz_write(w, o->xyz, NULL, 0);
+    if (c->thermo_every > 0 && w->step % c->thermo_every == 0) {
+        struct timespec t1;
+        char line[512];
+        double ns;
+        clock_gettime(CLOCK_MONOTONIC, &t1);
+        ns = ((t1.tv_sec - o->t0.tv_sec) * 1e9 + (t1.tv_nsec - o->t0.tv_nsec)) /
+             ((double)(w->step - o->step0) * w->n);
+        hcbd_thermo_line(w, ns, line, sizeof line);
+        printf("%s\n", line);
+        o->t0 = t1;
+        o->step0 = w->step;
+    }
+}
+
+/* Closes the trajectory and writes the checkpoint; 0 after a message. */
+static int run_out_close(const config *c, run_out *o, hcbd_world *w)
+{
+    if (o->xyz) fclose(o->xyz);
+    o->xyz = NULL;
+    if (c->checkpoint[0] && hcbd_save(w, c->checkpoint) != HCBD_OK) {
+        fprintf(stderr, "%s: %s\n", c->name, w->err.msg);
+        return 0;
+    }
+    if (c->checkpoint[0]) printf("checkpoint=%s (step %lld)\n", c->checkpoint, (long long)w->step);
+    return 1;
+}
+#endif
 
 /* The scene's stability limits with their margins (hcbd_stability),
    printed at start. */

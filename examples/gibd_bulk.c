@@ -43,7 +43,11 @@ static void usage(void)
             "                      (gdot: Lees-Edwards shear rate, reports the viscosity)\n"
             "  Lx Ly Lz            box edges (default: cube of N/density)\n"
             "  potential=star|ideal  dynamics=gibd|bd  density_norm=2014|2016\n"
-            "  lagged=0|1 noise=gauss|uniform seed steps threads out\n");
+            "  lagged=0|1 noise=gauss|uniform seed steps threads out\n"
+            "  xyz=FILE xyz_every=k  extended XYZ frames (OVITO) every k steps\n"
+            "  thermo_every=k      a thermo line every k steps\n"
+            "  checkpoint=FILE     save the world at the end; restart=FILE  start from\n"
+            "                      a checkpoint (its parameters, no equilibration)\n");
 }
 
 static int own_key(config *c, const char *key, const char *v)
@@ -127,6 +131,7 @@ int main(int argc, char **argv)
     hcbd_mtcorr ct[NB][3], gt, vacf;
     hcbd_msd msd;
     hcbd_rdf rdf;
+    run_out ro;
     double hist[NRDF], *xyz, *vel, V, k1, nu_theory, rdf_max;
     double Tblk[NB], nu_init_b[NB], nu_hydro_b[NB], mf_b[NB], eff_b[NB];
     double mf = 0, eff = 0, sumf = 0, sk = 0;
@@ -148,11 +153,21 @@ int main(int argc, char **argv)
     if (!parse_args(argc, argv, &c, own_key, usage)) return 2;
     p = &c.def.params;
     gibd = p->dynamics == HCBD_DYN_GIBD;
-    print_limits(p);
-    if (hcbd_world_create(&w, &c.def) != HCBD_OK) {
+    if (c.restart[0]) {
+        /* the checkpoint's world and parameters replace the command line's */
+        if (hcbd_load(&w, c.restart) != HCBD_OK) {
+            fprintf(stderr, "gibd_bulk: %s\n", w.err.msg);
+            return 2;
+        }
+        c.def.params = w.p;
+        c.N = w.n;
+        c.density = c.N / (p->L[0] * p->L[1] * p->L[2]);
+        printf("restart=%s: step %lld, N = %d\n", c.restart, (long long)w.step, w.n);
+    } else if (hcbd_world_create(&w, &c.def) != HCBD_OK) {
         fprintf(stderr, "gibd_bulk: %s\n", w.err.msg);
         return 2;
     }
+    print_limits(p);
     mkdirs(c.out);
     V = p->L[0] * p->L[1] * p->L[2];
     k1 = 2 * PI / p->L[0];
@@ -187,11 +202,14 @@ int main(int argc, char **argv)
     hcbd_rdf_init(&rdf, rdf_max, NRDF, hist);
 
     /* equilibrate from a lattice: a tenth of the run, at least 5000 steps */
-    hcbd_world_place_lattice(&w, c.N);
-    if (hcbd_step(&w, c.steps / 10 > 5000 ? c.steps / 10 : 5000) != HCBD_OK) {
-        fprintf(stderr, "gibd_bulk: %s\n", w.err.msg);
-        return 1;
+    if (!c.restart[0]) {
+        hcbd_world_place_lattice(&w, c.N);
+        if (hcbd_step(&w, c.steps / 10 > 5000 ? c.steps / 10 : 5000) != HCBD_OK) {
+            fprintf(stderr, "gibd_bulk: %s\n", w.err.msg);
+            return 1;
+        }
     }
+    if (!run_out_open(&c, &ro, &w)) return 2;
     blk_steps = c.steps / NB;
     if (p->gdot != 0.0) hcbd_flux_enable(&w, 1);
     clock_gettime(CLOCK_MONOTONIC, &t0);
@@ -247,6 +265,7 @@ int main(int argc, char **argv)
                 fprintf(stderr, "gibd_bulk: %s\n", w.err.msg);
                 return 1;
             }
+            run_out_step(&c, &ro, &w);
         }
         if (gibd) {
             double lag[512], cc[512];
@@ -404,6 +423,7 @@ int main(int argc, char **argv)
     }
     printf("neighbour_rebuilds=%lld\n", (long long)w.n_rebuilds);
     printf("state_checksum=%016llx\n", (unsigned long long)hcbd_state_checksum(&w));
+    if (!run_out_close(&c, &ro, &w)) return 1;
     hcbd_world_destroy(&w);
     free(xyz); free(vel); free(mem_ct); free(mem_gt); free(mem_v); free(mem_msd);
     return 0;

@@ -836,4 +836,108 @@ void test_hc_stability_limits(void)
         hcbd_hc_world_destroy(&w);
     }
 }
+
+/* n + n steps equal n steps, save, load (on 2 threads), n steps, with
+   fluctuations, shear, transient pairs and the stress sums running; and
+   with the exact fluid sweep and sub-steps. */
+void test_hc_checkpoint_restart_bits(void)
+{
+    const int n = t_quick ? 5 : 20;
+    int f;
+    for (f = 0; f < 2; ++f) {
+        hcbd_hc_def d = hc_scene(5, 5, 6, 120);
+        hcbd_hc_world a, b;
+        unsigned char *buf;
+        size_t size;
+        double sa[HCBD_HC_NSTRESS], sb[HCBD_HC_NSTRESS];
+        uint64_t ca;
+        d.params.gdot = 0.05;
+        d.params.n_max = 3.0;
+        if (f == 1) {
+            d.params.pair_integrator = HCBD_PAIR_SHARDLOW;
+            d.params.substeps = 3;
+        }
+        if (!hc_make(&a, &d, 120)) return;
+        hcbd_hc_stress_enable(&a, 1);
+        hc_run(&a, n);
+        size = hcbd_hc_checkpoint_size(&a);
+        buf = (unsigned char *)malloc(size);
+        CHECK(hcbd_hc_checkpoint_save(&a, buf, size) == HCBD_OK, "%s", a.err.msg);
+        CHECK(a.npairs > 0, "the scene should hold transient pairs");
+        hc_run(&a, n);
+        ca = hcbd_hc_state_checksum(&a);
+        hcbd_hc_stress_read(&a, sa, NULL);
+        if (hcbd_hc_checkpoint_load(&b, buf, size) != HCBD_OK) {
+            CHECK(0, "load: %s", b.err.msg);
+        } else {
+            hcbd_hc_set_threads(&b, 2);
+            hc_run(&b, n);
+            hcbd_hc_stress_read(&b, sb, NULL);
+            CHECK(hcbd_hc_state_checksum(&b) == ca, "variant %d: restart changed the bits", f);
+            CHECK(!memcmp(sa, sb, sizeof sa), "variant %d: stress sums differ", f);
+            CHECK(a.n_created == b.n_created && a.npairs == b.npairs, "pairs %lld/%lld created %lld/%lld",
+                  (long long)a.npairs, (long long)b.npairs, (long long)a.n_created, (long long)b.n_created);
+            hcbd_hc_world_destroy(&b);
+        }
+        /* another world kind, model field or a flipped bit is refused */
+        {
+            hcbd_world g;
+            hcbd_result r;
+            r = hcbd_checkpoint_load(&g, buf, size); /* the GI-BD world's loader */
+            CHECK(r == HCBD_ERR_MODEL && strstr(g.err.msg, "kind"), "kind: %s", g.err.msg);
+            buf[16] = HCBD_MODEL_WALLED;
+            r = hcbd_hc_checkpoint_load(&b, buf, size);
+            CHECK(r == HCBD_ERR_MODEL && strstr(b.err.msg, "walled"), "model: %s", b.err.msg);
+            buf[16] = HCBD_MODEL_HCBD;
+            buf[size / 2] ^= 4;
+            r = hcbd_hc_checkpoint_load(&b, buf, size);
+            CHECK(r == HCBD_ERR_FORMAT && strstr(b.err.msg, "checksum"), "bit: %s", b.err.msg);
+            r = hcbd_hc_checkpoint_load(&b, buf, size / 2);
+            CHECK(r == HCBD_ERR_FORMAT, "truncated: %s", b.err.msg);
+        }
+        free(buf);
+        hcbd_hc_world_destroy(&a);
+    }
+}
+
+/* One extended XYZ frame of both species: counts, species, ids and the
+   fluid's fields against the world. */
+void test_hc_xyz_frame(void)
+{
+    hcbd_hc_def d = hc_scene(5, 5, 5, 20);
+    hcbd_hc_world w;
+    FILE *f;
+    char line[512], sp[8];
+    int n = 0, k, nF = 0, nP = 0, bad = 0;
+    if (!hc_make(&w, &d, 20)) return;
+    hc_run(&w, 3);
+    f = tmpfile();
+    CHECK(hcbd_hc_xyz_write(&w, f) == HCBD_OK, "write");
+    rewind(f);
+    CHECK(fgets(line, sizeof line, f) && sscanf(line, "%d", &n) == 1 && n == w.nf + w.np, "count");
+    CHECK(fgets(line, sizeof line, f) && strstr(line, "Properties=species:S:1:pos:R:3:velo:R:3:id:I:1") &&
+              strstr(line, "Step=3 "), "comment: %s", line);
+    for (k = 0; k < n && fgets(line, sizeof line, f); ++k) {
+        double x[3], v[3];
+        int id;
+        if (sscanf(line, "%7s %lf %lf %lf %lf %lf %lf %d", sp, &x[0], &x[1], &x[2], &v[0], &v[1], &v[2],
+                   &id) != 8 || id != k) {
+            ++bad;
+            continue;
+        }
+        if (!strcmp(sp, "F")) {
+            ++nF;
+            bad += x[0] != w.fx[k] || x[1] != w.fy[k] || x[2] != w.fz[k] || v[0] != w.fvx[k] ||
+                   v[1] != w.fvy[k] || v[2] != w.fvz[k];
+        } else if (!strcmp(sp, "P")) {
+            ++nP;
+            bad += x[0] != w.px[k - w.nf] || x[1] != w.py[k - w.nf] || x[2] != w.pz[k - w.nf];
+        }
+    }
+    CHECK(nF == w.nf && nP == w.np && bad == 0, "%d F, %d P, %d bad lines", nF, nP, bad);
+    fclose(f);
+    hcbd_hc_thermo_line(&w, NAN, line, sizeof line);
+    CHECK(strstr(line, " -") != NULL && atoi(line) == 3, "thermo: %s", line);
+    hcbd_hc_world_destroy(&w);
+}
 #endif

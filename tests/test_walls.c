@@ -74,7 +74,7 @@ void test_wall_bad_inputs(void)
     d.capacity = 2;
     if (!make_world(&w, &d)) return;
     r = hcbd_world_set_positions(&w, 2, xyz);
-    CHECK(r == HCBD_ERR_PARAM && w.err.id == 1 && strstr(w.err.msg, "inside a wall"),
+    CHECK(r == HCBD_ERR_WALL && w.err.id == 1 && strstr(w.err.msg, "inside a wall"),
           "inside: %s", w.err.msg);
     hcbd_world_destroy(&w);
 }

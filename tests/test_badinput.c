@@ -1,0 +1,1634 @@
+/* Bad inputs, table-driven: every public function and parameter is fed
+   bad values (non-finite, negative, zero where it matters, out of range,
+   capacity exceeded, box too small, overlapping cores, polymers without
+   fluid, phi >= 1, walls thicker than the box, ...).  Each entry names
+   the result code it must give and the text the message must contain
+   (the field and its value; "a|b" means both a and b); a call on an
+   existing world must leave it unchanged (checksum, particle count, step
+   and parameters).  One line per failing entry. */
+#include "test.h"
+#include <limits.h>
+#include <stddef.h>
+
+static int bi_entries, bi_bad;
+
+/* every '|'-separated part of want occurs in msg */
+static int bi_has(const char *msg, const char *want)
+{
+    char part[128];
+    while (*want) {
+        size_t k = strcspn(want, "|");
+        if (k >= sizeof part) k = sizeof part - 1;
+        memcpy(part, want, k);
+        part[k] = 0;
+        if (!strstr(msg, part)) return 0;
+        want += k;
+        if (*want == '|') ++want;
+    }
+    return 1;
+}
+
+/* msg: the message the call wrote (NULL: the function has no message
+   channel, only the code is checked); changed: what a rejected call
+   altered, or NULL */
+static void bi_judge2(const char *name, hcbd_result want, const char *want_msg,
+                      hcbd_result got, const char *msg, const char *changed, int err_unset)
+{
+    char why[256] = "";
+    ++bi_entries;
+    if (got != want)
+        snprintf(why + strlen(why), sizeof why - strlen(why), " code: want %s;",
+                 hcbd_result_name(want));
+    if (want_msg && (!msg || !bi_has(msg, want_msg)))
+        snprintf(why + strlen(why), sizeof why - strlen(why), " message lacks \"%s\";", want_msg);
+    if (changed)
+        snprintf(why + strlen(why), sizeof why - strlen(why), " world changed (%s);", changed);
+    if (err_unset)
+        snprintf(why + strlen(why), sizeof why - strlen(why), " w->err.code is not the result;");
+    if (why[0]) {
+        printf("    BAD %s: got %s \"%s\" --%s\n", name, hcbd_result_name(got),
+               msg ? msg : "(no message)", why);
+        ++bi_bad;
+        t_fail = 1;
+    }
+}
+
+static void bi_judge(const char *name, hcbd_result want, const char *want_msg,
+                     hcbd_result got, const char *msg, const char *changed)
+{
+    bi_judge2(name, want, want_msg, got, msg, changed, 0);
+}
+
+static void bi_summary(const char *what)
+{
+    NOTE("%s: %d entries checked, %d bad", what, bi_entries, bi_bad);
+    bi_entries = bi_bad = 0;
+}
+
+static void bi_valstr(char *b, size_t n, char k, double v, const void *ptr)
+{
+    if (k == 'p') snprintf(b, n, "%s", ptr ? "(array)" : "NULL");
+    else if (k != 'd') snprintf(b, n, "%lld", (long long)v);
+    else if (isnan(v)) snprintf(b, n, "nan");
+    else if (isinf(v)) snprintf(b, n, v > 0 ? "inf" : "-inf");
+    else snprintf(b, n, "%.17g", v);
+}
+
+/* ---- one field of a definition set to one value ------------------------ */
+typedef struct {
+    const char *f; /* field, as the message must name it */
+    size_t off;    /* offset in the definition */
+    char k;        /* d double, i int, e enum, l int64, p pointer */
+    double v;
+    const void *ptr;
+} bi_set;
+
+static void bi_apply(void *def, const bi_set *s)
+{
+    char *b = (char *)def + s->off;
+    if (!s->f) return;
+    if (s->k == 'd') { double x = s->v; memcpy(b, &x, sizeof x); }
+    else if (s->k == 'i' || s->k == 'e') { int x = (int)s->v; memcpy(b, &x, sizeof x); }
+    else if (s->k == 'l') { int64_t x = (int64_t)s->v; memcpy(b, &x, sizeof x); }
+    else { const void *x = s->ptr; memcpy(b, &x, sizeof x); }
+}
+
+#define NOSET {NULL, 0, 0, 0, NULL}
+/* GI-BD: fields of hcbd_params (in hcbd_world_def) and of hcbd_world_def */
+#define GD(f, v) {#f, offsetof(hcbd_world_def, params.f), 'd', (v), NULL}
+#define GI(f, v) {#f, offsetof(hcbd_world_def, params.f), 'i', (v), NULL}
+#define GE(f, v) {#f, offsetof(hcbd_world_def, params.f), 'e', (v), NULL}
+#define GP(f, p) {#f, offsetof(hcbd_world_def, params.f), 'p', 0, (p)}
+#define WI(f, v) {#f, offsetof(hcbd_world_def, f), 'i', (v), NULL}
+#define WL(f, v) {#f, offsetof(hcbd_world_def, f), 'l', (v), NULL}
+
+enum { B_DEF, B_BD, B_TABLE, B_SHEAR, B_WALL, B_NOSLIP, B_NBASE };
+static const char *bi_base_name[B_NBASE] = {"", "BD ", "table ", "sheared ", "walled ",
+                                            "no-slip walls "};
+
+typedef struct {
+    int base;
+    bi_set pre, bad; /* pre: a valid setting the bad one needs */
+    hcbd_result want;
+    const char *msg; /* NULL: "field = value" of bad */
+} bi_pentry;
+
+static double bi_tab[16], bi_tab_nan[16], bi_tab_inf[16];
+
+static hcbd_world_def bi_base(int base)
+{
+    hcbd_world_def d = hcbd_world_def_default();
+    int k;
+    for (k = 0; k < 16; ++k) {
+        bi_tab[k] = bi_tab_nan[k] = bi_tab_inf[k] = 16.0 - k;
+    }
+    bi_tab_nan[3] = NAN;
+    bi_tab_inf[5] = INFINITY;
+    d.capacity = 64;
+    if (base == B_BD) d.params.dynamics = HCBD_DYN_BD;
+    if (base == B_TABLE) {
+        d.params.potential = HCBD_POT_TABLE;
+        d.params.table_F = bi_tab;
+        d.params.table_V = bi_tab;
+        d.params.table_n = 16;
+        d.params.table_r0 = 0.5;
+    }
+    if (base == B_SHEAR) d.params.gdot = 1.0;
+    if (base == B_WALL || base == B_NOSLIP) d.params.wall_thickness = 2.0;
+    if (base == B_NOSLIP) d.params.wall_mode = HCBD_WALL_NOSLIP;
+    return d;
+}
+
+static const bi_pentry bi_params[] = {
+    /* box */
+    {B_DEF, NOSET, GD(L[0], NAN), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GD(L[1], INFINITY), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GD(L[2], -1), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GD(L[0], 0), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GD(L[1], 1e13), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GD(L[0], 5), HCBD_ERR_BOX, NULL},  /* < 2 (Rc + skin) */
+    {B_DEF, NOSET, GD(L[2], 5.5), HCBD_ERR_BOX, NULL},
+    {B_DEF, NOSET, GD(skin, 5), HCBD_ERR_BOX, "box too small|skin 5"},
+    /* dynamics */
+    {B_DEF, NOSET, GD(dt, 0), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GD(dt, -1), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GD(dt, NAN), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GD(dt, INFINITY), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GD(kT, -1), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GD(kT, NAN), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GD(kT, INFINITY), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GD(xi, 0), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GD(xi, -1), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GD(xi, NAN), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GD(xi, INFINITY), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GD(xip, 0), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GD(xip, -1), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GD(xip, NAN), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GD(xip, INFINITY), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GD(tau, 0), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GD(tau, -1), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GD(tau, NAN), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GD(tau, INFINITY), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GD(tau, 6.103515625e-05), HCBD_ERR_PARAM, NULL}, /* < dt (Euler) */
+    {B_DEF, NOSET, GD(Rc, 0), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GD(Rc, -1), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GD(Rc, NAN), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GD(Rc, INFINITY), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GD(density, 0), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GD(density, -1), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GD(density, NAN), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GD(density, INFINITY), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GI(density_norm, 2015), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GI(density_norm, 0), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GI(lagged_density, 2), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GI(lagged_density, -1), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GE(dynamics, 2), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GE(dynamics, -1), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GE(potential, 3), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GE(potential, -1), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GE(noise, 2), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GE(noise, -1), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GE(pair_integrator, 2), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GE(pair_integrator, -1), HCBD_ERR_PARAM, NULL},
+    /* star potential */
+    {B_DEF, NOSET, GD(f, 0), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GD(f, -1), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GD(f, NAN), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GD(f, INFINITY), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GD(sigma, 0), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GD(sigma, -1), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GD(sigma, NAN), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GD(sigma, INFINITY), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GD(star_eps, -1), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GD(star_eps, NAN), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GD(star_eps, INFINITY), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GD(rcut, 0), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GD(rcut, -1), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GD(rcut, NAN), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GD(rcut, INFINITY), HCBD_ERR_PARAM, NULL},
+    /* table potential */
+    {B_TABLE, NOSET, GP(table_F, NULL), HCBD_ERR_NULL, "table_F"},
+    {B_TABLE, NOSET, GP(table_V, NULL), HCBD_ERR_NULL, "table_V"},
+    {B_TABLE, NOSET, GI(table_n, 1), HCBD_ERR_PARAM, NULL},
+    {B_TABLE, NOSET, GI(table_n, 0), HCBD_ERR_PARAM, NULL},
+    {B_TABLE, NOSET, GI(table_n, -3), HCBD_ERR_PARAM, NULL},
+    {B_TABLE, NOSET, GD(table_r0, -1), HCBD_ERR_PARAM, NULL},
+    {B_TABLE, NOSET, GD(table_r0, NAN), HCBD_ERR_PARAM, NULL},
+    {B_TABLE, NOSET, GD(table_r0, 2.5), HCBD_ERR_PARAM, NULL}, /* = rcut */
+    {B_TABLE, NOSET, GP(table_F, bi_tab_nan), HCBD_ERR_PARAM, "table_F[3] = nan"},
+    {B_TABLE, NOSET, GP(table_V, bi_tab_inf), HCBD_ERR_PARAM, "table_V[5] = inf"},
+    /* forces, shear */
+    {B_DEF, NOSET, GD(fext[0], NAN), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GD(fext[1], INFINITY), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GD(fext[2], -INFINITY), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GI(fext_background_only, 2), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GD(gdot, NAN), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GD(gdot, INFINITY), HCBD_ERR_PARAM, NULL},
+    {B_BD, NOSET, GD(gdot, 1), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GD(gdot, 100000), HCBD_ERR_PARAM, NULL}, /* offset > L per step */
+    {B_DEF, NOSET, GD(gdot, -100000), HCBD_ERR_PARAM, NULL},
+    {B_SHEAR, NOSET, GD(L[0], 8), HCBD_ERR_BOX, "L[0] = 8|Lees-Edwards"},
+    {B_DEF, NOSET, GD(skin, -1), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GD(skin, NAN), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GD(skin, INFINITY), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GI(sort, 2), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GI(threads, 0), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GI(threads, -1), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GI(threads, 1025), HCBD_ERR_PARAM, NULL},
+    /* checks of the input and of the run */
+    {B_DEF, NOSET, GD(min_distance, -1), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GD(min_distance, NAN), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GD(min_distance, INFINITY), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GI(guard_every, -1), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GI(guard_walls, 2), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GI(guard_walls, -1), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GD(guard_step, 0), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GD(guard_step, -2), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GD(guard_step, NAN), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GD(guard_step, INFINITY), HCBD_ERR_PARAM, NULL},
+    /* walls */
+    {B_DEF, NOSET, GD(wall_thickness, NAN), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GD(wall_thickness, -1), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GD(wall_thickness, INFINITY), HCBD_ERR_PARAM, NULL},
+#if HCBD_MODEL != HCBD_MODEL_WALLED
+    {B_DEF, NOSET, GD(wall_thickness, 2), HCBD_ERR_PARAM, "wall_thickness = 2|HCBD_MODEL_WALLED"},
+#else
+    {B_WALL, NOSET, GD(wall_thickness, 7), HCBD_ERR_BOX, NULL},   /* 2 t > L[1] */
+    {B_WALL, NOSET, GD(wall_thickness, 6.5), HCBD_ERR_BOX, NULL}, /* 2 t > L[1] */
+    {B_WALL, NOSET, GD(wall_thickness, 1), HCBD_ERR_BOX, NULL},   /* 2 t < Rc */
+    {B_WALL, NOSET, GD(gdot, 1), HCBD_ERR_PARAM, "gdot|= 1"},
+    {B_WALL, NOSET, GI(lagged_density, 1), HCBD_ERR_PARAM, "lagged_density|= 1"},
+    {B_WALL, NOSET, GD(wall_vx[0], NAN), HCBD_ERR_PARAM, NULL},
+    {B_WALL, NOSET, GD(wall_vx[1], INFINITY), HCBD_ERR_PARAM, NULL},
+    {B_WALL, NOSET, GD(wall_beta_max, 0.5), HCBD_ERR_PARAM, NULL},
+    {B_WALL, NOSET, GD(wall_beta_max, NAN), HCBD_ERR_PARAM, NULL},
+    {B_WALL, NOSET, GD(wall_beta_max, INFINITY), HCBD_ERR_PARAM, NULL},
+    {B_WALL, NOSET, GE(wall_mode, 3), HCBD_ERR_PARAM, NULL},
+    {B_WALL, NOSET, GE(wall_mode, -1), HCBD_ERR_PARAM, NULL},
+    {B_WALL, NOSET, GI(wall_noise_beta, 2), HCBD_ERR_PARAM, NULL},
+    {B_WALL, NOSET, GD(wall_a, -1), HCBD_ERR_PARAM, NULL},
+    {B_WALL, NOSET, GD(wall_a, NAN), HCBD_ERR_PARAM, NULL},
+    {B_WALL, NOSET, GD(wall_b, 0), HCBD_ERR_PARAM, NULL},
+    {B_WALL, NOSET, GD(wall_b, NAN), HCBD_ERR_PARAM, NULL},
+    {B_WALL, NOSET, GD(wall_plane, -1), HCBD_ERR_PARAM, NULL},
+    {B_WALL, NOSET, GD(wall_plane, 3), HCBD_ERR_PARAM, NULL}, /* deeper than the wall */
+    {B_WALL, NOSET, GD(wall_plane, NAN), HCBD_ERR_PARAM, NULL},
+    {B_NOSLIP, NOSET, GD(wall_shift, -2), HCBD_ERR_PARAM, NULL},
+    {B_NOSLIP, NOSET, GD(wall_shift, 3), HCBD_ERR_PARAM, NULL}, /* > channel / 4 */
+    {B_NOSLIP, NOSET, GD(wall_shift, NAN), HCBD_ERR_PARAM, NULL},
+    {B_WALL, GI(density_norm, 2014), GD(density, 0), HCBD_ERR_PARAM, "density|= 0"},
+    {B_WALL, NOSET, GI(guard_walls, 2), HCBD_ERR_PARAM, NULL},
+    {B_WALL, NOSET, GD(L[1], 4), HCBD_ERR_BOX, NULL},
+#endif
+    /* the definition */
+    {B_DEF, NOSET, WI(capacity, 0), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, WI(capacity, -1), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, WI(capacity, 536870912), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, WI(capacity, 500000000), HCBD_ERR_CAPACITY, NULL}, /* > 2^31 pairs */
+    {B_DEF, NOSET, WL(max_pairs, -2), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, WL(max_pairs, 2147483648.0), HCBD_ERR_PARAM, NULL},
+};
+
+static void bi_param_table(void)
+{
+    size_t e;
+    for (e = 0; e < sizeof bi_params / sizeof bi_params[0]; ++e) {
+        const bi_pentry *t = &bi_params[e];
+        hcbd_world_def d = bi_base(t->base);
+        hcbd_world w;
+        hcbd_limit lim[HCBD_MAX_LIMITS];
+        hcbd_theory th;
+        char name[160], val[64], want[128], msg[256];
+        int nl, in_params = t->bad.off >= offsetof(hcbd_world_def, params) &&
+                            t->bad.off < offsetof(hcbd_world_def, params) + sizeof(hcbd_params);
+        hcbd_result r;
+        bi_apply(&d, &t->pre);
+        bi_apply(&d, &t->bad);
+        bi_valstr(val, sizeof val, t->bad.k, t->bad.v, t->bad.ptr);
+        snprintf(name, sizeof name, "%s%s = %s", bi_base_name[t->base], t->bad.f, val);
+        snprintf(want, sizeof want, "%s = %s", t->bad.f, val);
+        if (t->msg) snprintf(want, sizeof want, "%s", t->msg);
+        if (in_params) {
+            char n2[200];
+            strcpy(msg, "(untouched)");
+            r = hcbd_params_check(&d.params, msg, sizeof msg);
+            snprintf(n2, sizeof n2, "hcbd_params_check %s", name);
+            bi_judge(n2, t->want, want, r, msg, NULL);
+            snprintf(n2, sizeof n2, "hcbd_stability %s", name);
+            bi_judge(n2, t->want, NULL, hcbd_stability(&d.params, lim, &nl), NULL, NULL);
+            snprintf(n2, sizeof n2, "hcbd_theory_of %s", name);
+            bi_judge(n2, t->want, NULL, hcbd_theory_of(&d.params, &th), NULL, NULL);
+        }
+        {
+            char n2[200];
+            snprintf(n2, sizeof n2, "hcbd_world_create %s", name);
+            r = hcbd_world_create(&w, &d);
+            bi_judge(n2, t->want, want, r, w.err.msg,
+                     r != HCBD_OK && w.owned_mem ? "memory kept" : NULL);
+            if (r == HCBD_OK) hcbd_world_destroy(&w);
+            snprintf(n2, sizeof n2, "hcbd_world_bytes %s", name);
+            bi_judge(n2, HCBD_OK, NULL, hcbd_world_bytes(&d) == 0 ? HCBD_OK : HCBD_ERR_STATE,
+                     NULL, NULL);
+        }
+    }
+}
+
+/* ---- calls on an existing world --------------------------------------- */
+enum { WK_GIBD, WK_BD, WK_EMPTY, WK_MIND, WK_WALL };
+static double bi_xyz[3 * 64]; /* the test world's positions, id order */
+static char bi_msg[256];      /* messages of worlds made inside a call */
+
+static int bi_make(hcbd_world *w, int kind)
+{
+    hcbd_world_def d = bi_base(kind == WK_WALL ? B_WALL : B_DEF);
+    if (kind == WK_BD) d.params.dynamics = HCBD_DYN_BD;
+    if (kind == WK_MIND) d.params.min_distance = 0.5;
+    if (hcbd_world_create(w, &d) != HCBD_OK) {
+        printf("    world: %s\n", w->err.msg);
+        return 0;
+    }
+    if (kind == WK_EMPTY) return 1;
+    if (hcbd_world_place_lattice(w, 64) != HCBD_OK || hcbd_step(w, 3) != HCBD_OK) {
+        printf("    set-up: %s\n", w->err.msg);
+        hcbd_world_destroy(w);
+        return 0;
+    }
+    hcbd_get_positions(w, bi_xyz, 0);
+    return 1;
+}
+
+typedef hcbd_result (*bi_wfn)(hcbd_world *w, const char **msg);
+typedef struct {
+    const char *name;
+    int kind;
+    bi_wfn fn;
+    hcbd_result want;
+    const char *msg; /* NULL: code only (the function has no message channel) */
+} bi_wentry;
+
+#define WF(f) static hcbd_result f(hcbd_world *w, const char **msg)
+#define NOMSG (*msg = NULL, (void)w)
+
+/* set-up */
+WF(c_setpos_nullw) { NOMSG; return hcbd_world_set_positions(NULL, 64, bi_xyz); }
+WF(c_setpos_null) { (void)msg; return hcbd_world_set_positions(w, 64, NULL); }
+WF(c_setpos_65) { static double x[3 * 65]; (void)msg; memcpy(x, bi_xyz, sizeof bi_xyz); return hcbd_world_set_positions(w, 65, x); }
+WF(c_setpos_0) { (void)msg; return hcbd_world_set_positions(w, 0, bi_xyz); }
+WF(c_setpos_m1) { (void)msg; return hcbd_world_set_positions(w, -1, bi_xyz); }
+WF(c_setpos_1) { (void)msg; return hcbd_world_set_positions(w, 1, bi_xyz); }
+static hcbd_result bi_setpos_mod(hcbd_world *w, int i, double v)
+{
+    double x[3 * 64];
+    memcpy(x, bi_xyz, sizeof x);
+    x[i] = v;
+    return hcbd_world_set_positions(w, 64, x);
+}
+WF(c_setpos_nan) { (void)msg; return bi_setpos_mod(w, 3 * 5 + 1, NAN); }
+WF(c_setpos_inf) { (void)msg; return bi_setpos_mod(w, 0, INFINITY); }
+WF(c_setpos_minf) { (void)msg; return bi_setpos_mod(w, 3 * 63 + 2, -INFINITY); }
+WF(c_setpos_far) { (void)msg; return bi_setpos_mod(w, 3 * 2, 1e20); }
+WF(c_setpos_overlap)
+{
+    double x[3 * 64];
+    (void)msg;
+    memcpy(x, bi_xyz, sizeof x);
+    x[9] = 1.0; x[10] = 1.0; x[11] = 1.0;  /* particle 3 */
+    x[21] = 1.25; x[22] = 1.0; x[23] = 1.0; /* particle 7, 0.25 away */
+    return hcbd_world_set_positions(w, 64, x);
+}
+#if HCBD_MODEL == HCBD_MODEL_WALLED
+WF(c_setpos_wall)
+{
+    double x[3 * 64];
+    (void)msg;
+    memcpy(x, bi_xyz, sizeof x);
+    x[3 * 5 + 1] = 0.5; /* particle 5 inside the bottom wall (t = 2) */
+    return hcbd_world_set_positions(w, 64, x);
+}
+WF(c_setpos_wall_top) { (void)msg; return bi_setpos_mod(w, 3 * 0 + 1, 12.0); }
+#endif
+WF(c_lattice_65) { (void)msg; return hcbd_world_place_lattice(w, 65); }
+WF(c_lattice_0) { (void)msg; return hcbd_world_place_lattice(w, 0); }
+WF(c_lattice_nullw) { NOMSG; return hcbd_world_place_lattice(NULL, 8); }
+WF(c_random_m5) { (void)msg; return hcbd_world_place_random(w, -5); }
+WF(c_random_65) { (void)msg; return hcbd_world_place_random(w, 65); }
+WF(c_random_nullw) { NOMSG; return hcbd_world_place_random(NULL, 8); }
+WF(c_setvel_null) { (void)msg; return hcbd_world_set_velocities(w, NULL); }
+WF(c_setvel_nullw) { NOMSG; return hcbd_world_set_velocities(NULL, bi_xyz); }
+WF(c_setvel_nan)
+{
+    double v[3 * 64] = {0};
+    (void)msg;
+    v[3 * 2] = NAN;
+    return hcbd_world_set_velocities(w, v);
+}
+WF(c_setvel_inf)
+{
+    double v[3 * 64] = {0};
+    (void)msg;
+    v[3 * 63 + 2] = -INFINITY;
+    return hcbd_world_set_velocities(w, v);
+}
+WF(c_setvel_zero) { double v[3 * 64] = {0}; (void)msg; return hcbd_world_set_velocities(w, v); }
+/* step */
+WF(c_step_m1) { (void)msg; return hcbd_step(w, -1); }
+WF(c_step_min) { (void)msg; return hcbd_step(w, INT_MIN); }
+WF(c_step_nullw) { NOMSG; return hcbd_step(NULL, 1); }
+WF(c_step_1) { (void)msg; return hcbd_step(w, 1); }
+/* world memory */
+WF(c_init_nullmem)
+{
+    hcbd_world v;
+    hcbd_world_def d = bi_base(B_DEF);
+    hcbd_result r = hcbd_world_init(&v, &d, NULL, 1 << 20);
+    (void)w;
+    snprintf(bi_msg, sizeof bi_msg, "%s", v.err.msg);
+    *msg = bi_msg;
+    return r;
+}
+WF(c_init_short)
+{
+    hcbd_world v;
+    hcbd_world_def d = bi_base(B_DEF);
+    size_t need = hcbd_world_bytes(&d);
+    char *mem = (char *)malloc(need);
+    hcbd_result r = hcbd_world_init(&v, &d, mem, need - 64);
+    (void)w;
+    snprintf(bi_msg, sizeof bi_msg, "%s", v.err.msg);
+    *msg = bi_msg;
+    free(mem);
+    return r;
+}
+WF(c_init_nullw)
+{
+    hcbd_world_def d = bi_base(B_DEF);
+    char mem[64];
+    NOMSG;
+    return hcbd_world_init(NULL, &d, mem, sizeof mem);
+}
+WF(c_create_nullw) { hcbd_world_def d = bi_base(B_DEF); NOMSG; return hcbd_world_create(NULL, &d); }
+WF(c_create_nulldef)
+{
+    hcbd_world v;
+    hcbd_result r = hcbd_world_create(&v, NULL);
+    (void)w;
+    snprintf(bi_msg, sizeof bi_msg, "%s", v.err.msg);
+    *msg = bi_msg;
+    if (r == HCBD_OK) hcbd_world_destroy(&v);
+    return r;
+}
+WF(c_check_null)
+{
+    (void)w;
+    strcpy(bi_msg, "(untouched)");
+    *msg = bi_msg;
+    return hcbd_params_check(NULL, bi_msg, sizeof bi_msg);
+}
+/* observables */
+WF(c_getpos_null) { NOMSG; return hcbd_get_positions(w, NULL, 0); }
+WF(c_getpos_nullw) { double x[3]; NOMSG; return hcbd_get_positions(NULL, x, 1); }
+WF(c_getvel_null) { NOMSG; return hcbd_get_velocities(w, NULL); }
+WF(c_stress_null) { (void)msg; return hcbd_stress(w, NULL); }
+WF(c_stress_nullw) { double s[9]; NOMSG; return hcbd_stress(NULL, s); }
+WF(c_fric_nk0) { double o[3]; (void)msg; return hcbd_friction_average(w, 0, o); }
+WF(c_fric_nkm1) { double o[3]; (void)msg; return hcbd_friction_average(w, -1, o); }
+WF(c_fric_null) { (void)msg; return hcbd_friction_average(w, 1, NULL); }
+WF(c_fric_ok) { double o[3]; (void)msg; return hcbd_friction_average(w, 1, o); }
+WF(c_tc_nk0) { double o[12]; NOMSG; return hcbd_transverse_current(w, 0, o); }
+WF(c_tc_nkm1) { double o[12]; NOMSG; return hcbd_transverse_current(w, -1, o); }
+WF(c_tc_null) { NOMSG; return hcbd_transverse_current(w, 1, NULL); }
+WF(c_flux_2) { (void)msg; return hcbd_flux_enable(w, 2); }
+WF(c_flux_m1) { (void)msg; return hcbd_flux_enable(w, -1); }
+WF(c_flux_nullw) { NOMSG; return hcbd_flux_enable(NULL, 1); }
+WF(c_fluxread_null) { NOMSG; return hcbd_flux_read(w, NULL, NULL); }
+static hcbd_result bi_rdf(hcbd_world *w, double rmax, int nbins, int null_g, int null_h)
+{
+    static double hist[64];
+    hcbd_rdf g;
+    hcbd_result r = hcbd_rdf_init(null_g ? NULL : &g, rmax, nbins, null_h ? NULL : hist);
+    if (r != HCBD_OK || !w) return r;
+    return hcbd_rdf_sample(&g, w);
+}
+WF(c_rdf_r0) { NOMSG; return bi_rdf(NULL, 0, 10, 0, 0); }
+WF(c_rdf_rm1) { NOMSG; return bi_rdf(NULL, -1, 10, 0, 0); }
+WF(c_rdf_rnan) { NOMSG; return bi_rdf(NULL, NAN, 10, 0, 0); }
+WF(c_rdf_rinf) { NOMSG; return bi_rdf(NULL, INFINITY, 10, 0, 0); }
+WF(c_rdf_nb0) { NOMSG; return bi_rdf(NULL, 2, 0, 0, 0); }
+WF(c_rdf_nbm1) { NOMSG; return bi_rdf(NULL, 2, -1, 0, 0); }
+WF(c_rdf_nullg) { NOMSG; return bi_rdf(NULL, 2, 10, 1, 0); }
+WF(c_rdf_nullh) { NOMSG; return bi_rdf(NULL, 2, 10, 0, 1); }
+WF(c_rdf_big) { (void)msg; return bi_rdf(w, 7, 10, 0, 0); } /* > L/2 = 6.45 */
+WF(c_rdf_sample_nullg) { (void)msg; return hcbd_rdf_sample(NULL, w); }
+WF(c_rdf_empty) { (void)msg; return bi_rdf(w, 2, 10, 0, 0); }
+static hcbd_result bi_mt(int nch, int p, int m, int levels, int nullc, int nullmem, int shortmem)
+{
+    static double mem[4096];
+    hcbd_mtcorr c;
+    size_t b = sizeof mem;
+    if (shortmem) b = hcbd_mtcorr_bytes(nch, p, m, levels) - 1;
+    return hcbd_mtcorr_init(nullc ? NULL : &c, nch, p, m, levels, nullmem ? NULL : mem, b);
+}
+WF(c_mt_nch0) { NOMSG; return bi_mt(0, 16, 2, 3, 0, 0, 0); }
+WF(c_mt_p1) { NOMSG; return bi_mt(1, 1, 2, 3, 0, 0, 0); }
+WF(c_mt_m1) { NOMSG; return bi_mt(1, 16, 1, 3, 0, 0, 0); }
+WF(c_mt_pmod) { NOMSG; return bi_mt(1, 16, 3, 3, 0, 0, 0); }
+WF(c_mt_lev0) { NOMSG; return bi_mt(1, 16, 2, 0, 0, 0, 0); }
+WF(c_mt_nullc) { NOMSG; return bi_mt(1, 16, 2, 3, 1, 0, 0); }
+WF(c_mt_nullmem) { NOMSG; return bi_mt(1, 16, 2, 3, 0, 1, 0); }
+WF(c_mt_short) { NOMSG; return bi_mt(1, 16, 2, 3, 0, 0, 1); }
+static hcbd_result bi_msd(int n, int B, int levels, int nulld, int nullmem, int shortmem)
+{
+    static double mem[8192];
+    hcbd_msd d;
+    size_t b = sizeof mem;
+    if (shortmem) b = hcbd_msd_bytes(n, B, levels) - 1;
+    return hcbd_msd_init(nulld ? NULL : &d, n, B, levels, nullmem ? NULL : mem, b);
+}
+WF(c_msd_n0) { NOMSG; return bi_msd(0, 4, 3, 0, 0, 0); }
+WF(c_msd_B1) { NOMSG; return bi_msd(8, 1, 3, 0, 0, 0); }
+WF(c_msd_lev0) { NOMSG; return bi_msd(8, 4, 0, 0, 0, 0); }
+WF(c_msd_span) { NOMSG; return bi_msd(1, 2, 70, 0, 0, 0); } /* 2^69 samples */
+WF(c_msd_nulld) { NOMSG; return bi_msd(8, 4, 3, 1, 0, 0); }
+WF(c_msd_nullmem) { NOMSG; return bi_msd(8, 4, 3, 0, 1, 0); }
+WF(c_msd_short) { NOMSG; return bi_msd(8, 4, 3, 0, 0, 1); }
+static hcbd_result bi_prof(hcbd_world *w, int nslab, int block, int nullpr, int nullmem, int shortmem)
+{
+    static double mem[4096];
+    hcbd_profile pr;
+    size_t b = sizeof mem;
+    if (shortmem) b = hcbd_profile_bytes(nslab) - 1;
+    return hcbd_profile_init(nullpr ? NULL : &pr, w, nslab, block, nullmem ? NULL : mem, b);
+}
+WF(c_prof_ns0) { NOMSG; return bi_prof(w, 0, 10, 0, 0, 0); }
+WF(c_prof_nsbig) { NOMSG; return bi_prof(w, (1 << 20) + 1, 10, 0, 0, 0); }
+WF(c_prof_bl0) { NOMSG; return bi_prof(w, 10, 0, 0, 0, 0); }
+WF(c_prof_nullpr) { NOMSG; return bi_prof(w, 10, 10, 1, 0, 0); }
+WF(c_prof_nullw) { NOMSG; return bi_prof(NULL, 10, 10, 0, 0, 0); }
+WF(c_prof_nullmem) { NOMSG; return bi_prof(w, 10, 10, 0, 1, 0); }
+WF(c_prof_short) { NOMSG; return bi_prof(w, 10, 10, 0, 0, 1); }
+static hcbd_result bi_slabs(double Ly, int nslab, int nval, int block, int nullL, int shortmem)
+{
+    static double mem[4096];
+    double L[3] = {10, 10, 10};
+    hcbd_slabs s;
+    size_t b = sizeof mem;
+    L[1] = Ly;
+    if (shortmem) b = hcbd_slabs_bytes(nslab, nval) - 1;
+    return hcbd_slabs_init(&s, nullL ? NULL : L, nslab, nval, block, mem, b);
+}
+WF(c_slabs_ns0) { NOMSG; return bi_slabs(10, 0, 1, 10, 0, 0); }
+WF(c_slabs_nvm1) { NOMSG; return bi_slabs(10, 10, -1, 10, 0, 0); }
+WF(c_slabs_nv65) { NOMSG; return bi_slabs(10, 10, 65, 10, 0, 0); }
+WF(c_slabs_bl0) { NOMSG; return bi_slabs(10, 10, 1, 0, 0, 0); }
+WF(c_slabs_Lnan) { NOMSG; return bi_slabs(NAN, 10, 1, 10, 0, 0); }
+WF(c_slabs_Lneg) { NOMSG; return bi_slabs(-1, 10, 1, 10, 0, 0); }
+WF(c_slabs_Linf) { NOMSG; return bi_slabs(INFINITY, 10, 1, 10, 0, 0); }
+WF(c_slabs_nullL) { NOMSG; return bi_slabs(10, 10, 1, 10, 1, 0); }
+WF(c_slabs_short) { NOMSG; return bi_slabs(10, 10, 1, 10, 0, 1); }
+/* Carreau: a good flow curve with one thing spoilt */
+static hcbd_result bi_carreau(int n, int what, double v)
+{
+    double g[6] = {0.01, 0.1, 1, 10, 100, 1000}, eta[6] = {10, 9.5, 6, 2, 1.2, 1.02};
+    double err[6] = {0.1, 0.1, 0.1, 0.05, 0.02, 0.01}, p[3] = {10, 1, 0.5}, pe[3], c2;
+    double eta_inf = 1.0;
+    int start = 0;
+    if (what == 1) g[2] = v;
+    if (what == 2) eta[3] = v;
+    if (what == 3) err[1] = v;
+    if (what == 4) eta_inf = v;
+    if (what == 5) { start = 1; p[0] = v; }
+    if (what == 6) { start = 1; p[1] = v; }
+    if (what == 7) { start = 1; p[2] = v; }
+    if (what == 8) return hcbd_carreau_fit(NULL, eta, err, n, eta_inf, start, p, pe, &c2);
+    if (what == 9) return hcbd_carreau_fit(g, eta, err, n, eta_inf, start, NULL, pe, &c2);
+    return hcbd_carreau_fit(g, eta, err, n, eta_inf, start, p, pe, &c2);
+}
+WF(c_car_ok) { NOMSG; return bi_carreau(6, 0, 0); }
+WF(c_car_n3) { NOMSG; return bi_carreau(3, 0, 0); }
+WF(c_car_n0) { NOMSG; return bi_carreau(0, 0, 0); }
+WF(c_car_gneg) { NOMSG; return bi_carreau(6, 1, -1); }
+WF(c_car_g0) { NOMSG; return bi_carreau(6, 1, 0); }
+WF(c_car_ginf) { NOMSG; return bi_carreau(6, 1, INFINITY); }
+WF(c_car_gnan) { NOMSG; return bi_carreau(6, 1, NAN); }
+WF(c_car_etanan) { NOMSG; return bi_carreau(6, 2, NAN); }
+WF(c_car_err0) { NOMSG; return bi_carreau(6, 3, 0); }
+WF(c_car_errneg) { NOMSG; return bi_carreau(6, 3, -0.1); }
+WF(c_car_einfnan) { NOMSG; return bi_carreau(6, 4, NAN); }
+WF(c_car_einfinf) { NOMSG; return bi_carreau(6, 4, INFINITY); }
+WF(c_car_p0nan) { NOMSG; return bi_carreau(6, 5, NAN); }
+WF(c_car_p1neg) { NOMSG; return bi_carreau(6, 6, -1); }
+WF(c_car_p1zero) { NOMSG; return bi_carreau(6, 6, 0); }
+WF(c_car_p2inf) { NOMSG; return bi_carreau(6, 7, INFINITY); }
+WF(c_car_nullg) { NOMSG; return bi_carreau(6, 8, 0); }
+WF(c_car_nullp) { NOMSG; return bi_carreau(6, 9, 0); }
+/* limits and theory */
+WF(c_stab_nullp) { hcbd_limit l[HCBD_MAX_LIMITS]; int n; NOMSG; return hcbd_stability(NULL, l, &n); }
+WF(c_stab_nullout) { int n; NOMSG; return hcbd_stability(&w->p, NULL, &n); }
+WF(c_stab_nulln) { hcbd_limit l[HCBD_MAX_LIMITS]; NOMSG; return hcbd_stability(&w->p, l, NULL); }
+WF(c_stab_ok) { hcbd_limit l[HCBD_MAX_LIMITS]; int n; NOMSG; return hcbd_stability(&w->p, l, &n); }
+WF(c_theory_nullp) { hcbd_theory t; NOMSG; return hcbd_theory_of(NULL, &t); }
+WF(c_theory_nullt) { NOMSG; return hcbd_theory_of(&w->p, NULL); }
+
+static const bi_wentry bi_calls[] = {
+    {"set_positions w NULL", WK_GIBD, c_setpos_nullw, HCBD_ERR_NULL, NULL},
+    {"set_positions xyz NULL", WK_GIBD, c_setpos_null, HCBD_ERR_NULL, "positions"},
+    {"set_positions n = 65 > capacity", WK_GIBD, c_setpos_65, HCBD_ERR_CAPACITY, "N = 65"},
+    {"set_positions n = 0", WK_GIBD, c_setpos_0, HCBD_ERR_PARAM, "N = 0"},
+    {"set_positions n = -1", WK_GIBD, c_setpos_m1, HCBD_ERR_PARAM, "N = -1"},
+    {"set_positions n = 1 (GI-BD)", WK_GIBD, c_setpos_1, HCBD_ERR_PARAM, "N = 1"},
+    {"set_positions y NaN", WK_GIBD, c_setpos_nan, HCBD_ERR_NONFINITE, "particle 5|nan"},
+    {"set_positions x inf", WK_GIBD, c_setpos_inf, HCBD_ERR_NONFINITE, "particle 0|inf"},
+    {"set_positions z -inf", WK_GIBD, c_setpos_minf, HCBD_ERR_NONFINITE, "particle 63|-inf"},
+    {"set_positions x 1e20", WK_GIBD, c_setpos_far, HCBD_ERR_PARAM, "particle 2|1e+20"},
+    {"set_positions closer than min_distance", WK_MIND, c_setpos_overlap, HCBD_ERR_OVERLAP,
+     "3 and 7|0.25|min_distance = 0.5"},
+    {"place_lattice n = 65 > capacity", WK_GIBD, c_lattice_65, HCBD_ERR_CAPACITY, "N = 65"},
+    {"place_lattice n = 0", WK_GIBD, c_lattice_0, HCBD_ERR_PARAM, "N = 0"},
+    {"place_lattice w NULL", WK_GIBD, c_lattice_nullw, HCBD_ERR_NULL, NULL},
+    {"place_random n = -5", WK_GIBD, c_random_m5, HCBD_ERR_PARAM, "N = -5"},
+    {"place_random n = 65 > capacity", WK_GIBD, c_random_65, HCBD_ERR_CAPACITY, "N = 65"},
+    {"place_random w NULL", WK_GIBD, c_random_nullw, HCBD_ERR_NULL, NULL},
+    {"set_velocities v NULL", WK_GIBD, c_setvel_null, HCBD_ERR_NULL, "velocities"},
+    {"set_velocities w NULL", WK_GIBD, c_setvel_nullw, HCBD_ERR_NULL, NULL},
+    {"set_velocities x NaN", WK_GIBD, c_setvel_nan, HCBD_ERR_NONFINITE, "particle 2|nan"},
+    {"set_velocities z -inf", WK_GIBD, c_setvel_inf, HCBD_ERR_NONFINITE, "particle 63|-inf"},
+    {"set_velocities in BD", WK_BD, c_setvel_zero, HCBD_ERR_STATE, "BD"},
+    {"step nsteps = -1", WK_GIBD, c_step_m1, HCBD_ERR_PARAM, "nsteps = -1"},
+    {"step nsteps = INT_MIN", WK_GIBD, c_step_min, HCBD_ERR_PARAM, "nsteps = -2147483648"},
+    {"step w NULL", WK_GIBD, c_step_nullw, HCBD_ERR_NULL, NULL},
+    {"step without particles", WK_EMPTY, c_step_1, HCBD_ERR_STATE, "no particles"},
+    {"world_init mem NULL", WK_GIBD, c_init_nullmem, HCBD_ERR_NULL, "memory block"},
+    {"world_init bytes too few", WK_GIBD, c_init_short, HCBD_ERR_MEMORY, "bytes"},
+    {"world_init w NULL", WK_GIBD, c_init_nullw, HCBD_ERR_NULL, NULL},
+    {"world_create w NULL", WK_GIBD, c_create_nullw, HCBD_ERR_NULL, NULL},
+    {"world_create def NULL", WK_GIBD, c_create_nulldef, HCBD_ERR_NULL, "definition"},
+    {"params_check p NULL", WK_GIBD, c_check_null, HCBD_ERR_NULL, "params"},
+    {"get_positions xyz NULL", WK_GIBD, c_getpos_null, HCBD_ERR_NULL, NULL},
+    {"get_positions w NULL", WK_GIBD, c_getpos_nullw, HCBD_ERR_NULL, NULL},
+    {"get_velocities v NULL", WK_GIBD, c_getvel_null, HCBD_ERR_NULL, NULL},
+    {"stress s NULL", WK_GIBD, c_stress_null, HCBD_ERR_NULL, "s is NULL"},
+    {"stress w NULL", WK_GIBD, c_stress_nullw, HCBD_ERR_NULL, NULL},
+    {"friction_average nk = 0", WK_GIBD, c_fric_nk0, HCBD_ERR_PARAM, "nk = 0"},
+    {"friction_average nk = -1", WK_GIBD, c_fric_nkm1, HCBD_ERR_PARAM, "nk = -1"},
+    {"friction_average out NULL", WK_GIBD, c_fric_null, HCBD_ERR_NULL, "out is NULL"},
+    {"friction_average in BD", WK_BD, c_fric_ok, HCBD_ERR_STATE, "GI-BD"},
+    {"transverse_current nk = 0", WK_GIBD, c_tc_nk0, HCBD_ERR_PARAM, NULL},
+    {"transverse_current nk = -1", WK_GIBD, c_tc_nkm1, HCBD_ERR_PARAM, NULL},
+    {"transverse_current out NULL", WK_GIBD, c_tc_null, HCBD_ERR_NULL, NULL},
+    {"flux_enable on = 2", WK_GIBD, c_flux_2, HCBD_ERR_PARAM, "on = 2"},
+    {"flux_enable on = -1", WK_GIBD, c_flux_m1, HCBD_ERR_PARAM, "on = -1"},
+    {"flux_enable w NULL", WK_GIBD, c_flux_nullw, HCBD_ERR_NULL, NULL},
+    {"flux_read out NULL", WK_GIBD, c_fluxread_null, HCBD_ERR_NULL, NULL},
+    {"rdf_init rmax = 0", WK_GIBD, c_rdf_r0, HCBD_ERR_PARAM, NULL},
+    {"rdf_init rmax = -1", WK_GIBD, c_rdf_rm1, HCBD_ERR_PARAM, NULL},
+    {"rdf_init rmax = nan", WK_GIBD, c_rdf_rnan, HCBD_ERR_PARAM, NULL},
+    {"rdf_init rmax = inf", WK_GIBD, c_rdf_rinf, HCBD_ERR_PARAM, NULL},
+    {"rdf_init nbins = 0", WK_GIBD, c_rdf_nb0, HCBD_ERR_PARAM, NULL},
+    {"rdf_init nbins = -1", WK_GIBD, c_rdf_nbm1, HCBD_ERR_PARAM, NULL},
+    {"rdf_init g NULL", WK_GIBD, c_rdf_nullg, HCBD_ERR_NULL, NULL},
+    {"rdf_init hist NULL", WK_GIBD, c_rdf_nullh, HCBD_ERR_NULL, NULL},
+    {"rdf_sample rmax = 7 > L/2", WK_GIBD, c_rdf_big, HCBD_ERR_PARAM, "rmax = 7"},
+    {"rdf_sample g NULL", WK_GIBD, c_rdf_sample_nullg, HCBD_ERR_NULL, "g is NULL"},
+    {"rdf_sample without particles", WK_EMPTY, c_rdf_empty, HCBD_ERR_STATE, "particles"},
+    {"mtcorr_init nch = 0", WK_GIBD, c_mt_nch0, HCBD_ERR_PARAM, NULL},
+    {"mtcorr_init p = 1", WK_GIBD, c_mt_p1, HCBD_ERR_PARAM, NULL},
+    {"mtcorr_init m = 1", WK_GIBD, c_mt_m1, HCBD_ERR_PARAM, NULL},
+    {"mtcorr_init p % m != 0", WK_GIBD, c_mt_pmod, HCBD_ERR_PARAM, NULL},
+    {"mtcorr_init levels = 0", WK_GIBD, c_mt_lev0, HCBD_ERR_PARAM, NULL},
+    {"mtcorr_init c NULL", WK_GIBD, c_mt_nullc, HCBD_ERR_NULL, NULL},
+    {"mtcorr_init mem NULL", WK_GIBD, c_mt_nullmem, HCBD_ERR_NULL, NULL},
+    {"mtcorr_init bytes too few", WK_GIBD, c_mt_short, HCBD_ERR_MEMORY, NULL},
+    {"msd_init n = 0", WK_GIBD, c_msd_n0, HCBD_ERR_PARAM, NULL},
+    {"msd_init B = 1", WK_GIBD, c_msd_B1, HCBD_ERR_PARAM, NULL},
+    {"msd_init levels = 0", WK_GIBD, c_msd_lev0, HCBD_ERR_PARAM, NULL},
+    {"msd_init B^levels > int64", WK_GIBD, c_msd_span, HCBD_ERR_PARAM, NULL},
+    {"msd_init d NULL", WK_GIBD, c_msd_nulld, HCBD_ERR_NULL, NULL},
+    {"msd_init mem NULL", WK_GIBD, c_msd_nullmem, HCBD_ERR_NULL, NULL},
+    {"msd_init bytes too few", WK_GIBD, c_msd_short, HCBD_ERR_MEMORY, NULL},
+    {"profile_init nslab = 0", WK_GIBD, c_prof_ns0, HCBD_ERR_PARAM, NULL},
+    {"profile_init nslab = 2^20 + 1", WK_GIBD, c_prof_nsbig, HCBD_ERR_PARAM, NULL},
+    {"profile_init block = 0", WK_GIBD, c_prof_bl0, HCBD_ERR_PARAM, NULL},
+    {"profile_init pr NULL", WK_GIBD, c_prof_nullpr, HCBD_ERR_NULL, NULL},
+    {"profile_init w NULL", WK_GIBD, c_prof_nullw, HCBD_ERR_NULL, NULL},
+    {"profile_init mem NULL", WK_GIBD, c_prof_nullmem, HCBD_ERR_NULL, NULL},
+    {"profile_init bytes too few", WK_GIBD, c_prof_short, HCBD_ERR_MEMORY, NULL},
+    {"slabs_init nslab = 0", WK_GIBD, c_slabs_ns0, HCBD_ERR_PARAM, NULL},
+    {"slabs_init nval = -1", WK_GIBD, c_slabs_nvm1, HCBD_ERR_PARAM, NULL},
+    {"slabs_init nval = 65", WK_GIBD, c_slabs_nv65, HCBD_ERR_PARAM, NULL},
+    {"slabs_init block = 0", WK_GIBD, c_slabs_bl0, HCBD_ERR_PARAM, NULL},
+    {"slabs_init L[1] = nan", WK_GIBD, c_slabs_Lnan, HCBD_ERR_PARAM, NULL},
+    {"slabs_init L[1] = -1", WK_GIBD, c_slabs_Lneg, HCBD_ERR_PARAM, NULL},
+    {"slabs_init L[1] = inf", WK_GIBD, c_slabs_Linf, HCBD_ERR_PARAM, NULL},
+    {"slabs_init L NULL", WK_GIBD, c_slabs_nullL, HCBD_ERR_NULL, NULL},
+    {"slabs_init bytes too few", WK_GIBD, c_slabs_short, HCBD_ERR_MEMORY, NULL},
+    {"carreau_fit good curve", WK_GIBD, c_car_ok, HCBD_OK, NULL},
+    {"carreau_fit n_points = 3", WK_GIBD, c_car_n3, HCBD_ERR_PARAM, NULL},
+    {"carreau_fit n_points = 0", WK_GIBD, c_car_n0, HCBD_ERR_PARAM, NULL},
+    {"carreau_fit gdot[2] = -1", WK_GIBD, c_car_gneg, HCBD_ERR_PARAM, NULL},
+    {"carreau_fit gdot[2] = 0", WK_GIBD, c_car_g0, HCBD_ERR_PARAM, NULL},
+    {"carreau_fit gdot[2] = inf", WK_GIBD, c_car_ginf, HCBD_ERR_PARAM, NULL},
+    {"carreau_fit gdot[2] = nan", WK_GIBD, c_car_gnan, HCBD_ERR_PARAM, NULL},
+    {"carreau_fit eta[3] = nan", WK_GIBD, c_car_etanan, HCBD_ERR_PARAM, NULL},
+    {"carreau_fit err[1] = 0", WK_GIBD, c_car_err0, HCBD_ERR_PARAM, NULL},
+    {"carreau_fit err[1] = -0.1", WK_GIBD, c_car_errneg, HCBD_ERR_PARAM, NULL},
+    {"carreau_fit eta_inf = nan", WK_GIBD, c_car_einfnan, HCBD_ERR_PARAM, NULL},
+    {"carreau_fit eta_inf = inf", WK_GIBD, c_car_einfinf, HCBD_ERR_PARAM, NULL},
+    {"carreau_fit start p[0] = nan", WK_GIBD, c_car_p0nan, HCBD_ERR_PARAM, NULL},
+    {"carreau_fit start p[1] = -1", WK_GIBD, c_car_p1neg, HCBD_ERR_PARAM, NULL},
+    {"carreau_fit start p[1] = 0", WK_GIBD, c_car_p1zero, HCBD_ERR_PARAM, NULL},
+    {"carreau_fit start p[2] = inf", WK_GIBD, c_car_p2inf, HCBD_ERR_PARAM, NULL},
+    {"carreau_fit gdot NULL", WK_GIBD, c_car_nullg, HCBD_ERR_NULL, NULL},
+    {"carreau_fit p NULL", WK_GIBD, c_car_nullp, HCBD_ERR_NULL, NULL},
+    {"stability p NULL", WK_GIBD, c_stab_nullp, HCBD_ERR_NULL, NULL},
+    {"stability out NULL", WK_GIBD, c_stab_nullout, HCBD_ERR_NULL, NULL},
+    {"stability n NULL", WK_GIBD, c_stab_nulln, HCBD_ERR_NULL, NULL},
+    {"stability of a valid BD scene", WK_BD, c_stab_ok, HCBD_OK, NULL},
+    {"theory_of p NULL", WK_GIBD, c_theory_nullp, HCBD_ERR_NULL, NULL},
+    {"theory_of t NULL", WK_GIBD, c_theory_nullt, HCBD_ERR_NULL, NULL},
+#if HCBD_MODEL == HCBD_MODEL_WALLED
+    {"set_positions particle 5 inside the bottom wall", WK_WALL, c_setpos_wall, HCBD_ERR_WALL,
+     "particle 5|y = 0.5|inside a wall"},
+    {"set_positions particle 0 inside the top wall", WK_WALL, c_setpos_wall_top, HCBD_ERR_WALL,
+     "particle 0|y = 12|inside a wall"},
+#endif
+};
+
+typedef struct {
+    uint64_t sum;
+    int n;
+    int64_t step;
+    unsigned char p[sizeof(hcbd_params)];
+} bi_snap;
+
+static void bi_take(const hcbd_world *w, bi_snap *s)
+{
+    s->sum = hcbd_state_checksum(w);
+    s->n = w->n;
+    s->step = w->step;
+    memcpy(s->p, &w->p, sizeof s->p);
+}
+
+static const char *bi_diff(const bi_snap *a, const bi_snap *b, char *buf, size_t n)
+{
+    buf[0] = 0;
+    if (a->n != b->n) snprintf(buf + strlen(buf), n - strlen(buf), "n %d -> %d ", a->n, b->n);
+    if (a->step != b->step)
+        snprintf(buf + strlen(buf), n - strlen(buf), "step %lld -> %lld ", (long long)a->step,
+                 (long long)b->step);
+    if (a->sum != b->sum) snprintf(buf + strlen(buf), n - strlen(buf), "checksum ");
+    if (memcmp(a->p, b->p, sizeof a->p)) snprintf(buf + strlen(buf), n - strlen(buf), "params ");
+    return buf[0] ? buf : NULL;
+}
+
+static void bi_call_table(void)
+{
+    size_t e;
+    for (e = 0; e < sizeof bi_calls / sizeof bi_calls[0]; ++e) {
+        const bi_wentry *t = &bi_calls[e];
+        hcbd_world w;
+        bi_snap a, b;
+        char buf[128], name[160];
+        const char *msg, *ch;
+        hcbd_result r;
+        if (!bi_make(&w, t->kind)) { t_fail = 1; continue; }
+        bi_take(&w, &a);
+        msg = w.err.msg;
+        r = t->fn(&w, &msg);
+        bi_take(&w, &b);
+        ch = bi_diff(&a, &b, buf, sizeof buf);
+        snprintf(name, sizeof name, "hcbd_%s", t->name);
+        /* a message in w->err comes with its code */
+        bi_judge2(name, t->want, t->msg, r, msg, ch,
+                  r != HCBD_OK && msg == w.err.msg && w.err.code != r);
+        hcbd_world_destroy(&w);
+    }
+}
+
+void test_bad_input(void)
+{
+    bi_param_table();
+    bi_summary("parameters and definitions");
+    bi_call_table();
+    bi_summary("calls");
+}
+
+#if HCBD_MODEL == HCBD_MODEL_HCBD
+/* ---- the 2018 world ---------------------------------------------------- */
+#define HD(f, v) {#f, offsetof(hcbd_hc_def, params.f), 'd', (v), NULL}
+#define HI(f, v) {#f, offsetof(hcbd_hc_def, params.f), 'i', (v), NULL}
+#define HE(f, v) {#f, offsetof(hcbd_hc_def, params.f), 'e', (v), NULL}
+#define HW(f, v) {#f, offsetof(hcbd_hc_def, f), 'i', (v), NULL}
+
+enum { HB_DEF, HB_RP, HB_NBASE };
+static const char *bi_hbase_name[HB_NBASE] = {"", "reverse-Poiseuille "};
+
+/* 5 x 5 x 5 fluid lattice of spacing (4 pi / 3)^(1/3), h = 2, rc = 2.5 */
+static hcbd_hc_def bi_hc_base(int base)
+{
+    hcbd_hc_def d = hcbd_hc_def_default();
+    hcbd_hc_params *p = &d.params;
+    const double a = 1.6119919540164696;
+    p->L[0] = p->L[1] = p->L[2] = 5 * a;
+    p->dt = 0.02;
+    p->kT = 1.0;
+    p->nbar = 3.0 / (4.0 * 3.14159265358979323846);
+    p->rho = p->nbar;
+    p->eta = p->rho;
+    p->P0 = 25.0 * p->rho / 7.0;
+    p->h = 2.0;
+    p->fluctuations = 1;
+    p->xi = 10.0;
+    p->sigma = 1.0;
+    p->rc = 2.5;
+    p->alpha = 50.0;
+    p->tau_lambda = 0.5;
+    p->p_kuhn = 100.0;
+    p->n_max = 5.0;
+    p->chi = 0.5;
+    p->seed = 7;
+    d.fluid_capacity = 125;
+    d.polymer_capacity = 200;
+    if (base == HB_RP) p->reverse_poiseuille = 1;
+    return d;
+}
+
+typedef struct {
+    int base;
+    bi_set bad;
+    hcbd_result want;
+    const char *msg;
+} bi_hentry;
+
+static const bi_hentry bi_hparams[] = {
+    {HB_DEF, HD(L[0], NAN), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HD(L[1], INFINITY), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HD(L[2], -1), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HD(L[1], 0), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HD(L[0], 4), HCBD_ERR_BOX, NULL}, /* < 2 max(2h, rc) */
+    {HB_DEF, HD(L[2], 7.5), HCBD_ERR_BOX, NULL},
+    {HB_DEF, HD(dt, 0), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HD(dt, -1), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HD(dt, NAN), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HD(dt, INFINITY), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HD(kT, -1), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HD(kT, NAN), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HD(kT, INFINITY), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HD(rho, 0), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HD(rho, -1), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HD(rho, NAN), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HD(rho, INFINITY), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HD(nbar, 0), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HD(nbar, NAN), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HD(nbar, INFINITY), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HD(eta, -1), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HD(eta, NAN), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HD(eta, INFINITY), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HD(P0, -1), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HD(P0, NAN), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HD(h, 0), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HD(h, -1), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HD(h, NAN), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HD(h, INFINITY), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HD(h, 2.5), HCBD_ERR_BOX, "2h = 5"},
+    {HB_DEF, HI(fluctuations, 2), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HI(fluctuations, -1), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HD(g[0], NAN), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HD(g[2], INFINITY), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HI(reverse_poiseuille, 2), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HD(gdot, NAN), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HD(gdot, INFINITY), HCBD_ERR_PARAM, NULL},
+    {HB_RP, HD(gdot, 1), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HD(gdot, 1000000), HCBD_ERR_PARAM, NULL}, /* offset > L per step */
+    {HB_DEF, HD(xi, 0), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HD(xi, -1), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HD(xi, NAN), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HD(xi, INFINITY), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HD(rc, 0), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HD(rc, -1), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HD(rc, NAN), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HD(rc, INFINITY), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HD(rc, 4.5), HCBD_ERR_BOX, "rc = 4.5"},
+    {HB_DEF, HD(sigma, 0), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HD(sigma, -1), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HD(sigma, NAN), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HD(sigma, 2.5), HCBD_ERR_PARAM, NULL}, /* = rc */
+    {HB_DEF, HD(alpha, -1), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HD(alpha, NAN), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HD(alpha, INFINITY), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HD(tau_lambda, 0), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HD(tau_lambda, -1), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HD(tau_lambda, NAN), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HD(tau_lambda, INFINITY), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HD(p_kuhn, -1), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HD(p_kuhn, NAN), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HD(p_kuhn, INFINITY), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HD(n_max, 0), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HD(n_max, -1), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HD(n_max, NAN), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HD(n_max, INFINITY), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HD(chi, NAN), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HD(chi, INFINITY), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HE(coupling, 2), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HE(coupling, -1), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HE(pair_integrator, 2), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HI(substeps, 0), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HI(substeps, 1001), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HI(threads, 0), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HI(threads, 1025), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HI(guard_every, -1), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HW(fluid_capacity, 1), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HW(fluid_capacity, -1), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HW(fluid_capacity, 268435457), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HW(polymer_capacity, -1), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HW(polymer_capacity, 268435457), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HW(pair_capacity, -2), HCBD_ERR_PARAM, NULL},
+    {HB_DEF, HW(pair_capacity, 1048577), HCBD_ERR_PARAM, NULL},
+};
+
+static void bi_hparam_table(void)
+{
+    size_t e;
+    for (e = 0; e < sizeof bi_hparams / sizeof bi_hparams[0]; ++e) {
+        const bi_hentry *t = &bi_hparams[e];
+        hcbd_hc_def d = bi_hc_base(t->base);
+        hcbd_hc_world w;
+        hcbd_limit lim[HCBD_MAX_LIMITS];
+        char name[160], val[64], want[128], msg[256], n2[200];
+        int nl, in_params = t->bad.off >= offsetof(hcbd_hc_def, params) &&
+                            t->bad.off < offsetof(hcbd_hc_def, params) + sizeof(hcbd_hc_params);
+        hcbd_result r;
+        bi_apply(&d, &t->bad);
+        bi_valstr(val, sizeof val, t->bad.k, t->bad.v, t->bad.ptr);
+        snprintf(name, sizeof name, "%s%s = %s", bi_hbase_name[t->base], t->bad.f, val);
+        snprintf(want, sizeof want, "%s = %s", t->bad.f, val);
+        if (t->msg) snprintf(want, sizeof want, "%s", t->msg);
+        if (in_params) {
+            strcpy(msg, "(untouched)");
+            r = hcbd_hc_params_check(&d.params, msg, sizeof msg);
+            snprintf(n2, sizeof n2, "hcbd_hc_params_check %s", name);
+            bi_judge(n2, t->want, want, r, msg, NULL);
+            snprintf(n2, sizeof n2, "hcbd_hc_stability %s", name);
+            bi_judge(n2, t->want, NULL, hcbd_hc_stability(&d.params, lim, &nl), NULL, NULL);
+        }
+        snprintf(n2, sizeof n2, "hcbd_hc_world_create %s", name);
+        r = hcbd_hc_world_create(&w, &d);
+        bi_judge(n2, t->want, want, r, w.err.msg, NULL);
+        if (r == HCBD_OK) hcbd_hc_world_destroy(&w);
+        snprintf(n2, sizeof n2, "hcbd_hc_world_bytes %s", name);
+        bi_judge(n2, HCBD_OK, NULL, hcbd_hc_world_bytes(&d) == 0 ? HCBD_OK : HCBD_ERR_STATE,
+                 NULL, NULL);
+    }
+}
+
+enum { HK_FP, HK_EMPTY, HK_HOLE, HK_NMAX };
+
+static int bi_hmake(hcbd_hc_world *w, int kind)
+{
+    hcbd_hc_def d = bi_hc_base(HB_DEF);
+    hcbd_result r = HCBD_OK;
+    if (kind == HK_NMAX) d.params.n_max = 1e6;
+    if (hcbd_hc_world_create(w, &d) != HCBD_OK) {
+        printf("    hc world: %s\n", w->err.msg);
+        return 0;
+    }
+    if (kind == HK_EMPTY) return 1;
+    if (kind == HK_HOLE) {
+        /* fluid only where x < L/2; polymers among it */
+        double f[3 * 125], p[3 * 5];
+        int i, k = 0;
+        const double L = d.params.L[0];
+        for (i = 0; i < 125 && k < 60; ++i) {
+            f[3 * k] = 0.5 * L * ((i % 5) + 0.5) / 5;
+            f[3 * k + 1] = L * ((i / 5 % 5) + 0.5) / 5;
+            f[3 * k + 2] = L * ((i / 25) + 0.5) / 5;
+            ++k;
+        }
+        for (i = 0; i < 5; ++i) {
+            p[3 * i] = 0.1 * L + 0.05 * L * i;
+            p[3 * i + 1] = 0.2 * L * i + 0.1;
+            p[3 * i + 2] = 0.5 * L;
+        }
+        r = hcbd_hc_set_fluid(w, k, f, NULL);
+        if (r == HCBD_OK) r = hcbd_hc_set_polymers(w, 5, p);
+    } else {
+        r = hcbd_hc_place_fluid_lattice(w, 125);
+        if (r == HCBD_OK) r = hcbd_hc_place_polymers_random(w, 20);
+        if (r == HCBD_OK) r = hcbd_hc_step(w, 2);
+    }
+    if (r != HCBD_OK) {
+        printf("    hc set-up: %s\n", w->err.msg);
+        hcbd_hc_world_destroy(w);
+        return 0;
+    }
+    return 1;
+}
+
+typedef hcbd_result (*bi_hfn)(hcbd_hc_world *w, const char **msg);
+typedef struct {
+    const char *name;
+    int kind;
+    bi_hfn fn;
+    hcbd_result want;
+    const char *msg;
+} bi_hwentry;
+
+#define HF(f) static hcbd_result f(hcbd_hc_world *w, const char **msg)
+
+static void bi_fluid_xyz(const hcbd_hc_world *w, double *x, int n)
+{
+    int i;
+    for (i = 0; i < n; ++i) {
+        x[3 * i] = w->fx[i % w->nf];
+        x[3 * i + 1] = w->fy[i % w->nf];
+        x[3 * i + 2] = w->fz[i % w->nf];
+    }
+}
+static hcbd_result bi_setfluid(hcbd_hc_world *w, int n, int i, double v, int vel)
+{
+    static double x[3 * 130], u[3 * 130];
+    bi_fluid_xyz(w, x, n < 130 ? (n > 0 ? n : 0) : 130);
+    memset(u, 0, sizeof u);
+    if (i >= 0 && !vel) x[i] = v;
+    if (i >= 0 && vel) u[i] = v;
+    return hcbd_hc_set_fluid(w, n, x, vel ? u : NULL);
+}
+HF(h_fl_nullw) { (void)w; *msg = NULL; return hcbd_hc_set_fluid(NULL, 2, bi_xyz, NULL); }
+HF(h_fl_null) { (void)msg; return hcbd_hc_set_fluid(w, 125, NULL, NULL); }
+HF(h_fl_1) { (void)msg; return bi_setfluid(w, 1, -1, 0, 0); }
+HF(h_fl_m1) { (void)msg; return bi_setfluid(w, -1, -1, 0, 0); }
+HF(h_fl_126) { (void)msg; return bi_setfluid(w, 126, -1, 0, 0); }
+HF(h_fl_nan) { (void)msg; return bi_setfluid(w, 125, 3 * 4 + 1, NAN, 0); }
+HF(h_fl_out) { (void)msg; return bi_setfluid(w, 125, 3 * 4, w->p.L[0], 0); }
+HF(h_fl_neg) { (void)msg; return bi_setfluid(w, 125, 3 * 4 + 2, -0.5, 0); }
+HF(h_fl_vnan) { (void)msg; return bi_setfluid(w, 125, 3 * 3, NAN, 1); }
+HF(h_lat_126) { (void)msg; return hcbd_hc_place_fluid_lattice(w, 126); }
+HF(h_lat_0) { (void)msg; return hcbd_hc_place_fluid_lattice(w, 0); }
+HF(h_lat_nullw) { (void)w; *msg = NULL; return hcbd_hc_place_fluid_lattice(NULL, 8); }
+static hcbd_result bi_setpoly(hcbd_hc_world *w, int n, int i, double v)
+{
+    static double x[3 * 210];
+    int k;
+    for (k = 0; k < 3 * 210; ++k) x[k] = 0.5 + 0.01 * (k % 7); /* a fluid region */
+    for (k = 0; k < 20 && k < n; ++k) {
+        x[3 * k] = w->px[k];
+        x[3 * k + 1] = w->py[k];
+        x[3 * k + 2] = w->pz[k];
+    }
+    if (i >= 0) x[i] = v;
+    return hcbd_hc_set_polymers(w, n, x);
+}
+HF(h_po_201) { (void)msg; return bi_setpoly(w, 201, -1, 0); }
+HF(h_po_m1) { (void)msg; return bi_setpoly(w, -1, -1, 0); }
+HF(h_po_null) { (void)msg; return hcbd_hc_set_polymers(w, 5, NULL); }
+HF(h_po_nullw) { (void)w; *msg = NULL; return hcbd_hc_set_polymers(NULL, 0, NULL); }
+HF(h_po_nan) { (void)msg; return bi_setpoly(w, 20, 3 * 2 + 1, NAN); }
+HF(h_po_out) { (void)msg; return bi_setpoly(w, 20, 3 * 2, -0.25); }
+HF(h_po_dense)
+{
+    /* 200 polymers in one spot: phi = n/n_max >= 1 */
+    (void)msg;
+    return bi_setpoly(w, 200, -1, 0);
+}
+HF(h_po_pairs)
+{
+    /* 100 polymers in one spot with n_max huge: more partners than
+       pair_capacity */
+    (void)msg;
+    return bi_setpoly(w, 100, -1, 0);
+}
+HF(h_po_nofluid)
+{
+    /* the five polymers of the world plus one where there is no fluid */
+    double x[3 * 6];
+    int k;
+    (void)msg;
+    for (k = 0; k < 5; ++k) {
+        x[3 * k] = w->px[k];
+        x[3 * k + 1] = w->py[k];
+        x[3 * k + 2] = w->pz[k];
+    }
+    /* the fluid fills 0.05 L <= x <= 0.45 L and z <= 0.5 L */
+    x[15] = 0.75 * w->p.L[0];
+    x[16] = 0.5 * w->p.L[1];
+    x[17] = 0.8 * w->p.L[2];
+    return hcbd_hc_set_polymers(w, 6, x);
+}
+HF(h_prand_201) { (void)msg; return hcbd_hc_place_polymers_random(w, 201); }
+HF(h_prand_m1) { (void)msg; return hcbd_hc_place_polymers_random(w, -1); }
+HF(h_prand_nullw) { (void)w; *msg = NULL; return hcbd_hc_place_polymers_random(NULL, 1); }
+HF(h_po_empty) { double x[3] = {1, 1, 1}; (void)msg; return hcbd_hc_set_polymers(w, 1, x); }
+HF(h_prand_empty) { (void)msg; return hcbd_hc_place_polymers_random(w, 1); }
+HF(h_refresh_empty) { (void)msg; return hcbd_hc_refresh(w); }
+HF(h_refresh_nullw) { (void)w; *msg = NULL; return hcbd_hc_refresh(NULL); }
+HF(h_step_empty) { (void)msg; return hcbd_hc_step(w, 1); }
+HF(h_step_m1) { (void)msg; return hcbd_hc_step(w, -1); }
+HF(h_step_nullw) { (void)w; *msg = NULL; return hcbd_hc_step(NULL, 1); }
+/* pair variables: a pair that exists and one that does not */
+static int bi_pair(const hcbd_hc_world *w, int exists, int *b)
+{
+    int k;
+    for (k = 1; k < w->np; ++k) {
+        double l;
+        if ((hcbd_hc_lambda(w, 0, k, &l) == HCBD_OK) == exists) {
+            *b = k;
+            return 1;
+        }
+    }
+    return 0;
+}
+HF(h_lam_nullout) { int b = 1; *msg = NULL; bi_pair(w, 1, &b); return hcbd_hc_lambda(w, 0, b, NULL); }
+HF(h_lam_nullw) { double l; (void)w; *msg = NULL; return hcbd_hc_lambda(NULL, 0, 1, &l); }
+HF(h_lam_am1) { double l; *msg = NULL; return hcbd_hc_lambda(w, -1, 1, &l); }
+HF(h_lam_bnp) { double l; *msg = NULL; return hcbd_hc_lambda(w, 0, w->np, &l); }
+HF(h_lam_aa) { double l; *msg = NULL; return hcbd_hc_lambda(w, 3, 3, &l); }
+HF(h_lam_none)
+{
+    double l;
+    int b = -1;
+    *msg = NULL;
+    if (!bi_pair(w, 0, &b)) return HCBD_ERR_MODEL; /* the test world has no such pair */
+    return hcbd_hc_lambda(w, 0, b, &l);
+}
+HF(h_slam_nan)
+{
+    int b = -1;
+    (void)msg;
+    if (!bi_pair(w, 1, &b)) return HCBD_ERR_MODEL;
+    return hcbd_hc_set_lambda(w, 0, b, NAN);
+}
+HF(h_slam_inf)
+{
+    int b = -1;
+    (void)msg;
+    if (!bi_pair(w, 1, &b)) return HCBD_ERR_MODEL;
+    return hcbd_hc_set_lambda(w, 0, b, -INFINITY);
+}
+HF(h_slam_am1) { (void)msg; return hcbd_hc_set_lambda(w, -1, 1, 0.5); }
+HF(h_slam_b20) { (void)msg; return hcbd_hc_set_lambda(w, 0, 20, 0.5); }
+HF(h_slam_aa) { (void)msg; return hcbd_hc_set_lambda(w, 3, 3, 0.5); }
+HF(h_slam_none)
+{
+    int b = -1;
+    (void)msg;
+    if (!bi_pair(w, 0, &b)) return HCBD_ERR_MODEL;
+    return hcbd_hc_set_lambda(w, 0, b, 0.5);
+}
+HF(h_slam_nullw) { (void)w; *msg = NULL; return hcbd_hc_set_lambda(NULL, 0, 1, 0.5); }
+HF(h_stress_2) { (void)msg; return hcbd_hc_stress_enable(w, 2); }
+HF(h_stress_m1) { (void)msg; return hcbd_hc_stress_enable(w, -1); }
+HF(h_stress_nullw) { (void)w; *msg = NULL; return hcbd_hc_stress_enable(NULL, 1); }
+HF(h_sread_null) { *msg = NULL; return hcbd_hc_stress_read(w, NULL, NULL); }
+HF(h_tc_nk0) { double o[12]; *msg = NULL; return hcbd_hc_transverse_current(w, 0, o); }
+HF(h_tc_null) { *msg = NULL; return hcbd_hc_transverse_current(w, 1, NULL); }
+HF(h_dr_null) { *msg = NULL; return hcbd_hc_density_range(w, NULL); }
+HF(h_dr_empty) { double o[3]; *msg = NULL; return hcbd_hc_density_range(w, o); }
+static hcbd_result bi_htheory(int what, double v)
+{
+    hcbd_hc_def d = bi_hc_base(HB_DEF);
+    hcbd_hc_theory t;
+    if (what == 1) d.params.eta = v;
+    if (what == 2) d.params.rho = v;
+    if (what == 3) d.params.P0 = v;
+    if (what == 4) d.params.g[0] = v;
+    if (what == 5) return hcbd_hc_theory_of(NULL, &t);
+    if (what == 6) return hcbd_hc_theory_of(&d.params, NULL);
+    return hcbd_hc_theory_of(&d.params, &t);
+}
+HF(h_th_eta) { (void)w; *msg = NULL; return bi_htheory(1, NAN); }
+HF(h_th_etaneg) { (void)w; *msg = NULL; return bi_htheory(1, -1); }
+HF(h_th_rho) { (void)w; *msg = NULL; return bi_htheory(2, INFINITY); }
+HF(h_th_P0) { (void)w; *msg = NULL; return bi_htheory(3, -1); }
+HF(h_th_g) { (void)w; *msg = NULL; return bi_htheory(4, NAN); }
+HF(h_th_nullp) { (void)w; *msg = NULL; return bi_htheory(5, 0); }
+HF(h_th_nullt) { (void)w; *msg = NULL; return bi_htheory(6, 0); }
+HF(h_stab_null) { int n; (void)w; *msg = NULL; return hcbd_hc_stability(&w->p, NULL, &n); }
+HF(h_check_null)
+{
+    (void)w;
+    strcpy(bi_msg, "(untouched)");
+    *msg = bi_msg;
+    return hcbd_hc_params_check(NULL, bi_msg, sizeof bi_msg);
+}
+static hcbd_result bi_si(int what, double v)
+{
+    hcbd_hc_si si = hcbd_hc_si_table1();
+    hcbd_hc_params p;
+    double tu = 1e-6;
+    strcpy(bi_msg, "(untouched)");
+    if (what == 1) tu = v;
+    if (what == 2) si.sigma = v;
+    if (what == 3) si.T = v;
+    if (what == 4) si.rho = v;
+    if (what == 5) si.dt = v;
+    if (what == 6) return hcbd_hc_params_si(NULL, tu, &p, bi_msg, sizeof bi_msg);
+    return hcbd_hc_params_si(&si, tu, &p, bi_msg, sizeof bi_msg);
+}
+HF(h_si_tu0) { (void)w; *msg = bi_msg; return bi_si(1, 0); }
+HF(h_si_tunan) { (void)w; *msg = bi_msg; return bi_si(1, NAN); }
+HF(h_si_sigma) { (void)w; *msg = bi_msg; return bi_si(2, NAN); }
+HF(h_si_T) { (void)w; *msg = bi_msg; return bi_si(3, -1); }
+HF(h_si_rho) { (void)w; *msg = bi_msg; return bi_si(4, INFINITY); }
+HF(h_si_dt) { (void)w; *msg = bi_msg; return bi_si(5, 0); }
+HF(h_si_null) { (void)w; *msg = bi_msg; return bi_si(6, 0); }
+HF(h_init_nullmem)
+{
+    hcbd_hc_world v;
+    hcbd_hc_def d = bi_hc_base(HB_DEF);
+    hcbd_result r = hcbd_hc_world_init(&v, &d, NULL, 1 << 20);
+    (void)w;
+    snprintf(bi_msg, sizeof bi_msg, "%s", v.err.msg);
+    *msg = bi_msg;
+    return r;
+}
+HF(h_init_short)
+{
+    hcbd_hc_world v;
+    hcbd_hc_def d = bi_hc_base(HB_DEF);
+    size_t need = hcbd_hc_world_bytes(&d);
+    char *mem = (char *)malloc(need);
+    hcbd_result r = hcbd_hc_world_init(&v, &d, mem, need - 64);
+    (void)w;
+    snprintf(bi_msg, sizeof bi_msg, "%s", v.err.msg);
+    *msg = bi_msg;
+    free(mem);
+    return r;
+}
+HF(h_create_nulldef)
+{
+    hcbd_hc_world v;
+    hcbd_result r = hcbd_hc_world_create(&v, NULL);
+    (void)w;
+    snprintf(bi_msg, sizeof bi_msg, "%s", v.err.msg);
+    *msg = bi_msg;
+    if (r == HCBD_OK) hcbd_hc_world_destroy(&v);
+    return r;
+}
+
+static const bi_hwentry bi_hcalls[] = {
+    {"set_fluid w NULL", HK_FP, h_fl_nullw, HCBD_ERR_NULL, NULL},
+    {"set_fluid xyz NULL", HK_FP, h_fl_null, HCBD_ERR_NULL, "xyz is NULL"},
+    {"set_fluid n = 1", HK_FP, h_fl_1, HCBD_ERR_PARAM, "N = 1"},
+    {"set_fluid n = -1", HK_FP, h_fl_m1, HCBD_ERR_PARAM, "N = -1"},
+    {"set_fluid n = 126 > capacity", HK_FP, h_fl_126, HCBD_ERR_CAPACITY, "N = 126"},
+    {"set_fluid y NaN", HK_FP, h_fl_nan, HCBD_ERR_NONFINITE, "fluid blob 4|nan"},
+    {"set_fluid x = L", HK_FP, h_fl_out, HCBD_ERR_PARAM, "fluid blob 4|outside the box"},
+    {"set_fluid z = -0.5", HK_FP, h_fl_neg, HCBD_ERR_PARAM, "fluid blob 4|-0.5"},
+    {"set_fluid v NaN", HK_FP, h_fl_vnan, HCBD_ERR_NONFINITE, "fluid blob 3|nan"},
+    {"place_fluid_lattice n = 126 > capacity", HK_FP, h_lat_126, HCBD_ERR_CAPACITY, "N = 126"},
+    {"place_fluid_lattice n = 0", HK_FP, h_lat_0, HCBD_ERR_PARAM, "N = 0"},
+    {"place_fluid_lattice w NULL", HK_FP, h_lat_nullw, HCBD_ERR_NULL, NULL},
+    {"set_polymers n = 201 > capacity", HK_FP, h_po_201, HCBD_ERR_CAPACITY, "N = 201"},
+    {"set_polymers n = -1", HK_FP, h_po_m1, HCBD_ERR_PARAM, "N = -1"},
+    {"set_polymers xyz NULL", HK_FP, h_po_null, HCBD_ERR_NULL, "xyz is NULL"},
+    {"set_polymers w NULL", HK_FP, h_po_nullw, HCBD_ERR_NULL, NULL},
+    {"set_polymers y NaN", HK_FP, h_po_nan, HCBD_ERR_NONFINITE, "polymer blob 2|nan"},
+    {"set_polymers x = -0.25", HK_FP, h_po_out, HCBD_ERR_PARAM, "polymer blob 2|-0.25"},
+    {"set_polymers phi >= 1", HK_FP, h_po_dense, HCBD_ERR_PARAM, "phi|>= 1"},
+    {"set_polymers more partners than pair_capacity", HK_NMAX, h_po_pairs, HCBD_ERR_CAPACITY,
+     "pair_capacity"},
+    {"set_polymers polymer without fluid within rc", HK_HOLE, h_po_nofluid, HCBD_ERR_PARAM,
+     "polymer 5|no fluid blob within rc = 2.5"},
+    {"place_polymers_random n = 201 > capacity", HK_FP, h_prand_201, HCBD_ERR_CAPACITY, "N = 201"},
+    {"place_polymers_random n = -1", HK_FP, h_prand_m1, HCBD_ERR_PARAM, "N = -1"},
+    {"place_polymers_random w NULL", HK_FP, h_prand_nullw, HCBD_ERR_NULL, NULL},
+    {"set_polymers before the fluid", HK_EMPTY, h_po_empty, HCBD_ERR_STATE, "fluid"},
+    {"place_polymers_random before the fluid", HK_EMPTY, h_prand_empty, HCBD_ERR_STATE, "fluid"},
+    {"refresh before the fluid", HK_EMPTY, h_refresh_empty, HCBD_ERR_STATE, "fluid"},
+    {"refresh w NULL", HK_FP, h_refresh_nullw, HCBD_ERR_NULL, NULL},
+    {"step before the fluid", HK_EMPTY, h_step_empty, HCBD_ERR_STATE, "fluid"},
+    {"step nsteps = -1", HK_FP, h_step_m1, HCBD_ERR_PARAM, "nsteps = -1"},
+    {"step w NULL", HK_FP, h_step_nullw, HCBD_ERR_NULL, NULL},
+    {"lambda out NULL", HK_FP, h_lam_nullout, HCBD_ERR_NULL, NULL},
+    {"lambda w NULL", HK_FP, h_lam_nullw, HCBD_ERR_NULL, NULL},
+    {"lambda a = -1", HK_FP, h_lam_am1, HCBD_ERR_PARAM, NULL},
+    {"lambda b = np", HK_FP, h_lam_bnp, HCBD_ERR_PARAM, NULL},
+    {"lambda a = b", HK_FP, h_lam_aa, HCBD_ERR_PARAM, NULL},
+    {"lambda of a pair that does not exist", HK_FP, h_lam_none, HCBD_ERR_STATE, NULL},
+    {"set_lambda lambda = nan", HK_FP, h_slam_nan, HCBD_ERR_NONFINITE, "lambda = nan"},
+    {"set_lambda lambda = -inf", HK_FP, h_slam_inf, HCBD_ERR_NONFINITE, "lambda = -inf"},
+    {"set_lambda a = -1", HK_FP, h_slam_am1, HCBD_ERR_PARAM, "a = -1"},
+    {"set_lambda b = 20 = np", HK_FP, h_slam_b20, HCBD_ERR_PARAM, "b = 20"},
+    {"set_lambda a = b", HK_FP, h_slam_aa, HCBD_ERR_PARAM, "a = 3|b = 3"},
+    {"set_lambda of a pair that does not exist", HK_FP, h_slam_none, HCBD_ERR_STATE,
+     "no pair variable"},
+    {"set_lambda w NULL", HK_FP, h_slam_nullw, HCBD_ERR_NULL, NULL},
+    {"stress_enable on = 2", HK_FP, h_stress_2, HCBD_ERR_PARAM, "on = 2"},
+    {"stress_enable on = -1", HK_FP, h_stress_m1, HCBD_ERR_PARAM, "on = -1"},
+    {"stress_enable w NULL", HK_FP, h_stress_nullw, HCBD_ERR_NULL, NULL},
+    {"stress_read out NULL", HK_FP, h_sread_null, HCBD_ERR_NULL, NULL},
+    {"transverse_current nk = 0", HK_FP, h_tc_nk0, HCBD_ERR_PARAM, NULL},
+    {"transverse_current out NULL", HK_FP, h_tc_null, HCBD_ERR_NULL, NULL},
+    {"density_range out NULL", HK_FP, h_dr_null, HCBD_ERR_NULL, NULL},
+    {"density_range before the fluid", HK_EMPTY, h_dr_empty, HCBD_ERR_STATE, NULL},
+    {"theory_of eta = nan", HK_FP, h_th_eta, HCBD_ERR_PARAM, NULL},
+    {"theory_of eta = -1", HK_FP, h_th_etaneg, HCBD_ERR_PARAM, NULL},
+    {"theory_of rho = inf", HK_FP, h_th_rho, HCBD_ERR_PARAM, NULL},
+    {"theory_of P0 = -1", HK_FP, h_th_P0, HCBD_ERR_PARAM, NULL},
+    {"theory_of g[0] = nan", HK_FP, h_th_g, HCBD_ERR_PARAM, NULL},
+    {"theory_of p NULL", HK_FP, h_th_nullp, HCBD_ERR_NULL, NULL},
+    {"theory_of t NULL", HK_FP, h_th_nullt, HCBD_ERR_NULL, NULL},
+    {"stability out NULL", HK_FP, h_stab_null, HCBD_ERR_NULL, NULL},
+    {"params_check p NULL", HK_FP, h_check_null, HCBD_ERR_NULL, "params"},
+    {"params_si time_unit = 0", HK_FP, h_si_tu0, HCBD_ERR_PARAM, "time_unit = 0"},
+    {"params_si time_unit = nan", HK_FP, h_si_tunan, HCBD_ERR_PARAM, "time_unit = nan"},
+    {"params_si si.sigma = nan", HK_FP, h_si_sigma, HCBD_ERR_PARAM, "sigma = nan"},
+    {"params_si si.T = -1", HK_FP, h_si_T, HCBD_ERR_PARAM, "T = -1"},
+    {"params_si si.rho = inf", HK_FP, h_si_rho, HCBD_ERR_PARAM, "rho = inf"},
+    {"params_si si.dt = 0", HK_FP, h_si_dt, HCBD_ERR_PARAM, "dt = 0"},
+    {"params_si si NULL", HK_FP, h_si_null, HCBD_ERR_NULL, "si"},
+    {"world_init mem NULL", HK_FP, h_init_nullmem, HCBD_ERR_NULL, "memory block"},
+    {"world_init bytes too few", HK_FP, h_init_short, HCBD_ERR_MEMORY, "bytes"},
+    {"world_create def NULL", HK_FP, h_create_nulldef, HCBD_ERR_NULL, "definition"},
+};
+
+typedef struct {
+    uint64_t sum;
+    int nf, np;
+    int64_t step;
+    unsigned char p[sizeof(hcbd_hc_params)];
+} bi_hsnap;
+
+static void bi_htake(const hcbd_hc_world *w, bi_hsnap *s)
+{
+    s->sum = hcbd_hc_state_checksum(w);
+    s->nf = w->nf;
+    s->np = w->np;
+    s->step = w->step;
+    memcpy(s->p, &w->p, sizeof s->p);
+}
+
+static const char *bi_hdiff(const bi_hsnap *a, const bi_hsnap *b, char *buf, size_t n)
+{
+    buf[0] = 0;
+    if (a->nf != b->nf) snprintf(buf + strlen(buf), n - strlen(buf), "nf %d -> %d ", a->nf, b->nf);
+    if (a->np != b->np) snprintf(buf + strlen(buf), n - strlen(buf), "np %d -> %d ", a->np, b->np);
+    if (a->step != b->step)
+        snprintf(buf + strlen(buf), n - strlen(buf), "step %lld -> %lld ", (long long)a->step,
+                 (long long)b->step);
+    if (a->sum != b->sum) snprintf(buf + strlen(buf), n - strlen(buf), "checksum ");
+    if (memcmp(a->p, b->p, sizeof a->p)) snprintf(buf + strlen(buf), n - strlen(buf), "params ");
+    return buf[0] ? buf : NULL;
+}
+
+void test_hc_bad_input(void)
+{
+    size_t e;
+    bi_hparam_table();
+    bi_summary("HCBD parameters and definitions");
+    for (e = 0; e < sizeof bi_hcalls / sizeof bi_hcalls[0]; ++e) {
+        const bi_hwentry *t = &bi_hcalls[e];
+        hcbd_hc_world w;
+        bi_hsnap a, b;
+        char buf[128], name[160];
+        const char *msg, *ch;
+        hcbd_result r;
+        if (!bi_hmake(&w, t->kind)) { t_fail = 1; continue; }
+        bi_htake(&w, &a);
+        msg = w.err.msg;
+        r = t->fn(&w, &msg);
+        bi_htake(&w, &b);
+        ch = bi_hdiff(&a, &b, buf, sizeof buf);
+        snprintf(name, sizeof name, "hcbd_hc_%s", t->name);
+        bi_judge2(name, t->want, t->msg, r, msg, ch,
+                  r != HCBD_OK && msg == w.err.msg && w.err.code != r);
+        hcbd_hc_world_destroy(&w);
+    }
+    bi_summary("HCBD calls");
+}
+#endif /* HCBD_MODEL_HCBD */
+
+/* ---- checkpoints, trajectories ---------------------------------------- */
+static unsigned char bi_ck[1 << 20];
+static size_t bi_ck_n;
+
+static hcbd_result bi_load_buf(const void *buf, size_t size)
+{
+    hcbd_world v;
+    hcbd_result r;
+    memset(&v, 0, sizeof v);
+    r = hcbd_checkpoint_load(&v, buf, size);
+    snprintf(bi_msg, sizeof bi_msg, "%s", v.err.msg);
+    if (r == HCBD_OK) hcbd_world_destroy(&v);
+    return r;
+}
+/* a real checkpoint of the test world, spoilt as asked */
+static hcbd_result bi_ck_take(hcbd_world *w)
+{
+    bi_ck_n = hcbd_checkpoint_size(w);
+    if (bi_ck_n == 0 || bi_ck_n > sizeof bi_ck) return HCBD_ERR_MEMORY;
+    return hcbd_checkpoint_save(w, bi_ck, bi_ck_n);
+}
+WF(io_save_short) { unsigned char b[16]; (void)msg; return hcbd_checkpoint_save(w, b, sizeof b); }
+WF(io_save_null) { (void)msg; return hcbd_checkpoint_save(w, NULL, 1 << 16); }
+WF(io_save_size0) { unsigned char b[16]; (void)msg; return hcbd_checkpoint_save(w, b, 0); }
+WF(io_load_null) { (void)w; *msg = bi_msg; return bi_load_buf(NULL, 1 << 16); }
+WF(io_load_0) { (void)w; *msg = bi_msg; return bi_load_buf(bi_ck, 0); }
+WF(io_load_garbage)
+{
+    static unsigned char g[4096];
+    (void)w;
+    memset(g, 0xAB, sizeof g);
+    *msg = bi_msg;
+    return bi_load_buf(g, sizeof g);
+}
+WF(io_load_trunc)
+{
+    hcbd_result r = bi_ck_take(w);
+    *msg = bi_msg;
+    if (r != HCBD_OK) return HCBD_ERR_MODEL;
+    return bi_load_buf(bi_ck, bi_ck_n / 2);
+}
+WF(io_load_flip)
+{
+    hcbd_result r = bi_ck_take(w);
+    *msg = bi_msg;
+    if (r != HCBD_OK) return HCBD_ERR_MODEL;
+    bi_ck[bi_ck_n - 9] ^= 0x10;
+    return bi_load_buf(bi_ck, bi_ck_n);
+}
+WF(io_load_missing)
+{
+    hcbd_world v;
+    hcbd_result r;
+    (void)w;
+    memset(&v, 0, sizeof v);
+    r = hcbd_load(&v, "/nonexistent-hcbd-dir/missing.chk");
+    snprintf(bi_msg, sizeof bi_msg, "%s", v.err.msg);
+    *msg = bi_msg;
+    if (r == HCBD_OK) hcbd_world_destroy(&v);
+    return r;
+}
+WF(io_load_nullpath)
+{
+    hcbd_world v;
+    hcbd_result r;
+    (void)w;
+    memset(&v, 0, sizeof v);
+    r = hcbd_load(&v, NULL);
+    snprintf(bi_msg, sizeof bi_msg, "%s", v.err.msg);
+    *msg = bi_msg;
+    if (r == HCBD_OK) hcbd_world_destroy(&v);
+    return r;
+}
+WF(io_save_baddir) { (void)msg; return hcbd_save(w, "/nonexistent-hcbd-dir/x.chk"); }
+WF(io_save_nullpath) { (void)msg; return hcbd_save(w, NULL); }
+WF(io_xyz_nullf) { *msg = NULL; return hcbd_xyz_write(w, NULL, NULL, 0); }
+static hcbd_result bi_xyz_ids(const hcbd_world *w, int id, int nids)
+{
+    int ids[2] = {0, 0};
+    FILE *f = tmpfile();
+    hcbd_result r;
+    if (!f) return HCBD_ERR_MODEL;
+    ids[1] = id;
+    r = hcbd_xyz_write(w, f, ids, nids);
+    fclose(f);
+    return r;
+}
+WF(io_xyz_id64) { *msg = NULL; return bi_xyz_ids(w, 64, 2); }
+WF(io_xyz_idm1) { *msg = NULL; return bi_xyz_ids(w, -1, 2); }
+WF(io_xyz_nidsm1) { *msg = NULL; return bi_xyz_ids(w, 1, -1); }
+WF(io_off_nullf) { *msg = NULL; return hcbd_xyz_offenders(w, NULL); }
+
+static const bi_wentry bi_iocalls[] = {
+    {"checkpoint_save 16-byte buffer", WK_GIBD, io_save_short, HCBD_ERR_MEMORY, "16"},
+    {"checkpoint_save size 0", WK_GIBD, io_save_size0, HCBD_ERR_MEMORY, "0"},
+    {"checkpoint_save buf NULL", WK_GIBD, io_save_null, HCBD_ERR_NULL, "buf"},
+    {"checkpoint_load buf NULL", WK_GIBD, io_load_null, HCBD_ERR_NULL, "buffer is NULL"},
+    {"checkpoint_load size 0", WK_GIBD, io_load_0, HCBD_ERR_FORMAT, NULL},
+    {"checkpoint_load garbage", WK_GIBD, io_load_garbage, HCBD_ERR_FORMAT, NULL},
+    {"checkpoint_load truncated", WK_GIBD, io_load_trunc, HCBD_ERR_FORMAT, NULL},
+    {"checkpoint_load one bit flipped", WK_GIBD, io_load_flip, HCBD_ERR_FORMAT, NULL},
+    {"load missing file", WK_GIBD, io_load_missing, HCBD_ERR_IO,
+     "/nonexistent-hcbd-dir/missing.chk"},
+    {"load path NULL", WK_GIBD, io_load_nullpath, HCBD_ERR_NULL, "path"},
+    {"save into a missing directory", WK_GIBD, io_save_baddir, HCBD_ERR_IO,
+     "/nonexistent-hcbd-dir/x.chk"},
+    {"save path NULL", WK_GIBD, io_save_nullpath, HCBD_ERR_NULL, "path"},
+    {"xyz_write f NULL", WK_GIBD, io_xyz_nullf, HCBD_ERR_NULL, NULL},
+    {"xyz_write ids[1] = 64 = n", WK_GIBD, io_xyz_id64, HCBD_ERR_PARAM, NULL},
+    {"xyz_write ids[1] = -1", WK_GIBD, io_xyz_idm1, HCBD_ERR_PARAM, NULL},
+    {"xyz_write nids = -1", WK_GIBD, io_xyz_nidsm1, HCBD_ERR_PARAM, NULL},
+    {"xyz_offenders f NULL", WK_GIBD, io_off_nullf, HCBD_ERR_NULL, NULL},
+};
+
+#if HCBD_MODEL == HCBD_MODEL_HCBD
+static hcbd_result bi_hload_buf(const void *buf, size_t size)
+{
+    hcbd_hc_world v;
+    hcbd_result r;
+    memset(&v, 0, sizeof v);
+    r = hcbd_hc_checkpoint_load(&v, buf, size);
+    snprintf(bi_msg, sizeof bi_msg, "%s", v.err.msg);
+    if (r == HCBD_OK) hcbd_hc_world_destroy(&v);
+    return r;
+}
+HF(hio_save_short) { unsigned char b[16]; (void)msg; return hcbd_hc_checkpoint_save(w, b, sizeof b); }
+HF(hio_save_null) { (void)msg; return hcbd_hc_checkpoint_save(w, NULL, 1 << 16); }
+HF(hio_load_0) { (void)w; *msg = bi_msg; return bi_hload_buf(bi_ck, 0); }
+HF(hio_load_garbage)
+{
+    static unsigned char g[4096];
+    (void)w;
+    memset(g, 0xAB, sizeof g);
+    *msg = bi_msg;
+    return bi_hload_buf(g, sizeof g);
+}
+HF(hio_load_flip)
+{
+    size_t n = hcbd_hc_checkpoint_size(w);
+    *msg = bi_msg;
+    if (n == 0 || n > sizeof bi_ck || hcbd_hc_checkpoint_save(w, bi_ck, n) != HCBD_OK)
+        return HCBD_ERR_MODEL;
+    bi_ck[n / 2] ^= 0x04;
+    return bi_hload_buf(bi_ck, n);
+}
+HF(hio_load_gibd)
+{
+    /* a GI-BD checkpoint handed to the 2018 world */
+    hcbd_world g;
+    hcbd_result r;
+    size_t n;
+    (void)w;
+    *msg = bi_msg;
+    if (!bi_make(&g, WK_GIBD)) return HCBD_ERR_STATE;
+    n = hcbd_checkpoint_size(&g);
+    r = n > 0 && n <= sizeof bi_ck ? hcbd_checkpoint_save(&g, bi_ck, n) : HCBD_ERR_MEMORY;
+    hcbd_world_destroy(&g);
+    if (r != HCBD_OK) return HCBD_ERR_STATE;
+    return bi_hload_buf(bi_ck, n);
+}
+HF(hio_load_missing)
+{
+    hcbd_hc_world v;
+    hcbd_result r;
+    (void)w;
+    memset(&v, 0, sizeof v);
+    r = hcbd_hc_load(&v, "/nonexistent-hcbd-dir/missing.chk");
+    snprintf(bi_msg, sizeof bi_msg, "%s", v.err.msg);
+    *msg = bi_msg;
+    if (r == HCBD_OK) hcbd_hc_world_destroy(&v);
+    return r;
+}
+HF(hio_save_baddir) { (void)msg; return hcbd_hc_save(w, "/nonexistent-hcbd-dir/x.chk"); }
+HF(hio_xyz_nullf) { *msg = NULL; return hcbd_hc_xyz_write(w, NULL); }
+
+static const bi_hwentry bi_hiocalls[] = {
+    {"checkpoint_save 16-byte buffer", HK_FP, hio_save_short, HCBD_ERR_MEMORY, "16"},
+    {"checkpoint_save buf NULL", HK_FP, hio_save_null, HCBD_ERR_NULL, "buf"},
+    {"checkpoint_load size 0", HK_FP, hio_load_0, HCBD_ERR_FORMAT, NULL},
+    {"checkpoint_load garbage", HK_FP, hio_load_garbage, HCBD_ERR_FORMAT, NULL},
+    {"checkpoint_load one bit flipped", HK_FP, hio_load_flip, HCBD_ERR_FORMAT, NULL},
+    {"checkpoint_load of a GI-BD checkpoint", HK_FP, hio_load_gibd, HCBD_ERR_MODEL, NULL},
+    {"load missing file", HK_FP, hio_load_missing, HCBD_ERR_IO,
+     "/nonexistent-hcbd-dir/missing.chk"},
+    {"save into a missing directory", HK_FP, hio_save_baddir, HCBD_ERR_IO,
+     "/nonexistent-hcbd-dir/x.chk"},
+    {"xyz_write f NULL", HK_FP, hio_xyz_nullf, HCBD_ERR_NULL, NULL},
+};
+#endif
+
+void test_bad_input_io(void)
+{
+    size_t e;
+    for (e = 0; e < sizeof bi_iocalls / sizeof bi_iocalls[0]; ++e) {
+        const bi_wentry *t = &bi_iocalls[e];
+        hcbd_world w;
+        bi_snap a, b;
+        char buf[128], name[160];
+        const char *msg, *ch;
+        hcbd_result r;
+        if (!bi_make(&w, t->kind)) { t_fail = 1; continue; }
+        bi_take(&w, &a);
+        msg = w.err.msg;
+        r = t->fn(&w, &msg);
+        bi_take(&w, &b);
+        ch = bi_diff(&a, &b, buf, sizeof buf);
+        snprintf(name, sizeof name, "hcbd_%s", t->name);
+        bi_judge2(name, t->want, t->msg, r, msg, ch,
+                  r != HCBD_OK && msg == w.err.msg && w.err.code != r);
+        hcbd_world_destroy(&w);
+    }
+    bi_summary("checkpoint and trajectory calls");
+#if HCBD_MODEL == HCBD_MODEL_HCBD
+    for (e = 0; e < sizeof bi_hiocalls / sizeof bi_hiocalls[0]; ++e) {
+        const bi_hwentry *t = &bi_hiocalls[e];
+        hcbd_hc_world w;
+        bi_hsnap a, b;
+        char buf[128], name[160];
+        const char *msg, *ch;
+        hcbd_result r;
+        if (!bi_hmake(&w, t->kind)) { t_fail = 1; continue; }
+        bi_htake(&w, &a);
+        msg = w.err.msg;
+        r = t->fn(&w, &msg);
+        bi_htake(&w, &b);
+        ch = bi_hdiff(&a, &b, buf, sizeof buf);
+        snprintf(name, sizeof name, "hcbd_hc_%s", t->name);
+        bi_judge2(name, t->want, t->msg, r, msg, ch,
+                  r != HCBD_OK && msg == w.err.msg && w.err.code != r);
+        hcbd_hc_world_destroy(&w);
+    }
+    bi_summary("HCBD checkpoint and trajectory calls");
+#endif
+}
+
