@@ -31,7 +31,7 @@ HC_EXAMPLES := $(B)/hcbd_fluid $(B)/hcbd_polymer
 HEADERS  := hcbd.h
 TEST_SRC := $(wildcard tests/test_*.c) tests/main.c
 
-.PHONY: all run test test-main test-float test-gibd test-hcbd test-sanitize test-build bench bench-wp bench-stability bench-peers bench-parts clean
+.PHONY: all run test test-main test-float test-gibd test-hcbd test-sanitize test-sanitize-hcbd test-tsan test-tsan-hcbd test-fuzz-args test-fuzz-ckpt test-install test-build build-check install fuzz bench bench-wp bench-stability bench-peers bench-parts bench-soak clean
 
 all: $(B)/hcbd_impl.o $(EXAMPLES) $(HC_EXAMPLES)
 
@@ -78,39 +78,124 @@ $(B)/run_tests_gibd: $(TEST_SRC) tests/test.h tests/list.h hcbd_impl.c $(HEADERS
 $(B)/run_tests_san: $(TEST_SRC) tests/test.h tests/list.h hcbd_impl.c $(HEADERS) | $(B)
 	$(SAN_CC) $(WARN) $(FP) $(MODELFLAG) -O1 -g $(SAN) $(TEST_SRC) hcbd_impl.c -o $@ $(LDLIBS)
 
-# make test: strict builds, the full suite, the float build's bit-level
-# tests, the GI-BD build's, and the whole suite in quick mode under ASan +
-# UBSan.
-test: test-build test-main test-float test-gibd test-hcbd test-sanitize
+# make test: every part below, JOBS at a time, each into its own log in
+# build/logs (a failing part's lines are shown); the last line sums all
+# parts as "N passed, N failed".  Parts: strict builds of the header (gcc
+# and clang, C99/C11/C++11, three models, -Wshadow -Wconversion); the full
+# suite; the float, GI-BD and HCBD builds; the suite under ASan + UBSan
+# (quick mode) and the threaded determinism and restart tests under TSan;
+# the fuzz inputs replayed under ASan + UBSan; an install and a program
+# built against the installed header only.
+JOBS ?= 2
+TEST_PARTS := main sanitize sanitize-hcbd hcbd float gibd tsan tsan-hcbd fuzz-args fuzz-ckpt install build
+LOG = > $(CURDIR)/$(B)/logs/$(1).log 2>&1 || { tail -n 30 $(CURDIR)/$(B)/logs/$(1).log; exit 1; }
+test:
+	@rm -rf $(B)/logs && mkdir -p $(B)/logs
+	-@$(MAKE) --no-print-directory -k -j$(JOBS) $(addprefix test-,$(TEST_PARTS))
+	@tests/summary.sh $(B)/logs $(TEST_PARTS)
 
-test-main: $(B)/run_tests
-	./$(B)/run_tests
+$(B)/logs:
+	mkdir -p $@
 
-test-float: $(B)/run_tests_float
-	./$(B)/run_tests_float test_determinism
+test-main: $(B)/run_tests $(B)/gibd_bulk | $(B)/logs
+	./$(B)/run_tests $(call LOG,main)
 
-test-gibd: $(B)/run_tests_gibd
-	./$(B)/run_tests_gibd test_determinism test_bad_parameters test_model_switch test_momentum
+test-float: $(B)/run_tests_float | $(B)/logs
+	./$(B)/run_tests_float test_determinism test_checkpoint $(call LOG,float)
 
-test-hcbd: $(B)/run_tests_hcbd
-	./$(B)/run_tests_hcbd test_hc_
+test-gibd: $(B)/run_tests_gibd | $(B)/logs
+	./$(B)/run_tests_gibd test_determinism test_bad_param test_bad_input test_model_switch test_momentum test_checkpoint test_runtime $(call LOG,gibd)
 
-test-sanitize: $(B)/run_tests_san $(B)/run_tests_hcbd_san
-	ASAN_OPTIONS=detect_leaks=1 ./$(B)/run_tests_hcbd_san --quick test_hc_
-	ASAN_OPTIONS=detect_leaks=1 ./$(B)/run_tests_san --quick
+test-hcbd: $(B)/run_tests_hcbd | $(B)/logs
+	./$(B)/run_tests_hcbd test_hc_ $(call LOG,hcbd)
 
-# The header alone, both halves, with gcc and clang as C99 and C11 and as C++.
-test-build: | $(B)
+test-sanitize: $(B)/run_tests_san $(B)/gibd_bulk | $(B)/logs
+	ASAN_OPTIONS=detect_leaks=1 ./$(B)/run_tests_san --quick $(call LOG,sanitize)
+
+test-sanitize-hcbd: $(B)/run_tests_hcbd_san | $(B)/logs
+	ASAN_OPTIONS=detect_leaks=1 ./$(B)/run_tests_hcbd_san --quick test_hc_ $(call LOG,sanitize-hcbd)
+
+# ThreadSanitizer needs an OpenMP runtime it can see through: clang's
+# libomp loads its archer tool, which tells TSan where the barriers are;
+# gcc's libgomp is not instrumented (hundreds of false reports).
+TSAN := -fsanitize=thread -fopenmp -O1 -g
+TSAN_ENV := TSAN_OPTIONS='ignore_noninstrumented_modules=1 halt_on_error=1'
+$(B)/run_tests_tsan: $(TEST_SRC) tests/test.h tests/list.h hcbd_impl.c $(HEADERS) | $(B)
+	$(SAN_CC) $(WARN) $(FP) $(MODELFLAG) $(TSAN) $(TEST_SRC) hcbd_impl.c -o $@ $(LDLIBS)
+
+$(B)/run_tests_hcbd_tsan: $(TEST_SRC) tests/test.h tests/list.h hcbd_impl.c $(HEADERS) | $(B)
+	$(SAN_CC) $(WARN) $(FP) $(HCBDFLAG) $(TSAN) $(TEST_SRC) hcbd_impl.c -o $@ $(LDLIBS)
+
+test-tsan: $(B)/run_tests_tsan | $(B)/logs
+	$(TSAN_ENV) ./$(B)/run_tests_tsan --quick test_determinism test_checkpoint_restart $(call LOG,tsan)
+
+test-tsan-hcbd: $(B)/run_tests_hcbd_tsan | $(B)/logs
+	$(TSAN_ENV) ./$(B)/run_tests_hcbd_tsan --quick test_hc_determinism test_hc_checkpoint $(call LOG,tsan-hcbd)
+
+# Fuzzing (not part of make test): libFuzzer on the examples' argument
+# parser and on the checkpoint loaders, FUZZ_TIME seconds each; new
+# inputs go to build/fuzz, crashes to build/fuzz/crash-*.  Inputs that
+# found bugs are kept in tests/fuzz/regress_*; make test replays them and
+# the seed corpora under ASan + UBSan without libFuzzer.
+FUZZ_TIME ?= 120
+FUZZ_SAN := -g -O1 -fsanitize=address,undefined -fno-sanitize-recover=all
+FUZZ_CAP := "-DHCBD_LOAD_MAX_BYTES=((size_t)64 << 20)"
+fuzz: | $(B)
+	mkdir -p $(B)/fuzz/args $(B)/fuzz/ckpt
+	$(SAN_CC) $(FUZZ_SAN) -fsanitize=fuzzer $(MODELFLAG) -I. tests/fuzz/fuzz_args.c hcbd_impl.c -o $(B)/fuzz_args $(LDLIBS)
+	$(SAN_CC) $(FUZZ_SAN) -fsanitize=fuzzer $(HCBDFLAG) $(FUZZ_CAP) -I. tests/fuzz/fuzz_checkpoint.c hcbd_impl.c -o $(B)/fuzz_ckpt $(LDLIBS)
+	./$(B)/fuzz_args -close_fd_mask=2 -max_total_time=$(FUZZ_TIME) -artifact_prefix=$(B)/fuzz/ -dict=tests/fuzz/args.dict $(B)/fuzz/args tests/fuzz/corpus_args
+	./$(B)/fuzz_ckpt -max_total_time=$(FUZZ_TIME) -artifact_prefix=$(B)/fuzz/ $(B)/fuzz/ckpt tests/fuzz/corpus_ckpt
+
+$(B)/replay_args: tests/fuzz/fuzz_args.c tests/fuzz/replay.c examples/example_common.h hcbd_impl.c $(HEADERS) | $(B)
+	$(SAN_CC) $(FUZZ_SAN) $(MODELFLAG) -I. tests/fuzz/fuzz_args.c tests/fuzz/replay.c hcbd_impl.c -o $@ $(LDLIBS)
+
+$(B)/replay_ckpt: tests/fuzz/fuzz_checkpoint.c tests/fuzz/replay.c hcbd_impl.c $(HEADERS) | $(B)
+	$(SAN_CC) $(FUZZ_SAN) $(HCBDFLAG) $(FUZZ_CAP) -I. tests/fuzz/fuzz_checkpoint.c tests/fuzz/replay.c hcbd_impl.c -o $@ $(LDLIBS)
+
+test-fuzz-args: $(B)/replay_args | $(B)/logs
+	./$(B)/replay_args $(wildcard tests/fuzz/corpus_args/* tests/fuzz/regress_args/*) $(call LOG,fuzz-args)
+
+test-fuzz-ckpt: $(B)/replay_ckpt | $(B)/logs
+	./$(B)/replay_ckpt $(wildcard tests/fuzz/corpus_ckpt/* tests/fuzz/regress_ckpt/*) $(call LOG,fuzz-ckpt)
+
+# make install PREFIX=...: the header and a pkg-config file (the library
+# is the header: users define HCBD_IMPLEMENTATION in one file).
+PREFIX ?= /usr/local
+VERSION := $(shell sed -n 's/^\#define HCBD_VERSION_MAJOR //p' hcbd.h).$(shell sed -n 's/^\#define HCBD_VERSION_MINOR //p' hcbd.h)
+install:
+	mkdir -p $(DESTDIR)$(PREFIX)/include $(DESTDIR)$(PREFIX)/lib/pkgconfig
+	cp hcbd.h $(DESTDIR)$(PREFIX)/include/hcbd.h
+	sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@VERSION@|$(VERSION)|' hcbd.pc.in > $(DESTDIR)$(PREFIX)/lib/pkgconfig/hcbd.pc
+
+# A program built against the installed copy alone (a fresh prefix; the
+# flags from pkg-config when it is there).
+test-install: | $(B)/logs
+	rm -rf $(B)/prefix
+	$(MAKE) --no-print-directory install PREFIX=$(CURDIR)/$(B)/prefix $(call LOG,install-copy)
+	cd $(B) && flags=$$(PKG_CONFIG_PATH=$(CURDIR)/$(B)/prefix/lib/pkgconfig pkg-config --cflags --libs hcbd 2>/dev/null || echo "-I$(CURDIR)/$(B)/prefix/include -lm"); \
+	  $(CC) $(WARN) -x c ../tests/install_check.c $$flags -o install_check && ./install_check $(call LOG,install)
+
+# The header alone, both halves, with gcc and clang as C99 and C11 and as
+# C++, with -Wshadow and -Wconversion (sign conversions excepted: every
+# one is a non-negative int widened to size_t for index arithmetic, on
+# purpose); then the examples and bench programs.
+CONV := -Wshadow -Wconversion -Wno-sign-conversion
+test-build: | $(B)/logs
+	$(MAKE) --no-print-directory build-check $(call LOG,build)
+
+build-check: | $(B)
 	printf '#define HCBD_IMPLEMENTATION\n#include "../hcbd.h"\nint main(void){return 0;}\n' > $(B)/compile_test.c
 	for m in GIBD WALLED HCBD; do for cc in gcc clang; do for std in c99 c11; do \
-	  $$cc -std=$$std -Wall -Wextra -Wpedantic -Werror -Wshadow -O2 -DHCBD_MODEL=HCBD_MODEL_$$m -c $(B)/compile_test.c -o $(B)/ct.o || exit 1; \
-	  $$cc -std=$$std -Wall -Wextra -Wpedantic -Werror -O2 -fopenmp -DHCBD_REAL=float -DHCBD_MODEL=HCBD_MODEL_$$m -c $(B)/compile_test.c -o $(B)/ct.o || exit 1; \
+	  $$cc -std=$$std -Wall -Wextra -Wpedantic -Werror $(CONV) -O2 -DHCBD_MODEL=HCBD_MODEL_$$m -c $(B)/compile_test.c -o $(B)/ct.o || exit 1; \
+	  $$cc -std=$$std -Wall -Wextra -Wpedantic -Werror $(CONV) -O2 -fopenmp -DHCBD_REAL=float -DHCBD_MODEL=HCBD_MODEL_$$m -c $(B)/compile_test.c -o $(B)/ct.o || exit 1; \
 	done; done; \
 	for cxx in g++ clang++; do \
 	  $$cxx -x c++ -std=c++11 -Wall -Wextra -Werror -O2 -DHCBD_MODEL=HCBD_MODEL_$$m -c $(B)/compile_test.c -o $(B)/ct.o || exit 1; done; done
 	for cc in gcc clang; do $$cc $(WARN) $(MODELFLAG) -fsyntax-only $(filter-out examples/hcbd_%,$(wildcard examples/*.c)) $(filter-out bench/bench_hcbd.c bench/bench_wp_hcbd.c,$(wildcard bench/*.c)) || exit 1; \
-	  $$cc $(WARN) $(HCBDFLAG) -fsyntax-only $(wildcard examples/hcbd_*.c bench/bench_hcbd.c bench/bench_wp_hcbd.c bench/stability.c bench/bench_parts.c) || exit 1; done
-	@echo "test-build: header compiles as C99, C11 and C++11 with gcc and clang, GI-BD, walled and HCBD; examples and bench too"
+	  $$cc $(WARN) $(HCBDFLAG) -fsyntax-only $(wildcard examples/hcbd_*.c bench/bench_hcbd.c bench/bench_wp_hcbd.c bench/stability.c bench/bench_parts.c bench/soak.c) || exit 1; done
+	@echo "build: the header compiles as C99, C11 and C++11 with gcc and clang, GI-BD, walled and HCBD, double and float, $(CONV); examples and bench too"
+	@echo "1 passed, 0 failed"
 
 bench: $(B)/bench_speed $(B)/bench_hcbd
 	./$(B)/bench_speed out=out/bench
@@ -165,6 +250,18 @@ $(B)/bench_parts_gibd: bench/bench_parts.c hcbd_impl.c $(HEADERS) | $(B)
 	$(CC) $(WARN) $(FP) $(CFLAGS) $(OMPFLAG) -DHCBD_MODEL=HCBD_MODEL_GIBD $< hcbd_impl.c -o $@ $(LDLIBS)
 
 $(B)/bench_parts_hcbd: bench/bench_parts.c $(B)/hcbd_impl_hc.o $(HEADERS)
+	$(CC) $(HC_CFLAGS) $< $(B)/hcbd_impl_hc.o -o $@ $(LDLIBS)
+
+# Soak: each model for PSTEPS particle-steps (bench/soak.c); drift of the
+# temperature, momentum and density against their block errors.
+PSTEPS ?= 1e7
+bench-soak: $(B)/bench_soak $(B)/bench_soak_hcbd
+	./$(B)/bench_soak psteps=$(PSTEPS) out=out/bench; s=$$?; ./$(B)/bench_soak_hcbd psteps=$(PSTEPS) out=out/bench && exit $$s
+
+$(B)/bench_soak: bench/soak.c $(B)/hcbd_impl.o $(HEADERS)
+	$(CC) $(ALL_CFLAGS) $< $(B)/hcbd_impl.o -o $@ $(LDLIBS)
+
+$(B)/bench_soak_hcbd: bench/soak.c $(B)/hcbd_impl_hc.o $(HEADERS)
 	$(CC) $(HC_CFLAGS) $< $(B)/hcbd_impl_hc.o -o $@ $(LDLIBS)
 
 # Side by side with LAMMPS (skipped with a message when lmp is missing).

@@ -35,8 +35,11 @@
                    Conservation sums and observables are accumulated in
                    double either way.
    (only in the implementation file)
-     HCBD_MALLOC / HCBD_FREE   allocator of hcbd_world_create (default
-                   malloc/free).  Nothing else in the library allocates.
+     HCBD_MALLOC / HCBD_FREE   allocator of hcbd_world_create and of the
+                   checkpoint loaders and file functions (default malloc/free).
+                   Nothing else in the library allocates.
+     HCBD_LOAD_MAX_BYTES  largest world a checkpoint may ask the loader to
+                   allocate (default: no limit; the fuzz harness caps it).
 
    EXAMPLE (20 lines)
        hcbd_world_def def = hcbd_world_def_default();   // 2014/2016 stars
@@ -88,7 +91,16 @@
    ERRORS
      Every public function returns hcbd_result (HCBD_OK = 0).  On failure
      w->err holds the code, the step, the particle id (or -1) and a message
-     naming the bad value.  The library never exits or aborts.
+     naming the bad value; a refused call leaves the world as it was.  The
+     library never exits or aborts.  Run-time guards (guard_every,
+     guard_step, guard_walls) stop a step with the step, the particle and
+     the cause; hcbd_xyz_offenders writes the offenders as an XYZ frame.
+
+   RESTART AND OUTPUT
+     hcbd_save/hcbd_load (and the hcbd_hc_ pair) write and read the whole
+     state in a versioned, portable format; n + n steps equal n steps,
+     save, load, n steps, bit for bit.  hcbd_xyz_write writes extended XYZ
+     frames (OVITO); hcbd_thermo_line a log line.
 */
 #ifndef HCBD_H_INCLUDED
 #define HCBD_H_INCLUDED
@@ -2953,7 +2965,7 @@ hcbd_result hcbd_flux_read(const hcbd_world *w, double out[4], int64_t *nsteps)
 {
     int k;
     if (!w || !out) return HCBD_ERR_NULL;
-    for (k = 0; k < 3; ++k) out[k] = w->flux_steps ? w->flux_sum[k] / w->flux_steps : 0.0;
+    for (k = 0; k < 3; ++k) out[k] = w->flux_steps ? w->flux_sum[k] / (double)w->flux_steps : 0.0;
     out[3] = out[0] + out[1] + out[2];
     if (nsteps) *nsteps = w->flux_steps;
     return HCBD_OK;
@@ -3438,7 +3450,7 @@ int hcbd_mtcorr_result(const hcbd_mtcorr *c, int64_t min_count, double *lag,
             if (n < min_count || n == 0) continue;
             if (out < max) {
                 if (lag) lag[out] = j * scale;
-                if (corr) corr[out] = c->corr[(size_t)k * c->p + j] / n;
+                if (corr) corr[out] = c->corr[(size_t)k * c->p + j] / (double)n;
                 if (count) count[out] = n;
             }
             ++out;
@@ -3640,7 +3652,7 @@ int hcbd_msd_result(const hcbd_msd *d, double *lag, double *msd, int64_t *count,
             if (!n) continue;
             if (out < max) {
                 if (lag) lag[out] = j * scale;
-                if (msd) msd[out] = d->sum[(size_t)l * d->B + j] / n;
+                if (msd) msd[out] = d->sum[(size_t)l * d->B + j] / (double)n;
                 if (count) count[out] = n;
             }
             ++out;
@@ -5364,7 +5376,7 @@ hcbd_result hcbd_hc_stress_read(const hcbd_hc_world *w, double out[HCBD_HC_NSTRE
     int k;
     if (!w || !out) return HCBD_ERR_NULL;
     for (k = 0; k < HCBD_HC_NSTRESS; ++k)
-        out[k] = w->stress_steps ? w->stress_sum[k] / w->stress_steps : 0.0;
+        out[k] = w->stress_steps ? w->stress_sum[k] / (double)w->stress_steps : 0.0;
     if (nsteps) *nsteps = w->stress_steps;
     return HCBD_OK;
 }

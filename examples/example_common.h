@@ -74,7 +74,10 @@ static inline int parse_list(const config *c, const char *key, const char *v, do
 {
     char buf[512], *tok, *save = NULL;
     int n = 0;
-    snprintf(buf, sizeof buf, "%s", v);
+    if (snprintf(buf, sizeof buf, "%s", v) >= (int)sizeof buf) {
+        fprintf(stderr, "%s: %s is longer than %d characters\n", c->name, key, (int)sizeof buf - 1);
+        return 0;
+    }
     for (tok = strtok_r(buf, ",", &save); tok; tok = strtok_r(NULL, ",", &save)) {
         if (n == max) {
             fprintf(stderr, "%s: more than %d values of %s\n", c->name, max, key);
@@ -140,7 +143,7 @@ static int parse_args(int argc, char **argv, config *c, own_key_fn own, void (*u
             char *end;
             errno = 0;
             p->seed = strtoull(v, &end, 10);
-            if (errno || end == v || *end || *v == '-') {
+            if (errno || end == v || *end || *v < '0' || *v > '9') {
                 fprintf(stderr, "%s: seed=%s is not an unsigned integer\n", c->name, v);
                 return 0;
             }
@@ -160,10 +163,15 @@ static int parse_args(int argc, char **argv, config *c, own_key_fn own, void (*u
             if (!parse_choice(c, key, v, "gauss", "uniform", &x, HCBD_NOISE_GAUSS, HCBD_NOISE_UNIFORM)) return 0;
             p->noise = (hcbd_noise)x;
         }
-        else if (!strcmp(key, "out")) snprintf(c->out, sizeof c->out, "%s", v);
-        else if (!strcmp(key, "xyz")) snprintf(c->xyz, sizeof c->xyz, "%s", v);
-        else if (!strcmp(key, "checkpoint")) snprintf(c->checkpoint, sizeof c->checkpoint, "%s", v);
-        else if (!strcmp(key, "restart")) snprintf(c->restart, sizeof c->restart, "%s", v);
+        else if (!strcmp(key, "out") || !strcmp(key, "xyz") || !strcmp(key, "checkpoint") ||
+                 !strcmp(key, "restart")) {
+            char *dst = key[0] == 'o' ? c->out : key[0] == 'x' ? c->xyz : key[0] == 'c' ? c->checkpoint : c->restart;
+            if (!*v || strlen(v) >= sizeof c->out) {
+                fprintf(stderr, "%s: %s= must be a path of 1 to %d characters\n", c->name, key, (int)sizeof c->out - 1);
+                return 0;
+            }
+            memcpy(dst, v, strlen(v) + 1);
+        }
         else if (!strcmp(key, "xyz_every") || !strcmp(key, "thermo_every")) {
             int *x = key[0] == 'x' ? &c->xyz_every : &c->thermo_every;
             if (!parse_int(c, key, v, x)) return 0;
@@ -192,6 +200,7 @@ static void mkdirs(const char *path)
     char tmp[512];
     size_t k;
     snprintf(tmp, sizeof tmp, "%s", path);
+    if (!tmp[0]) return; /* "": the loop below would start past the terminator */
     for (k = 1; tmp[k]; ++k)
         if (tmp[k] == '/') { tmp[k] = 0; mkdir(tmp, 0755); tmp[k] = '/'; }
     mkdir(tmp, 0755);
@@ -210,7 +219,9 @@ static FILE *open_out(const config *c, const char *name)
 /* Runs gnuplot on plots.gp in the output folder, or says why not. */
 static void make_figures(const config *c)
 {
-    if (system("command -v gnuplot >/dev/null 2>&1") == 0) {
+    if (strchr(c->out, '\'')) {
+        printf("%s: out=%s contains a quote: run gnuplot plots.gp there yourself\n", c->name, c->out);
+    } else if (system("command -v gnuplot >/dev/null 2>&1") == 0) {
         char cmd[800];
         snprintf(cmd, sizeof cmd, "cd '%s' && gnuplot plots.gp", c->out);
         if (system(cmd) != 0) fprintf(stderr, "%s: gnuplot failed\n", c->name);
@@ -251,7 +262,7 @@ typedef struct {
     int64_t step0;
 } run_out;
 
-static int run_out_open(const config *c, run_out *o, const hcbd_world *w)
+static inline int run_out_open(const config *c, run_out *o, const hcbd_world *w)
 {
     memset(o, 0, sizeof *o);
     if (c->xyz[0] && !(o->xyz = fopen(c->xyz, "w"))) {
@@ -273,7 +284,7 @@ static int run_out_open(const config *c, run_out *o, const hcbd_world *w)
     return 1;
 }
 
-static void run_out_step(const config *c, run_out *o, const hcbd_world *w)
+static inline void run_out_step(const config *c, run_out *o, const hcbd_world *w)
 {
     if (o->xyz && w->step % c->xyz_every == 0) hcbd_xyz_write(w, o->xyz, NULL, 0);
     if (c->thermo_every > 0 && w->step % c->thermo_every == 0) {
@@ -291,7 +302,7 @@ static void run_out_step(const config *c, run_out *o, const hcbd_world *w)
 }
 
 /* Closes the trajectory and writes the checkpoint; 0 after a message. */
-static int run_out_close(const config *c, run_out *o, hcbd_world *w)
+static inline int run_out_close(const config *c, run_out *o, hcbd_world *w)
 {
     if (o->xyz) fclose(o->xyz);
     o->xyz = NULL;

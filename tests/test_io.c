@@ -1,9 +1,26 @@
 /* Checkpoint/restart, extended XYZ frames, thermo lines and run-time
    guards of the GI-BD world (the HCBD world's are in test_hcbd.c). */
+#define _POSIX_C_SOURCE 200809L /* getpid, mkdir under -std=c99 */
 #include "test.h"
 #include <sys/stat.h>
+#include <unistd.h>
 
 #define WALLS_BUILD (HCBD_MODEL == HCBD_MODEL_WALLED)
+
+/* out/test_io/<pid>/name: make test runs several builds at once */
+static const char *io_path(const char *name)
+{
+    static char p[4][256];
+    static int k;
+    char dir[128];
+    snprintf(dir, sizeof dir, "out/test_io/%ld", (long)getpid());
+    mkdir("out", 0755);
+    mkdir("out/test_io", 0755);
+    mkdir(dir, 0755);
+    k = (k + 1) % 4;
+    snprintf(p[k], sizeof p[k], "%s/%s", dir, name);
+    return p[k];
+}
 
 /* FNV-1a 64 and little-endian words, written here independently of the
    library, to forge checkpoints whose checksum is right but whose
@@ -223,19 +240,17 @@ void test_checkpoint_rejects_bad_files(void)
         expect_load(bad, size, HCBD_ERR_OUTSIDE, "outside", "x outside the box");
     }
     /* files: a round trip, a missing file, an unwritable path */
-    mkdir("out", 0755);
-    mkdir("out/test_io", 0755);
-    snprintf(path, sizeof path, "out/test_io/ck.hcbd");
+    snprintf(path, sizeof path, "%s", io_path("ck.hcbd"));
     CHECK(hcbd_save(&w, path) == HCBD_OK, "%s", w.err.msg);
     {
         hcbd_world b;
         CHECK(hcbd_load(&b, path) == HCBD_OK, "%s", b.err.msg);
         CHECK(hcbd_state_checksum(&b) == hcbd_state_checksum(&w), "file round trip changed the state");
         hcbd_world_destroy(&b);
-        CHECK(hcbd_load(&b, "out/test_io/missing.hcbd") == HCBD_ERR_IO &&
+        CHECK(hcbd_load(&b, io_path("missing.hcbd")) == HCBD_ERR_IO &&
                   strstr(b.err.msg, "missing.hcbd"), "missing file: %s", b.err.msg);
     }
-    CHECK(hcbd_save(&w, "out/test_io/no/such/dir/ck.hcbd") == HCBD_ERR_IO, "unwritable: %s", w.err.msg);
+    CHECK(hcbd_save(&w, io_path("no/such/dir/ck.hcbd")) == HCBD_ERR_IO, "unwritable: %s", w.err.msg);
     free(buf);
     free(bad);
     hcbd_world_destroy(&w);
@@ -382,12 +397,17 @@ void test_xyz_from_example(void)
         CHECK(0, "build/gibd_bulk is missing: make test builds it first");
         return;
     }
-    rc = system("./build/gibd_bulk N=216 steps=1000 out=out/test_io/ex "
-                "xyz=out/test_io/ex/traj.xyz xyz_every=1000 thermo_every=500 "
-                "checkpoint=out/test_io/ex/end.hcbd > out/test_io/ex.log 2>&1");
-    CHECK(rc == 0, "example exited with %d (see out/test_io/ex.log)", rc);
+    {
+        char cmd[2048], dir[256];
+        snprintf(dir, sizeof dir, "%s", io_path("ex"));
+        snprintf(cmd, sizeof cmd, "./build/gibd_bulk N=216 steps=1000 out=%s xyz=%s/traj.xyz "
+                 "xyz_every=1000 thermo_every=500 checkpoint=%s/end.hcbd > %s.log 2>&1",
+                 dir, dir, dir, dir);
+        rc = system(cmd);
+        CHECK(rc == 0, "example exited with %d (see %s.log)", rc, dir);
+    }
     if (rc != 0) return;
-    f = fopen("out/test_io/ex/traj.xyz", "r");
+    f = fopen(io_path("ex/traj.xyz"), "r");
     CHECK(f != NULL, "no trajectory");
     if (!f) return;
     frame_alloc(&fr, 1024);
@@ -395,7 +415,7 @@ void test_xyz_from_example(void)
     CHECK(read_frame(f, &fr, 1024) && fr.step == 5000, "first frame, step %lld", fr.step);
     CHECK(read_frame(f, &fr, 1024), "second frame");
     fclose(f);
-    if (hcbd_load(&w, "out/test_io/ex/end.hcbd") != HCBD_OK) {
+    if (hcbd_load(&w, io_path("ex/end.hcbd")) != HCBD_OK) {
         CHECK(0, "checkpoint: %s", w.err.msg);
     } else {
         frame_check(&fr, &w, "example frame");
