@@ -814,8 +814,9 @@ hcbd_result hcbd_set_threads(hcbd_world *w, int threads);
 hcbd_result hcbd_xyz_write(const hcbd_world *w, FILE *f, const int *ids, int nids);
 hcbd_result hcbd_xyz_offenders(const hcbd_world *w, FILE *f);
 /* Thermo log: a header line and one line per call, space separated:
-   step time T px py pz pairs wall_pen ns_pstep (ns_pstep as the caller
-   measured it; NAN prints "-").  Both return the length the full text
+   step time T px py pz list_pairs wall_pen ns_pstep (list_pairs: the
+   neighbour list's pairs, skin included, so it depends on when the list
+   was last built; ns_pstep as the caller measured it; NAN prints "-").  Both return the length the full text
    needs, as snprintf does. */
 int hcbd_thermo_header(char *buf, size_t size);
 int hcbd_thermo_line(const hcbd_world *w, double ns_pstep, char *buf, size_t size);
@@ -1071,9 +1072,9 @@ hcbd_result hcbd_params_check(const hcbd_params *p, char *msg, size_t msg_size)
         if (p->density_norm == 2016)
             HCBD__CHECK(isfinite(p->density) && p->density > 0, "density",
                         p->density);
-        HCBD__CHECK(p->lagged_density == 0 || p->lagged_density == 1,
-                    "lagged_density", p->lagged_density);
     }
+    HCBD__CHECK(p->lagged_density == 0 || p->lagged_density == 1, "lagged_density",
+                p->lagged_density);
     if (p->potential == HCBD_POT_STAR) {
         HCBD__CHECK(isfinite(p->f) && p->f > 0, "f", p->f);
         HCBD__CHECK(isfinite(p->sigma) && p->sigma > 0, "sigma", p->sigma);
@@ -1796,7 +1797,6 @@ hcbd_result hcbd_world_init(hcbd_world *w, const hcbd_world_def *def, void *mem,
        range jumps through neighbours and means dt is unstable. */
     w->step_limit = 0.5 * w->cutmax;
     if (!hcbd__needs_pairs(p)) w->step_limit = HUGE_VAL;
-    if (p->guard_step != HCBD_AUTO) w->step_limit = p->guard_step;
     w->star_a = p->star_eps * (5.0 / 18.0) * pow(p->f, 1.5);
     w->star_b = 1.0 / (1.0 + 0.5 * sqrt(p->f));
     w->star_s = 0.5 * sqrt(p->f);
@@ -2039,6 +2039,8 @@ static hcbd_result hcbd__set_particles(hcbd_world *w, int n, hcbd__src *src)
     w->rho_current = 0;
     w->rho_valid = 0;
     w->n_rebuilds = 0;
+    /* no artificial particles before the first step draws them */
+    if (w->n_art > 0) memset(w->acol_start, 0, (size_t)(w->acol[0] * w->acol[1] + 1) * sizeof(int32_t));
     return HCBD_OK;
 }
 
@@ -2597,7 +2599,7 @@ static void hcbd__forces(hcbd_world *w)
     const int n = w->n, nt = w->p.threads;
     const int pot = w->p.potential != HCBD_POT_IDEAL, gibd = w->gibd;
     const int fric = gibd && !w->shardlow; /* else the sweep does them */
-    const int noise = w->has_noise, lag = w->p.lagged_density, flux = w->flux_on;
+    const int noise = w->has_noise, lag = w->gibd && w->p.lagged_density, flux = w->flux_on;
     const double vle = w->le_vjump;
     const hcbd__box box = hcbd__box_of(w);
     const double rc2 = w->p.rcut * w->p.rcut, Rc2 = w->p.Rc * w->p.Rc;
@@ -2748,7 +2750,9 @@ static hcbd_result hcbd__integrate(hcbd_world *w)
     const double dt = w->p.dt, dt_xi = dt / w->p.xi, sdr = sqrt(2.0 * w->p.kT * dt / w->p.xi);
     const double inv_m = w->inv_m, dt_m = dt * w->inv_m;
     const double L0 = w->p.L[0], L1 = w->p.L[1], L2 = w->p.L[2];
-    const double lim2 = w->step_limit * w->step_limit;
+    /* guard_step is read here, so it may change between steps */
+    const double lim = w->p.guard_step != HCBD_AUTO ? w->p.guard_step : w->step_limit,
+                 lim2 = lim * lim;
     const double gx = w->p.fext[0], gy = w->p.fext[1], gz = w->p.fext[2];
     const int track = w->has_pairs; /* displacement since the list build */
     const int fext_dr = w->fext_dr, walls = HCBD__WALLS && w->walls;
@@ -2922,7 +2926,7 @@ static hcbd_result hcbd__integrate(hcbd_world *w)
                           "step %lld: particle id %d moved more than the per-step "
                           "limit guard_step = %g (default: half the interaction range); "
                           "reduce dt = %g",
-                          (long long)w->step, bad_step, w->step_limit, dt);
+                          (long long)w->step, bad_step, lim, dt);
     return HCBD_OK;
 }
 
@@ -5516,8 +5520,9 @@ static hcbd_result hcbd__guard(hcbd_world *w)
                               (double)w->vz[i]);
         /* images within int32 with room for another box per step */
         if (!(x >= 0 && x < L0 && y >= 0 && y < L1 && z >= 0 && z < L2) ||
-            abs(w->ix[i]) > 0x3FFFFFFF || abs(w->iy[i]) > 0x3FFFFFFF ||
-            abs(w->iz[i]) > 0x3FFFFFFF)
+            w->ix[i] < -0x3FFFFFFF || w->ix[i] > 0x3FFFFFFF || w->iy[i] < -0x3FFFFFFF ||
+            w->iy[i] > 0x3FFFFFFF || w->iz[i] < -0x3FFFFFFF || w->iz[i] > 0x3FFFFFFF ||
+            !isfinite(w->lx[i]))
             return hcbd__fail(&w->err, HCBD_ERR_OUTSIDE, w->step, k,
                               "guard at step %lld: particle %d at (%.17g, %.17g, %.17g), "
                               "images (%d, %d, %d), is outside the box [0, %g) x [0, %g) "
@@ -5563,7 +5568,7 @@ static void hcbd__ck_u64(hcbd__ck *c, uint64_t *v)
     if (c->in) {
         uint64_t x = 0;
         if (c->bad || c->off > c->size || c->size - c->off < 8) {
-            c->bad = 1;
+            c->bad = 1; /* off stays where the data ran out */
             *v = 0;
             return;
         }
@@ -5744,8 +5749,8 @@ static void hcbd__prefix(hcbd_error *e, const char *a, const char *b)
 static hcbd_result hcbd__ck_bad(hcbd_error *e, const hcbd__ck *c, const char *where)
 {
     return hcbd__fail(e, HCBD_ERR_FORMAT, -1, -1,
-                      "checkpoint %s at byte %zu of the %zu-byte payload", where,
-                      c->off + HCBD__CK_HEAD, c->size);
+                      "checkpoint %s at byte %zu of the %zu-byte payload", where, c->off,
+                      c->size);
 }
 
 static hcbd_result hcbd__save_file(hcbd_error *e, const unsigned char *b, size_t n,
@@ -5988,8 +5993,16 @@ hcbd_result hcbd_checkpoint_load(hcbd_world *w, const void *buf, size_t size)
     w->le_drift = 0.0;
     /* a checksum-valid file from elsewhere may still hold nonsense */
     r = hcbd__guard(w);
-    if (r == HCBD_OK && (w->flux_on & ~1))
-        r = hcbd__fail(&w->err, HCBD_ERR_FORMAT, -1, -1, "flux_on = %d", w->flux_on);
+    if (r == HCBD_OK && ((w->flux_on & ~1) || !(w->le_offset >= 0 && w->le_offset < w->p.L[0])))
+        r = hcbd__fail(&w->err, HCBD_ERR_FORMAT, -1, -1, "flux_on = %d, le_offset = %g",
+                       w->flux_on, w->le_offset);
+    /* the artificial wall particles of the saved step, for observables
+       called before the next step draws its own */
+    if (r == HCBD_OK && HCBD__WALLS && w->n_art > 0) {
+        w->step--;
+        hcbd__wall_draw(w);
+        w->step++;
+    }
     if (r != HCBD_OK) {
         hcbd_error e = w->err;
         hcbd_world_destroy(w);
@@ -6102,7 +6115,7 @@ hcbd_result hcbd_xyz_offenders(const hcbd_world *w, FILE *f)
 
 int hcbd_thermo_header(char *buf, size_t size)
 {
-    return snprintf(buf, size, "# step time T px py pz pairs wall_pen ns_pstep");
+    return snprintf(buf, size, "# step time T px py pz list_pairs wall_pen ns_pstep");
 }
 
 int hcbd_thermo_line(const hcbd_world *w, double ns_pstep, char *buf, size_t size)
@@ -6299,7 +6312,8 @@ hcbd_result hcbd_hc_checkpoint_load(hcbd_hc_world *w, const void *buf, size_t si
     hcbd__ck_hc_state(&c, w);
     ready = w->ready;
     w->ready = 0;
-    if (c.bad || c.off != c.size || (ready & ~1) || (w->stress_on & ~1)) {
+    if (c.bad || c.off != c.size || (ready & ~1) || (w->stress_on & ~1) ||
+        !(w->le_offset >= 0 && w->le_offset < w->p.L[0])) {
         hcbd_error e = w->err;
         hcbd__ck_bad(&e, &c, c.bad ? "ends inside, or holds invalid, particle state"
                                    : c.off != c.size ? "has trailing bytes" : "has a bad flag");
@@ -6311,7 +6325,11 @@ hcbd_result hcbd_hc_checkpoint_load(hcbd_hc_world *w, const void *buf, size_t si
     r = hcbd__hc_guard(w);
     /* the densities and forces of the saved step, recomputed from the
        same positions and pairs (the pair merge keeps every saved pair) */
-    if (r == HCBD_OK && ready) r = hcbd__hc_prepare(w, w->step);
+    if (r == HCBD_OK && ready) {
+        const int64_t coincident = w->n_coincident; /* counted once, when saved */
+        r = hcbd__hc_prepare(w, w->step);
+        w->n_coincident = coincident;
+    }
     if (r != HCBD_OK) {
         hcbd_error e = w->err;
         hcbd_hc_world_destroy(w);

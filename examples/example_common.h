@@ -265,12 +265,12 @@ typedef struct {
 static inline int run_out_open(const config *c, run_out *o, const hcbd_world *w)
 {
     memset(o, 0, sizeof *o);
-    if (c->xyz[0] && !(o->xyz = fopen(c->xyz, "w"))) {
-        fprintf(stderr, "%s: cannot write %s\n", c->name, c->xyz);
-        return 0;
-    }
     if (c->xyz[0] && c->xyz_every == 0) {
         fprintf(stderr, "%s: xyz=%s needs xyz_every=k > 0\n", c->name, c->xyz);
+        return 0;
+    }
+    if (c->xyz[0] && !(o->xyz = fopen(c->xyz, "w"))) {
+        fprintf(stderr, "%s: cannot write %s\n", c->name, c->xyz);
         return 0;
     }
     if (c->thermo_every > 0) {

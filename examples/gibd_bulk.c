@@ -211,7 +211,7 @@ int main(int argc, char **argv)
     }
     if (!run_out_open(&c, &ro, &w)) return 2;
     blk_steps = c.steps / NB;
-    if (p->gdot != 0.0) hcbd_flux_enable(&w, 1);
+    if (p->gdot != 0.0 && !w.flux_on) hcbd_flux_enable(&w, 1); /* a restart keeps its sums */
     clock_gettime(CLOCK_MONOTONIC, &t0);
     for (b = 0; b < NB; ++b) {
         double Tb = 0, mfb = 0, effb = 0, sfb = 0;

@@ -937,7 +937,7 @@ void test_hc_xyz_frame(void)
     CHECK(nF == w.nf && nP == w.np && bad == 0, "%d F, %d P, %d bad lines", nF, nP, bad);
     fclose(f);
     hcbd_hc_thermo_line(&w, NAN, line, sizeof line);
-    CHECK(strstr(line, " -") != NULL && atoi(line) == 3, "thermo: %s", line);
+    CHECK(!strcmp(strrchr(line, ' '), " -") && atoi(line) == 3, "thermo: %s", line);
     hcbd_hc_world_destroy(&w);
 }
 #endif

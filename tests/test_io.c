@@ -466,8 +466,7 @@ void test_runtime_guards(void)
     hcbd_world_destroy(&w);
     /* guard_step: the smallest displacement limit stops the first step */
     if (!sc_make(&w, SC_SHARDLOW, 1)) return;
-    w.p.guard_step = 1e-6;
-    w.step_limit = 1e-6;
+    w.p.guard_step = 1e-6; /* read at every step, not only at creation */
     r = hcbd_step(&w, 1);
     CHECK(r == HCBD_ERR_UNSTABLE && strstr(w.err.msg, "guard_step"), "guard_step: %s: %s",
           hcbd_result_name(r), w.err.msg);
