@@ -822,33 +822,11 @@ void test_bad_input(void)
 enum { HB_DEF, HB_RP, HB_NBASE };
 static const char *bi_hbase_name[HB_NBASE] = {"", "reverse-Poiseuille "};
 
-/* 5 x 5 x 5 fluid lattice of spacing (4 pi / 3)^(1/3), h = 2, rc = 2.5 */
+/* the reduced scene of test.h on a 5 x 5 x 5 lattice */
 static hcbd_hc_def bi_hc_base(int base)
 {
-    hcbd_hc_def d = hcbd_hc_def_default();
-    hcbd_hc_params *p = &d.params;
-    const double a = 1.6119919540164696;
-    p->L[0] = p->L[1] = p->L[2] = 5 * a;
-    p->dt = 0.02;
-    p->kT = 1.0;
-    p->nbar = 3.0 / (4.0 * 3.14159265358979323846);
-    p->rho = p->nbar;
-    p->eta = p->rho;
-    p->P0 = 25.0 * p->rho / 7.0;
-    p->h = 2.0;
-    p->fluctuations = 1;
-    p->xi = 10.0;
-    p->sigma = 1.0;
-    p->rc = 2.5;
-    p->alpha = 50.0;
-    p->tau_lambda = 0.5;
-    p->p_kuhn = 100.0;
-    p->n_max = 5.0;
-    p->chi = 0.5;
-    p->seed = 7;
-    d.fluid_capacity = 125;
-    d.polymer_capacity = 200;
-    if (base == HB_RP) p->reverse_poiseuille = 1;
+    hcbd_hc_def d = hc_scene(5, 5, 5, 200);
+    if (base == HB_RP) d.params.reverse_poiseuille = 1;
     return d;
 }
 

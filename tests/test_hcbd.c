@@ -4,40 +4,8 @@
 #include "test.h"
 #if HCBD_MODEL == HCBD_MODEL_HCBD
 
-/* A reduced test scene: m = 1, kT = 1, nbar = 3/(4 pi) (lattice spacing
-   a = 1.612), h = 2, nu = 1, c_s = 5 (c_s h / nu = 10), dt = 0.02; the box
-   holds nx x ny x nz lattice sites exactly. */
+/* hc_scene (test.h) is the reduced scene */
 static const double PI_ = 3.14159265358979323846;
-static const double A_LAT = 1.6119919540164696; /* (4 pi / 3)^(1/3) */
-
-static hcbd_hc_def hc_scene(int nx, int ny, int nz, int npoly)
-{
-    hcbd_hc_def d = hcbd_hc_def_default();
-    hcbd_hc_params *p = &d.params;
-    p->L[0] = nx * A_LAT;
-    p->L[1] = ny * A_LAT;
-    p->L[2] = nz * A_LAT;
-    p->dt = 0.02;
-    p->kT = 1.0;
-    p->nbar = 3.0 / (4.0 * PI_);
-    p->rho = p->nbar;
-    p->eta = p->rho;            /* nu = 1 */
-    p->P0 = 25.0 * p->rho / 7.0; /* c_s = 5 */
-    p->h = 2.0;
-    p->fluctuations = 1;
-    p->xi = 10.0;
-    p->sigma = 1.0;
-    p->rc = 2.5;
-    p->alpha = 50.0;
-    p->tau_lambda = 0.5;
-    p->p_kuhn = 100.0;
-    p->n_max = 5.0;
-    p->chi = 0.5;
-    p->seed = 7;
-    d.fluid_capacity = nx * ny * nz;
-    d.polymer_capacity = npoly;
-    return d;
-}
 
 static int hc_make(hcbd_hc_world *w, const hcbd_hc_def *d, int npoly)
 {
