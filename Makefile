@@ -101,10 +101,10 @@ test-main: $(B)/run_tests $(B)/gibd_bulk | $(B)/logs
 	./$(B)/run_tests $(call LOG,main)
 
 test-float: $(B)/run_tests_float | $(B)/logs
-	./$(B)/run_tests_float test_determinism test_checkpoint $(call LOG,float)
+	./$(B)/run_tests_float test_determinism test_golden test_checkpoint $(call LOG,float)
 
 test-gibd: $(B)/run_tests_gibd | $(B)/logs
-	./$(B)/run_tests_gibd test_determinism test_bad_param test_bad_input test_model_switch test_momentum test_checkpoint test_runtime $(call LOG,gibd)
+	./$(B)/run_tests_gibd test_determinism test_golden test_bad_param test_bad_input test_model_switch test_momentum test_checkpoint test_runtime $(call LOG,gibd)
 
 test-hcbd: $(B)/run_tests_hcbd | $(B)/logs
 	./$(B)/run_tests_hcbd test_hc_ $(call LOG,hcbd)

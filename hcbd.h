@@ -39,7 +39,8 @@
                    checkpoint loaders and file functions (default malloc/free).
                    Nothing else in the library allocates.
      HCBD_LOAD_MAX_BYTES  largest world a checkpoint may ask the loader to
-                   allocate (default: no limit; the fuzz harness caps it).
+                   allocate (default 8 GiB, 1 GiB with a 32-bit size_t;
+                   the fuzz harness caps it lower).
 
    EXAMPLE (20 lines)
        hcbd_world_def def = hcbd_world_def_default();   // 2014/2016 stars
@@ -227,7 +228,8 @@ typedef struct hcbd_params {
     double table_r0;
     double fext[3];       /* constant external force on every particle      */
     int fext_background_only; /* 1: fext drives only the background
-                             velocity, not the particle displacement        */
+                             velocity, not the particle displacement
+                             (GI-BD only: refused with classical BD)       */
     double gdot;          /* Lees-Edwards shear rate (flow x, gradient y);
                              0 switches it off.  GI-BD only.                 */
     /* Walls normal to y (HCBD_MODEL_WALLED; MODEL 4).  wall_thickness > 0
@@ -343,6 +345,8 @@ typedef struct hcbd_world {
     hcbd__zig *zig;
     uint64_t seed_key;
     int list_valid, rho_current, rho_valid;
+    uint64_t live;        /* HCBD__LIVE while initialised: loaders replace
+                             a live world only once the new one is built */
     void *owned_mem;
 } hcbd_world;
 
@@ -401,6 +405,16 @@ hcbd_result hcbd_friction_average(hcbd_world *w, int nk, double out[3]);
 hcbd_result hcbd_transverse_current(const hcbd_world *w, int nk, double out[12]);
 /* Total potential energy of the pair potential. */
 double hcbd_potential_energy(hcbd_world *w);
+/* Configurational temperature (Rugh 1997; Butler, Ayton, Jepps and Evans
+   1998), kT_conf = <|grad U|^2> / <lap U>, of the pair potential and the
+   Gaussian walls (the constant body force is not a potential in a
+   periodic box and is left out): out[0] = sum_i |F_i|^2, out[1] =
+   sum_i lap_i U at the present positions; average each over samples and
+   divide.  It reads the statics alone, independently of the background
+   velocities: equal to kT in a Boltzmann state, above it by the O(dt)
+   excess of an explicit step.  Uses the world's scratch array (no
+   allocation); HCBD_ERR_STATE without a potential. */
+hcbd_result hcbd_config_temperature(hcbd_world *w, double out[2]);
 /* Shear-stress flux, accumulated every step while enabled (off by default,
    and then it costs nothing).  hcbd_flux_enable(w, 1) clears the sums and
    starts; hcbd_flux_read gives the averages over the steps since:
@@ -697,6 +711,8 @@ typedef struct hcbd_hc_world {
     double stress_sum[HCBD_HC_NSTRESS];
     hcbd__zig *zig;
     int ready;                   /* densities, pairs and forces are current */
+    uint64_t live;        /* HCBD__LIVE while initialised: loaders replace
+                             a live world only once the new one is built */
     void *owned_mem;
 } hcbd_hc_world;
 
@@ -727,7 +743,8 @@ hcbd_result hcbd_hc_refresh(hcbd_hc_world *w);
 /* Advances nsteps.  HCBD_ERR_PARAM when phi >= 1 or a polymer has no fluid
    blob within rc, HCBD_ERR_CAPACITY on pair overflow, HCBD_ERR_UNSTABLE
    when a fluid blob moves more than h/2 or a polymer rc/4 in one step or a
-   density leaves [nbar/2, 3 nbar/2], HCBD_ERR_NONFINITE on non-finite state. */
+   fluid density n_i leaves (nbar/3, 3 nbar), HCBD_ERR_NONFINITE on non-finite
+   state. */
 hcbd_result hcbd_hc_step(hcbd_hc_world *w, int nsteps);
 
 /* Pair variable of polymers a, b (any order); HCBD_ERR_STATE if the pair
@@ -791,6 +808,9 @@ double hcbd_flory_g1(double phi, double chi);
    version HCBD_ERR_VERSION, another model, world kind or HCBD_REAL
    HCBD_ERR_MODEL.  Loading never reads past size.  load creates the world
    (free it with hcbd_world_destroy); it allocates like hcbd_world_create.
+   w may be a live world: the new one is built aside and replaces it (and
+   frees it) only on success, so a failed load leaves it as it was, with
+   only w->err set.
    hcbd_save writes path.tmp and renames it, so a crash while writing never
    leaves a truncated checkpoint under path. */
 #define HCBD_CHECKPOINT_VERSION 1
@@ -905,6 +925,7 @@ extern "C" {
 #endif
 
 /* >>errors */
+#define HCBD__LIVE 0x6863626421766c65ULL /* marks an initialised world */
 const char *hcbd_result_name(hcbd_result r)
 {
     switch (r) {
@@ -1120,6 +1141,9 @@ hcbd_result hcbd_params_check(const hcbd_params *p, char *msg, size_t msg_size)
             }
     }
     HCBD__CHECK(p->fext_background_only == 0 || p->fext_background_only == 1,
+                "fext_background_only", p->fext_background_only);
+    /* classical BD has no background velocity for the force to drive */
+    HCBD__CHECK(!p->fext_background_only || p->dynamics == HCBD_DYN_GIBD,
                 "fext_background_only", p->fext_background_only);
     HCBD__CHECK(isfinite(p->wall_thickness) && p->wall_thickness >= 0, "wall_thickness",
                 p->wall_thickness);
@@ -1840,6 +1864,7 @@ hcbd_result hcbd_world_init(hcbd_world *w, const hcbd_world_def *def, void *mem,
     }
     hcbd__zig_init(w->zig);
     w->n = 0;
+    w->live = HCBD__LIVE;
     return HCBD_OK;
 }
 
@@ -3157,6 +3182,80 @@ double hcbd_potential_energy(hcbd_world *w)
     return c.e;
 }
 
+/* U''(r) + 2 U'(r)/r of the pair potential: the pair's share of lap_i U.
+   Star (2014 eq. 28): -a/r^2 inside the core; outside U = A e^(-k r)/r,
+   k = s/sigma, for which U'' + 2U'/r = k^2 U.  Table: -dF/dr - 2F/r with
+   the slope of the interpolated segment. */
+static double hcbd__pair_lap(const hcbd_world *w, double r)
+{
+    if (w->p.potential == HCBD_POT_STAR) {
+        if (r <= w->p.sigma) return -w->star_a / (r * r);
+        return w->star_s_sigma * w->star_s_sigma * hcbd__pair_energy(w, r);
+    } else {
+        double u = (r - w->p.table_r0) * w->tab_inv_dr;
+        int k;
+        if (u < 0) u = 0;
+        k = (int)u;
+        if (k > w->p.table_n - 2) k = w->p.table_n - 2;
+        return -(w->tab_F[k + 1] - w->tab_F[k]) * w->tab_inv_dr - 2.0 * hcbd__table(w, w->tab_F, r) / r;
+    }
+}
+
+typedef struct { hcbd_world *w; double *acc; int c; double lap; } hcbd__tconf_ctx;
+
+static void hcbd__tconf_fn(void *c, int i, int j, double dx, double dy, double dz, double r2)
+{
+    hcbd__tconf_ctx *t = (hcbd__tconf_ctx *)c;
+    const double r = sqrt(r2), d = t->c == 0 ? dx : (t->c == 1 ? dy : dz);
+    const double F = hcbd__force_over_r(t->w, r, r2) * d;
+    t->acc[i] += F;
+    t->acc[j] -= F;
+    if (t->c == 0) t->lap += 2.0 * hcbd__pair_lap(t->w, r);
+}
+
+hcbd_result hcbd_config_temperature(hcbd_world *w, double out[2])
+{
+    hcbd__tconf_ctx t;
+    hcbd_result r;
+    int i;
+    if (!w || !out) return HCBD_ERR_NULL;
+    hcbd__clear(&w->err);
+    if (w->p.potential == HCBD_POT_IDEAL)
+        return hcbd__fail(&w->err, HCBD_ERR_STATE, w->step, -1,
+                          "configurational temperature: potential = ideal has no forces");
+    if (w->n < 1)
+        return hcbd__fail(&w->err, HCBD_ERR_STATE, w->step, -1, "the world has no particles");
+    out[0] = out[1] = 0.0;
+    t.w = w;
+    t.acc = (double *)w->scratch;
+    t.lap = 0.0;
+    /* one component at a time: the scratch array holds n doubles */
+    for (t.c = 0; t.c < 3; ++t.c) {
+        for (i = 0; i < w->n; ++i) t.acc[i] = 0.0;
+        if ((r = hcbd__for_pairs(w, w->p.rcut, hcbd__tconf_fn, &t)) != HCBD_OK) return r;
+        for (i = 0; i < w->n; ++i) {
+            double F = t.acc[i];
+            if (t.c == 1 && HCBD__WALLS && w->has_gauss) {
+                /* phi = a e^(-b s^2) per plane: F = 2 b s phi, phi'' = (4 b^2 s^2 - 2 b) phi */
+                const double Ly = w->p.L[1];
+                const double planes[2] = {w->p.wall_thickness - w->p.wall_plane,
+                                          Ly - w->p.wall_thickness + w->p.wall_plane};
+                int k;
+                for (k = 0; k < 2; ++k) {
+                    double sk = w->y[i] - planes[k], ph;
+                    sk -= Ly * floor(sk / Ly + 0.5);
+                    ph = w->p.wall_a * exp(-w->p.wall_b * sk * sk);
+                    F += 2.0 * w->p.wall_b * sk * ph;
+                    out[1] += (4.0 * w->p.wall_b * w->p.wall_b * sk * sk - 2.0 * w->p.wall_b) * ph;
+                }
+            }
+            out[0] += F * F;
+        }
+    }
+    out[1] += t.lap;
+    return HCBD_OK;
+}
+
 typedef struct { hcbd_world *w; double k[3]; double s[3]; } hcbd__fric_ctx;
 
 static void hcbd__fric_fn(void *c, int i, int j, double dx, double dy, double dz,
@@ -4234,6 +4333,7 @@ hcbd_result hcbd_hc_world_init(hcbd_hc_world *w, const hcbd_hc_def *def, void *m
     hcbd__grid_stencils(&w->gf, w->le_on);
     hcbd__grid_stencils(&w->gp, w->le_on);
     hcbd__zig_init(w->zig);
+    w->live = HCBD__LIVE;
     return HCBD_OK;
 }
 
@@ -4861,11 +4961,11 @@ static inline double hcbd__m4d(double r, double h, double c1)
 }
 
 /* Morris friction f_ij = -2 eta w'/(n_i n_j r) of a fluid pair, with its
-   r -> 0 limit. */
+   r -> 0 limit: -w'(r)/r = c1 (12 - 9 q)/h for q < 1, so 12 c1/h. */
 static inline double hcbd__morris_f(double two_eta, double r, double h, double c1, double ni,
                                     double nj)
 {
-    return r > 0 ? -two_eta * hcbd__m4d(r, h, c1) / (ni * nj * r) : two_eta * 3.0 * c1 / (h * ni * nj);
+    return r > 0 ? -two_eta * hcbd__m4d(r, h, c1) / (ni * nj * r) : two_eta * 12.0 * c1 / (h * ni * nj);
 }
 
 /* HCBD_PAIR_SHARDLOW for the fluid: each pair's Morris friction and noise
@@ -5548,7 +5648,10 @@ static hcbd_result hcbd__guard(hcbd_world *w)
    both writes (out != NULL), measures (out == in == NULL) and reads, so
    the two directions cannot disagree. */
 #ifndef HCBD_LOAD_MAX_BYTES
-#define HCBD_LOAD_MAX_BYTES ((size_t)-1) /* fuzzers cap the world a file may ask for */
+/* a forged header of a few bytes must not make the loader ask for
+   terabytes; 8 GiB (1 GiB where size_t has 32 bits) holds some 10^7
+   particles */
+#define HCBD_LOAD_MAX_BYTES ((size_t)1 << (sizeof(size_t) >= 8 ? 33 : 30))
 #endif
 #define HCBD__CK_HEAD 56
 #define HCBD__CK_WORLD 1
@@ -5923,7 +6026,8 @@ hcbd_result hcbd_checkpoint_save(hcbd_world *w, void *buf, size_t size)
 
 /* The definition is read into a scratch world struct first (it only
    holds values), then the real world is created from it. */
-hcbd_result hcbd_checkpoint_load(hcbd_world *w, const void *buf, size_t size)
+/* Loads into a fresh world w (its old contents are not looked at). */
+static hcbd_result hcbd__ck_load(hcbd_world *w, const void *buf, size_t size)
 {
     hcbd__ck c;
     hcbd_world_def def;
@@ -6031,19 +6135,48 @@ hcbd_result hcbd_save(hcbd_world *w, const char *path)
     return r;
 }
 
+/* The loaders build the new world aside: on success it replaces w (a live
+   w is destroyed first), on failure a live w keeps its state and only its
+   error changes; a w that is not live (never initialised, or destroyed)
+   is zeroed and carries the error. */
+#define HCBD__ADOPT(W, T, R, DESTROY)                                         \
+    do {                                                                       \
+        if ((R) == HCBD_OK) {                                                  \
+            if ((W)->live == HCBD__LIVE) DESTROY(W);                           \
+            *(W) = *(T);                                                       \
+        } else if ((W)->live == HCBD__LIVE) {                                  \
+            (W)->err = (T)->err;                                               \
+        } else {                                                               \
+            memset((W), 0, sizeof *(W));                                       \
+            (W)->err = (T)->err;                                               \
+        }                                                                      \
+    } while (0)
+
+hcbd_result hcbd_checkpoint_load(hcbd_world *w, const void *buf, size_t size)
+{
+    hcbd_world t;
+    hcbd_result r;
+    if (!w) return HCBD_ERR_NULL;
+    r = hcbd__ck_load(&t, buf, size);
+    HCBD__ADOPT(w, &t, r, hcbd_world_destroy);
+    return r;
+}
+
 hcbd_result hcbd_load(hcbd_world *w, const char *path)
 {
     unsigned char *b;
     size_t n;
     hcbd_result r;
+    hcbd_world t;
     if (!w) return HCBD_ERR_NULL;
-    memset(w, 0, sizeof *w);
-    hcbd__clear(&w->err);
-    if (!path) return hcbd__fail(&w->err, HCBD_ERR_NULL, -1, -1, "path is NULL");
-    if ((r = hcbd__read_file(&w->err, path, &b, &n)) != HCBD_OK) return r;
-    r = hcbd_checkpoint_load(w, b, n);
-    HCBD_FREE(b);
-    if (r != HCBD_OK) hcbd__prefix(&w->err, path, ": ");
+    memset(&t, 0, sizeof t);
+    if (!path) r = hcbd__fail(&t.err, HCBD_ERR_NULL, -1, -1, "path is NULL");
+    else if ((r = hcbd__read_file(&t.err, path, &b, &n)) == HCBD_OK) {
+        r = hcbd__ck_load(&t, b, n);
+        HCBD_FREE(b);
+        if (r != HCBD_OK) hcbd__prefix(&t.err, path, ": ");
+    }
+    HCBD__ADOPT(w, &t, r, hcbd_world_destroy);
     return r;
 }
 
@@ -6272,7 +6405,7 @@ hcbd_result hcbd_hc_checkpoint_save(hcbd_hc_world *w, void *buf, size_t size)
     return HCBD_OK;
 }
 
-hcbd_result hcbd_hc_checkpoint_load(hcbd_hc_world *w, const void *buf, size_t size)
+static hcbd_result hcbd__hc_ck_load(hcbd_hc_world *w, const void *buf, size_t size)
 {
     hcbd__ck c;
     hcbd_hc_def def;
@@ -6358,19 +6491,31 @@ hcbd_result hcbd_hc_save(hcbd_hc_world *w, const char *path)
     return r;
 }
 
+hcbd_result hcbd_hc_checkpoint_load(hcbd_hc_world *w, const void *buf, size_t size)
+{
+    hcbd_hc_world t;
+    hcbd_result r;
+    if (!w) return HCBD_ERR_NULL;
+    r = hcbd__hc_ck_load(&t, buf, size);
+    HCBD__ADOPT(w, &t, r, hcbd_hc_world_destroy);
+    return r;
+}
+
 hcbd_result hcbd_hc_load(hcbd_hc_world *w, const char *path)
 {
     unsigned char *b;
     size_t n;
     hcbd_result r;
+    hcbd_hc_world t;
     if (!w) return HCBD_ERR_NULL;
-    memset(w, 0, sizeof *w);
-    hcbd__clear(&w->err);
-    if (!path) return hcbd__fail(&w->err, HCBD_ERR_NULL, -1, -1, "path is NULL");
-    if ((r = hcbd__read_file(&w->err, path, &b, &n)) != HCBD_OK) return r;
-    r = hcbd_hc_checkpoint_load(w, b, n);
-    HCBD_FREE(b);
-    if (r != HCBD_OK) hcbd__prefix(&w->err, path, ": ");
+    memset(&t, 0, sizeof t);
+    if (!path) r = hcbd__fail(&t.err, HCBD_ERR_NULL, -1, -1, "path is NULL");
+    else if ((r = hcbd__read_file(&t.err, path, &b, &n)) == HCBD_OK) {
+        r = hcbd__hc_ck_load(&t, b, n);
+        HCBD_FREE(b);
+        if (r != HCBD_OK) hcbd__prefix(&t.err, path, ": ");
+    }
+    HCBD__ADOPT(w, &t, r, hcbd_hc_world_destroy);
     return r;
 }
 

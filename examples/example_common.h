@@ -231,13 +231,18 @@ static void make_figures(const config *c)
 }
 
 /* Mean and standard error of per-block values. */
-static inline void mean_err(const double *x, int n, double *m, double *e)
+/* Mean and standard error of the finite values of x[0..n) (a block whose
+   estimate could not be made is NaN and left out); returns how many were
+   used.  NaN mean without any, NaN error with fewer than two. */
+static inline int mean_err(const double *x, int n, double *m, double *e)
 {
     double s = 0, s2 = 0;
-    int k;
-    for (k = 0; k < n; ++k) { s += x[k]; s2 += x[k] * x[k]; }
-    *m = s / n;
-    *e = n > 1 ? sqrt(fmax(s2 / n - *m * *m, 0) / (n - 1)) : 0;
+    int k, used = 0;
+    for (k = 0; k < n; ++k)
+        if (isfinite(x[k])) { s += x[k]; s2 += x[k] * x[k]; ++used; }
+    *m = used ? s / used : NAN;
+    *e = used > 1 ? sqrt(fmax(s2 / used - *m * *m, 0) / (used - 1)) : NAN;
+    return used;
 }
 
 /* Progress on stderr: a rewritten line on a terminal, else one per call. */

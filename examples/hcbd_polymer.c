@@ -14,8 +14,8 @@
      Fig. 4  Lees-Edwards flow curve, eta = S_yx / gdot split into the fluid
              (kinetic, pressure, viscous), polymer (Flory-Huggins +
              transient pairs) and interaction (coupling) parts, with block
-             errors; Carreau fit of the total with eta_inf fixed at the
-             fluid's eta (2018 eq. 36)                         flowcurve.csv
+             errors; Carreau fit of the total with eta_inf fixed at
+             0.9 mPa s as in 2018 Table II (key eta_inf; eq. 36)                         flowcurve.csv
      Fig. 5  reverse Poiseuille (+g above L/2, -g below): slab profiles of
              the fluid velocity v_x and the polymer drift velocity u_x =
              v(r_a) + F_a/xi (whose mean is the polymers' mean velocity)
@@ -106,6 +106,8 @@ static struct {
     double tau_si, alpha, P0_si, g_si, L[3];  /* alpha in kT; g_si 0: automatic */
     int alpha_given;
     int le_steps, rp_steps, eq_steps, nblk, nslab;
+    double eta_inf_mpas;      /* Carreau eta_inf, mPa s (Table II: 0.9)    */
+    double eta_inf;           /* the same in reduced units                */
 } opt;
 
 /* Progress over all runs, reported at most every few seconds. */
@@ -158,6 +160,7 @@ static void usage(void)
             "  tau_lambda=s        relaxation time of the transient pairs, seconds\n"
             "  alpha=a             transient strength in kT (default 500 x (1 s / tau_lambda))\n"
             "  P0=Pa               Tait pressure coefficient (c_s = sqrt(7 P0 / rho))\n"
+            "  eta_inf=0.9         Carreau eta_inf in mPa s, held fixed in the fit (Table II)\n"
             "  g=m/s^2             reverse-Poiseuille body force (default: rho g Ly / 4, the\n"
             "                      stress at the edges of the halves, is the one measured at\n"
             "                      the largest gdot)\n"
@@ -199,6 +202,7 @@ static int own_key(config *c, const char *key, const char *v)
     if (!strcmp(key, "tau_lambda")) return positive(c, key, v, &opt.tau_si);
     if (!strcmp(key, "alpha")) return (opt.alpha_given = positive(c, key, v, &opt.alpha));
     if (!strcmp(key, "P0")) return positive(c, key, v, &opt.P0_si);
+    if (!strcmp(key, "eta_inf")) return positive(c, key, v, &opt.eta_inf_mpas);
     if (!strcmp(key, "g")) return positive(c, key, v, &opt.g_si);
     if (!strcmp(key, "Lx") || !strcmp(key, "Ly") || !strcmp(key, "Lz")) {
         double *x = &opt.L[key[1] - 'x'];
@@ -570,7 +574,7 @@ static void rp_analyse(const conc_run *cr, const hcbd_hc_params *p, rp_metrics *
     m->vc_err = 0.5 * hypot(best_err[0], best_err[1]);
     m->vc_polymer = 0.5 * (cr->prof_p[SP * q3 + SP_U] - cr->prof_p[SP * q1 + SP_U]);
     m->vn_c = newton_speed(cr->g, nu0, W, 0.5 * W);
-    if (cr->fitted) m->vcar_c = carreau_speed(cr->pc, p->eta, p->rho * cr->g, W, 0.5 * W);
+    if (cr->fitted) m->vcar_c = carreau_speed(cr->pc, opt.eta_inf, p->rho * cr->g, W, 0.5 * W);
     for (s = 0; s < ns; ++s) {
         const double *a = cr->prof_f + SF * s, *b = cr->prof_p + SP * s;
         double y = a[0], sg = y >= W ? 1 : -1, yh = y >= W ? y - W : y;
@@ -712,7 +716,7 @@ static void write_profiles(const config *c, const conc_run *cr, const hcbd_hc_pa
             fprintf(f, "%.6g,%.3g,%.6g,%.3g,%.6g,", a[1] / nfm, a[2] / nfm, b[1] / npm, b[2] / npm, b0[1] / npm);
             fprintf(f, "%.6g,%.3g,%.6g,%.3g,%.6g,%.3g,%.6g,", a[SF_V], a[SF_V + 1], b[SP_U], b[SP_U + 1],
                     b[SP_SLIP], b[SP_SLIP + 1], sg * newton_speed(cr->g, nu0, W, yh));
-            if (cr->fitted) fprintf(f, "%.6g", sg * carreau_speed(cr->pc, p->eta, p->rho * cr->g, W, yh));
+            if (cr->fitted) fprintf(f, "%.6g", sg * carreau_speed(cr->pc, opt.eta_inf, p->rho * cr->g, W, yh));
             fprintf(f, ",%d\n", m->populated[s]);
         }
         fclose(f);
@@ -735,7 +739,8 @@ static void print_summary(const conc_run *cr, const hcbd_hc_params *p, const rp_
     int k;
     printf("# summary C=%g (C/C* = %g, %d polymers; reduced units: sigma, kT, time unit %g s; "
            "viscosities also in mPa s)\n", cr->C, cr->C, cr->np, u->t);
-    printf("eta_inf=%.6g\neta_inf_mPas=%.6g\n", p->eta, p->eta * u->eta * 1e3);
+    printf("eta_fluid=%.6g\neta_fluid_mPas=%.6g\n", p->eta, p->eta * u->eta * 1e3);
+    printf("eta_inf=%.6g\neta_inf_mPas=%.6g\n", opt.eta_inf, opt.eta_inf * u->eta * 1e3);
     if (cr->fitted) {
         printf("eta0=%.6g\neta0_err=%.3g\neta0_mPas=%.6g\neta0_over_eta=%.4g\n", cr->pc[0], cr->pe[0],
                cr->pc[0] * u->eta * 1e3, cr->pc[0] / p->eta);
@@ -775,7 +780,7 @@ static void print_summary(const conc_run *cr, const hcbd_hc_params *p, const rp_
 static void write_plots(const config *c, const conc_run *runs, const hcbd_hc_params *p, double Ly,
                         const units *u)
 {
-    const double ei = p->eta * u->eta * 1e3;
+    const double ei = opt.eta_inf * u->eta * 1e3;
     FILE *f = open_out(c, "plots.gp");
     int ci, k;
     if (!f) return;
@@ -871,6 +876,7 @@ int main(int argc, char **argv)
         opt.nblk = 5;
     }
     opt.nslab = 18;
+    opt.eta_inf_mpas = 0.9;
     snprintf(c.out, sizeof c.out, "out/hcbd_polymer");
     if (!parse_args(argc, argv, &c, own_key, usage)) return 2;
     for (k = 1; k < opt.ngdot; ++k) /* ascending: the summary compares the ends */
@@ -898,6 +904,7 @@ int main(int argc, char **argv)
     u.eta = u.M / (u.len * u.t);
     u.P = u.M / (u.len * u.t * u.t);
     u.acc = u.len / (u.t * u.t);
+    opt.eta_inf = opt.eta_inf_mpas * 1e-3 / u.eta;
     par = tab;
     memcpy(p->L, opt.L, sizeof opt.L);
     p->fluctuations = 0; /* the paper's choice with polymers present (sec. IV A 3) */
@@ -970,9 +977,9 @@ int main(int argc, char **argv)
         }
         for (r = 0; r < opt.ngdot; ++r) e[r] = cr->err[0][r] > 0 ? cr->err[0][r] : 1e-12 * fabs(cr->eta[0][r]);
         cr->fitted = opt.ngdot >= 4 &&
-                     hcbd_carreau_fit(g_red, cr->eta[0], e, opt.ngdot, p->eta, 0, cr->pc, cr->pe, &cr->chi2) ==
+                     hcbd_carreau_fit(g_red, cr->eta[0], e, opt.ngdot, opt.eta_inf, 0, cr->pc, cr->pe, &cr->chi2) ==
                          HCBD_OK &&
-                     cr->pc[0] > p->eta && cr->pc[1] > 0 && cr->pc[2] >= 0;
+                     cr->pc[0] > opt.eta_inf && cr->pc[1] > 0 && cr->pc[2] >= 0;
         /* the fit's eta0 where it is usable, else the slowest rate's viscosity */
         cr->eta0 = cr->fitted ? cr->pc[0] : cr->eta[0][0];
         /* the stress at the edges of the halves, rho g Ly / 4, is the one

@@ -31,6 +31,10 @@ void test_bad_parameters(void)
     e = d; e.params.density_norm = 2015; expect(e, HCBD_ERR_PARAM, "density_norm");
     e = d; e.params.threads = 0; expect(e, HCBD_ERR_PARAM, "threads");
     e = d; e.params.fext[2] = NAN; expect(e, HCBD_ERR_PARAM, "fext[2]");
+    /* classical BD has no background for the force to drive: once the
+       force was silently dropped */
+    e = d; e.params.dynamics = HCBD_DYN_BD; e.params.fext[0] = 1.0; e.params.fext_background_only = 1;
+    expect(e, HCBD_ERR_PARAM, "fext_background_only");
     e = d; e.params.L[2] = 5.0; expect(e, HCBD_ERR_BOX, "L[2]");
     e = d; e.capacity = 0; expect(e, HCBD_ERR_PARAM, "capacity");
     e = d; e.params.potential = HCBD_POT_TABLE; expect(e, HCBD_ERR_NULL, "table_F");

@@ -502,6 +502,90 @@ void test_hc_bad_inputs(void)
 /* The fluid scene of the statistical tests: blob mass 100 (thermal
    velocity 0.1, density fluctuations ~ sqrt(kT/(m c_s^2)) = 4 %), nu = 1,
    c_s = 2.5, h = 2; dt = 0.04 is a fifth of the acoustic limit. */
+/* Two fluid blobs on one point feel the r -> 0 limit of the Morris
+   friction, -w'(r)/r -> 12 c1/h (it was once 3 c1/h, a quarter): one
+   step from coincident blobs equals one step with them 1e-7 apart, in
+   both pair integrators (the limit cases differ by ~5e-3 in v). */
+void test_hc_coincident_blobs(void)
+{
+    int integ;
+    for (integ = 0; integ < 2; ++integ) {
+        double v_out[2][5 * 5 * 5 * 3];
+        int c;
+        for (c = 0; c < 2; ++c) {
+            hcbd_hc_def d = hc_scene(5, 5, 5, 0);
+            hcbd_hc_world w;
+            double xyz[3 * 125], v[3 * 125];
+            int i;
+            d.params.fluctuations = 0;
+            d.params.pair_integrator = integ ? HCBD_PAIR_SHARDLOW : HCBD_PAIR_EULER;
+            if (!hc_make(&w, &d, 0)) return;
+            for (i = 0; i < w.nf; ++i) {
+                xyz[3 * i] = w.fx[i]; xyz[3 * i + 1] = w.fy[i]; xyz[3 * i + 2] = w.fz[i];
+                v[3 * i] = v[3 * i + 1] = v[3 * i + 2] = 0;
+            }
+            xyz[3] = xyz[0] + (c ? 1e-7 : 0.0);
+            xyz[4] = xyz[1];
+            xyz[5] = xyz[2];
+            v[0] = 1.0;
+            v[3] = -1.0;
+            if (hcbd_hc_set_fluid(&w, w.nf, xyz, v) != HCBD_OK) {
+                CHECK(0, "set_fluid: %s", w.err.msg);
+                hcbd_hc_world_destroy(&w);
+                return;
+            }
+            hc_run(&w, 1);
+            for (i = 0; i < w.nf; ++i) {
+                v_out[c][3 * i] = w.fvx[i]; v_out[c][3 * i + 1] = w.fvy[i]; v_out[c][3 * i + 2] = w.fvz[i];
+            }
+            hcbd_hc_world_destroy(&w);
+        }
+        {
+            double worst = 0;
+            int k;
+            for (k = 0; k < 3 * 125; ++k)
+                if (fabs(v_out[0][k] - v_out[1][k]) > worst) worst = fabs(v_out[0][k] - v_out[1][k]);
+            NOTE("%s: coincident vs 1e-7 apart, largest velocity difference %.2e (relative "
+                 "velocity change of the pair %.4f)", integ ? "Shardlow" : "Euler", worst,
+                 2.0 - (v_out[0][0] - v_out[0][3]));
+            CHECK(worst < (sizeof(hcbd_real) == 4 ? 1e-5 : 1e-6), "r -> 0 friction limit: %g", worst);
+            CHECK(2.0 - (v_out[0][0] - v_out[0][3]) > 1e-3, "the pair's friction acted");
+        }
+    }
+}
+
+/* The fluid density guard stops a step where some n_i leaves
+   (nbar/3, 3 nbar), as documented: a uniform lattice whose density is
+   2.9 or 3.1 (1/2.9, 1/3.1) times the nominal nbar. */
+void test_hc_density_guard(void)
+{
+    const double f[4] = {2.9, 3.1, 1 / 2.9, 1 / 3.1};
+    double n0;
+    int k;
+    {
+        hcbd_hc_def d = hc_scene(5, 5, 5, 0);
+        hcbd_hc_world w;
+        if (!hc_make(&w, &d, 0)) return;
+        hcbd_hc_refresh(&w);
+        n0 = w.fn[0];
+        hcbd_hc_world_destroy(&w);
+    }
+    for (k = 0; k < 4; ++k) {
+        hcbd_hc_def d = hc_scene(5, 5, 5, 0);
+        hcbd_hc_world w;
+        hcbd_result r;
+        d.params.nbar = n0 / f[k];
+        d.params.fluctuations = 0;
+        if (!hc_make(&w, &d, 0)) return;
+        r = hcbd_hc_step(&w, 1);
+        if (k % 2 == 0) CHECK(r == HCBD_OK, "n/nbar = %g refused: %s", f[k], w.err.msg);
+        else
+            CHECK(r == HCBD_ERR_UNSTABLE && strstr(w.err.msg, "density"),
+                  "n/nbar = %g: %s (%s)", f[k], hcbd_result_name(r), w.err.msg);
+        hcbd_hc_world_destroy(&w);
+    }
+}
+
 static hcbd_hc_def fluid_scene(int nx, int ny, int nz, double dt)
 {
     hcbd_hc_def d = hc_scene(nx, ny, nz, 0);

@@ -239,6 +239,34 @@ void test_checkpoint_rejects_bad_files(void)
         reseal(bad, size);
         expect_load(bad, size, HCBD_ERR_OUTSIDE, "outside", "x outside the box");
     }
+    /* a forged capacity of 5e8 particles (a small file asking for
+       hundreds of GB) is refused before anything is allocated */
+    memcpy(bad, buf, size);
+    put64(bad + 56, 500000000);
+    reseal(bad, size);
+    expect_load(bad, size, HCBD_ERR_MEMORY, "HCBD_LOAD_MAX_BYTES", "huge capacity");
+    { /* into a live world: a failed load leaves it as it was, a good one
+         replaces it (the old memory is freed: the ASan build checks leaks) */
+        hcbd_world b;
+        uint64_t cb;
+        int64_t sb;
+        if (sc_make(&b, SC_BD, 1)) {
+            run(&b, 3);
+            cb = hcbd_state_checksum(&b);
+            sb = b.step;
+            memcpy(bad, buf, size);
+            bad[size / 2] ^= 1;
+            CHECK(hcbd_checkpoint_load(&b, bad, size) == HCBD_ERR_FORMAT, "bad file loaded");
+            CHECK(hcbd_load(&b, io_path("missing.hcbd")) == HCBD_ERR_IO, "missing file loaded");
+            CHECK(b.step == sb && hcbd_state_checksum(&b) == cb && b.n == 512,
+                  "a failed load changed the live world");
+            CHECK(run(&b, 1), "the live world no longer steps after a failed load");
+            CHECK(hcbd_checkpoint_load(&b, buf, size) == HCBD_OK, "%s", b.err.msg);
+            CHECK(hcbd_state_checksum(&b) == hcbd_state_checksum(&w) && b.step == w.step,
+                  "load into a live world did not give the saved state");
+            hcbd_world_destroy(&b);
+        }
+    }
     /* files: a round trip, a missing file, an unwritable path */
     snprintf(path, sizeof path, "%s", io_path("ck.hcbd"));
     CHECK(hcbd_save(&w, path) == HCBD_OK, "%s", w.err.msg);
