@@ -31,7 +31,7 @@ HC_EXAMPLES := $(B)/hcbd_fluid $(B)/hcbd_polymer
 HEADERS  := hcbd.h
 TEST_SRC := $(wildcard tests/test_*.c) tests/main.c
 
-.PHONY: all run test test-main test-float test-gibd test-hcbd test-sanitize test-sanitize-hcbd test-tsan test-tsan-hcbd test-fuzz-args test-fuzz-ckpt test-install test-build build-check install fuzz bench bench-wp bench-stability bench-peers bench-parts bench-soak clean
+.PHONY: all run test validate test-main test-float test-gibd test-hcbd test-sanitize test-sanitize-hcbd test-tsan test-tsan-hcbd test-fuzz-args test-fuzz-ckpt test-install test-build build-check install fuzz bench bench-wp bench-stability bench-peers bench-parts bench-soak clean
 
 all: $(B)/hcbd_impl.o $(EXAMPLES) $(HC_EXAMPLES)
 
@@ -91,8 +91,15 @@ TEST_PARTS := main sanitize sanitize-hcbd hcbd float gibd tsan tsan-hcbd fuzz-ar
 LOG = > $(CURDIR)/$(B)/logs/$(1).log 2>&1 || { tail -n 30 $(CURDIR)/$(B)/logs/$(1).log; exit 1; }
 test:
 	@rm -rf $(B)/logs && mkdir -p $(B)/logs
+	@date +%s > $(B)/logs/start
 	-@$(MAKE) --no-print-directory -k -j$(JOBS) $(addprefix test-,$(TEST_PARTS))
 	@tests/summary.sh $(B)/logs $(TEST_PARTS)
+
+# make validate (not in CI, about 20 minutes): the statistical tests at
+# full, paper-like length (--long), GI-BD/walled and HCBD builds.
+validate: $(B)/run_tests $(B)/run_tests_hcbd $(B)/gibd_bulk
+	./$(B)/run_tests --long
+	./$(B)/run_tests_hcbd --long test_hc_
 
 $(B)/logs:
 	mkdir -p $@
@@ -176,7 +183,8 @@ test-install: | $(B)/logs
 	cd $(B) && flags=$$(PKG_CONFIG_PATH=$(CURDIR)/$(B)/prefix/lib/pkgconfig pkg-config --cflags --libs hcbd 2>/dev/null || echo "-I$(CURDIR)/$(B)/prefix/include -lm"); \
 	  $(CC) $(WARN) -x c ../tests/install_check.c $$flags -o install_check && ./install_check $(call LOG,install)
 
-# The header alone, both halves, with gcc and clang as C99 and C11 and as
+# The header alone, both halves, with gcc and clang as C99 (and C11 in the
+# HCBD build, which holds all of the code) and as
 # C++, with -Wshadow and -Wconversion (sign conversions excepted: every
 # one is a non-negative int widened to size_t for index arithmetic, on
 # purpose); then the examples and bench programs.
@@ -186,7 +194,7 @@ test-build: | $(B)/logs
 
 build-check: | $(B)
 	printf '#define HCBD_IMPLEMENTATION\n#include "../hcbd.h"\nint main(void){return 0;}\n' > $(B)/compile_test.c
-	for m in GIBD WALLED HCBD; do for cc in gcc clang; do for std in c99 c11; do \
+	for m in GIBD WALLED HCBD; do for cc in gcc clang; do for std in c99 $$([ $$m = HCBD ] && echo c11); do \
 	  $$cc -std=$$std -Wall -Wextra -Wpedantic -Werror $(CONV) -O2 -DHCBD_MODEL=HCBD_MODEL_$$m -c $(B)/compile_test.c -o $(B)/ct.o || exit 1; \
 	  $$cc -std=$$std -Wall -Wextra -Wpedantic -Werror $(CONV) -O2 -fopenmp -DHCBD_REAL=float -DHCBD_MODEL=HCBD_MODEL_$$m -c $(B)/compile_test.c -o $(B)/ct.o || exit 1; \
 	done; done; \

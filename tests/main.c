@@ -1,11 +1,15 @@
 /* Test runner: runs every registered test (or those whose name contains
-   one of the arguments); the last line is "N passed, N failed". */
+   one of the arguments); --quick (sanitizer builds) shortens the
+   statistical runs and skips their asserts, --long runs them at full
+   length (make validate); the last line is "N passed, N failed" and the
+   total time comes before it. */
 #define _POSIX_C_SOURCE 200809L /* clock_gettime, mkdir under -std=c99 */
 #include "test.h"
 #include <time.h>
 
 int t_fail;
 int t_quick;
+double t_len = T_LEN_TEST;
 
 #define T(name) void name(void);
 #include "list.h"
@@ -20,17 +24,21 @@ static const struct { const char *name; void (*fn)(void); } tests[] = {
 int main(int argc, char **argv)
 {
     int k, passed = 0, failed = 0;
+    struct timespec start, end;
     int nfilter = 0;
     for (k = 1; k < argc; ++k) {
         if (!strcmp(argv[k], "--quick")) t_quick = 1;
+        else if (!strcmp(argv[k], "--long")) t_len = 1.0;
         else ++nfilter;
     }
     if (getenv("HCBD_TEST_QUICK")) t_quick = 1;
+    clock_gettime(CLOCK_MONOTONIC, &start);
     for (k = 0; k < (int)(sizeof tests / sizeof tests[0]); ++k) {
         struct timespec a, b;
         if (nfilter) {
             int a, hit = 0;
-            for (a = 1; a < argc; ++a) hit |= strcmp(argv[a], "--quick") && strstr(tests[k].name, argv[a]);
+            for (a = 1; a < argc; ++a)
+                hit |= strcmp(argv[a], "--quick") && strcmp(argv[a], "--long") && strstr(tests[k].name, argv[a]);
             if (!hit) continue;
         }
         printf("%s\n", tests[k].name);
@@ -44,6 +52,9 @@ int main(int argc, char **argv)
         if (t_fail) ++failed; else ++passed;
         fflush(stdout);
     }
+    clock_gettime(CLOCK_MONOTONIC, &end);
+    printf("total %.1f s%s\n", (end.tv_sec - start.tv_sec) + 1e-9 * (end.tv_nsec - start.tv_nsec),
+           t_len < 1 ? " (statistical runs at make-test length; --long for make validate)" : "");
     printf("%d passed, %d failed\n", passed, failed);
     return failed ? 1 : 0;
 }

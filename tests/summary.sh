@@ -27,5 +27,8 @@ for part in "$@"; do
         ;;
     esac
 done
+if [ -f "$dir/start" ]; then
+    echo "make test took $(( $(date +%s) - $(cat "$dir/start") )) s"
+fi
 echo "$passed passed, $failed failed"
 [ "$failed" = 0 ]

@@ -11,6 +11,12 @@
 
 extern int t_fail;
 extern int t_quick; /* 1 under sanitizers: shorter statistical runs */
+/* Length of the long statistical runs: 1 in make validate (--long, the
+   paper-length validations), T_LEN_TEST in make test.  Tolerances come
+   from the block errors of the run, so a shorter run is a valid test
+   with wider errors; the exact identities do not depend on it. */
+#define T_LEN_TEST 0.4
+extern double t_len;
 
 #define CHECK(cond, ...)                                                       \
     do {                                                                       \

@@ -15,6 +15,7 @@ static void temperature_run(double dt, double tau, hcbd_pair_integrator integ, h
     hcbd_world w;
     int every = (int)(0.4 * tau / dt + 0.5), k;
     double *T, sf = 0, out[3], mean;
+    nsamp = (int)(nsamp * t_len);
     if (t_quick) nsamp /= 5;
     if (every < 1) every = 1;
     T = (double *)malloc(nsamp * sizeof(double));
@@ -122,7 +123,7 @@ static tc_result transverse_identity(hcbd_world_def d, int nk, int nblocks, int 
     hcbd_mtcorr c;
     if (!make_world(&w, &d)) return r;
     hcbd_world_place_lattice(&w, n);
-    run(&w, 20000);
+    run(&w, (int)(20000 * t_len)); /* 0.8 time units at dt = 1e-4: 8 relaxation times of the stars */
     k = 2 * PI * nk / d.params.L[0];
     for (b = 0; b < nblocks; ++b) {
         double lag[P], corr[P];
@@ -280,7 +281,7 @@ void test_msd_ideal_gibd(void)
     if (!make_world(&w, &d)) return;
     hcbd_world_place_random(&w, 500);
     run(&w, 1000);
-    nl = msd_blocks(&w, t_quick ? 300 : 2000, vals, lag);
+    nl = msd_blocks(&w, t_quick ? 300 : (int)(2000 * t_len), vals, lag);
     /* slope over the last lags of the run, t = 5-9 tau */
     lag_stats(vals, nl - 5, &m0, &e);
     lag_stats(vals, nl - 1, &m1, &e);
@@ -323,14 +324,16 @@ void test_bd_free_diffusion(void)
     hcbd_world_destroy(&w);
 }
 
-/* g(r) of star polymers: GI-BD equals classical BD within the statistical
-   error (2014 Fig. 2), and the static bias of the explicit Euler coupling
-   of R and v (MODEL 3) shrinks with dt.  The bias is measured by the
-   configurational temperature <sum |F_i|^2> / <sum lap_i U>, computed
-   here from positions with the analytic derivatives of the star
-   potential: the difference GI-BD minus BD at the same dt isolates the
-   coupling; it must be resolved at dt = 2e-4, drop significantly at
-   dt = 1e-4, and halve to first order. */
+/* Statics of the 2014 star scene at the library's defaults (tau = 3.6e-3,
+   dt = 1e-4): the exact pairwise update (Shardlow) gives classical BD's
+   g(r) and configurational temperature within errors, at the same dt
+   (BD itself is about 1 % hot at this dt: Euler-Maruyama); the papers'
+   Euler pair step is hotter by the static bias of its explicit coupling
+   of R and v, 1.3 % +- 0.14 % in a long reference run (MODEL 12), and the
+   run here must agree with that number.  The configurational temperature
+   <sum |F_i|^2> / <sum lap_i U> is computed in the test from positions
+   with the analytic derivatives of 2014 eq. 28, and compared once with
+   hcbd_config_temperature. */
 typedef struct {
     double g[50], gerr[50], tc, tcerr;
 } gr_result;
@@ -348,7 +351,34 @@ static void star_derivs(double r, double *dv, double *lap)
     }
 }
 
-static gr_result gr_run(int dyn, double dt, double tau, int steps)
+/* sum |F_i|^2 and sum lap_i U of N particles from positions */
+static void tconf_terms(const double *xyz, int N, const double L[3], double *F2, double *lap)
+{
+    double *F = (double *)calloc(3 * (size_t)N, sizeof(double));
+    int i, j, c;
+    *F2 = *lap = 0;
+    for (i = 0; i < N; ++i)
+        for (j = i + 1; j < N; ++j) {
+            double dx[3], r2 = pair_r2(xyz, i, j, L), r, dv, lp;
+            if (r2 >= 2.5 * 2.5) continue;
+            for (c = 0; c < 3; ++c) {
+                dx[c] = xyz[3 * i + c] - xyz[3 * j + c];
+                dx[c] -= L[c] * round(dx[c] / L[c]);
+            }
+            r = sqrt(r2);
+            star_derivs(r, &dv, &lp);
+            for (c = 0; c < 3; ++c) {
+                F[3 * i + c] -= dv * dx[c] / r;
+                F[3 * j + c] += dv * dx[c] / r;
+            }
+            *lap += 2 * lp;
+        }
+    for (i = 0; i < 3 * N; ++i) *F2 += F[i] * F[i];
+    free(F);
+}
+
+enum { GR_BD, GR_SHARDLOW, GR_EULER };
+static gr_result gr_run(int kind, int steps, double *api_vs_test)
 {
     enum { N = 256, NB = 10 };
     hcbd_world_def d = scene(N, 0.24);
@@ -358,40 +388,28 @@ static gr_result gr_run(int dyn, double dt, double tau, int steps)
     int b, s, k;
     hcbd_rdf rdf;
     memset(&res, 0, sizeof res);
-    d.params.dynamics = dyn ? HCBD_DYN_BD : HCBD_DYN_GIBD;
-    d.params.dt = dt;
-    d.params.tau = tau;
+    d.params.dynamics = kind == GR_BD ? HCBD_DYN_BD : HCBD_DYN_GIBD;
+    d.params.pair_integrator = kind == GR_SHARDLOW ? HCBD_PAIR_SHARDLOW : HCBD_PAIR_EULER;
     d.params.seed = 3;
     if (!make_world(&w, &d)) return res;
     hcbd_world_place_lattice(&w, N);
-    run(&w, (int)(0.5 / dt));
+    run(&w, 5000);
     for (b = 0; b < NB; ++b) {
         double F2 = 0, lap = 0;
         hcbd_rdf_init(&rdf, 5.0, 50, hist); /* half the box: all-pairs path */
         for (s = 0; s < steps / NB / 100; ++s) {
-            double F[3 * N];
-            int i, j, c;
+            double f2, lp;
             if (!run(&w, 100)) return res;
             hcbd_rdf_sample(&rdf, &w);
             hcbd_get_positions(&w, xyz, 0);
-            memset(F, 0, sizeof F);
-            for (i = 0; i < N; ++i)
-                for (j = i + 1; j < N; ++j) {
-                    double dx[3], r2 = pair_r2(xyz, i, j, w.p.L), r, dv, lp;
-                    if (r2 >= 2.5 * 2.5) continue;
-                    for (c = 0; c < 3; ++c) {
-                        dx[c] = xyz[3 * i + c] - xyz[3 * j + c];
-                        dx[c] -= w.p.L[c] * round(dx[c] / w.p.L[c]);
-                    }
-                    r = sqrt(r2);
-                    star_derivs(r, &dv, &lp);
-                    for (c = 0; c < 3; ++c) {
-                        F[3 * i + c] -= dv * dx[c] / r;
-                        F[3 * j + c] += dv * dx[c] / r;
-                    }
-                    lap += 2 * lp;
-                }
-            for (i = 0; i < 3 * N; ++i) F2 += F[i] * F[i];
+            tconf_terms(xyz, N, w.p.L, &f2, &lp);
+            F2 += f2;
+            lap += lp;
+            if (api_vs_test && b == 0 && s == 0) {
+                double out[2];
+                hcbd_config_temperature(&w, out);
+                *api_vs_test = fmax(fabs(out[0] / f2 - 1), fabs(out[1] / lp - 1));
+            }
         }
         hcbd_rdf_result(&rdf, NULL, gb[b]);
         tb[b] = F2 / lap;
@@ -406,39 +424,39 @@ static gr_result gr_run(int dyn, double dt, double tau, int steps)
     return res;
 }
 
-void test_gr_gibd_equals_bd(void)
+void test_statics_default_tau(void)
 {
-    int q = t_quick ? 10 : 1, k, nbins = 0;
-    double chi2 = 0, d1, e1, d2, e2;
-    gr_result bd1 = gr_run(1, 1e-4, 0, 60000 / q);
-    gr_result gi = gr_run(0, 1e-4, 3.6e-2, 60000 / q);
-    gr_result gs1 = gr_run(0, 1e-4, 3.6e-4, 30000 / q);
-    gr_result bd2 = gr_run(1, 2e-4, 0, 30000 / q);
-    gr_result gs2 = gr_run(0, 2e-4, 3.6e-4, 30000 / q);
+    const int steps = (int)((t_quick ? 10000 : 100000) * t_len);
+    int k, nbins = 0;
+    double chi2 = 0, api = 1, ds, es, de, ee;
+    gr_result bd = gr_run(GR_BD, steps, NULL);
+    gr_result sh = gr_run(GR_SHARDLOW, steps, &api);
+    gr_result eu = gr_run(GR_EULER, steps, NULL);
     for (k = 0; k < 50; ++k) {
-        double e2s = bd1.gerr[k] * bd1.gerr[k] + gi.gerr[k] * gi.gerr[k];
-        if (bd1.g[k] < 0.05 || e2s <= 0) continue; /* empty core bins */
-        chi2 += (bd1.g[k] - gi.g[k]) * (bd1.g[k] - gi.g[k]) / e2s;
+        double e2s = bd.gerr[k] * bd.gerr[k] + sh.gerr[k] * sh.gerr[k];
+        if (bd.g[k] < 0.05 || e2s <= 0) continue; /* empty core bins */
+        chi2 += (bd.g[k] - sh.g[k]) * (bd.g[k] - sh.g[k]) / e2s;
         ++nbins;
     }
-    d1 = gs1.tc - bd1.tc;
-    e1 = sqrt(gs1.tcerr * gs1.tcerr + bd1.tcerr * bd1.tcerr);
-    d2 = gs2.tc - bd2.tc;
-    e2 = sqrt(gs2.tcerr * gs2.tcerr + bd2.tcerr * bd2.tcerr);
-    NOTE("g(r) GI-BD (tau = 3.6e-2) vs BD, dt = 1e-4: chi2 = %.1f over %d bins; first peak %.4f +- %.4f vs %.4f +- %.4f",
-         chi2, nbins, gi.g[15], gi.gerr[15], bd1.g[15], bd1.gerr[15]);
-    NOTE("T_conf: BD %.4f +- %.4f (dt 1e-4), %.4f +- %.4f (dt 2e-4); GI-BD tau = 3.6e-2: %.4f +- %.4f",
-         bd1.tc, bd1.tcerr, bd2.tc, bd2.tcerr, gi.tc, gi.tcerr);
-    NOTE("coupling bias at tau = 3.6e-4: T_conf(GI-BD) - T_conf(BD) = %.4f +- %.4f (dt 1e-4), %.4f +- %.4f (dt 2e-4)",
-         d1, e1, d2, e2);
+    ds = sh.tc - bd.tc;
+    es = sqrt(sh.tcerr * sh.tcerr + bd.tcerr * bd.tcerr);
+    de = eu.tc - bd.tc;
+    ee = sqrt(eu.tcerr * eu.tcerr + bd.tcerr * bd.tcerr);
+    NOTE("T_conf: BD %.4f +- %.4f, GI-BD Shardlow %.4f +- %.4f, GI-BD Euler %.4f +- %.4f (%d steps)",
+         bd.tc, bd.tcerr, sh.tc, sh.tcerr, eu.tc, eu.tcerr, steps);
+    NOTE("Shardlow - BD = %.4f +- %.4f; Euler - BD = %.4f +- %.4f (reference 0.013 +- 0.0014)", ds, es, de, ee);
+    NOTE("g(r) Shardlow vs BD: chi2 = %.1f over %d bins; hcbd_config_temperature vs the test's sums: %.1e",
+         chi2, nbins, api);
+    CHECK(api < 1e-9, "hcbd_config_temperature differs from 2014 eq. 28 evaluated here: %g", api);
     if (t_quick) return;
     /* chi2 with n degrees of freedom: mean n, sd sqrt(2n); 10 blocks make
        the error estimates themselves uncertain, hence 5 sd */
     CHECK(chi2 < nbins + 5 * sqrt(2.0 * nbins), "g(r) differs: chi2 %g over %d bins", chi2, nbins);
-    CHECK(fabs(gi.tc - bd1.tc) < 4 * sqrt(gi.tcerr * gi.tcerr + bd1.tcerr * bd1.tcerr),
-          "T_conf differs at tau = 3.6e-2: %g vs %g", gi.tc, bd1.tc);
-    CHECK(d2 > 4 * e2, "no coupling bias resolved at dt = 2e-4: %g +- %g", d2, e2);
-    CHECK(d2 - d1 > 3 * sqrt(e1 * e1 + e2 * e2), "bias does not shrink with dt: %g -> %g", d2, d1);
-    CHECK(fabs(d1 - d2 / 2) < 4 * sqrt(e1 * e1 + e2 * e2 / 4), "bias not first order in dt: %g -> %g",
-          d2, d1);
+    CHECK(fabs(ds) < 4 * es, "Shardlow T_conf differs from BD's: %g +- %g", ds, es);
+    CHECK(fabs(de - 0.013) < 4 * sqrt(ee * ee + 0.0014 * 0.0014), "Euler excess %g +- %g, reference 0.013",
+          de, ee);
+    /* at make-test length the Euler excess is a 2-sigma effect; make
+       validate (100000 steps) resolves it */
+    CHECK(es < 0.006 / sqrt(t_len) && ee < 0.006 / sqrt(t_len), "errors %g %g too large", es, ee);
+    if (t_len >= 1) CHECK(de > 3 * ee && de - ds > 3 * sqrt(ee * ee + es * es), "Euler excess not resolved");
 }
