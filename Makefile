@@ -31,7 +31,7 @@ HC_EXAMPLES := $(B)/hcbd_fluid $(B)/hcbd_polymer
 HEADERS  := hcbd.h
 TEST_SRC := $(wildcard tests/test_*.c) tests/main.c
 
-.PHONY: all run test validate test-main test-float test-gibd test-hcbd test-sanitize test-sanitize-hcbd test-tsan test-tsan-hcbd test-fuzz-args test-fuzz-ckpt test-install test-build build-check install fuzz bench bench-wp bench-stability bench-peers bench-parts bench-soak clean
+.PHONY: all run test validate mutants test-main test-float test-gibd test-hcbd test-sanitize test-sanitize-hcbd test-tsan test-tsan-hcbd test-fuzz-args test-fuzz-ckpt test-install test-build build-check install fuzz bench bench-wp bench-stability bench-peers bench-parts bench-soak clean
 
 all: $(B)/hcbd_impl.o $(EXAMPLES) $(HC_EXAMPLES)
 
@@ -94,6 +94,11 @@ test:
 	@date +%s > $(B)/logs/start
 	-@$(MAKE) --no-print-directory -k -j$(JOBS) $(addprefix test-,$(TEST_PARTS))
 	@tests/summary.sh $(B)/logs $(TEST_PARTS)
+
+# make mutants (not in CI): every injected single-coefficient error of
+# tests/mutants/mutants.txt must make the suite fail; NAMES="a b" picks.
+mutants:
+	tests/mutants/run.sh
 
 # make validate (not in CI, about 20 minutes): the statistical tests at
 # full, paper-like length (--long), GI-BD/walled and HCBD builds.
