@@ -35,6 +35,9 @@ int main(int argc, char **argv)
     clock_gettime(CLOCK_MONOTONIC, &start);
     for (k = 0; k < (int)(sizeof tests / sizeof tests[0]); ++k) {
         struct timespec a, b;
+        /* mutation runs leave out the golden hashes, which catch any
+           change of bits: they ask the physics tests */
+        if (getenv("HCBD_TEST_SKIP") && strstr(tests[k].name, getenv("HCBD_TEST_SKIP"))) continue;
         if (nfilter) {
             int a, hit = 0;
             for (a = 1; a < argc; ++a)
