@@ -1,0 +1,849 @@
+/* Absolute checks of the HCBD (2018) model's coefficients (MODEL.md 6-8,
+   10).  Each test compares the library with theory, or with the model's
+   equations written out again here (own kernels, brute-force pair sums,
+   nothing of the library's but its state), so that a 10 % error in any
+   one coefficient of the fluid or the coupling equations fails at least
+   one test:
+     eos                  n_i, P_i = P0 [(n_i/nbar)^7 - 1], the exponent and P0
+                          fitted separately, dP/drho = 7 P0 (n/nbar)^6 / m
+     polymer_pair_forces  transient force alpha (lambda - leq) leq' e_ab, the
+                          Flory-Huggins pair force, lambda relaxation (tau_lambda)
+     one_step             one step of both species against the equations of
+                          motion: pressure, Morris viscosity (both integrators),
+                          body force, polymer drift v(r_a) + F_a/xi, the force
+                          F_a given back to the fluid
+     polymer_diffusion    a free polymer blob: <dr^2> = 6 kT dt / xi per step
+     viscosity_lattice    transverse wave, fluctuations off, both integrators
+     sound_lattice        longitudinal wave frequency: c_s^2 = 7 P0 / rho
+     viscosity_fluct_*    transverse wave in the fluctuating fluid (and its
+                          temperature), Euler and Shardlow pair integrators */
+#include "test.h"
+#if HCBD_MODEL == HCBD_MODEL_HCBD
+
+static const double PI_A = 3.14159265358979323846;
+/* exact identities hold to round-off of the stored state: hcbd_real */
+#define ABS_FLOAT (sizeof(hcbd_real) == sizeof(float))
+/* the blob mass m = rho / nbar from the parameters (not the world's copy) */
+#define A_MASS(p) ((p)->rho / (p)->nbar)
+
+/* >>the model's kernels, written again (MODEL.md 1) */
+static double a_m4(double r, double h)
+{
+    const double q = r / h, c = 1.0 / (4.0 * PI_A * h * h * h), a = 2.0 - q, b = 1.0 - q;
+    if (q >= 2.0) return 0.0;
+    return q >= 1.0 ? c * a * a * a : c * (a * a * a - 4.0 * b * b * b);
+}
+
+static double a_m4d(double r, double h)
+{
+    const double q = r / h, c = 1.0 / (4.0 * PI_A * h * h * h * h), a = 2.0 - q, b = 1.0 - q;
+    if (q >= 2.0) return 0.0;
+    return q >= 1.0 ? -3.0 * c * a * a : c * (-3.0 * a * a + 12.0 * b * b);
+}
+
+static double a_rapid(double r, double sg, double rc)
+{
+    const double A = 15.0 / (2.0 * PI_A * (pow(rc, 5) - pow(sg, 5)));
+    if (r >= rc) return 0.0;
+    return r <= sg ? A * (rc - sg) * (rc + sg - 2.0 * r) : A * (r - rc) * (r - rc);
+}
+
+static double a_rapidd(double r, double sg, double rc)
+{
+    const double A = 15.0 / (2.0 * PI_A * (pow(rc, 5) - pow(sg, 5)));
+    if (r >= rc) return 0.0;
+    return r <= sg ? -2.0 * A * (rc - sg) : 2.0 * A * (r - rc);
+}
+
+/* Flory-Huggins mu(phi) = g'(phi) = 1/2 - chi + sum_k phi^k / (k + 2) */
+static double a_mu(double phi, double chi)
+{
+    double s = 0.5 - chi, t = 1.0;
+    int k;
+    if (phi > 0.5) return -log(1.0 - phi) / (phi * phi) - 1.0 / phi - chi;
+    for (k = 1; k < 400 && t > 1e-20; ++k) {
+        t *= phi;
+        s += t / (k + 2);
+    }
+    return s;
+}
+
+/* x_a - x_b to the nearest image (no Lees-Edwards in these tests); every
+   box here is wider than twice the longest range, so one image counts */
+static double a_sep(const double L[3], double xa, double ya, double za, double xb, double yb,
+                    double zb, double d[3])
+{
+    int c;
+    d[0] = xa - xb; d[1] = ya - yb; d[2] = za - zb;
+    for (c = 0; c < 3; ++c) d[c] -= L[c] * round(d[c] / L[c]);
+    return sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+}
+
+static double a_ff(const hcbd_hc_world *w, int i, int j, double d[3])
+{
+    return a_sep(w->p.L, w->fx[i], w->fy[i], w->fz[i], w->fx[j], w->fy[j], w->fz[j], d);
+}
+
+/* >>the model's equations, brute force (MODEL.md 6, 7, 8) */
+/* fluid densities n_i = sum_j w(r_ij), j = i included */
+static void a_fluid_density(const hcbd_hc_world *w, double *n)
+{
+    int i, j;
+    for (i = 0; i < w->nf; ++i) {
+        double s = 0, d[3];
+        for (j = 0; j < w->nf; ++j) s += a_m4(a_ff(w, i, j, d), w->p.h);
+        n[i] = s;
+    }
+}
+
+static double a_tait(const hcbd_hc_params *p, double n)
+{
+    return p->P0 * (pow(n / p->nbar, 7.0) - 1.0);
+}
+
+/* Per fluid blob: pressure force Fp, Morris viscous force Fv (3 x nf) */
+static void a_fluid_forces(const hcbd_hc_world *w, const double *n, double *Fp, double *Fv)
+{
+    const double h = w->p.h, eta = w->p.eta;
+    int i, j, c;
+    for (i = 0; i < 3 * w->nf; ++i) Fp[i] = Fv[i] = 0;
+    for (i = 0; i < w->nf; ++i)
+        for (j = 0; j < w->nf; ++j) {
+            double d[3], r = a_ff(w, i, j, d), wd, f, pp;
+            if (j == i || r >= 2.0 * h) continue;
+            wd = a_m4d(r, h);
+            pp = a_tait(&w->p, n[i]) / (n[i] * n[i]) + a_tait(&w->p, n[j]) / (n[j] * n[j]);
+            f = -2.0 * eta * wd / (n[i] * n[j] * r);
+            for (c = 0; c < 3; ++c) Fp[3 * i + c] -= pp * wd * d[c] / r;
+            Fv[3 * i + 0] -= f * (w->fvx[i] - w->fvx[j]);
+            Fv[3 * i + 1] -= f * (w->fvy[i] - w->fvy[j]);
+            Fv[3 * i + 2] -= f * (w->fvz[i] - w->fvz[j]);
+        }
+}
+
+/* Polymer side: RaPiD densities pn, forces F (Flory-Huggins + transient),
+   drift velocities u = v(r_a) + F_a/xi with Shepard weights, and the
+   forces given to the fluid fa (3 x nf); nfl the fluid densities */
+static void a_polymer(const hcbd_hc_world *w, const double *nfl, double *pn, double *F, double *u,
+                      double *fa)
+{
+    const hcbd_hc_params *p = &w->p;
+    const double sg = p->sigma, rc = p->rc, cfh = p->p_kuhn * p->kT / p->n_max;
+    double *mu = (double *)malloc(sizeof(double) * (w->np + 1)), *S = (double *)malloc(sizeof(double) * (w->np + 1));
+    int a, b, i, c;
+    for (a = 0; a < w->np; ++a) {
+        double s = 0, d[3];
+        for (b = 0; b < w->np; ++b)
+            s += a_rapid(a_sep(p->L, w->px[a], w->py[a], w->pz[a], w->px[b], w->py[b], w->pz[b], d), sg, rc);
+        pn[a] = s;
+        mu[a] = p->p_kuhn > 0 ? a_mu(s / p->n_max, p->chi) : 0.0;
+    }
+    for (a = 0; a < w->np; ++a) {
+        double V[3] = {0, 0, 0}, s = 0;
+        for (c = 0; c < 3; ++c) F[3 * a + c] = 0;
+        for (b = 0; b < w->np; ++b) {
+            double d[3], r = a_sep(p->L, w->px[a], w->py[a], w->pz[a], w->px[b], w->py[b], w->pz[b], d);
+            double fr = 0, lam;
+            if (b == a || r >= rc) continue;
+            fr = -cfh * (mu[a] + mu[b]) * a_rapidd(r, sg, rc);
+            if (p->alpha > 0 && hcbd_hc_lambda(w, a, b, &lam) == HCBD_OK) {
+                const double leq = (1 - r / rc) * (1 - r / rc), dleq = -2.0 * (1 - r / rc) / rc;
+                fr += p->alpha * (lam - leq) * dleq;
+            }
+            for (c = 0; c < 3; ++c) F[3 * a + c] += fr * d[c] / r;
+        }
+        for (i = 0; i < w->nf; ++i) {
+            double d[3], r = a_sep(p->L, w->px[a], w->py[a], w->pz[a], w->fx[i], w->fy[i], w->fz[i], d);
+            double wt = a_rapid(r, sg, rc) / nfl[i];
+            s += wt;
+            V[0] += wt * w->fvx[i];
+            V[1] += wt * w->fvy[i];
+            V[2] += wt * w->fvz[i];
+        }
+        S[a] = s;
+        for (c = 0; c < 3; ++c) u[3 * a + c] = V[c] / s + F[3 * a + c] / p->xi;
+    }
+    for (i = 0; i < 3 * w->nf; ++i) fa[i] = 0;
+    for (i = 0; i < w->nf; ++i)
+        for (a = 0; a < w->np; ++a) {
+            double d[3], r = a_sep(p->L, w->px[a], w->py[a], w->pz[a], w->fx[i], w->fy[i], w->fz[i], d);
+            double psi = a_rapid(r, sg, rc) / nfl[i] / S[a];
+            for (c = 0; c < 3; ++c) fa[3 * i + c] += psi * F[3 * a + c];
+        }
+    free(mu);
+    free(S);
+}
+
+/* largest |x - y| over n values, and the largest |y| (the scale) */
+static double a_maxdiff(const double *x, const double *y, int n, double *scale)
+{
+    double m = 0, s = 0;
+    int k;
+    for (k = 0; k < n; ++k) {
+        if (fabs(x[k] - y[k]) > m) m = fabs(x[k] - y[k]);
+        if (fabs(y[k]) > s) s = fabs(y[k]);
+    }
+    if (scale) *scale = s;
+    return m;
+}
+
+static int a_create(hcbd_hc_world *w, const hcbd_hc_def *d)
+{
+    if (hcbd_hc_world_create(w, d) != HCBD_OK) {
+        printf("    world: %s\n", w->err.msg);
+        t_fail = 1;
+        return 0;
+    }
+    return 1;
+}
+
+static int a_ok(hcbd_hc_world *w, hcbd_result r, const char *what)
+{
+    if (r != HCBD_OK) {
+        printf("    %s: %s\n", what, w->err.msg);
+        t_fail = 1;
+        return 0;
+    }
+    return 1;
+}
+
+static int a_run(hcbd_hc_world *w, int steps) { return a_ok(w, hcbd_hc_step(w, steps), "step"); }
+
+/* The statistical fluid scene (as test_hcbd.c's): nu = eta/rho = 1,
+   c_s = 2.5, h = 2, lattice spacing 1.612, blob mass `mass`. */
+static hcbd_hc_def a_fluid_scene(int nx, double mass, double dt, int fluct, hcbd_pair_integrator pi)
+{
+    hcbd_hc_def d = hc_scene(nx, 5, 5, 0);
+    d.params.rho = mass * d.params.nbar;
+    d.params.eta = d.params.rho;
+    d.params.P0 = 2.5 * 2.5 * d.params.rho / 7.0;
+    d.params.dt = dt;
+    d.params.fluctuations = fluct;
+    d.params.pair_integrator = pi;
+    return d;
+}
+
+/* The fluid's lattice positions (interleaved) and a velocity field
+   v = A sin(k x) along axis `pol` (k along x). */
+static void a_lattice_wave(const hcbd_hc_world *w, double A, double k, int pol, double *xyz, double *v)
+{
+    int i;
+    for (i = 0; i < w->nf; ++i) {
+        xyz[3 * i] = w->fx[i]; xyz[3 * i + 1] = w->fy[i]; xyz[3 * i + 2] = w->fz[i];
+        v[3 * i] = v[3 * i + 1] = v[3 * i + 2] = 0;
+        v[3 * i + pol] = A * sin(k * w->fx[i]);
+    }
+}
+
+/* Viscous decay rate of a wave of wave number k (along x) on the lattice:
+   (1/m) sum_j f_0j (1 - cos k x_0j), f from the lattice densities. */
+static double a_lattice_rate(const hcbd_hc_world *w, const double *n, double k)
+{
+    double s = 0;
+    int j;
+    for (j = 1; j < w->nf; ++j) {
+        double d[3], r = a_ff(w, 0, j, d);
+        if (r >= 2.0 * w->p.h) continue;
+        s += -2.0 * w->p.eta * a_m4d(r, w->p.h) / (n[0] * n[j] * r) * (1.0 - cos(k * d[0]));
+    }
+    return s / A_MASS(&w->p);
+}
+
+/* The M4 density of the scene's lattice (blob 0 of a lattice world). */
+static double a_lattice_density(const hcbd_hc_def *d)
+{
+    hcbd_hc_world w;
+    double s = 0, dd[3];
+    int j;
+    if (!a_create(&w, d)) return d->params.nbar;
+    if (a_ok(&w, hcbd_hc_place_fluid_lattice(&w, d->fluid_capacity), "lattice"))
+        for (j = 0; j < w.nf; ++j) s += a_m4(a_ff(&w, 0, j, dd), w.p.h);
+    hcbd_hc_world_destroy(&w);
+    return s;
+}
+
+/* ===================================================================== */
+
+/* Equation of state.  Uniform lattices compressed by 3 % and 1.5 % either
+   way and at their natural spacing: every blob's density equals the M4
+   sum written here, its pressure P0 [(n/nbar)^7 - 1] at that density.
+   From the pressures alone at two densities (n/nbar = 1.09 and 0.91) the
+   exponent (7) and P0 come out separately; dP/drho near nbar from the
+   pressures at 1 +- 0.3 % is 7 P0 (n/nbar)^6 / rho (= c_s^2 at nbar). */
+void test_hc_abs_eos(void)
+{
+    const double s[5] = {0.97, 0.999, 1.0, 1.001, 1.03};
+    double x[5], P[5], worst_n = 0, worst_P = 0;
+    const double tn = ABS_FLOAT ? 1e-6 : 1e-12, tp = ABS_FLOAT ? 1e-6 : 1e-12;
+    hcbd_hc_params p0;
+    int q;
+    for (q = 0; q < 5; ++q) {
+        hcbd_hc_def d = hc_scene(6, 6, 6, 0);
+        hcbd_hc_world w;
+        double *n;
+        int i, c;
+        for (c = 0; c < 3; ++c) d.params.L[c] *= s[q];
+        d.params.fluctuations = 0;
+        p0 = d.params;
+        if (!a_create(&w, &d)) return;
+        if (!a_ok(&w, hcbd_hc_place_fluid_lattice(&w, d.fluid_capacity), "lattice")) return;
+        n = (double *)malloc(sizeof(double) * w.nf);
+        a_fluid_density(&w, n);
+        for (i = 0; i < w.nf; ++i) {
+            double en = fabs(w.fn[i] / n[i] - 1), ep = fabs(w.fP[i] - a_tait(&d.params, n[i])) / d.params.P0;
+            if (en > worst_n) worst_n = en;
+            if (ep > worst_P) worst_P = ep;
+        }
+        x[q] = n[0] / d.params.nbar;
+        P[q] = w.fP[0];
+        free(n);
+        hcbd_hc_world_destroy(&w);
+    }
+    NOTE("n_i vs M4 sum: largest relative difference %.2e; P_i vs Tait at n_i: %.2e P0", worst_n, worst_P);
+    CHECK(worst_n < tn, "densities differ from the M4 sum by %g", worst_n);
+    CHECK(worst_P < tp, "pressures differ from P0 [(n/nbar)^7 - 1] by %g P0", worst_P);
+    {
+        /* exponent from the ratio of two pressures (P0 cancels), bisection */
+        double lo = 1, hi = 20, g, P0f, cs2, cs2_pred, m = p0.rho / p0.nbar;
+        int it;
+        for (it = 0; it < 200; ++it) {
+            double mid = 0.5 * (lo + hi);
+            double f = (pow(x[0], mid) - 1) / (pow(x[4], mid) - 1) - P[0] / P[4];
+            /* the ratio is negative and falls with the exponent */
+            if (f > 0) lo = mid;
+            else hi = mid;
+        }
+        g = 0.5 * (lo + hi);
+        P0f = P[0] / (pow(x[0], g) - 1);
+        cs2 = (P[3] - P[1]) / (m * (x[3] - x[1]) * p0.nbar);
+        cs2_pred = 7 * p0.P0 * pow(x[2], 6) / p0.rho;
+        NOTE("n/nbar = %.4f / %.4f: exponent %.9f, P0 %.9f of P0; dP/drho at n/nbar = %.5f: "
+             "%.6f of 7 P0 (n/nbar)^6 / rho (c_s^2 = 7 P0/rho = %.4f, here %.4f)", x[0], x[4], g,
+             P0f / p0.P0, x[2], cs2 / cs2_pred, 7 * p0.P0 / p0.rho, cs2);
+        CHECK(fabs(g - 7) < (ABS_FLOAT ? 1e-3 : 1e-8), "Tait exponent %.9f", g);
+        CHECK(fabs(P0f / p0.P0 - 1) < (ABS_FLOAT ? 1e-4 : 1e-9), "P0 %.9g of P0", P0f / p0.P0);
+        /* central difference over n/nbar +- 0.3 %: O(delta^2) = 1e-4 */
+        CHECK(fabs(cs2 / cs2_pred - 1) < (ABS_FLOAT ? 2e-3 : 3e-4), "dP/drho %.6g of 7 P0 (n/nbar)^6 / rho",
+              cs2 / cs2_pred);
+    }
+}
+
+/* One pair of polymers at fixed distances (inside the core, and twice
+   outside): the transient force alpha (lambda - leq) leq'(r) e_ab with
+   leq = (1 - r/rc)^2, the Flory-Huggins force -(p kT/n_max) (mu_a + mu_b)
+   w'(r) e_ab with n_a = w(0) + w(r), both computed here; then one step at
+   kT = 0 relaxes lambda to leq + (lambda - leq) exp(-dt/tau_lambda). */
+void test_hc_abs_polymer_pair_forces(void)
+{
+    const double rs[3] = {0.6, 1.7, 2.3}, e[3] = {0.48, 0.6, 0.64};
+    const double tol = ABS_FLOAT ? 2e-6 : 1e-12;
+    double worst_t = 0, worst_f = 0, worst_l = 0, Ft = 0, Ff = 0;
+    int q, kind;
+    for (kind = 0; kind < 3; ++kind)
+        for (q = 0; q < 3; ++q) {
+            hcbd_hc_def d = hc_scene(5, 5, 5, 2);
+            hcbd_hc_world w;
+            hcbd_hc_params *p = &d.params;
+            const double r = rs[q], sg = p->sigma, rc = p->rc, leq = (1 - r / rc) * (1 - r / rc);
+            const double lam = leq + 0.25 - 0.1 * q;
+            double xyz[6] = {3.1, 3.3, 3.7, 0, 0, 0}, F[3], err = 0, scale = 0;
+            int c;
+            p->fluctuations = 0;
+            p->n_max = 3.0;
+            if (kind == 0) { p->p_kuhn = 0; p->alpha = 50; }       /* transient only */
+            if (kind == 1) { p->p_kuhn = 100; p->alpha = 0; }      /* Flory-Huggins only */
+            if (kind == 2) { p->kT = 0; p->alpha = 50; p->tau_lambda = 0.05; } /* relaxation */
+            for (c = 0; c < 3; ++c) xyz[3 + c] = xyz[c] + r * e[c];
+            if (!a_create(&w, &d)) return;
+            if (!a_ok(&w, hcbd_hc_place_fluid_lattice(&w, d.fluid_capacity), "lattice") ||
+                !a_ok(&w, hcbd_hc_set_polymers(&w, 2, xyz), "polymers") ||
+                (p->alpha > 0 && !a_ok(&w, hcbd_hc_set_lambda(&w, 0, 1, lam), "set_lambda"))) {
+                hcbd_hc_world_destroy(&w);
+                return;
+            }
+            if (kind == 0) {
+                const double f = p->alpha * (lam - leq) * (-2.0 * (1 - r / rc) / rc);
+                for (c = 0; c < 3; ++c) F[c] = f * -e[c]; /* e_01 = (x_0 - x_1)/r */
+            } else if (kind == 1) {
+                const double n = a_rapid(0, sg, rc) + a_rapid(r, sg, rc), mu = a_mu(n / p->n_max, p->chi);
+                const double f = -(p->p_kuhn * p->kT / p->n_max) * 2 * mu * a_rapidd(r, sg, rc);
+                for (c = 0; c < 3; ++c) F[c] = f * -e[c];
+                CHECK(fabs(w.pn[0] / n - 1) < tol, "polymer density %.17g vs %.17g", w.pn[0], n);
+            }
+            if (kind < 2) {
+                for (c = 0; c < 3; ++c) {
+                    const double f0 = c == 0 ? w.pFx[0] : (c == 1 ? w.pFy[0] : w.pFz[0]);
+                    const double f1 = c == 0 ? w.pFx[1] : (c == 1 ? w.pFy[1] : w.pFz[1]);
+                    if (fabs(f0 - F[c]) > err) err = fabs(f0 - F[c]);
+                    if (fabs(f1 + F[c]) > err) err = fabs(f1 + F[c]);
+                    if (fabs(F[c]) > scale) scale = fabs(F[c]);
+                }
+                if (kind == 0) { if (err / scale > worst_t) worst_t = err / scale; if (q == 1) Ft = F[0] / -e[0]; }
+                else { if (err / scale > worst_f) worst_f = err / scale; if (q == 1) Ff = F[0] / -e[0]; }
+            } else {
+                double l1, pred = leq + (lam - leq) * exp(-p->dt / p->tau_lambda);
+                a_run(&w, 1);
+                hcbd_hc_lambda(&w, 0, 1, &l1);
+                if (fabs(l1 - pred) / fabs(lam - leq) > worst_l) worst_l = fabs(l1 - pred) / fabs(lam - leq);
+            }
+            hcbd_hc_world_destroy(&w);
+        }
+    NOTE("transient force (r = 1.7: %.6f along e_10): largest relative error %.2e; Flory-Huggins "
+         "(%.6f): %.2e; lambda after one step at kT = 0: %.2e of lambda - leq", Ft, worst_t, Ff, worst_f,
+         worst_l);
+    CHECK(worst_t < tol, "transient force alpha (lambda - leq) leq' e: error %g", worst_t);
+    CHECK(worst_f < tol, "Flory-Huggins pair force: error %g", worst_f);
+    CHECK(worst_l < (ABS_FLOAT ? 1e-5 : 1e-12), "lambda relaxation over tau_lambda: error %g", worst_l);
+}
+
+/* One step of both species against the equations of motion, computed
+   here from the state at t: a disordered fluid (lattice + random
+   displacements up to 0.3, random velocities up to 0.5) with a body force
+   and six polymers in a cluster holding transient pairs away from leq.
+     state at t: fluid n_i, P_i; polymer n_a, F_a (Flory-Huggins and
+       transient), drift u_a = sum_i psi_ai v_i + F_a/xi with
+       psi_ai = (w(r_ai)/n_i) / sum_k (w(r_ak)/n_k), force on the fluid
+       sum_a psi_ai F_a;
+     after the step: m dv_i = dt [pressure + Morris viscous + m g +
+       sum_a psi_ai F_a], and (kT = 0, no polymer noise) dr_a = u_a dt.
+   Variants: Euler pairs, kT = 1 (Flory-Huggins on) and kT = 0; the
+   Shardlow sweep at dt = 0.002, whose exact pair solutions differ from
+   the Euler kick by O(f dt / m) relative: allowed 3 Gamma_0 dt of the
+   viscous part, Gamma_0 = max_i sum_j f_ij / m. */
+void test_hc_abs_one_step(void)
+{
+    const double tol = ABS_FLOAT ? 1e-4 : 1e-9;
+    int var;
+    for (var = 0; var < 3; ++var) {
+        hcbd_hc_def d = hc_scene(5, 5, 5, 6);
+        hcbd_hc_params *p = &d.params;
+        hcbd_hc_world w;
+        hcbd_rng g;
+        const int nf = d.fluid_capacity, np = 6;
+        const double cl[6][3] = {{0, 0, 0}, {1.3, 0.2, -0.4}, {0.3, 1.5, 0.5}, {-0.9, 0.8, 1.1},
+                                 {0.7, -1.2, 0.9}, {-0.2, -0.6, -1.4}};
+        double *xyz = (double *)malloc(sizeof(double) * 3 * nf), *v = (double *)malloc(sizeof(double) * 3 * nf);
+        double *n = (double *)malloc(sizeof(double) * nf), *Fp = (double *)malloc(sizeof(double) * 3 * nf);
+        double *Fv = (double *)malloc(sizeof(double) * 3 * nf), *fa = (double *)malloc(sizeof(double) * 3 * nf);
+        double *v0 = (double *)malloc(sizeof(double) * 3 * nf), *dv = (double *)malloc(sizeof(double) * 3 * nf);
+        double *pred = (double *)malloc(sizeof(double) * 3 * nf);
+        double pxyz[18], pn[6], F[18], u[18], buf[18], lam0[36], sc, usc, e_n, e_P, e_pn, e_F, e_u, e_fa, e_dv,
+            e_dr = 0, e_l = 0, g0 = 0, ptot[3] = {0, 0, 0}, Fsum[3] = {0, 0, 0};
+        const char *name = var == 0 ? "Euler, kT = 1" : (var == 1 ? "Euler, kT = 0" : "Shardlow, dt = 0.002");
+        double m, dp;
+        int i, a, b, c, ok = 1, npair = 0;
+        p->fluctuations = 0;
+        p->n_max = 3.0;
+        p->g[0] = 0.3; p->g[1] = -0.2; p->g[2] = 0.1;
+        if (var == 1) p->kT = 0;
+        if (var == 2) {
+            p->pair_integrator = HCBD_PAIR_SHARDLOW;
+            p->dt = 0.002;
+        }
+        m = A_MASS(p);
+        hcbd_rng_seed(&g, 11 + var);
+        if (!a_create(&w, &d)) return;
+        ok = a_ok(&w, hcbd_hc_place_fluid_lattice(&w, nf), "lattice");
+        for (i = 0; i < nf && ok; ++i)
+            for (c = 0; c < 3; ++c) {
+                double x = (c == 0 ? w.fx[i] : (c == 1 ? w.fy[i] : w.fz[i])) + 0.6 * (hcbd_rng_uniform(&g) - 0.5);
+                xyz[3 * i + c] = x - p->L[c] * floor(x / p->L[c]);
+                if (xyz[3 * i + c] >= p->L[c]) xyz[3 * i + c] = 0;
+                v[3 * i + c] = hcbd_rng_uniform(&g) - 0.5;
+            }
+        ok = ok && a_ok(&w, hcbd_hc_set_fluid(&w, nf, xyz, v), "fluid");
+        for (a = 0; a < np; ++a)
+            for (c = 0; c < 3; ++c) pxyz[3 * a + c] = 0.5 * p->L[c] + cl[a][c];
+        ok = ok && a_ok(&w, hcbd_hc_set_polymers(&w, np, pxyz), "polymers");
+        for (a = 0; a < np && ok; ++a)
+            for (b = a + 1; b < np; ++b) {
+                double dd[3], r = a_sep(p->L, pxyz[3 * a], pxyz[3 * a + 1], pxyz[3 * a + 2], pxyz[3 * b],
+                                        pxyz[3 * b + 1], pxyz[3 * b + 2], dd);
+                lam0[6 * a + b] = NAN;
+                if (r >= p->rc) continue;
+                lam0[6 * a + b] = (1 - r / p->rc) * (1 - r / p->rc) + 0.3 - 0.1 * ((a + b) % 4);
+                ok = a_ok(&w, hcbd_hc_set_lambda(&w, a, b, lam0[6 * a + b]), "set_lambda");
+                ++npair;
+            }
+        if (!ok) break;
+        /* the state at t, from the equations */
+        a_fluid_density(&w, n);
+        a_fluid_forces(&w, n, Fp, Fv);
+        a_polymer(&w, n, pn, F, u, fa);
+        for (i = 0; i < nf; ++i) {
+            double s = 0;
+            for (c = 0; c < 3; ++c) {
+                buf[c] = c == 0 ? w.fvx[i] : (c == 1 ? w.fvy[i] : w.fvz[i]);
+                v0[3 * i + c] = buf[c];
+            }
+            for (b = 0; b < nf; ++b) {
+                double dd[3], r = a_ff(&w, i, b, dd);
+                if (b != i && r < 2 * p->h) s += -2.0 * p->eta * a_m4d(r, p->h) / (n[i] * n[b] * r);
+            }
+            if (s / m > g0) g0 = s / m;
+        }
+        e_n = 0; e_P = 0;
+        for (i = 0; i < nf; ++i) {
+            if (fabs(w.fn[i] / n[i] - 1) > e_n) e_n = fabs(w.fn[i] / n[i] - 1);
+            if (fabs(w.fP[i] - a_tait(p, n[i])) / p->P0 > e_P) e_P = fabs(w.fP[i] - a_tait(p, n[i])) / p->P0;
+        }
+        e_pn = 0;
+        for (a = 0; a < np; ++a)
+            if (fabs(w.pn[a] / pn[a] - 1) > e_pn) e_pn = fabs(w.pn[a] / pn[a] - 1);
+        for (a = 0; a < np; ++a) { buf[3 * a] = w.pFx[a]; buf[3 * a + 1] = w.pFy[a]; buf[3 * a + 2] = w.pFz[a]; }
+        e_F = a_maxdiff(buf, F, 3 * np, &sc) / sc;
+        for (a = 0; a < np; ++a) { buf[3 * a] = w.pux[a]; buf[3 * a + 1] = w.puy[a]; buf[3 * a + 2] = w.puz[a]; }
+        e_u = a_maxdiff(buf, u, 3 * np, &usc) / usc;
+        for (i = 0; i < nf; ++i) { dv[3 * i] = w.fax[i]; dv[3 * i + 1] = w.fay[i]; dv[3 * i + 2] = w.faz[i]; }
+        e_fa = a_maxdiff(dv, fa, 3 * nf, &sc) / sc;
+        for (a = 0; a < np; ++a)
+            for (c = 0; c < 3; ++c) Fsum[c] += F[3 * a + c];
+        {
+            double px0[6], py0[6], pz0[6], sv, dts = p->dt / m;
+            for (a = 0; a < np; ++a) { px0[a] = w.px[a]; py0[a] = w.py[a]; pz0[a] = w.pz[a]; }
+            if (!a_run(&w, 1)) break;
+            for (i = 0; i < nf; ++i)
+                for (c = 0; c < 3; ++c) {
+                    const double vn = c == 0 ? w.fvx[i] : (c == 1 ? w.fvy[i] : w.fvz[i]);
+                    /* all but the viscous part for Shardlow; everything for Euler */
+                    pred[3 * i + c] = dts * (Fp[3 * i + c] + m * p->g[c] + fa[3 * i + c]);
+                    dv[3 * i + c] = vn - v0[3 * i + c];
+                    ptot[c] += m * dv[3 * i + c];
+                    if (var == 2) { /* the viscous part alone */
+                        dv[3 * i + c] -= pred[3 * i + c];
+                        pred[3 * i + c] = dts * Fv[3 * i + c];
+                    } else {
+                        pred[3 * i + c] += dts * Fv[3 * i + c];
+                    }
+                }
+            e_dv = a_maxdiff(dv, pred, 3 * nf, &sv) / sv;
+            if (var == 1) {
+                for (a = 0; a < np; ++a) {
+                    double dd[3], ds[3];
+                    a_sep(p->L, w.px[a], w.py[a], w.pz[a], px0[a], py0[a], pz0[a], dd);
+                    for (c = 0; c < 3; ++c) {
+                        ds[c] = dd[c] - u[3 * a + c] * p->dt;
+                        if (fabs(ds[c]) / (usc * p->dt) > e_dr) e_dr = fabs(ds[c]) / (usc * p->dt);
+                    }
+                }
+                for (a = 0; a < np; ++a)
+                    for (b = a + 1; b < np; ++b) {
+                        double dd[3], l1, r, leq;
+                        if (isnan(lam0[6 * a + b])) continue;
+                        r = a_sep(p->L, px0[a], py0[a], pz0[a], px0[b], py0[b], pz0[b], dd);
+                        leq = (1 - r / p->rc) * (1 - r / p->rc);
+                        if (hcbd_hc_lambda(&w, a, b, &l1) != HCBD_OK) continue;
+                        l1 -= leq + (lam0[6 * a + b] - leq) * exp(-p->dt / p->tau_lambda);
+                        if (fabs(l1) > e_l) e_l = fabs(l1);
+                    }
+            }
+            NOTE("%s (%d pairs): n_i %.1e, P_i %.1e, polymer n_a %.1e, F_a %.1e, u_a %.1e, "
+                 "sum_a psi F_a %.1e; dv_i %.1e of the %s (Gamma_0 dt = %.4f)", name, npair, e_n, e_P,
+                 e_pn, e_F, e_u, e_fa, e_dv, var == 2 ? "viscous kick" : "kick", g0 * p->dt);
+            if (var == 1)
+                NOTE("  kT = 0: dr_a - u_a dt: %.1e of max |u| dt; lambda: %.1e", e_dr, e_l);
+            dp = 0;
+            for (c = 0; c < 3; ++c) dp += fabs(ptot[c] - p->dt * (nf * m * p->g[c] + Fsum[c]));
+            dp /= p->dt * nf * m * sqrt(p->g[0] * p->g[0] + p->g[1] * p->g[1] + p->g[2] * p->g[2]);
+            NOTE("  fluid momentum change - dt (N m g + sum_a F_a): %.1e of dt N m |g| (sum_a F_a = %.1e)",
+                 dp, fabs(Fsum[0]) + fabs(Fsum[1]) + fabs(Fsum[2]));
+            CHECK(npair >= 4, "%d transient pairs", npair);
+            /* float: m dv summed over 125 blobs of |v| <= 0.5 */
+            CHECK(dp < (ABS_FLOAT ? 1e-3 : tol), "%s: momentum change %g", name, dp);
+            CHECK(e_n < tol && e_P < tol && e_pn < tol, "%s: densities / pressures: %g %g %g", name, e_n, e_P, e_pn);
+            CHECK(e_F < tol, "%s: polymer forces %g", name, e_F);
+            CHECK(e_u < tol, "%s: polymer drift v(r_a) + F_a/xi %g", name, e_u);
+            CHECK(e_fa < tol, "%s: force on the fluid sum_a psi_ai F_a %g", name, e_fa);
+            if (var < 2) CHECK(e_dv < tol, "%s: fluid velocity change %g", name, e_dv);
+            else CHECK(e_dv < 3 * g0 * p->dt + tol, "%s: viscous velocity change %g (allowed %g)", name,
+                       e_dv, 3 * g0 * p->dt);
+            if (var == 1) {
+                /* float: positions (~4) round by 5e-7 against u dt ~ 0.01 */
+                CHECK(e_dr < (ABS_FLOAT ? 3e-4 : tol), "polymer displacement - u_a dt: %g", e_dr);
+                CHECK(e_l < (ABS_FLOAT ? 1e-5 : 1e-12), "lambda relaxation %g", e_l);
+            }
+        }
+        hcbd_hc_world_destroy(&w);
+        free(xyz); free(v); free(n); free(Fp); free(Fv); free(fa); free(v0); free(dv); free(pred);
+    }
+}
+
+/* Free polymer blobs (no Flory-Huggins, no pairs) in a fluid at rest
+   without fluctuations: nothing moves the fluid, so each step is
+   dr = dW exactly, <dr^2> = 6 kT dt / xi, and the MSD grows as 6 kT t / xi.
+   Statistical errors from blocks of polymers (independent). */
+void test_hc_abs_polymer_diffusion(void)
+{
+    const int np = 200, ns = t_quick ? 40 : 100, nb = 20;
+    hcbd_hc_def d = hc_scene(5, 5, 5, np);
+    hcbd_hc_world w;
+    double *sq = (double *)malloc(sizeof(double) * np), *q4 = (double *)malloc(sizeof(double) * np);
+    double *R = (double *)calloc(3 * np, sizeof(double)), *msd = (double *)malloc(sizeof(double) * np);
+    double *x0 = (double *)malloc(sizeof(double) * 3 * np), m2, e2, m4, e4, mm, em, vmax = 0, mean = 0;
+    int a, k, c;
+    d.params.fluctuations = 0;
+    d.params.p_kuhn = 0;
+    d.params.alpha = 0;
+    if (!a_create(&w, &d)) return;
+    if (!a_ok(&w, hcbd_hc_place_fluid_lattice(&w, d.fluid_capacity), "lattice") ||
+        !a_ok(&w, hcbd_hc_place_polymers_random(&w, np), "polymers")) {
+        hcbd_hc_world_destroy(&w);
+        return;
+    }
+    for (a = 0; a < np; ++a) sq[a] = q4[a] = 0;
+    for (k = 0; k < ns; ++k) {
+        for (a = 0; a < np; ++a) { x0[3 * a] = w.px[a]; x0[3 * a + 1] = w.py[a]; x0[3 * a + 2] = w.pz[a]; }
+        if (!a_run(&w, 1)) break;
+        for (a = 0; a < np; ++a) {
+            double dd[3];
+            a_sep(d.params.L, w.px[a], w.py[a], w.pz[a], x0[3 * a], x0[3 * a + 1], x0[3 * a + 2], dd);
+            for (c = 0; c < 3; ++c) {
+                sq[a] += dd[c] * dd[c] / (3.0 * ns);
+                q4[a] += dd[c] * dd[c] * dd[c] * dd[c] / (3.0 * ns);
+                R[3 * a + c] += dd[c];
+                mean += dd[c] / (3.0 * ns * np);
+            }
+        }
+    }
+    for (a = 0; a < np; ++a) msd[a] = (R[3 * a] * R[3 * a] + R[3 * a + 1] * R[3 * a + 1] + R[3 * a + 2] * R[3 * a + 2]);
+    for (k = 0; k < w.nf; ++k) {
+        double s = fabs(w.fvx[k]) + fabs(w.fvy[k]) + fabs(w.fvz[k]);
+        if (s > vmax) vmax = s;
+    }
+    {
+        const double s2 = 2 * d.params.kT * d.params.dt / d.params.xi, T = ns * d.params.dt;
+        block_stats(sq, np, nb, &m2, &e2);
+        block_stats(q4, np, nb, &m4, &e4);
+        block_stats(msd, np, nb, &mm, &em);
+        NOTE("per step <dx^2> = %.5f +- %.5f of 2 kT dt/xi, <dx^4>/<dx^2>^2 = %.3f +- %.3f (Gaussian 3); "
+             "MSD(%g) = %.4f +- %.4f of 6 kT t/xi; mean step %.1e; fluid |v| <= %.1e", m2 / s2, e2 / s2,
+             m4 / (m2 * m2), e4 / (m2 * m2), T, mm / (3 * s2 * ns), em / (3 * s2 * ns), mean, vmax);
+        CHECK(fabs(m2 / s2 - 1) < 4 * e2 / s2, "step variance %.5f +- %.5f of 2 kT dt / xi", m2 / s2, e2 / s2);
+        CHECK(e2 / s2 < 0.02, "step variance error %g", e2 / s2);
+        CHECK(fabs(m4 / (m2 * m2) - 3) < 4 * e4 / (m2 * m2) + 0.02, "kurtosis %g", m4 / (m2 * m2));
+        CHECK(fabs(mm / (3 * s2 * ns) - 1) < 4 * em / (3 * s2 * ns), "MSD slope %.4f +- %.4f of 6 kT/xi",
+              mm / (3 * s2 * ns), em / (3 * s2 * ns));
+        /* at rest but for the pressure forces of the lattice's rounding (float: ~1e-6) */
+        CHECK(vmax * d.params.dt < 1e-4 * sqrt(s2), "the fluid stays at rest: |v| %g", vmax);
+    }
+    free(sq); free(q4); free(R); free(msd); free(x0);
+    hcbd_hc_world_destroy(&w);
+}
+
+/* Transverse wave v_y = A sin(k x), k = 2 pi / Lx, on the 20 x 5 x 5
+   lattice without fluctuations: an eigenmode of the Morris friction that
+   decays as exp(-Gamma t) with Gamma = (1/m) sum_j f_0j (1 - cos k x_0j)
+   (the lattice sum, here; its continuum limit is nu k^2, nu = eta/rho).
+   Euler: the amplitude falls by (1 - Gamma dt) per step exactly; the
+   Shardlow sweep solves each pair exactly in turn: its rate must be
+   Gamma within Gamma dt / 2 (Euler's own first-order error).  nbar is set to the lattice's own M4 density, so that its
+   Tait pressure is zero: a uniform pressure P != 0 would give the sheared
+   lattice a small elastic force (1.5e-4 of the rate over the run).
+   nu = Gamma / k^2 is within 3 % of eta/rho (the lattice sum itself is
+   2.8 % low: the M4 second moment on a lattice of spacing 0.81 h). */
+void test_hc_abs_viscosity_lattice(void)
+{
+    int var;
+    for (var = 0; var < 2; ++var) {
+        hcbd_hc_def d = a_fluid_scene(20, 100, 0.04, 0, var ? HCBD_PAIR_SHARDLOW : HCBD_PAIR_EULER);
+        hcbd_hc_world w;
+        const double nbar = a_lattice_density(&d), A = 1e-3, k = 2 * PI_A / d.params.L[0], dt = d.params.dt, nu0 = d.params.eta / d.params.rho;
+        const int ns = 100;
+        double *xyz, *v, *n, G, Gm, j0 = 0, j1 = 0, half = 0, gE, g0 = 0;
+        int i, s;
+        d.params.nbar = nbar;
+        if (!a_create(&w, &d)) return;
+        if (!a_ok(&w, hcbd_hc_place_fluid_lattice(&w, d.fluid_capacity), "lattice")) return;
+        xyz = (double *)malloc(sizeof(double) * 3 * w.nf);
+        v = (double *)malloc(sizeof(double) * 3 * w.nf);
+        n = (double *)malloc(sizeof(double) * w.nf);
+        a_lattice_wave(&w, A, k, 1, xyz, v);
+        if (!a_ok(&w, hcbd_hc_set_fluid(&w, w.nf, xyz, v), "fluid")) return;
+        a_fluid_density(&w, n);
+        G = a_lattice_rate(&w, n, k);
+        for (i = 1; i < w.nf; ++i) {
+            double dd[3], r = a_ff(&w, 0, i, dd);
+            if (r < 2 * d.params.h) g0 += -2.0 * d.params.eta * a_m4d(r, d.params.h) / (n[0] * n[i] * r) / A_MASS(&w.p);
+        }
+        for (i = 0; i < w.nf; ++i) j0 += w.fvy[i] * sin(k * w.fx[i]);
+        for (s = 0; s < ns; ++s) {
+            if (!a_run(&w, 1)) break;
+            if (s == ns / 2 - 1)
+                for (i = 0; i < w.nf; ++i) half += w.fvy[i] * sin(k * w.fx[i]);
+        }
+        for (i = 0; i < w.nf; ++i) j1 += w.fvy[i] * sin(k * w.fx[i]);
+        Gm = -log(j1 / j0) / (ns * dt);
+        gE = -log(1 - G * dt) / dt;
+        NOTE("%s: nu = %.5f of eta/rho (lattice sum %.5f); rate / %s %.6f; first half %.6f of the "
+             "whole (Gamma_0 dt = %.3f)", var ? "Shardlow" : "Euler", Gm / (k * k) / nu0, G / (k * k) / nu0,
+             var ? "lattice sum" : "Euler lattice prediction", Gm / (var ? G : gE),
+             -log(half / j0) / (0.5 * ns * dt) / Gm, g0 * dt);
+        if (var == 0) CHECK(fabs(Gm / gE - 1) < (ABS_FLOAT ? 1e-3 : 1e-4), "Euler rate %.6f of prediction", Gm / gE);
+        else CHECK(fabs(Gm / G - 1) < 0.5 * G * dt, "Shardlow rate %.6f of the lattice sum", Gm / G);
+        CHECK(fabs(Gm / (k * k) / nu0 - 1) < 0.03, "nu %.5f of eta/rho", Gm / (k * k) / nu0);
+        free(xyz); free(v); free(n);
+        hcbd_hc_world_destroy(&w);
+    }
+}
+
+/* Longitudinal wave v_x = A sin(k x) on the 20 x 5 x 5 lattice without
+   fluctuations: a damped oscillator u'' = -K u - Gamma u'.  Its
+   displacement crosses zero at t = pi / omega_d, omega_d^2 = K - Gamma^2/4
+   (the kick-drift steps' own omega_d is used: it differs by O(dt)).
+   K comes from the pressure forces of a displaced lattice computed here
+   (MODEL.md 6, Tait with P0 and 7), Gamma from the Morris lattice sum.
+   Continuum SPH: omega = c_s k w^(k), w^ the M4 kernel's Fourier
+   transform, c_s^2 = 7 P0 / rho; the measured c_s = omega / (k w^) is
+   within 3 % of that (the lattice quadrature makes it 1.7 % low). */
+void test_hc_abs_sound_lattice(void)
+{
+    hcbd_hc_def d = a_fluid_scene(20, 100, 0.04, 0, HCBD_PAIR_EULER);
+    hcbd_hc_world w;
+    const double A = 0.01, k = 2 * PI_A / d.params.L[0], dt = d.params.dt;
+    const double cs = sqrt(7 * d.params.P0 / d.params.rho);
+    double *xyz, *v, *X, *n, *Fp, *Fv, K = 0, ss = 0, G, wd, wc, wk = 0, t0 = -1, prev = 0, om;
+    int i, s;
+    if (!a_create(&w, &d)) return;
+    if (!a_ok(&w, hcbd_hc_place_fluid_lattice(&w, d.fluid_capacity), "lattice")) return;
+    xyz = (double *)malloc(sizeof(double) * 3 * w.nf);
+    v = (double *)malloc(sizeof(double) * 3 * w.nf);
+    X = (double *)malloc(sizeof(double) * 3 * w.nf);
+    n = (double *)malloc(sizeof(double) * w.nf);
+    Fp = (double *)malloc(sizeof(double) * 3 * w.nf);
+    Fv = (double *)malloc(sizeof(double) * 3 * w.nf);
+    a_lattice_wave(&w, A, k, 0, xyz, v);
+    for (i = 0; i < 3 * w.nf; ++i) X[i] = xyz[i];
+    a_fluid_density(&w, n);
+    G = a_lattice_rate(&w, n, k);
+    { /* K from the pressure forces of the lattice displaced by U sin(k X) */
+        const double U = 1e-3; /* K is even in U: error O(U^2); float positions round ~1e-6 */
+        for (i = 0; i < w.nf; ++i) {
+            xyz[3 * i] = X[3 * i] + U * sin(k * X[3 * i]);
+            w.fx[i] = (hcbd_real)xyz[3 * i];
+        }
+        a_fluid_density(&w, n);
+        a_fluid_forces(&w, n, Fp, Fv);
+        for (i = 0; i < w.nf; ++i) {
+            K -= Fp[3 * i] * sin(k * X[3 * i]);
+            ss += sin(k * X[3 * i]) * sin(k * X[3 * i]);
+        }
+        K /= A_MASS(&w.p) * U * ss;
+        for (i = 0; i < w.nf; ++i) w.fx[i] = (hcbd_real)X[3 * i];
+    }
+    { /* kick-drift with Euler friction: x_{n+1} = (2 - G dt - K dt^2) x_n - (1 - G dt) x_{n-1},
+         x_0 = 0, so x_n ~ (1 - G dt)^(n/2) sin(n theta): zero at n theta = pi */
+        const double b = 2 - G * dt - K * dt * dt, c = 1 - G * dt;
+        wd = acos(b / (2 * sqrt(c))) / dt;
+        wc = sqrt(K - 0.25 * G * G);
+    }
+    for (i = 0; i < 4000; ++i) { /* w^(k) = int 4 pi r^2 w(r) sin(kr)/(kr) dr, midpoint rule */
+        const double r = (i + 0.5) * 2 * d.params.h / 4000;
+        wk += 4 * PI_A * r * r * a_m4(r, d.params.h) * sin(k * r) / (k * r) * 2 * d.params.h / 4000;
+    }
+    if (!a_ok(&w, hcbd_hc_set_fluid(&w, w.nf, X, v), "fluid")) return;
+    for (s = 1; s <= 400 && t0 < 0; ++s) {
+        double D = 0;
+        if (!a_run(&w, 1)) break;
+        for (i = 0; i < w.nf; ++i) {
+            double dx = w.fx[i] - X[3 * i];
+            dx -= d.params.L[0] * round(dx / d.params.L[0]);
+            D += dx * sin(k * X[3 * i]);
+        }
+        if (s > 1 && prev > 0 && D <= 0) t0 = (s - 1 + prev / (prev - D)) * dt;
+        prev = D;
+    }
+    om = PI_A / t0;
+    NOTE("omega = %.6f: %.7f of the lattice prediction (K = %.6f, Gamma = %.5f; continuous time "
+         "sqrt(K - Gamma^2/4) %.7f of it); omega / (c_s k w^(k)) = %.5f (w^ = %.5f), omega / (c_s k) "
+         "= %.5f", om, om / wd, K, G, wc / wd, om / (cs * k * wk), wk, om / (cs * k));
+    CHECK(t0 > 0, "no zero crossing within 400 steps");
+    CHECK(fabs(om / wd - 1) < (ABS_FLOAT ? 2e-3 : 5e-4), "omega %.6f of the lattice prediction", om / wd);
+    CHECK(fabs(om / (cs * k * wk) - 1) < 0.03, "c_s from the wave: %.5f of sqrt(7 P0 / rho)", om / (cs * k * wk));
+    free(xyz); free(v); free(X); free(n); free(Fp); free(Fv);
+    hcbd_hc_world_destroy(&w);
+}
+
+/* Transverse waves in the fluctuating fluid (20 x 5 x 5 blobs of mass 400,
+   dt = 0.08, melted from the lattice for 8 time units): v_y += a (sin kx +
+   cos kx), v_z += a (sin kx - cos kx), a = 1/sqrt(2), and each of the four
+   projections (y, z) x (sin, cos) is fitted with exp(-Gamma t) (log-linear,
+   weights j^2) over 20 time units.  The four estimates carry independent
+   thermal noise: their mean and standard error give nu; allowed 3 % of
+   eta/rho + 3 errors.  The temperature of the melt (before the wave,
+   which adds non-affine motion) checks the noise against the friction:
+   Shardlow kT within 1 % + 3 errors; Euler pairs are biased by
+   (dt/2) <gamma> for the relaxation rates gamma of the velocity modes,
+   whose mean is Gamma_0 = <sum_j f_ij> / m (the trace): T/kT = 1 +
+   Gamma_0 dt / 2, allowed (Gamma_0 dt)^2 (the next order) + 3 errors. */
+static void a_fluct_wave(hcbd_pair_integrator pi)
+{
+    const int melt = t_quick ? 40 : 100, skip = t_quick ? 15 : 20, meas = t_quick ? 100 : 250;
+    const int every = 5, ns = meas / every + 1, nT = melt - skip;
+    hcbd_hc_def d = a_fluid_scene(20, 400, 0.08, 1, pi);
+    hcbd_hc_world w;
+    const double a = sqrt(0.5), k = 2 * PI_A / d.params.L[0], nu0 = d.params.eta / d.params.rho, dt = d.params.dt;
+    double *t = (double *)malloc(sizeof(double) * ns), *j = (double *)malloc(sizeof(double) * 4 * ns);
+    double *T = (double *)malloc(sizeof(double) * nT), *n, nu[4], m, e, Tm, Te, g0 = 0;
+    int s, i, ch;
+    if (!a_create(&w, &d)) return;
+    if (!a_ok(&w, hcbd_hc_place_fluid_lattice(&w, d.fluid_capacity), "lattice")) {
+        hcbd_hc_world_destroy(&w);
+        return;
+    }
+    for (s = 0; s < melt; ++s) {
+        if (!a_run(&w, 1)) break;
+        if (s >= skip) T[s - skip] = hcbd_hc_temperature(&w) / d.params.kT;
+    }
+    n = (double *)malloc(sizeof(double) * w.nf);
+    a_fluid_density(&w, n);
+    for (i = 0; i < w.nf; ++i) {
+        int b;
+        for (b = 0; b < w.nf; ++b) {
+            double dd[3], r = a_ff(&w, i, b, dd);
+            if (b != i && r < 2 * d.params.h) g0 += -2.0 * d.params.eta * a_m4d(r, d.params.h) / (n[i] * n[b] * r);
+        }
+    }
+    g0 /= A_MASS(&w.p) * w.nf;
+    free(n);
+    for (i = 0; i < w.nf; ++i) {
+        w.fvy[i] = (hcbd_real)(w.fvy[i] + a * (sin(k * w.fx[i]) + cos(k * w.fx[i])));
+        w.fvz[i] = (hcbd_real)(w.fvz[i] + a * (sin(k * w.fx[i]) - cos(k * w.fx[i])));
+    }
+    for (s = 0; s < ns; ++s) {
+        double P[4] = {0, 0, 0, 0};
+        for (i = 0; i < w.nf; ++i) {
+            const double sn = sin(k * w.fx[i]), cn = cos(k * w.fx[i]);
+            P[0] += w.fvy[i] * sn; P[1] += w.fvy[i] * cn; P[2] += w.fvz[i] * sn; P[3] += w.fvz[i] * cn;
+        }
+        t[s] = s * every * dt;
+        for (ch = 0; ch < 4; ++ch) j[4 * s + ch] = (ch == 3 ? -P[ch] : P[ch]) / (0.5 * a * w.nf);
+        if (s < ns - 1 && !a_run(&w, every)) break;
+    }
+    for (ch = 0; ch < 4; ++ch) {
+        double S = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
+        for (s = 0; s < ns; ++s) {
+            const double y = j[4 * s + ch], wt = y * y, l = log(y > 1e-3 ? y : 1e-3);
+            S += wt; sx += wt * t[s]; sy += wt * l; sxx += wt * t[s] * t[s]; sxy += wt * t[s] * l;
+        }
+        nu[ch] = -(S * sxy - sx * sy) / (S * sxx - sx * sx) / (k * k) / nu0;
+    }
+    block_stats(nu, 4, 4, &m, &e);
+    block_stats(T, nT, 5, &Tm, &Te);
+    NOTE("nu = %.4f +- %.4f of eta/rho (channels %.4f %.4f %.4f %.4f; amplitude left %.2f)", m, e,
+         nu[0], nu[1], nu[2], nu[3], j[4 * (ns - 1)]);
+    NOTE("melt: T/kT = %.4f +- %.4f (Gamma_0 dt = %.4f: Euler 1 + Gamma_0 dt / 2 = %.4f)", Tm, Te,
+         g0 * dt, 1 + 0.5 * g0 * dt);
+    CHECK(fabs(m - 1) < 0.03 + 3 * e, "nu %.4f +- %.4f of eta/rho", m, e);
+    CHECK(e < (t_quick ? 0.03 : 0.012), "nu error %.4f: the fit lost its precision", e);
+    CHECK(Te < (t_quick ? 0.04 : 0.02), "temperature error %.4f", Te);
+    if (pi == HCBD_PAIR_SHARDLOW) CHECK(fabs(Tm - 1) < 0.01 + 3 * Te, "Shardlow T/kT %.4f +- %.4f", Tm, Te);
+    else
+        CHECK(fabs(Tm - 1 - 0.5 * g0 * dt) < g0 * dt * g0 * dt + 3 * Te, "Euler T/kT %.4f +- %.4f, expected %.4f",
+              Tm, Te, 1 + 0.5 * g0 * dt);
+    free(t); free(j); free(T);
+    hcbd_hc_world_destroy(&w);
+}
+
+void test_hc_abs_viscosity_fluct_euler(void) { a_fluct_wave(HCBD_PAIR_EULER); }
+void test_hc_abs_viscosity_fluct_shardlow(void) { a_fluct_wave(HCBD_PAIR_SHARDLOW); }
+#endif
