@@ -596,15 +596,20 @@ static hcbd_hc_def fluid_scene(int nx, int ny, int nz, double dt)
     return d;
 }
 
-static void temperature_run(double dt, hcbd_pair_integrator integ, int nsub, double time, double *T,
-                            double *Terr)
+/* T and its error from 20 blocks of time / 20 after the melt; a shorter
+   run (len < 1) keeps the blocks and has round(20 len) of them. */
+static void temperature_run(double dt, hcbd_pair_integrator integ, int nsub, double time,
+                            double len, double *T, double *Terr)
 {
     hcbd_hc_def d = fluid_scene(6, 6, 6, dt);
     hcbd_hc_world w;
     d.params.pair_integrator = integ;
     d.params.substeps = nsub;
     int every = (int)(0.2 / dt + 0.5), ns = (int)(time / (every * dt)), k;
-    double *s = (double *)malloc(ns * sizeof(double));
+    int nb = (int)(20 * len + 0.5);
+    double *s;
+    ns = ns / 20 * nb;
+    s = (double *)malloc(ns * sizeof(double));
     *T = *Terr = NAN;
     if (!hc_make(&w, &d, 0)) { free(s); return; }
     hc_run(&w, (int)(20 / dt)); /* the lattice melts, sound waves damp */
@@ -612,7 +617,7 @@ static void temperature_run(double dt, hcbd_pair_integrator integ, int nsub, dou
         if (!hc_run(&w, every)) break;
         s[k] = hcbd_hc_temperature(&w);
     }
-    block_stats(s, ns, 20, T, Terr);
+    block_stats(s, ns, nb, T, Terr);
     free(s);
     hcbd_hc_world_destroy(&w);
 }
@@ -622,9 +627,9 @@ static void temperature_run(double dt, hcbd_pair_integrator integ, int nsub, dou
    with dt and the extrapolation to dt = 0 gives kT. */
 void test_hc_fluid_equipartition(void)
 {
-    double T1, e1, T2, e2, T0, e0, time = t_quick ? 60 : 200;
-    temperature_run(0.08, HCBD_PAIR_EULER, 1, time, &T1, &e1);
-    temperature_run(0.04, HCBD_PAIR_EULER, 1, time, &T2, &e2);
+    double T1, e1, T2, e2, T0, e0, time = t_quick ? 60 : 200, len = t_quick ? 1.0 : t_len;
+    temperature_run(0.08, HCBD_PAIR_EULER, 1, time, len, &T1, &e1);
+    temperature_run(0.04, HCBD_PAIR_EULER, 1, time, len, &T2, &e2);
     T0 = 2 * T2 - T1;
     e0 = sqrt(4 * e2 * e2 + e1 * e1);
     NOTE("T/kT = %.4f +- %.4f at dt = 0.08, %.4f +- %.4f at dt = 0.04, extrapolated %.4f +- %.4f",
@@ -641,9 +646,9 @@ void test_hc_fluid_equipartition(void)
    with two fluid sub-steps per step of 0.16. */
 void test_hc_fluid_equipartition_shardlow(void)
 {
-    double T1, e1, T2, e2, time = t_quick ? 60 : 200;
-    temperature_run(0.08, HCBD_PAIR_SHARDLOW, 1, time, &T1, &e1);
-    temperature_run(0.16, HCBD_PAIR_SHARDLOW, 2, time, &T2, &e2);
+    double T1, e1, T2, e2, time = t_quick ? 60 : 200, len = t_quick ? 1.0 : t_len;
+    temperature_run(0.08, HCBD_PAIR_SHARDLOW, 1, time, len, &T1, &e1);
+    temperature_run(0.16, HCBD_PAIR_SHARDLOW, 2, time, len, &T2, &e2);
     NOTE("Shardlow: T/kT = %.4f +- %.4f at dt = 0.08; %.4f +- %.4f at 2 x 0.08 sub-steps", T1, e1, T2,
          e2);
     if (t_quick) return;
@@ -699,7 +704,7 @@ void test_hc_fluid_viscosity(void)
         hcbd_hc_world w;
         const double gdot = 0.05;
         double eta[20], s[HCBD_HC_NSTRESS];
-        int b, nb = 20;
+        int b, nb = q ? 20 : (int)(20 * t_len + 0.5); /* blocks of 6 (2.5 x L^2/(4 pi^2 nu)) */
         d.params.gdot = gdot;
         if (!hc_make(&w, &d, 0)) return;
         hc_run(&w, (int)(40 / dt));
@@ -799,7 +804,7 @@ void test_hc_poiseuille_no_lag(void)
 {
     hcbd_hc_def d = fluid_scene(5, 10, 5, 0.04);
     hcbd_hc_world w;
-    const int nslab = 10, ns = t_quick ? 100 : 400, np = 250, nb = 10;
+    const int nslab = 10, ns = t_quick ? 100 : 10 * (int)(40 * t_len + 0.5), np = 250, nb = 10;
     const double g = 0.05, W = 0.5 * d.params.L[1];
     double *mf, of[50], num = 0, den = 0, c = 0, nu, dy2, lag[10], vmax, m, e;
     hcbd_slabs sf;

@@ -233,23 +233,28 @@ void test_wall_morris_friction(void)
 /* Equilibrium channel of ideal particles (Gaussian walls, no body force):
    slab temperature profile.  Returns the largest relative deviation of a
    slab holding 20 % of the mean count from the central slabs, the error of
-   that deviation, and the central temperature with its error. */
+   that deviation, and the central temperature with its error.  The full
+   run is 20 profile blocks of time / 20; a shorter one (len < 1) keeps
+   the blocks and runs round(20 len) of them: the slab temperature is taken
+   about each block's slab mean, so the block length sets that estimator's
+   small bias (below), which must not change with the run length. */
 static int temperature_profile(double dt, int noise_beta, hcbd_pair_integrator integ, double time,
-                               double *dev, double *dev_err, double *Tc, double *Tc_err, double *dep)
+                               double len, double *dev, double *dev_err, double *Tc,
+                               double *Tc_err, double *dep)
 {
     hcbd_world_def d = channel();
     hcbd_world w;
     hcbd_profile pr;
     double mem[26 * 15], out[26 * 8], tc = 0, tce = 0, mc = 0;
-    int k, s, nc = 0, ncen = 0, steps = (int)(time / dt);
+    int k, s, nc = 0, ncen = 0, block = (int)(time / dt) / 200, nblk = (int)(20 * len + 0.5);
     d.params.dt = dt;
     d.params.pair_integrator = integ;
     d.params.wall_noise_beta = noise_beta;
     if (!make_world(&w, &d)) return 0;
     hcbd_world_place_lattice(&w, 406);
     if (!run(&w, (int)(0.5 / dt))) return 0;
-    hcbd_profile_init(&pr, &w, 26, steps / 200, mem, sizeof mem);
-    for (k = 0; k < steps / 10; ++k) {
+    hcbd_profile_init(&pr, &w, 26, block, mem, sizeof mem);
+    for (k = 0; k < block * nblk; ++k) {
         if (!run(&w, 10)) return 0;
         hcbd_profile_sample(&pr, &w);
     }
@@ -290,19 +295,20 @@ static int temperature_profile(double dt, int noise_beta, hcbd_pair_integrator i
 void test_wall_temperature_profile(void)
 {
     double dev, de, T1, T1e, T2, T2e, devn, den, Tn, Tne, time = t_quick ? 1.0 : 4.0, dep, dep2;
+    double len = t_quick ? 1.0 : t_len; /* runs of len x time, blocks of time / 20 */
     hcbd_theory th;
     hcbd_params p = channel().params;
     hcbd_theory_of(&p, &th);
-    if (!temperature_profile(2e-4, 1, HCBD_PAIR_EULER, time, &dev, &de, &T1, &T1e, &dep)) return;
+    if (!temperature_profile(2e-4, 1, HCBD_PAIR_EULER, time, len, &dev, &de, &T1, &T1e, &dep)) return;
     NOTE("dt = 2e-4: largest slab deviation %.4f +- %.4f, T_centre = %.4f +- %.4f, excluded "
          "width %.4f (Boltzmann %.4f)", dev, de, T1, T1e, dep, th.depletion_width);
     CHECK(fabs(dev) < 0.03, "a slab's temperature deviates by %.4f +- %.4f", dev, de);
-    if (!temperature_profile(2e-4, 0, HCBD_PAIR_EULER, time, &devn, &den, &Tn, &Tne, &dep2)) return;
+    if (!temperature_profile(2e-4, 0, HCBD_PAIR_EULER, time, len, &devn, &den, &Tn, &Tne, &dep2)) return;
     NOTE("without sqrt(beta): largest deviation %.4f +- %.4f", devn, den);
     CHECK(devn < -0.03 && devn + 3 * den < -0.03,
           "without sqrt(beta) the wall slabs should cool by more than 3 %%: %.4f +- %.4f", devn, den);
     if (t_quick) return;
-    if (!temperature_profile(1e-4, 1, HCBD_PAIR_EULER, time, &dev, &de, &T2, &T2e, &dep2)) return;
+    if (!temperature_profile(1e-4, 1, HCBD_PAIR_EULER, time, len, &dev, &de, &T2, &T2e, &dep2)) return;
     NOTE("dt = 1e-4: largest slab deviation %.4f +- %.4f, T_centre = %.4f +- %.4f, excluded "
          "width %.4f", dev, de, T2, T2e, dep2);
     CHECK(fabs(0.5 * (dep + dep2) / th.depletion_width - 1) < 0.1,
@@ -317,7 +323,7 @@ void test_wall_temperature_profile(void)
        mean, reads about 1 % low in both), and a flat profile. */
     {
         double Ts, Tse, T0 = 2 * T2 - T1, T0e = sqrt(4 * T2e * T2e + T1e * T1e);
-        if (!temperature_profile(2e-4, 1, HCBD_PAIR_SHARDLOW, time, &dev, &de, &Ts, &Tse, &dep2)) return;
+        if (!temperature_profile(2e-4, 1, HCBD_PAIR_SHARDLOW, time, len, &dev, &de, &Ts, &Tse, &dep2)) return;
         NOTE("Shardlow, dt = 2e-4: largest slab deviation %.4f +- %.4f, T_centre = %.4f +- %.4f "
              "(Euler extrapolated to dt = 0: %.4f +- %.4f)", dev, de, Ts, Tse, T0, T0e);
         CHECK(fabs(Ts - T0) < 4 * sqrt(Tse * Tse + T0e * T0e), "Shardlow: central temperature %.4f +- "
@@ -360,12 +366,16 @@ void test_wall_momentum_decay(void)
    series (2016).  Profiles are not compared slab by slab: the velocity
    profile fluctuates as a whole, and density differences across the
    channel relax diffusively in W^2/(pi^2 D) ~ 6 time units, the length of
-   the run, so slab-wise block errors would be far too small. */
+   the full run, so slab-wise block errors would be far too small.  The
+   full run is 20 blocks of 0.3 time units (twice the slowest decay of the
+   flow, W^2/(pi^2 nu) ~ 0.13); a shorter one keeps the blocks and runs
+   round(20 t_len) of them. */
 void test_wall_body_force_variants(void)
 {
     double vm[2], ve[2];
     static double vs[3000];
-    int v, k, steps = t_quick ? 4000 : 30000, ns = steps / 10;
+    int v, k, nb = t_quick ? 20 : (int)(20 * t_len + 0.5), steps = t_quick ? 4000 : 1500 * nb;
+    int ns = steps / 10;
     for (v = 0; v < 2; ++v) {
         hcbd_world_def d = channel();
         hcbd_world w;
@@ -384,7 +394,7 @@ void test_wall_body_force_variants(void)
             hcbd_momentum(&w, p);
             vs[k] = p[0] / (w.n * w.m);
         }
-        block_stats(vs, ns, 20, &vm[v], &ve[v]);
+        block_stats(vs, ns, nb, &vm[v], &ve[v]);
         hcbd_world_destroy(&w);
     }
     NOTE("mean flow velocity %.3f +- %.3f (both) vs %.3f +- %.3f (background only)", vm[0], ve[0],
@@ -458,7 +468,10 @@ static void fit_slabs(const double *out, double ylo, double yhi, double q[3], do
     for (i = 0; i < 3; ++i) q[i] = C[3 * i] * r[0] + C[3 * i + 1] * r[1] + C[3 * i + 2] * r[2];
 }
 
-static int channel_run(hcbd_wall_mode mode, double beta_max, double time, chan_result *cr)
+/* A run of len x time after the equilibration; the profile's blocks are
+   those of the full run (time / 20), so a shorter run has fewer of them. */
+static int channel_run(hcbd_wall_mode mode, double beta_max, double time, double len,
+                       chan_result *cr)
 {
     hcbd_world_def d = channel();
     hcbd_world w;
@@ -466,18 +479,19 @@ static int channel_run(hcbd_wall_mode mode, double beta_max, double time, chan_r
     static double mem[NSUB + 1][26 * 15];
     double out[26 * 8], C[9], q[3], nb = 0, g[3], nus[NSUB];
     const double grav = 200.0;
-    int k, s, i, j, ncen = 0, steps;
+    int k, s, i, j, ncen = 0, steps, block;
     d.params.tau = 2e-3;
     d.params.xip = 1.5;
     d.params.dt = 2e-4;
     d.params.fext[0] = grav * d.params.xip * d.params.tau;
     d.params.wall_mode = mode;
     d.params.wall_beta_max = beta_max;
-    steps = (int)(time / d.params.dt) / (10 * NSUB) * (10 * NSUB);
+    block = (int)(time / d.params.dt) / (10 * NSUB) * (10 * NSUB) / 200;
+    steps = (int)(time * len / d.params.dt) / (10 * NSUB) * (10 * NSUB);
     if (!make_world(&w, &d)) return 0;
     hcbd_world_place_lattice(&w, 406);
     if (!run(&w, (int)(1.0 / d.params.dt))) return 0; /* ~10 W^2/nu */
-    hcbd_profile_init(&pr, &w, 26, steps / 200, mem[NSUB], sizeof mem[NSUB]);
+    hcbd_profile_init(&pr, &w, 26, block, mem[NSUB], sizeof mem[NSUB]);
     for (k = 0; k < NSUB; ++k) hcbd_profile_init(&sub[k], &w, 26, steps / (10 * NSUB) / 8, mem[k], sizeof mem[k]);
     for (k = 0; k < steps / 10; ++k) {
         if (!run(&w, 10)) return 0;
@@ -616,14 +630,15 @@ void test_wall_channel_flow(void)
     hcbd_theory th;
     chan_result g, ns, rf;
     double time = t_quick ? 1.0 : 6.0, nu_le, nu_le_err, nu_tc, nu_tc_err, nu_mf, a, b, c;
+    double len = t_quick ? 1.0 : t_len;
     hcbd_theory_of(&p, &th);
-    if (!channel_run(HCBD_WALL_GAUSS, 1.5, 0.5 * time, &g)) return; /* a large slip */
+    if (!channel_run(HCBD_WALL_GAUSS, 1.5, 0.5 * time, len, &g)) return; /* a large slip */
     NOTE("gauss:   v_max %.3f +- %.3f, slip %.4f +- %.4f, excluded width %.4f (Boltzmann %.4f)",
          g.vmax, g.vmax_err, g.slip, g.slip_err, g.dep, th.depletion_width);
-    if (!channel_run(HCBD_WALL_NOSLIP, 5.0, time, &ns)) return;
+    if (!channel_run(HCBD_WALL_NOSLIP, 5.0, time, len, &ns)) return;
     NOTE("noslip:  v_max %.3f +- %.3f, slip %.4f +- %.4f, excluded width %.4f, centre density %.4f",
          ns.vmax, ns.vmax_err, ns.slip, ns.slip_err, ns.dep, ns.n_centre);
-    if (!channel_run(HCBD_WALL_REFLECT, 1.5, time, &rf)) return;
+    if (!channel_run(HCBD_WALL_REFLECT, 1.5, time, len, &rf)) return;
     NOTE("reflect: v_max %.3f +- %.3f, slip %.4f +- %.4f, excluded width %.4f (pile-up), centre "
          "density %.4f", rf.vmax, rf.vmax_err, rf.slip, rf.slip_err, rf.dep, rf.n_centre);
     CHECK(g.pen == 0 && ns.pen == 0 && rf.pen == 0, "ideal particles entered a wall: %g %g %g",
@@ -635,8 +650,8 @@ void test_wall_channel_flow(void)
           ns.slip_err);
     CHECK(rf.dep < 0, "reflecting walls: no pile-up of ideal carriers (excluded width %.4f)", rf.dep);
 
-    if (!le_nu(4.0, 8.0, &nu_le, &nu_le_err)) return;
-    if (!transverse_nu(8, 1.5, &nu_tc, &nu_tc_err)) return;
+    if (!le_nu(4.0, 8.0 * len, &nu_le, &nu_le_err)) return;
+    if (!transverse_nu(8, 1.5 * len, &nu_tc, &nu_tc_err)) return; /* C_t is 0.1 by 0.12 */
     nu_mf = 2.5 * 2.5 / (28 * 2e-3);
     NOTE("kinematic viscosity / (Rc^2/28 tau = %.1f): channel curvature %.3f +- %.3f (no-slip "
          "mode %.3f +- %.3f), Lees-Edwards %.3f +- %.3f, transverse current %.3f +- %.3f", nu_mf,
@@ -666,7 +681,8 @@ void test_wall_penetration(void)
         hcbd_world_def d = channel();
         hcbd_world w;
         int64_t count = 0, last_step = -1, got_step;
-        int s, i, got_id, last_id = -1, steps = pass ? (t_quick ? 2000 : 30000) : 500;
+        int s, i, got_id, last_id = -1;
+        int steps = pass ? (t_quick ? 2000 : (int)(30000 * t_len)) : 500;
         double deepest = 0;
         if (pass == 0) d.params.wall_a = 3.0; /* 3 kT plane, ideal particles */
         else {
