@@ -31,7 +31,7 @@ HC_EXAMPLES := $(B)/hcbd_fluid $(B)/hcbd_polymer
 HEADERS  := hcbd.h
 TEST_SRC := $(wildcard tests/test_*.c) tests/main.c
 
-.PHONY: all run test validate mutants test-main test-float test-gibd test-hcbd test-sanitize test-sanitize-hcbd test-tsan test-tsan-hcbd test-fuzz-args test-fuzz-ckpt test-install test-build build-check install fuzz bench bench-wp bench-stability bench-peers bench-parts bench-soak clean
+.PHONY: all run test validate mutants test-main test-walls test-float test-gibd test-hcbd test-sanitize test-sanitize-hcbd test-tsan test-tsan-hcbd test-fuzz-args test-fuzz-ckpt test-install test-build build-check install fuzz bench bench-wp bench-stability bench-peers bench-parts bench-soak clean
 
 all: $(B)/hcbd_impl.o $(EXAMPLES) $(HC_EXAMPLES)
 
@@ -87,11 +87,14 @@ $(B)/run_tests_san: $(TEST_SRC) tests/test.h tests/list.h hcbd_impl.c $(HEADERS)
 # the fuzz inputs replayed under ASan + UBSan; an install and a program
 # built against the installed header only.
 JOBS ?= 2
-TEST_PARTS := main sanitize sanitize-hcbd hcbd float gibd tsan tsan-hcbd fuzz-args fuzz-ckpt install build
+TEST_PARTS := main walls sanitize sanitize-hcbd hcbd float gibd tsan tsan-hcbd fuzz-args fuzz-ckpt install build
 LOG = > $(CURDIR)/$(B)/logs/$(1).log 2>&1 || { tail -n 30 $(CURDIR)/$(B)/logs/$(1).log; exit 1; }
 test:
 	@rm -rf $(B)/logs && mkdir -p $(B)/logs
 	@date +%s > $(B)/logs/start
+	@# the main suite is the longest part: its binary first, so that it
+	@# runs while the other parts build
+	-@$(MAKE) --no-print-directory -j$(JOBS) $(B)/run_tests $(B)/gibd_bulk
 	-@$(MAKE) --no-print-directory -k -j$(JOBS) $(addprefix test-,$(TEST_PARTS))
 	@tests/summary.sh $(B)/logs $(TEST_PARTS)
 
@@ -109,8 +112,12 @@ validate: $(B)/run_tests $(B)/run_tests_hcbd $(B)/gibd_bulk
 $(B)/logs:
 	mkdir -p $@
 
+# The suite in two parts that run side by side: the wall tests, then the rest.
 test-main: $(B)/run_tests $(B)/gibd_bulk | $(B)/logs
-	./$(B)/run_tests $(call LOG,main)
+	HCBD_TEST_SKIP=test_wall_ ./$(B)/run_tests $(call LOG,main)
+
+test-walls: $(B)/run_tests | $(B)/logs
+	./$(B)/run_tests test_wall_ $(call LOG,walls)
 
 test-float: $(B)/run_tests_float | $(B)/logs
 	./$(B)/run_tests_float test_determinism test_golden test_checkpoint $(call LOG,float)
