@@ -132,7 +132,7 @@ test-hcbd: $(B)/run_tests_hcbd | $(B)/logs
 # repeat code paths that shorter tests (the absolute one-step tests, the
 # wall and shear tests) already take, and their asserts are off in quick
 # mode anyway.
-SAN_SKIP := test_wall_body_force_variants,test_le_linear_profile,test_statics_default_tau,test_wall_temperature_profile,test_msd_tau_trend,test_msd_ideal_gibd,test_transverse_current_initial_decay
+SAN_SKIP := test_wall_channel_flow,test_wall_body_force_variants,test_le_linear_profile,test_statics_default_tau,test_wall_temperature_profile,test_msd_tau_trend,test_msd_ideal_gibd,test_transverse_current_initial_decay
 SAN_SKIP_HC := test_hc_fluid_viscosity,test_hc_poiseuille_no_lag
 test-sanitize: $(B)/run_tests_san $(B)/gibd_bulk | $(B)/logs
 	ASAN_OPTIONS=detect_leaks=1 HCBD_TEST_SKIP=$(SAN_SKIP) ./$(B)/run_tests_san --quick $(call LOG,sanitize)

@@ -92,6 +92,26 @@ static inline int run(hcbd_world *w, int steps)
 }
 
 #if HCBD_MODEL == HCBD_MODEL_HCBD
+static inline int hc_create(hcbd_hc_world *w, const hcbd_hc_def *d)
+{
+    if (hcbd_hc_world_create(w, d) != HCBD_OK) {
+        printf("    world: %s\n", w->err.msg);
+        t_fail = 1;
+        return 0;
+    }
+    return 1;
+}
+
+static inline int hc_run(hcbd_hc_world *w, int steps)
+{
+    if (hcbd_hc_step(w, steps) != HCBD_OK) {
+        printf("    step: %s\n", w->err.msg);
+        t_fail = 1;
+        return 0;
+    }
+    return 1;
+}
+
 /* A reduced HCBD scene: m = 1, kT = 1, nbar = 3/(4 pi) (lattice spacing
    a = 1.612), h = 2, nu = 1, c_s = 5 (c_s h / nu = 10), dt = 0.02; the box
    holds nx x ny x nz lattice sites exactly. */

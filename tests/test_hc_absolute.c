@@ -187,16 +187,6 @@ static double a_maxdiff(const double *x, const double *y, int n, double *scale)
     return m;
 }
 
-static int a_create(hcbd_hc_world *w, const hcbd_hc_def *d)
-{
-    if (hcbd_hc_world_create(w, d) != HCBD_OK) {
-        printf("    world: %s\n", w->err.msg);
-        t_fail = 1;
-        return 0;
-    }
-    return 1;
-}
-
 static int a_ok(hcbd_hc_world *w, hcbd_result r, const char *what)
 {
     if (r != HCBD_OK) {
@@ -207,7 +197,6 @@ static int a_ok(hcbd_hc_world *w, hcbd_result r, const char *what)
     return 1;
 }
 
-static int a_run(hcbd_hc_world *w, int steps) { return a_ok(w, hcbd_hc_step(w, steps), "step"); }
 
 /* The statistical fluid scene (as test_hcbd.c's): nu = eta/rho = 1,
    c_s = 2.5, h = 2, lattice spacing 1.612, blob mass `mass`. */
@@ -255,7 +244,7 @@ static double a_lattice_density(const hcbd_hc_def *d)
     hcbd_hc_world w;
     double s = 0, dd[3];
     int j;
-    if (!a_create(&w, d)) return d->params.nbar;
+    if (!hc_create(&w, d)) return d->params.nbar;
     if (a_ok(&w, hcbd_hc_place_fluid_lattice(&w, d->fluid_capacity), "lattice"))
         for (j = 0; j < w.nf; ++j) s += a_m4(a_ff(&w, 0, j, dd), w.p.h);
     hcbd_hc_world_destroy(&w);
@@ -285,7 +274,7 @@ void test_hc_abs_eos(void)
         for (c = 0; c < 3; ++c) d.params.L[c] *= s[q];
         d.params.fluctuations = 0;
         p0 = d.params;
-        if (!a_create(&w, &d)) return;
+        if (!hc_create(&w, &d)) return;
         if (!a_ok(&w, hcbd_hc_place_fluid_lattice(&w, d.fluid_capacity), "lattice")) return;
         n = (double *)malloc(sizeof(double) * w.nf);
         a_fluid_density(&w, n);
@@ -354,7 +343,7 @@ void test_hc_abs_polymer_pair_forces(void)
             if (kind == 1) { p->p_kuhn = 100; p->alpha = 0; }      /* Flory-Huggins only */
             if (kind == 2) { p->kT = 0; p->alpha = 50; p->tau_lambda = 0.05; } /* relaxation */
             for (c = 0; c < 3; ++c) xyz[3 + c] = xyz[c] + r * e[c];
-            if (!a_create(&w, &d)) return;
+            if (!hc_create(&w, &d)) return;
             if (!a_ok(&w, hcbd_hc_place_fluid_lattice(&w, d.fluid_capacity), "lattice") ||
                 !a_ok(&w, hcbd_hc_set_polymers(&w, 2, xyz), "polymers") ||
                 (p->alpha > 0 && !a_ok(&w, hcbd_hc_set_lambda(&w, 0, 1, lam), "set_lambda"))) {
@@ -382,7 +371,7 @@ void test_hc_abs_polymer_pair_forces(void)
                 else { if (err / scale > worst_f) worst_f = err / scale; if (q == 1) Ff = F[0] / -e[0]; }
             } else {
                 double l1, pred = leq + (lam - leq) * exp(-p->dt / p->tau_lambda);
-                a_run(&w, 1);
+                hc_run(&w, 1);
                 hcbd_hc_lambda(&w, 0, 1, &l1);
                 if (fabs(l1 - pred) / fabs(lam - leq) > worst_l) worst_l = fabs(l1 - pred) / fabs(lam - leq);
             }
@@ -442,7 +431,7 @@ void test_hc_abs_one_step(void)
         }
         m = A_MASS(p);
         hcbd_rng_seed(&g, 11 + var);
-        if (!a_create(&w, &d)) return;
+        if (!hc_create(&w, &d)) return;
         ok = a_ok(&w, hcbd_hc_place_fluid_lattice(&w, nf), "lattice");
         for (i = 0; i < nf && ok; ++i)
             for (c = 0; c < 3; ++c) {
@@ -501,7 +490,7 @@ void test_hc_abs_one_step(void)
         {
             double px0[6], py0[6], pz0[6], sv, dts = p->dt / m;
             for (a = 0; a < np; ++a) { px0[a] = w.px[a]; py0[a] = w.py[a]; pz0[a] = w.pz[a]; }
-            if (!a_run(&w, 1)) break;
+            if (!hc_run(&w, 1)) break;
             for (i = 0; i < nf; ++i)
                 for (c = 0; c < 3; ++c) {
                     const double vn = c == 0 ? w.fvx[i] : (c == 1 ? w.fvy[i] : w.fvz[i]);
@@ -584,7 +573,7 @@ void test_hc_abs_polymer_diffusion(void)
     d.params.fluctuations = 0;
     d.params.p_kuhn = 0;
     d.params.alpha = 0;
-    if (!a_create(&w, &d)) return;
+    if (!hc_create(&w, &d)) return;
     if (!a_ok(&w, hcbd_hc_place_fluid_lattice(&w, d.fluid_capacity), "lattice") ||
         !a_ok(&w, hcbd_hc_place_polymers_random(&w, np), "polymers")) {
         hcbd_hc_world_destroy(&w);
@@ -593,7 +582,7 @@ void test_hc_abs_polymer_diffusion(void)
     for (a = 0; a < np; ++a) sq[a] = q4[a] = 0;
     for (k = 0; k < ns; ++k) {
         for (a = 0; a < np; ++a) { x0[3 * a] = w.px[a]; x0[3 * a + 1] = w.py[a]; x0[3 * a + 2] = w.pz[a]; }
-        if (!a_run(&w, 1)) break;
+        if (!hc_run(&w, 1)) break;
         for (a = 0; a < np; ++a) {
             double dd[3];
             a_sep(d.params.L, w.px[a], w.py[a], w.pz[a], x0[3 * a], x0[3 * a + 1], x0[3 * a + 2], dd);
@@ -652,7 +641,7 @@ void test_hc_abs_viscosity_lattice(void)
         double *xyz, *v, *n, G, Gm, j0 = 0, j1 = 0, half = 0, gE, g0 = 0;
         int i, s;
         d.params.nbar = nbar;
-        if (!a_create(&w, &d)) return;
+        if (!hc_create(&w, &d)) return;
         if (!a_ok(&w, hcbd_hc_place_fluid_lattice(&w, d.fluid_capacity), "lattice")) return;
         xyz = (double *)malloc(sizeof(double) * 3 * w.nf);
         v = (double *)malloc(sizeof(double) * 3 * w.nf);
@@ -667,7 +656,7 @@ void test_hc_abs_viscosity_lattice(void)
         }
         for (i = 0; i < w.nf; ++i) j0 += w.fvy[i] * sin(k * w.fx[i]);
         for (s = 0; s < ns; ++s) {
-            if (!a_run(&w, 1)) break;
+            if (!hc_run(&w, 1)) break;
             if (s == ns / 2 - 1)
                 for (i = 0; i < w.nf; ++i) half += w.fvy[i] * sin(k * w.fx[i]);
         }
@@ -703,7 +692,7 @@ void test_hc_abs_sound_lattice(void)
     const double cs = sqrt(7 * d.params.P0 / d.params.rho);
     double *xyz, *v, *X, *n, *Fp, *Fv, K = 0, ss = 0, G, wd, wc, wk = 0, t0 = -1, prev = 0, om;
     int i, s;
-    if (!a_create(&w, &d)) return;
+    if (!hc_create(&w, &d)) return;
     if (!a_ok(&w, hcbd_hc_place_fluid_lattice(&w, d.fluid_capacity), "lattice")) return;
     xyz = (double *)malloc(sizeof(double) * 3 * w.nf);
     v = (double *)malloc(sizeof(double) * 3 * w.nf);
@@ -743,7 +732,7 @@ void test_hc_abs_sound_lattice(void)
     if (!a_ok(&w, hcbd_hc_set_fluid(&w, w.nf, X, v), "fluid")) return;
     for (s = 1; s <= 400 && t0 < 0; ++s) {
         double D = 0;
-        if (!a_run(&w, 1)) break;
+        if (!hc_run(&w, 1)) break;
         for (i = 0; i < w.nf; ++i) {
             double dx = w.fx[i] - X[3 * i];
             dx -= d.params.L[0] * round(dx / d.params.L[0]);
@@ -785,13 +774,13 @@ static void a_fluct_wave(hcbd_pair_integrator pi)
     double *t = (double *)malloc(sizeof(double) * ns), *j = (double *)malloc(sizeof(double) * 4 * ns);
     double *T = (double *)malloc(sizeof(double) * nT), *n, nu[4], m, e, Tm, Te, g0 = 0;
     int s, i, ch;
-    if (!a_create(&w, &d)) return;
+    if (!hc_create(&w, &d)) return;
     if (!a_ok(&w, hcbd_hc_place_fluid_lattice(&w, d.fluid_capacity), "lattice")) {
         hcbd_hc_world_destroy(&w);
         return;
     }
     for (s = 0; s < melt; ++s) {
-        if (!a_run(&w, 1)) break;
+        if (!hc_run(&w, 1)) break;
         if (s >= skip) T[s - skip] = hcbd_hc_temperature(&w) / d.params.kT;
     }
     n = (double *)malloc(sizeof(double) * w.nf);
@@ -817,7 +806,7 @@ static void a_fluct_wave(hcbd_pair_integrator pi)
         }
         t[s] = s * every * dt;
         for (ch = 0; ch < 4; ++ch) j[4 * s + ch] = (ch == 3 ? -P[ch] : P[ch]) / (0.5 * a * w.nf);
-        if (s < ns - 1 && !a_run(&w, every)) break;
+        if (s < ns - 1 && !hc_run(&w, every)) break;
     }
     for (ch = 0; ch < 4; ++ch) {
         double S = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;

@@ -9,26 +9,12 @@ static const double PI_ = 3.14159265358979323846;
 
 static int hc_make(hcbd_hc_world *w, const hcbd_hc_def *d, int npoly)
 {
-    if (hcbd_hc_world_create(w, d) != HCBD_OK) {
-        printf("    world: %s\n", w->err.msg);
-        t_fail = 1;
-        return 0;
-    }
+    if (!hc_create(w, d)) return 0;
     if (hcbd_hc_place_fluid_lattice(w, d->fluid_capacity) != HCBD_OK ||
         (npoly > 0 && hcbd_hc_place_polymers_random(w, npoly) != HCBD_OK)) {
         printf("    set-up: %s\n", w->err.msg);
         t_fail = 1;
         hcbd_hc_world_destroy(w);
-        return 0;
-    }
-    return 1;
-}
-
-static int hc_run(hcbd_hc_world *w, int steps)
-{
-    if (hcbd_hc_step(w, steps) != HCBD_OK) {
-        printf("    step: %s\n", w->err.msg);
-        t_fail = 1;
         return 0;
     }
     return 1;
