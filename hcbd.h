@@ -66,28 +66,40 @@
      malloc convenience.  The step loop never allocates.
 
    RANDOM NUMBERS
-     xoshiro256** (Blackman & Vigna), seeded through splitmix64, one stream
-     per particle (moves with the particle when storage is re-sorted): the
-     Brownian displacements and the initial velocities.  Pair noise comes
-     from a counter-based stream: the key is a 64-bit mix (splitmix64's
-     finaliser) of (seed, step, min id, max id); the stream is splitmix64
-     started at that key.  A pair's noise is therefore a pure function of
-     its ids and the step, independent of threads and storage order.
-     Gaussians: 256-layer ziggurat (Marsaglia & Tsang 2000, Doornik's
-     layout): one 64-bit draw gives the layer (low 8 bits) and a 53-bit
-     uniform; 99% of draws return after one multiply and compare, the rest
-     use the wedge or the exact tail method.  Tables are built at init.
-     HCBD_NOISE_UNIFORM replaces pair-noise Gaussians by variance-matched
-     uniforms (cheaper, same first two moments).
+     Counter based, no generator state per particle: the Brownian noise of
+     a particle is keyed by a 64-bit mix (splitmix64's finaliser) of (seed,
+     step, id), a pair's noise by one of (seed, step, min id, max id); the
+     stream is splitmix64 started at the key.  A draw is therefore a pure
+     function of ids and step, independent of threads and storage order
+     (hcbd_particle_normals and hcbd_pair_normals return it).  Gaussians:
+     256-layer ziggurat (Marsaglia & Tsang 2000, Doornik's layout): one
+     64-bit draw gives the layer (low 8 bits) and a 53-bit uniform; 99% of
+     draws return after one multiply and compare, the rest use the wedge or
+     the exact tail method.  HCBD_NOISE_UNIFORM draws variance-matched
+     uniforms instead, three of 21 bits from the key itself (the same first
+     two moments; what LAMMPS fix brownian draws by default).  xoshiro256**
+     (Blackman & Vigna) seeds the initial velocities and the HCBD world.
 
    DETERMINISM
-     Every per-particle sum runs over partners in increasing id order and
-     skips pairs beyond the cut-off, so results depend on neither the thread
-     count, nor the storage order (particles are re-sorted by cell at every
-     neighbour-list rebuild), nor when the list is rebuilt; observables sum
-     in id order too.  Across builds, bits agree only if the compiler may
-     not contract a*b+c into FMA: compile with -ffp-contract=off (the
-     Makefile does).
+     Pair sums are integers: each pair term is rounded to a fixed-point
+     grid (2^-50 of a bound set by the parameters, see "fixed-point pair
+     sums" below) and added to both particles, so a sum has the same bits
+     in any order and the two sides cancel exactly.  Results depend on
+     neither the thread count, nor the storage order, nor when the list is
+     rebuilt, nor the vector width.  The exact pair sweep (the default pair
+     integrator) runs in a fixed order set by positions and ids.  Across
+     builds, bits agree only if the compiler may not contract a*b+c into
+     FMA: compile with -ffp-contract=off (the Makefile does).
+
+   CONTENTS (implementation, in the order data flows through a step)
+     errors; parameters and their checks; random numbers; kernels (Wendland,
+     star potential and its force table); fixed-point pair sums; world and
+     storage; walls (artificial particles, Morris pairs); box, Lees-Edwards
+     and cells; neighbour search (cell lists, half Verlet list); pair
+     passes (density, forces and Euler exchanges, exact pair sweep);
+     integrator; step; observables (g(r), correlators, MSD, Carreau fit,
+     profiles); the HCBD world (its kernels, parameters, storage, set-up,
+     pair passes, step, observables); guard; checkpoints; XYZ and thermo.
 
    ERRORS
      Every public function returns hcbd_result (HCBD_OK = 0).  On failure
@@ -176,17 +188,20 @@ typedef enum hcbd_potential {
 
 typedef enum hcbd_noise {
     HCBD_NOISE_GAUSS = 0,
-    HCBD_NOISE_UNIFORM = 1  /* pair noise only; uniform with unit variance */
+    HCBD_NOISE_UNIFORM = 1  /* uniform with unit variance, pair and Brownian
+                               noise (LAMMPS fix brownian's default) */
 } hcbd_noise;
 
 typedef enum hcbd_pair_integrator {
-    HCBD_PAIR_EULER = 0,    /* the papers: all pair exchanges from v(t); the
-                               temperature is high by O(dt/tau)           */
-    HCBD_PAIR_SHARDLOW = 1  /* not in the papers: each pair's friction and
-                               noise solved exactly (pairwise Ornstein-
-                               Uhlenbeck) in a sweep over pairs in (min id,
-                               max id) order (Shardlow 2003); no O(dt/tau)
-                               temperature bias.  The sweep is serial.     */
+    HCBD_PAIR_EULER = 0,    /* the papers' scheme, kept to reproduce them:
+                               all pair exchanges from v(t); the
+                               temperature is high by O(dt/tau) (+1.3 % in
+                               g(r) terms at the 2014 scene)              */
+    HCBD_PAIR_SHARDLOW = 1  /* the default, not in the papers: each pair's
+                               friction and noise solved exactly (pairwise
+                               Ornstein-Uhlenbeck, Shardlow 2003) in a
+                               fixed sweep, parallel by colours of cell
+                               rows; no O(dt/tau) temperature bias          */
 } hcbd_pair_integrator;
 
 typedef enum hcbd_wall_mode {
@@ -222,6 +237,11 @@ typedef struct hcbd_params {
     double sigma;         /* star core size                                  */
     double star_eps;      /* energy unit of the star potential (kT of 2014)  */
     double rcut;          /* pair-potential cut-off                          */
+    int force_table;      /* HCBD_POT_STAR: 1 takes the step's F/r from a
+                             cubic Hermite table in r^2 (relative error
+                             < 1e-9: test_star_force_table); 0 evaluates
+                             2014 eq. 28.  Energies and observables always
+                             use the formula.                              */
     const double *table_F;/* HCBD_POT_TABLE: force F(r) = -dV/dr, table_n pts*/
     const double *table_V;/*   and V(r); uniform in r on [table_r0, rcut]    */
     int table_n;
@@ -247,7 +267,9 @@ typedef struct hcbd_params {
     int wall_noise_beta;  /* 1: Morris noise scaled by sqrt(beta) as the
                              fluctuation-dissipation theorem needs; 0 only
                              to show what breaks without it                 */
-    double skin;          /* Verlet skin                                     */
+    double skin;          /* Verlet skin; HCBD_AUTO: 0.6 (the fastest of
+                             0.4-1.0 for BD and GI-BD stars, README), less
+                             where the box is too small for it           */
     int sort;             /* 1: re-sort storage by cell at each rebuild      */
     uint64_t seed;
     int threads;          /* OpenMP threads (ignored without OpenMP)         */
@@ -298,7 +320,7 @@ typedef struct hcbd_world {
     int64_t max_pairs, npairs;
     int64_t step;
     /* derived constants */
-    double m, inv_m, w0, cw, cf, rho_norm, rlist, cutmax;
+    double m, inv_m, w0, cw, cf, rho_norm, rlist, cutmax, skin;
     double star_a, star_b, star_s, star_ab, star_s_sigma;
     int has_pairs, has_fext, has_noise, gibd, shardlow;
     /* statistics */
@@ -306,19 +328,21 @@ typedef struct hcbd_world {
     /* per-particle arrays (struct of arrays), storage order */
     hcbd_real *x, *y, *z;        /* positions in [0, L)                       */
     hcbd_real *vx, *vy, *vz;     /* background velocity (GI-BD)               */
-    hcbd_real *fx, *fy, *fz;     /* own-half pair force sums (scratch)        */
-    hcbd_real *px, *py, *pz;     /* own-half momentum exchanges (scratch)     */
-    hcbd_real *rho, *inv_rho, *wown;
+    hcbd_real *rho, *inv_rho;
     hcbd_real *x0, *y0, *z0;     /* positions at the last list build          */
     int32_t *ix, *iy, *iz;       /* periodic images crossed (unwrapped pos.)  */
     int32_t *id, *slot;          /* slot -> id, id -> slot                    */
-    uint64_t *rs0, *rs1, *rs2, *rs3; /* xoshiro256** state per particle       */
-    /* cells and neighbour lists */
+    /* pair sums in 64-bit fixed point (scratch of one step): force, momentum
+       exchange, weight; value = sum / q (see hcbd__fixed_scales) */
+    int64_t *aF[3], *aP[3], *aW;
+    double qF, qP, qW, limF, limP;
+    /* cells (z slowest) and the half neighbour list (owner = lower id,
+       partners in increasing id) */
     int nc[3], ncell;
     int32_t *cell_start, *cell_cursor, *cell_of, *perm;
-    int32_t *nb_start, *nb_j, *rev_start, *rev_p, *pair_i;
-    hcbd_real *buf[7];           /* per-pair values of the owner (lower id)   */
-    int nbuf, bF, bP, bW;        /* buffer slots: force, momentum, weight     */
+    int32_t *nb_start, *nb_j, *nb_tmp;
+    int sw_n[2];                 /* rows of the exact pair sweep (y, z)       */
+    int32_t *sw_start;
     double step_limit, disp_max;
     /* Lees-Edwards: offset s of the image above, its drift since the list
        build, per-particle x shifts applied at crossings (unwrapped x) */
@@ -342,8 +366,10 @@ typedef struct hcbd_world {
     void *scratch;               /* n x 8 bytes for permutations              */
     double *tab_F, *tab_V;
     double tab_inv_dr;
+    double *star_tab, star_u0, star_ih; /* cubic pieces of F/r in r^2 */
+    int star_kmax;
     hcbd__zig *zig;
-    uint64_t seed_key;
+    uint64_t seed_key, bd_key;
     int list_valid, rho_current, rho_valid;
     uint64_t live;        /* HCBD__LIVE while initialised: loaders replace
                              a live world only once the new one is built */
@@ -566,6 +592,10 @@ double hcbd_rng_normal(const hcbd_world *w, hcbd_rng *r);
 /* The pair noise of pair (a, b) at step s, exactly as the step draws it. */
 void hcbd_pair_normals(const hcbd_world *w, int64_t s, int32_t a, int32_t b,
                        double out[3]);
+/* The Brownian displacement noise of particle id at step s (unit variance;
+   Gaussian, or uniform with HCBD_NOISE_UNIFORM), exactly as the step draws
+   it. */
+void hcbd_particle_normals(const hcbd_world *w, int64_t s, int32_t id, double out[3]);
 
 /* >>kernels (exported for tests and users) --------------------------------*/
 double hcbd_wendland(double r, double Rc);
@@ -813,7 +843,7 @@ double hcbd_flory_g1(double phi, double chi);
    only w->err set.
    hcbd_save writes path.tmp and renames it, so a crash while writing never
    leaves a truncated checkpoint under path. */
-#define HCBD_CHECKPOINT_VERSION 1
+#define HCBD_CHECKPOINT_VERSION 2
 size_t hcbd_checkpoint_size(const hcbd_world *w);
 hcbd_result hcbd_checkpoint_save(hcbd_world *w, void *buf, size_t size);
 hcbd_result hcbd_checkpoint_load(hcbd_world *w, const void *buf, size_t size);
@@ -905,8 +935,10 @@ int64_t hcbd_slabs_result(const hcbd_slabs *s, double *out);
 
 #if defined(__GNUC__) || defined(__clang__)
 #define HCBD__RESTRICT __restrict
+#define HCBD__INLINE static inline __attribute__((always_inline))
 #else
 #define HCBD__RESTRICT
+#define HCBD__INLINE static inline
 #endif
 
 #define HCBD__PI 3.14159265358979323846
@@ -917,6 +949,7 @@ int64_t hcbd_slabs_result(const hcbd_slabs *s, double *out);
 #define HCBD__STREAM_PLACE 0x3ULL
 #define HCBD__STREAM_WALL 0x4ULL
 #define HCBD__STREAM_WALL_PAIR 0x5ULL
+#define HCBD__STREAM_BROWNIAN 0x6ULL
 /* The GI-BD build compiles the wall branches away. */
 #define HCBD__WALLS (HCBD_MODEL == HCBD_MODEL_WALLED)
 
@@ -991,16 +1024,17 @@ hcbd_params hcbd_params_default(void)
     p.dynamics = HCBD_DYN_GIBD;
     p.potential = HCBD_POT_STAR;
     p.noise = HCBD_NOISE_GAUSS;
-    p.pair_integrator = HCBD_PAIR_EULER;
+    p.pair_integrator = HCBD_PAIR_SHARDLOW;
     p.f = 128.0;
     p.sigma = 1.0;
     p.star_eps = 1.0;
     p.rcut = 2.5;
+    p.force_table = 1;
     p.table_F = NULL;
     p.table_V = NULL;
     p.table_n = 0;
     p.table_r0 = 0.0;
-    p.skin = 0.4;
+    p.skin = HCBD_AUTO;
     p.gdot = 0.0;
     p.wall_thickness = 0.0;
     p.wall_beta_max = 1.5;
@@ -1035,6 +1069,21 @@ static double hcbd__cutmax(const hcbd_params *p)
     if (p->dynamics == HCBD_DYN_GIBD) c = p->Rc;
     if (p->potential != HCBD_POT_IDEAL && p->rcut > c) c = p->rcut;
     return c;
+}
+
+/* The Verlet skin: HCBD_AUTO takes 0.6, or what the box allows (two list
+   ranges per edge, three along x and y under shear), never below 0 */
+static double hcbd__skin(const hcbd_params *p)
+{
+    double s = 0.6, c = hcbd__cutmax(p);
+    int d;
+    if (p->skin != HCBD_AUTO) return p->skin;
+    for (d = 0; d < 3; ++d) {
+        double room = (p->gdot != 0.0 && d < 2 ? p->L[d] / 3.0 : 0.5 * p->L[d]) - c;
+        room *= 1.0 - 1e-9; /* L / rl must not round below the count */
+        if (room < s) s = room;
+    }
+    return s > 0 ? s : 0.0;
 }
 
 static int hcbd__needs_pairs(const hcbd_params *p)
@@ -1123,7 +1172,7 @@ hcbd_result hcbd_params_check(const hcbd_params *p, char *msg, size_t msg_size)
                 return HCBD_ERR_PARAM;
             }
     }
-    HCBD__CHECK(isfinite(p->skin) && p->skin >= 0, "skin", p->skin);
+    HCBD__CHECK(p->skin == HCBD_AUTO || (isfinite(p->skin) && p->skin >= 0), "skin", p->skin);
     HCBD__CHECK(isfinite(p->gdot), "gdot", p->gdot);
     if (p->gdot != 0.0) {
         HCBD__CHECK(p->dynamics == HCBD_DYN_GIBD, "gdot", p->gdot);
@@ -1132,11 +1181,11 @@ hcbd_result hcbd_params_check(const hcbd_params *p, char *msg, size_t msg_size)
         /* the sheared scan needs 3 cells along x and y, counted exactly as
            hcbd__cells does (L / rl can round just below 3) */
         for (d = 0; d < 2; ++d)
-            if (floor(p->L[d] / (hcbd__cutmax(p) + p->skin)) < 3.0) {
+            if (floor(p->L[d] / (hcbd__cutmax(p) + hcbd__skin(p))) < 3.0) {
                 if (msg && msg_size)
                     snprintf(msg, msg_size,
                              "box too small for Lees-Edwards: L[%d] = %.17g < 3 (cut-off "
-                             "%.17g + skin %.17g)", d, p->L[d], hcbd__cutmax(p), p->skin);
+                             "%.17g + skin %.17g)", d, p->L[d], hcbd__cutmax(p), hcbd__skin(p));
                 return HCBD_ERR_BOX;
             }
     }
@@ -1199,6 +1248,7 @@ hcbd_result hcbd_params_check(const hcbd_params *p, char *msg, size_t msg_size)
                         "density (the artificial particles' number density)", p->density);
     }
     HCBD__CHECK(p->sort == 0 || p->sort == 1, "sort", p->sort);
+    HCBD__CHECK(p->force_table == 0 || p->force_table == 1, "force_table", p->force_table);
     HCBD__CHECK(p->threads >= 1 && p->threads <= 1024, "threads", p->threads);
     HCBD__CHECK(isfinite(p->min_distance) && p->min_distance >= 0, "min_distance",
                 p->min_distance);
@@ -1207,14 +1257,14 @@ hcbd_result hcbd_params_check(const hcbd_params *p, char *msg, size_t msg_size)
     HCBD__CHECK(p->guard_step == HCBD_AUTO || (isfinite(p->guard_step) && p->guard_step > 0),
                 "guard_step", p->guard_step);
     if (hcbd__needs_pairs(p)) {
-        double rl = hcbd__cutmax(p) + p->skin;
+        double rl = hcbd__cutmax(p) + hcbd__skin(p);
         for (d = 0; d < 3; ++d)
             if (p->L[d] < 2.0 * rl) {
                 if (msg && msg_size)
                     snprintf(msg, msg_size,
                              "box too small: L[%d] = %.17g < 2 (cut-off %.17g + "
                              "skin %.17g); enlarge the box or reduce the skin",
-                             d, p->L[d], hcbd__cutmax(p), p->skin);
+                             d, p->L[d], hcbd__cutmax(p), hcbd__skin(p));
                 return HCBD_ERR_BOX;
             }
     }
@@ -1346,15 +1396,16 @@ static inline uint64_t hcbd__pair_key(uint64_t step_key, int32_t a, int32_t b)
     return hcbd__mix64(step_key ^ ((hi << 32) | lo));
 }
 
-/* Three pair-noise numbers of unit variance from a pair key. */
-static inline void hcbd__pair_noise(const hcbd_world *w, uint64_t key, double *z3)
+/* Three noise numbers of unit variance (hcbd_params.noise) from a key. */
+static inline void hcbd__noise3(const hcbd_world *w, uint64_t key, double *z3)
 {
     hcbd__gen g;
     g.xo = NULL;
     g.sm = key;
     if (w->p.noise == HCBD_NOISE_UNIFORM) {
-        /* 21 bits per component, uniform on (-sqrt 3, sqrt 3). */
-        uint64_t u = hcbd__gen_next(&g);
+        /* 21 bits per component, uniform on (-sqrt 3, sqrt 3), taken from
+           the key itself (already a mix64 output: one hash per pair) */
+        const uint64_t u = key;
         const double s = 1.7320508075688772 / 1048576.0;
         z3[0] = ((double)(u & 0x1FFFFF) + 0.5 - 1048576.0) * s;
         z3[1] = ((double)((u >> 21) & 0x1FFFFF) + 0.5 - 1048576.0) * s;
@@ -1366,6 +1417,24 @@ static inline void hcbd__pair_noise(const hcbd_world *w, uint64_t key, double *z
     }
 }
 
+/* Brownian displacement noise of particle id at step s: counter based, so
+   no generator state travels with the particle. */
+static inline uint64_t hcbd__particle_key(uint64_t step_key, int32_t id)
+{
+    return hcbd__mix64(step_key ^ (uint64_t)(uint32_t)id);
+}
+
+void hcbd_particle_normals(const hcbd_world *w, int64_t s, int32_t id, double out[3])
+{
+    if (!out) return;
+    if (!w || !w->zig) {
+        out[0] = out[1] = out[2] = NAN;
+        return;
+    }
+    hcbd__noise3(w, hcbd__particle_key(hcbd__mix64(w->bd_key ^ hcbd__mix64((uint64_t)s)), id),
+                 out);
+}
+
 void hcbd_pair_normals(const hcbd_world *w, int64_t s, int32_t a, int32_t b,
                        double out[3])
 {
@@ -1374,7 +1443,7 @@ void hcbd_pair_normals(const hcbd_world *w, int64_t s, int32_t a, int32_t b,
         out[0] = out[1] = out[2] = NAN;
         return;
     }
-    hcbd__pair_noise(w, hcbd__pair_key(hcbd__step_key(w, s), a, b), out);
+    hcbd__noise3(w, hcbd__pair_key(hcbd__step_key(w, s), a, b), out);
 }
 
 /* >>kernels */
@@ -1394,6 +1463,28 @@ double hcbd_wendland_dr(double r, double Rc)
     q = r / Rc;
     a = 1.0 - q;
     return -210.0 / (HCBD__PI * Rc * Rc * Rc * Rc) * a * a * a * q;
+}
+
+/* >>GI-BD equations (MODEL 1-3), the only place they are written; with
+   q = r/Rc, a = 1 - q, cw = w(0) = 21/(2 pi Rc^3), cf = 15/(2 pi Rc^3):
+     w(r)          = cw a^4 (1 + 4q)                 2014 eq. 22, 2016 eq. 21
+     rho_i         = m N (w(0) + sum_j w(r_ij))      2014 eq. 12; N = 1 (2014)
+                                                     or 1/(1 + w(0)/n#) (2016 eq. 7)
+     f_ij          = cf m (1/rho_i + 1/rho_j) a^3    2014 eq. 20
+     S_ij dt/tau   = m f_ij dt/tau = cs (1/rho_i + 1/rho_j) a^3, cs = cf m^2 dt/tau
+     Euler:    dp_ij = (S dt/tau)(v_j - v_i) + sqrt(2 kT S dt/tau) zeta   2014 eq. 15, 21
+     Shardlow: u' = u e + sqrt(2 kT/m (1 - e^2)) zeta, e = exp(-2 S dt/(m tau)),
+               dp_ij = (m/2)(u' - u), u = v_i - v_j (Shardlow 2003)
+   The helpers take the coefficient first so that every caller rounds the
+   same way. */
+static inline double hcbd__weight(double cw, double q, double a)
+{
+    return cw * a * a * a * a * (4.0 * q + 1.0);
+}
+
+static inline double hcbd__sdt(double cs, double inv_rho_i, double inv_rho_j, double a)
+{
+    return cs * (inv_rho_i + inv_rho_j) * a * a * a;
 }
 
 double hcbd_star_potential(double r, double f, double sigma, double eps)
@@ -1424,7 +1515,70 @@ static inline double hcbd__table(const hcbd_world *w, const double *t, double r)
     return t[k] + u * (t[k + 1] - t[k]);
 }
 
-/* Pair force divided by r, for r < rcut. */
+/* The step's star force: F/r as a function of u = r^2 on the outer branch
+   (sigma < r < rcut), in HCBD__STAR_K cubic Hermite pieces that match F/r
+   and its u-derivative at the nodes, no sqrt and no exp; the inner branch
+   a/r^2 is exact.  The error ~ h^4 f''''/384 grows as (s h)^4, s = sqrt(f)/2,
+   so the piece count grows as sqrt(f): 1024 pieces per sqrt(f/128) keep it
+   below 1e-9 relative (test_abs_star_table).  LAMMPS' pair_style table
+   does the same with linear pieces. */
+static int hcbd__star_pieces(const hcbd_params *p)
+{
+    double k = ceil(sqrt(p->f / 128.0));
+    return 1024 * (k < 1 ? 1 : (k > 64 ? 64 : (int)k));
+}
+
+static void hcbd__star_fu(const hcbd_world *w, double u, double *f, double *df)
+{
+    /* F(r) = ab e^{-s(q-1)} (1/q^2 + s/q)/sigma, q = r/sigma; F/r and
+       d(F/r)/du = (r F'(r) - F)/(2 r^3) */
+    const double sg = w->p.sigma, s = w->star_s, r = sqrt(u), q = r / sg;
+    const double e = w->star_ab * exp(-s * (q - 1.0)) / sg;
+    const double F = e * (1.0 / (q * q) + s / q);
+    const double dF = e / sg * (-s * (1.0 / (q * q) + s / q) - 2.0 / (q * q * q) - s / (q * q));
+    *f = F / r;
+    *df = (r * dF - F) / (2.0 * r * r * r);
+}
+
+static void hcbd__star_table_build(hcbd_world *w)
+{
+    const double u0 = w->p.sigma * w->p.sigma, u1 = w->p.rcut * w->p.rcut;
+    const int K = hcbd__star_pieces(&w->p);
+    const double h = (u1 - u0) / K;
+    double f0, d0, f1, d1;
+    int k;
+    w->star_kmax = K - 1;
+    w->star_u0 = u0;
+    if (u1 <= u0) return; /* only the inner branch is in range */
+    w->star_ih = 1.0 / h;
+    hcbd__star_fu(w, u0, &f0, &d0);
+    for (k = 0; k < K; ++k) {
+        double *c = w->star_tab + 4 * k;
+        hcbd__star_fu(w, u0 + (k + 1) * h, &f1, &d1);
+        c[0] = f0;
+        c[1] = h * d0;
+        c[2] = 3.0 * (f1 - f0) - 2.0 * h * d0 - h * d1;
+        c[3] = 2.0 * (f0 - f1) + h * d0 + h * d1;
+        f0 = f1;
+        d0 = d1;
+    }
+}
+
+static inline double hcbd__star_table(const hcbd_world *w, double r2)
+{
+    double t;
+    int k;
+    const double *c;
+    if (r2 <= w->star_u0) return w->star_a / r2;
+    t = (r2 - w->star_u0) * w->star_ih;
+    k = (int)t;
+    if (k > w->star_kmax) k = w->star_kmax;
+    t -= k;
+    c = w->star_tab + 4 * k;
+    return c[0] + t * (c[1] + t * (c[2] + t * c[3]));
+}
+
+/* Pair force divided by r, for r < rcut, from the formula. */
 static inline double hcbd__force_over_r(const hcbd_world *w, double r, double r2)
 {
     if (w->p.potential == HCBD_POT_STAR) {
@@ -1444,6 +1598,54 @@ static double hcbd__pair_energy(const hcbd_world *w, double r)
     if (w->p.potential == HCBD_POT_STAR)
         return hcbd_star_potential(r, w->p.f, w->p.sigma, w->p.star_eps);
     return hcbd__table(w, w->tab_V, r);
+}
+
+/* >>fixed-point pair sums
+   Pair sums are accumulated in 64-bit fixed point.  Integer addition is
+   associative, so a particle's sum has the same bits in any order: whatever
+   the thread count, storage order, list build or vector width.  Each pair is
+   computed once (by its owner, the lower id) and added to both particles;
+   rounding to nearest is odd, so the two get exactly opposite amounts and
+   momentum is conserved exactly, not to round-off.  A term |v| <= B is
+   stored as round(v q), q = 2^50 / B rounded down to a power of two (scaling
+   is exact); with at most HCBD__FIX_DEG terms per particle no sum can pass
+   2^62.  The bounds: B_F = 8 cutmax xi/dt (a force that alone moves a
+   particle 16 times the default guard step), B_P = 8 cutmax m/dt, B_W = w(0)
+   (exact).  At the 2014 scene the resolution is 9e-10 in force and 9e-13 in
+   momentum exchange (relative 1e-12 and 1e-10 of typical terms); a term
+   beyond its bound stops the step with HCBD_ERR_UNSTABLE. */
+#define HCBD__FIX_DEG 4096
+#define HCBD__CHUNK 64 /* partners gathered per pass of a pair loop */
+#define HCBD__FIX_BITS 50
+
+static inline int64_t hcbd__fix(double v) /* round(v) for |v| < 2^51 */
+{
+    double t = v + 6755399441055744.0; /* 1.5 2^52: units in the last place */
+    int64_t b;
+    memcpy(&b, &t, sizeof b);
+    return b - (int64_t)0x4338000000000000LL;
+}
+
+static double hcbd__fix_scale(double B)
+{
+    int e;
+    frexp(B, &e); /* B < 2^e */
+    return ldexp(1.0, HCBD__FIX_BITS - e);
+}
+
+static void hcbd__fixed_scales(hcbd_world *w)
+{
+    const double reach = 8.0 * w->cutmax / w->p.dt;
+    w->limF = reach * w->p.xi;
+    w->limP = reach * w->m;
+    w->qF = hcbd__fix_scale(w->limF);
+    w->qP = w->gibd ? hcbd__fix_scale(w->limP) : 0.0;
+    w->qW = hcbd__fix_scale(w->cw);
+}
+
+static void hcbd__zero64(int64_t *a, int n)
+{
+    if (a) memset(a, 0, (size_t)n * sizeof *a);
 }
 
 /* >>world and storage */
@@ -1622,7 +1824,7 @@ hcbd_result hcbd_stability(const hcbd_params *p, hcbd_limit *out, int *n)
     disp = sqrt(6.0 * p->kT * p->dt / p->xi) + (gibd ? sqrt(3.0 * p->kT / m) * p->dt : 0.0);
     if (hcbd__needs_pairs(p)) {
         hcbd__limit(out, n, "rms step vs skin/2 (list every step beyond)", "speed", disp,
-                    0.5 * p->skin);
+                    0.5 * hcbd__skin(p));
         hcbd__limit(out, n, "rms step vs half the interaction range / 4", "HCBD_ERR_UNSTABLE", disp,
                     0.125 * hcbd__cutmax(p));
     }
@@ -1646,7 +1848,7 @@ static void hcbd__take(char *base, size_t *off, size_t bytes, void **out)
 static int hcbd__cells(const hcbd_params *p, int nc[3])
 {
     int d, total = 1;
-    double rl = hcbd__cutmax(p) + p->skin;
+    double rl = hcbd__cutmax(p) + hcbd__skin(p);
     for (d = 0; d < 3; ++d) {
         /* clamp in double before the cast; 256 cells per edge is plenty */
         double k = hcbd__needs_pairs(p) ? floor(p->L[d] / rl) : 1.0;
@@ -1656,11 +1858,23 @@ static int hcbd__cells(const hcbd_params *p, int nc[3])
     return total;
 }
 
+/* Rows of the exact pair sweep (hcbd__shardlow): y-z cells at least Rc
+   wide, a multiple of 3 along each axis, or a single one. */
+static int hcbd__sweep_rows(const hcbd_params *p, int ns[2])
+{
+    int d;
+    for (d = 0; d < 2; ++d) {
+        double k = floor(p->L[d + 1] / p->Rc);
+        ns[d] = k >= 3.0 ? 3 * (int)((k > 768.0 ? 768.0 : k) / 3.0) : 1;
+    }
+    return ns[0] * ns[1];
+}
+
 static int64_t hcbd__auto_pairs(const hcbd_world_def *def)
 {
     const hcbd_params *p = &def->params;
     double V = p->L[0] * p->L[1] * p->L[2];
-    double rl = hcbd__cutmax(p) + p->skin;
+    double rl = hcbd__cutmax(p) + hcbd__skin(p);
     double per = 0.5 * (double)def->capacity / V * (4.0 / 3.0) * HCBD__PI * rl * rl * rl;
     if (!hcbd__needs_pairs(p)) return 0;
     return (int64_t)(1.6 * per * def->capacity) + 8 * (int64_t)def->capacity;
@@ -1695,38 +1909,39 @@ static size_t hcbd__layout(const hcbd_world_def *def, hcbd_world *w, char *base)
     hcbd_world *t = w ? w : &tmp;
     const hcbd_params *p = &def->params;
     int gibd = p->dynamics == HCBD_DYN_GIBD, pot = p->potential != HCBD_POT_IDEAL;
-    int nbuf = 0, acol[2], nart = hcbd__art_count(p, acol);
-    size_t A = (size_t)nart, ncol = (size_t)acol[0] * (size_t)acol[1];
-    t->bF = t->bP = t->bW = -1;
-    if (pot) { t->bF = nbuf; nbuf += 3; }
-    if (gibd) { t->bP = nbuf; nbuf += 3; }
-    if (gibd && p->lagged_density) { t->bW = nbuf; nbuf += 1; }
-    memset(t->buf, 0, sizeof t->buf);
+    int acol[2], nart = hcbd__art_count(p, acol);
+    size_t A = (size_t)nart, ncol = (size_t)acol[0] * (size_t)acol[1], Q = sizeof(int64_t);
     hcbd__take(base, &off, sizeof(hcbd__zig), (void **)&t->zig);
 #define HCBD__ARR(ptr, bytes) hcbd__take(base, &off, (bytes), (void **)&(t->ptr))
     HCBD__ARR(x, N * R); HCBD__ARR(y, N * R); HCBD__ARR(z, N * R);
-    HCBD__ARR(fx, N * R); HCBD__ARR(fy, N * R); HCBD__ARR(fz, N * R);
     HCBD__ARR(x0, N * R); HCBD__ARR(y0, N * R); HCBD__ARR(z0, N * R);
     HCBD__ARR(ix, N * I); HCBD__ARR(iy, N * I); HCBD__ARR(iz, N * I);
     HCBD__ARR(id, N * I); HCBD__ARR(slot, N * I);
-    HCBD__ARR(rs0, N * 8); HCBD__ARR(rs1, N * 8); HCBD__ARR(rs2, N * 8);
-    HCBD__ARR(rs3, N * 8);
     HCBD__ARR(scratch, N * 8);
     HCBD__ARR(lx, N * sizeof(double));
     HCBD__ARR(fl_p, N * R); HCBD__ARR(fl_b, N * R); HCBD__ARR(fl_c, N * R);
     HCBD__ARR(cell_start, (size_t)(ncell + 1) * I);
     HCBD__ARR(cell_cursor, (size_t)ncell * I);
     HCBD__ARR(cell_of, N * I); HCBD__ARR(perm, N * I);
-    HCBD__ARR(nb_start, (N + 1) * I); HCBD__ARR(rev_start, (N + 1) * I);
-    HCBD__ARR(nb_j, P * I); HCBD__ARR(rev_p, P * I); HCBD__ARR(pair_i, P * I);
-    for (k = 0; k < nbuf; ++k) HCBD__ARR(buf[k], P * R);
+    HCBD__ARR(nb_start, (N + 1) * I);
+    HCBD__ARR(nb_j, P * I); HCBD__ARR(nb_tmp, P * I);
+    t->sw_start = NULL;
+    t->sw_n[0] = t->sw_n[1] = 1;
+    if (gibd && p->pair_integrator == HCBD_PAIR_SHARDLOW && p->Rc > 0)
+        HCBD__ARR(sw_start, ((size_t)hcbd__sweep_rows(p, t->sw_n) + 1) * I);
+    for (k = 0; k < 3; ++k) {
+        t->aF[k] = t->aP[k] = NULL;
+        if (pot) HCBD__ARR(aF[k], N * Q);
+        if (gibd) HCBD__ARR(aP[k], N * Q);
+    }
+    t->aW = NULL;
     if (gibd) {
+        HCBD__ARR(aW, N * Q);
         HCBD__ARR(vx, N * R); HCBD__ARR(vy, N * R); HCBD__ARR(vz, N * R);
-        HCBD__ARR(px, N * R); HCBD__ARR(py, N * R); HCBD__ARR(pz, N * R);
-        HCBD__ARR(rho, N * R); HCBD__ARR(inv_rho, N * R); HCBD__ARR(wown, N * R);
+        HCBD__ARR(rho, N * R); HCBD__ARR(inv_rho, N * R);
     } else {
-        t->vx = t->vy = t->vz = t->px = t->py = t->pz = NULL;
-        t->rho = t->inv_rho = t->wown = NULL;
+        t->vx = t->vy = t->vz = NULL;
+        t->rho = t->inv_rho = NULL;
     }
     HCBD__ARR(ax, A * R); HCBD__ARR(ay, A * R); HCBD__ARR(az, A * R);
     HCBD__ARR(acol_start, (ncol + 1) * I); HCBD__ARR(acol_of, ncol * I);
@@ -1738,8 +1953,10 @@ static size_t hcbd__layout(const hcbd_world_def *def, hcbd_world *w, char *base)
     } else {
         t->tab_F = t->tab_V = NULL;
     }
+    t->star_tab = NULL;
+    if (p->potential == HCBD_POT_STAR && p->force_table)
+        HCBD__ARR(star_tab, 4 * (size_t)hcbd__star_pieces(p) * sizeof(double));
 #undef HCBD__ARR
-    t->nbuf = nbuf;
     t->nc[0] = nc[0]; t->nc[1] = nc[1]; t->nc[2] = nc[2];
     t->ncell = ncell;
     t->max_pairs = mp;
@@ -1815,12 +2032,14 @@ hcbd_result hcbd_world_init(hcbd_world *w, const hcbd_world_def *def, void *mem,
     w->cf = 15.0 / (2.0 * HCBD__PI * p->Rc * p->Rc * p->Rc);
     w->rho_norm = p->density_norm == 2016 ? 1.0 / (1.0 + w->w0 / p->density) : 1.0;
     w->cutmax = hcbd__cutmax(p);
-    w->rlist = w->cutmax + p->skin;
+    w->skin = hcbd__skin(p);
+    w->rlist = w->cutmax + w->skin;
     /* List validity is checked before every force evaluation, so a long
        step never misses a pair; a step longer than half the interaction
        range jumps through neighbours and means dt is unstable. */
     w->step_limit = 0.5 * w->cutmax;
     if (!hcbd__needs_pairs(p)) w->step_limit = HUGE_VAL;
+    hcbd__fixed_scales(w);
     w->star_a = p->star_eps * (5.0 / 18.0) * pow(p->f, 1.5);
     w->star_b = 1.0 / (1.0 + 0.5 * sqrt(p->f));
     w->star_s = 0.5 * sqrt(p->f);
@@ -1855,6 +2074,7 @@ hcbd_result hcbd_world_init(hcbd_world *w, const hcbd_world_def *def, void *mem,
     w->wall_key = hcbd__mix64(p->seed ^ hcbd__mix64(HCBD__STREAM_WALL));
     w->wall_pair_key = hcbd__mix64(p->seed ^ hcbd__mix64(HCBD__STREAM_WALL_PAIR));
     w->seed_key = hcbd__mix64(p->seed ^ hcbd__mix64(HCBD__STREAM_PAIR));
+    w->bd_key = hcbd__mix64(p->seed ^ hcbd__mix64(HCBD__STREAM_BROWNIAN));
     if (p->potential == HCBD_POT_TABLE) {
         memcpy(w->tab_F, p->table_F, (size_t)p->table_n * sizeof(double));
         memcpy(w->tab_V, p->table_V, (size_t)p->table_n * sizeof(double));
@@ -1862,6 +2082,7 @@ hcbd_result hcbd_world_init(hcbd_world *w, const hcbd_world_def *def, void *mem,
         w->p.table_F = w->tab_F; /* the caller's arrays need not outlive init */
         w->p.table_V = w->tab_V;
     }
+    if (w->star_tab) hcbd__star_table_build(w);
     hcbd__zig_init(w->zig);
     w->n = 0;
     w->live = HCBD__LIVE;
@@ -1978,11 +2199,12 @@ static hcbd_result hcbd__set_particles(hcbd_world *w, int n, hcbd__src *src)
                                   "box lengths from the box", "xyz"[i % 3], i / 3,
                                   src->xyz[i]);
         }
-    /* Positions go to the force scratch arrays first and are checked there,
+    /* Positions go to the list-build copies (stale until the next build) first and are checked there,
        so a refused configuration leaves the world as it was; the source is
        replayed for the images at commit. */
     src->n = n;
     src0 = *src;
+    w->list_valid = 0;
     for (i = 0; i < n; ++i) {
         double r[3];
         int32_t img[3] = {0, 0, 0};
@@ -1995,11 +2217,11 @@ static hcbd_result hcbd__set_particles(hcbd_world *w, int n, hcbd__src *src)
             return hcbd__fail(&w->err, HCBD_ERR_WALL, -1, i,
                               "particle %d at y = %g is inside a wall (the channel is "
                               "%g <= y <= %g)", i, r[1], w->wall_lo, w->wall_hi);
-        w->fx[i] = (hcbd_real)r[0]; w->fy[i] = (hcbd_real)r[1]; w->fz[i] = (hcbd_real)r[2];
+        w->x0[i] = (hcbd_real)r[0]; w->y0[i] = (hcbd_real)r[1]; w->z0[i] = (hcbd_real)r[2];
         /* A position that rounds to L in float storage belongs at 0. */
-        if (w->fx[i] >= (hcbd_real)w->p.L[0]) w->fx[i] = 0;
-        if (w->fy[i] >= (hcbd_real)w->p.L[1]) w->fy[i] = 0;
-        if (w->fz[i] >= (hcbd_real)w->p.L[2]) w->fz[i] = 0;
+        if (w->x0[i] >= (hcbd_real)w->p.L[0]) w->x0[i] = 0;
+        if (w->y0[i] >= (hcbd_real)w->p.L[1]) w->y0[i] = 0;
+        if (w->z0[i] >= (hcbd_real)w->p.L[2]) w->z0[i] = 0;
     }
     if (w->p.min_distance > 0) {
         /* O(N^2), once at set-up; in id order, so the first pair reported
@@ -2009,9 +2231,9 @@ static hcbd_result hcbd__set_particles(hcbd_world *w, int n, hcbd__src *src)
         for (i = 0; i < n; ++i)
             for (j = i + 1; j < n; ++j) {
                 double e[3];
-                e[0] = hcbd__mi((double)w->fx[i] - w->fx[j], w->p.L[0]);
-                e[1] = hcbd__mi((double)w->fy[i] - w->fy[j], w->p.L[1]);
-                e[2] = hcbd__mi((double)w->fz[i] - w->fz[j], w->p.L[2]);
+                e[0] = hcbd__mi((double)w->x0[i] - w->x0[j], w->p.L[0]);
+                e[1] = hcbd__mi((double)w->y0[i] - w->y0[j], w->p.L[1]);
+                e[2] = hcbd__mi((double)w->z0[i] - w->z0[j], w->p.L[2]);
                 if (e[0] * e[0] + e[1] * e[1] + e[2] * e[2] < m2)
                     return hcbd__fail(&w->err, HCBD_ERR_OVERLAP, -1, i,
                                       "particles %d and %d are %.17g apart, closer than "
@@ -2030,7 +2252,7 @@ static hcbd_result hcbd__set_particles(hcbd_world *w, int n, hcbd__src *src)
         if (w->walls && !src->xyz)
             r[1] = w->wall_lo + r[1] / w->p.L[1] * (w->wall_hi - w->wall_lo);
         for (d = 0; d < 3; ++d) hcbd__wrap(w->p.L[d], &r[d], &img[d]);
-        w->x[i] = w->fx[i]; w->y[i] = w->fy[i]; w->z[i] = w->fz[i];
+        w->x[i] = w->x0[i]; w->y[i] = w->y0[i]; w->z[i] = w->z0[i];
         w->ix[i] = img[0]; w->iy[i] = img[1]; w->iz[i] = img[2];
         w->id[i] = i;
         w->slot[i] = i;
@@ -2045,7 +2267,6 @@ static hcbd_result hcbd__set_particles(hcbd_world *w, int n, hcbd__src *src)
             w->vx[i] = (hcbd_real)v[0]; w->vy[i] = (hcbd_real)v[1]; w->vz[i] = (hcbd_real)v[2];
             for (d = 0; d < 3; ++d) mom[d] += v[d];
         }
-        w->rs0[i] = g.s[0]; w->rs1[i] = g.s[1]; w->rs2[i] = g.s[2]; w->rs3[i] = g.s[3];
     }
     for (i = 0; i < n; ++i) w->lx[i] = 0.0;
     w->le_offset = 0.0;
@@ -2205,7 +2426,7 @@ static double hcbd__art_wsum(const hcbd_world *w, double x, double y, double z)
             double dz = hcbd__mi(z - w->az[k], w->p.L[2]), r2 = dx * dx + dy * dy + dz * dz;
             if (r2 < Rc2) {
                 double q = sqrt(r2) * invRc, a = 1.0 - q;
-                s += w->cw * a * a * a * a * (4.0 * q + 1.0);
+                s += hcbd__weight(w->cw, q, a);
             }
         }
     }
@@ -2237,7 +2458,7 @@ static void hcbd__morris(hcbd_world *w, int i, uint64_t key, double P[3], int ex
             if (r2 >= Rc2) continue;
             q = sqrt(r2) * invRc;
             a = 1.0 - q;
-            sdt = cs * (iri + w->art_inv_rho) * a * a * a;
+            sdt = hcbd__sdt(cs, iri, w->art_inv_rho, a);
             if (dy > 0.0) { /* B below i: behind the bottom interface */
                 dA = yi - w->morris_lo;
                 dB = w->morris_lo - (yi - dy);
@@ -2250,7 +2471,7 @@ static void hcbd__morris(hcbd_world *w, int i, uint64_t key, double P[3], int ex
             beta = (dA > 0.0 && dB >= 0.0) ? 1.0 + dB / dA : bmax;
             if (beta > bmax) beta = bmax;
             nb = w->p.wall_noise_beta ? 1.0 : 1.0 / beta; /* noise variance factor */
-            if (two_kT > 0.0) hcbd__pair_noise(w, hcbd__mix64(key ^ idk ^ (uint64_t)k), z3);
+            if (two_kT > 0.0) hcbd__noise3(w, hcbd__mix64(key ^ idk ^ (uint64_t)k), z3);
             if (exact) {
                 /* the wall is a reservoir: v - v_wall relaxes at the rate
                    beta sdt / (m dt), solved over the step */
@@ -2334,7 +2555,7 @@ static int hcbd__cell_index(const hcbd_world *w, int i)
         if (c[d] >= w->nc[d]) c[d] = w->nc[d] - 1;
         if (c[d] < 0) c[d] = 0;
     }
-    return (c[0] * w->nc[1] + c[1]) * w->nc[2] + c[2];
+    return (c[2] * w->nc[1] + c[1]) * w->nc[0] + c[0];
 }
 
 /* Moves every per-particle array into the order given by perm (new slot k
@@ -2344,10 +2565,8 @@ static void hcbd__permute(hcbd_world *w)
     int n = w->n, k, a;
     hcbd_real *rr = (hcbd_real *)w->scratch;
     int32_t *ii = (int32_t *)w->scratch;
-    uint64_t *uu = (uint64_t *)w->scratch;
     hcbd_real *ra[11];
     int32_t *ia[4];
-    uint64_t *ua[4];
     int nr = 0;
     ra[nr++] = w->x; ra[nr++] = w->y; ra[nr++] = w->z;
     if (w->gibd) {
@@ -2355,7 +2574,6 @@ static void hcbd__permute(hcbd_world *w)
         ra[nr++] = w->rho; ra[nr++] = w->inv_rho;
     }
     ia[0] = w->ix; ia[1] = w->iy; ia[2] = w->iz; ia[3] = w->id;
-    ua[0] = w->rs0; ua[1] = w->rs1; ua[2] = w->rs2; ua[3] = w->rs3;
     for (a = 0; a < nr; ++a) {
         for (k = 0; k < n; ++k) rr[k] = ra[a][w->perm[k]];
         memcpy(ra[a], rr, (size_t)n * sizeof *rr);
@@ -2363,10 +2581,6 @@ static void hcbd__permute(hcbd_world *w)
     for (a = 0; a < 4; ++a) {
         for (k = 0; k < n; ++k) ii[k] = ia[a][w->perm[k]];
         memcpy(ia[a], ii, (size_t)n * sizeof *ii);
-    }
-    for (a = 0; a < 4; ++a) {
-        for (k = 0; k < n; ++k) uu[k] = ua[a][w->perm[k]];
-        memcpy(ua[a], uu, (size_t)n * sizeof *uu);
     }
     {
         double *dd = (double *)w->scratch;
@@ -2389,9 +2603,9 @@ static int hcbd__scan(const hcbd_world *w, int i, int32_t *out, int room)
     const hcbd_real *HCBD__RESTRICT x = w->x, *HCBD__RESTRICT y = w->y, *HCBD__RESTRICT z = w->z;
     const hcbd__box box = hcbd__box_of(w);
     int ci = hcbd__cell_index(w, i);
-    c[2] = ci % w->nc[2];
-    c[1] = (ci / w->nc[2]) % w->nc[1];
-    c[0] = ci / (w->nc[2] * w->nc[1]);
+    c[0] = ci % w->nc[0];
+    c[1] = (ci / w->nc[0]) % w->nc[1];
+    c[2] = ci / (w->nc[0] * w->nc[1]);
     /* With fewer than 3 cells along an axis, -1 and +1 are the same cell
        (or the cell itself): visit each cell once. */
     for (d = 0; d < 3; ++d) {
@@ -2416,7 +2630,7 @@ static int hcbd__scan(const hcbd_world *w, int i, int32_t *out, int room)
                 int a = ((o0 % w->nc[0]) + w->nc[0]) % w->nc[0];
                 int b = (row + w->nc[1]) % w->nc[1];
                 int e = (c[2] + o2 + w->nc[2]) % w->nc[2];
-                int cc = (a * w->nc[1] + b) * w->nc[2] + e, q;
+                int cc = (e * w->nc[1] + b) * w->nc[0] + a, q;
                 const int q1 = w->cell_start[cc + 1];
                 for (q = w->cell_start[cc]; q < q1; ++q) {
                     int j = perm[q];
@@ -2468,9 +2682,9 @@ static hcbd_result hcbd__rebuild(hcbd_world *w)
         for (i = 0; i < n; ++i) w->perm[i] = i;
     }
     /* half list in one scan: each thread lists its contiguous share of
-       particles into its own slice of rev_p (unused until the reverse
-       lists are built); then prefix sums and a compacting copy.  Only if a
-       slice overflows are the cells scanned a second time. */
+       particles into its own slice of nb_tmp, then prefix sums and a
+       compacting copy.  Only if a slice overflows are the cells scanned a
+       second time. */
     {
         int overflow = 0;
         HCBD__OMP(omp parallel num_threads(nt) reduction(max:overflow))
@@ -2488,7 +2702,7 @@ static hcbd_result hcbd__rebuild(hcbd_world *w)
             for (ii = a; ii < b; ++ii) {
                 /* a particle has at most n - 1 partners */
                 int room = end - pos < n ? (int)(end - pos) : n;
-                int cnt = hcbd__scan(w, ii, w->rev_p + pos, room);
+                int cnt = hcbd__scan(w, ii, w->nb_tmp + pos, room);
                 if (cnt > room) {
                     ovf = 1;
                     break;
@@ -2518,29 +2732,36 @@ static hcbd_result hcbd__rebuild(hcbd_world *w)
         w->npairs = total;
         HCBD__OMP(omp parallel for num_threads(nt) schedule(static))
         for (i = 0; i < n; ++i) {
-            int32_t p0 = w->nb_start[i], k, cnt = w->nb_start[i + 1] - p0;
+            int32_t p0 = w->nb_start[i], cnt = w->nb_start[i + 1] - p0;
             if (overflow)
                 hcbd__scan(w, i, w->nb_j + p0, cnt);
             else
-                memcpy(w->nb_j + p0, w->rev_p + w->cell_of[i], (size_t)cnt * sizeof(int32_t));
+                memcpy(w->nb_j + p0, w->nb_tmp + w->cell_of[i], (size_t)cnt * sizeof(int32_t));
             hcbd__sort_by_id(w->id, w->nb_j + p0, cnt, NULL);
-            for (k = 0; k < cnt; ++k) w->pair_i[p0 + k] = i;
         }
     }
-    /* reverse incidences: for each j the pairs it is the partner of, in
-       increasing owner id */
-    for (i = 0; i <= n; ++i) w->rev_start[i] = 0;
-    for (total = 0; total < w->npairs; ++total) w->rev_start[w->nb_j[total] + 1]++;
-    for (i = 0; i < n; ++i) {
-        w->rev_start[i + 1] += w->rev_start[i];
-        w->cell_of[i] = w->rev_start[i]; /* cursor; cell_of is free now */
+    {
+        /* a particle's fixed-point sums hold at most HCBD__FIX_DEG pair
+           terms (see hcbd__fixed_scales); the 27 cells around it bound its
+           partners, and only a dense corner is counted exactly */
+        int most = 0;
+        for (c = 0; c < w->ncell; ++c)
+            if (w->cell_start[c + 1] - w->cell_start[c] > most)
+                most = w->cell_start[c + 1] - w->cell_start[c];
+        if ((int64_t)27 * most > HCBD__FIX_DEG) {
+            int32_t *deg = (int32_t *)w->scratch;
+            int64_t p;
+            for (i = 0; i < n; ++i) deg[i] = w->nb_start[i + 1] - w->nb_start[i];
+            for (p = 0; p < w->npairs; ++p) deg[w->nb_j[p]]++;
+            for (i = 0; i < n; ++i)
+                if (deg[i] > HCBD__FIX_DEG)
+                    return hcbd__fail(&w->err, HCBD_ERR_CAPACITY, w->step, w->id[i],
+                                      "particle %d has %d neighbours within the list "
+                                      "range %g, more than the %d its fixed-point pair "
+                                      "sums hold", (int)w->id[i], (int)deg[i], w->rlist,
+                                      HCBD__FIX_DEG);
+        }
     }
-    for (total = 0; total < w->npairs; ++total)
-        w->rev_p[w->cell_of[w->nb_j[total]]++] = (int32_t)total;
-    HCBD__OMP(omp parallel for num_threads(nt) schedule(static))
-    for (i = 0; i < n; ++i)
-        hcbd__sort_by_id(w->id, w->rev_p + w->rev_start[i],
-                         w->rev_start[i + 1] - w->rev_start[i], w->pair_i);
     for (i = 0; i < n; ++i) {
         w->x0[i] = w->x[i];
         w->y0[i] = w->y[i];
@@ -2559,7 +2780,7 @@ static hcbd_result hcbd__ensure_list(hcbd_world *w)
     /* two particles close in by 2 disp_max; across the sheared boundary the
        offset drift adds to that, and a particle that crossed since the
        build is measured with today's offset (error <= drift): 3 drift */
-    if (w->list_valid && 2.0 * w->disp_max + 3.0 * w->le_drift <= w->p.skin) return HCBD_OK;
+    if (w->list_valid && 2.0 * w->disp_max + 3.0 * w->le_drift <= w->skin) return HCBD_OK;
     return hcbd__rebuild(w);
 }
 
@@ -2570,42 +2791,76 @@ static int hcbd__density_stale(const hcbd_world *w)
     return !w->rho_current && !(w->p.lagged_density && w->rho_valid);
 }
 
-/* >>pair passes
-   Each pass runs over owners i (the lower id of a pair): the owner sums its
-   own pairs in increasing partner id and stores the pair value in buf; the
-   partner later subtracts (or adds) the stored values in increasing owner
-   id.  Every sum has a fixed order, whatever the thread count. */
+/* >>pair passes (sums in fixed point, see hcbd__fix) */
+/* Runs fn over the owners in cell order and returns the least of its
+   results (the lowest id of an owner with a term out of range, or INT_MAX).
+   With T threads and at least 4T layers of cells along z, the owners are
+   cut into 2T slabs of whole layers.  A pair reaches at most one layer up
+   or down (cells are at least the list range wide), so slabs of one parity
+   never write to the same particle: they run side by side, then those of
+   the other parity.  The sums are integers, so the cut changes no bit. */
+typedef int (*hcbd__owner_fn)(hcbd_world *w, int q0, int q1);
+static int hcbd__owners(hcbd_world *w, hcbd__owner_fn fn)
+{
+    const int nl = w->nc[2], layer = w->nc[0] * w->nc[1];
+    int T = w->p.threads, bad = INT_MAX;
+    if (T > nl / 4) T = nl / 4;
+    if (T <= 1) return fn(w, 0, w->n);
+    HCBD__OMP(omp parallel num_threads(T) reduction(min:bad))
+    {
+        const int K = 2 * T;
+        int ph, k;
+        for (ph = 0; ph < 2; ++ph) {
+            HCBD__OMP(omp for schedule(static))
+            for (k = ph; k < K; k += 2) {
+                int b = fn(w, w->cell_start[(int64_t)k * nl / K * layer],
+                           w->cell_start[(int64_t)(k + 1) * nl / K * layer]);
+                if (b < bad) bad = b;
+            }
+        }
+    }
+    return bad;
+}
+
+static int hcbd__density_owners(hcbd_world *w, int q0, int q1)
+{
+    const double Rc2 = w->p.Rc * w->p.Rc, invRc = 1.0 / w->p.Rc, cwq = w->cw * w->qW;
+    const hcbd__box box = hcbd__box_of(w);
+    int64_t *HCBD__RESTRICT aW = w->aW;
+    int q;
+    for (q = q0; q < q1; ++q) {
+        const int i = w->perm[q];
+        const double xi = w->x[i], yi = w->y[i], zi = w->z[i];
+        int64_t s = 0;
+        int32_t p;
+        for (p = w->nb_start[i]; p < w->nb_start[i + 1]; ++p) {
+            const int j = w->nb_j[p];
+            double d[3], r2;
+            hcbd__delta_box(&box, xi - w->x[j], yi - w->y[j], zi - w->z[j], d);
+            r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+            if (r2 < Rc2) {
+                const double qq = sqrt(r2) * invRc, a = 1.0 - qq;
+                const int64_t v = hcbd__fix(hcbd__weight(cwq, qq, a));
+                s += v;
+                aW[j] += v;
+            }
+        }
+        aW[i] += s;
+    }
+    return INT_MAX;
+}
+
 static void hcbd__density(hcbd_world *w)
 {
     const int n = w->n, nt = w->p.threads;
-    const double Rc2 = w->p.Rc * w->p.Rc, invRc = 1.0 / w->p.Rc, cw = w->cw;
-    const hcbd__box box = hcbd__box_of(w);
-    hcbd_real *HCBD__RESTRICT bw = w->buf[0];
+    const double inv_q = 1.0 / w->qW;
     int i;
     (void)nt;
+    hcbd__zero64(w->aW, n);
+    hcbd__owners(w, hcbd__density_owners);
     HCBD__OMP(omp parallel for num_threads(nt) schedule(static))
     for (i = 0; i < n; ++i) {
-        double s = 0.0;
-        int32_t p;
-        for (p = w->nb_start[i]; p < w->nb_start[i + 1]; ++p) {
-            int j = w->nb_j[p];
-            double d[3], r2, v = 0.0;
-            hcbd__delta_box(&box, w->x[i] - w->x[j], w->y[i] - w->y[j], w->z[i] - w->z[j], d);
-            r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-            if (r2 < Rc2) {
-                double q = sqrt(r2) * invRc, a = 1.0 - q;
-                v = cw * a * a * a * a * (4.0 * q + 1.0);
-                s += v;
-            }
-            bw[p] = (hcbd_real)v;
-        }
-        w->wown[i] = (hcbd_real)s;
-    }
-    HCBD__OMP(omp parallel for num_threads(nt) schedule(static))
-    for (i = 0; i < n; ++i) {
-        double s = w->wown[i], rho;
-        int32_t q;
-        for (q = w->rev_start[i]; q < w->rev_start[i + 1]; ++q) s += bw[w->rev_p[q]];
+        double s = (double)w->aW[i] * inv_q, rho;
         if (HCBD__WALLS && w->walls && hcbd__near_wall(w, w->y[i]))
             s += hcbd__art_wsum(w, w->x[i], w->y[i], w->z[i]);
         rho = w->m * w->rho_norm * (w->w0 + s);
@@ -2616,98 +2871,163 @@ static void hcbd__density(hcbd_world *w)
     w->rho_valid = 1;
 }
 
+/* Gathers the partners of i from list entries [*p, min(pend, *p + CHUNK))
+   that lie within r^2 < cut2, without a branch (about half the list lies in
+   the skin, and a branch on it would be mispredicted half the time);
+   returns their count and advances *p. */
+HCBD__INLINE int hcbd__gather(const hcbd_world *w, const hcbd__box *box, int i, int32_t *p,
+                              int32_t pend, double cut2, int32_t *cj, int32_t *ck, double *cx,
+                              double *cy, double *cz, double *cr2)
+{
+    const double xi = w->x[i], yi = w->y[i], zi = w->z[i];
+    const int32_t pe = pend - *p > HCBD__CHUNK ? *p + HCBD__CHUNK : pend;
+    int m = 0;
+    for (; *p < pe; ++*p) {
+        const int j = w->nb_j[*p];
+        double d[3], r2;
+        const int k = hcbd__delta_box(box, xi - w->x[j], yi - w->y[j], zi - w->z[j], d);
+        r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+        cj[m] = j; ck[m] = k; cx[m] = d[0]; cy[m] = d[1]; cz[m] = d[2]; cr2[m] = r2;
+        m += r2 < cut2;
+    }
+    return m;
+}
+
 /* Forces, and in GI-BD the friction and noise momentum exchanges
    dp_ij = (S_ij/tau)(v_j - v_i) dt + sqrt(2 kT S_ij dt/tau) zeta,
-   S_ij = m_i f_ij (MODEL 2, pair-momentum form). */
-static void hcbd__forces(hcbd_world *w)
+   S_ij = m_i f_ij (MODEL 2, pair-momentum form), added to the owner i and
+   taken from the partner j. */
+HCBD__INLINE int hcbd__forces_body(hcbd_world *w, int q0, int q1, const int pot,
+                                    const int fric, const int lag, const int flux)
 {
-    const int n = w->n, nt = w->p.threads;
-    const int pot = w->p.potential != HCBD_POT_IDEAL, gibd = w->gibd;
-    const int fric = gibd && !w->shardlow; /* else the sweep does them */
-    const int noise = w->has_noise, lag = w->gibd && w->p.lagged_density, flux = w->flux_on;
+    const int gibd = fric || lag, noise = w->has_noise, table = w->star_tab != NULL;
     const double vle = w->le_vjump;
     const hcbd__box box = hcbd__box_of(w);
     const double rc2 = w->p.rcut * w->p.rcut, Rc2 = w->p.Rc * w->p.Rc;
     const double cut2 = w->cutmax * w->cutmax, invRc = 1.0 / w->p.Rc;
     const double cs = w->cf * w->m * w->m * w->p.dt / w->p.tau, two_kT = 2.0 * w->p.kT;
-    const double cw = w->cw;
+    const double cwq = w->cw * w->qW, qF = w->qF, qP = w->qP, limF = w->limF, limP = w->limP;
     const uint64_t skey = hcbd__step_key(w, w->step);
-    hcbd_real *HCBD__RESTRICT bFx = pot ? w->buf[w->bF] : NULL;
-    hcbd_real *HCBD__RESTRICT bFy = pot ? w->buf[w->bF + 1] : NULL;
-    hcbd_real *HCBD__RESTRICT bFz = pot ? w->buf[w->bF + 2] : NULL;
-    hcbd_real *HCBD__RESTRICT bPx = fric ? w->buf[w->bP] : NULL;
-    hcbd_real *HCBD__RESTRICT bPy = fric ? w->buf[w->bP + 1] : NULL;
-    hcbd_real *HCBD__RESTRICT bPz = fric ? w->buf[w->bP + 2] : NULL;
-    hcbd_real *HCBD__RESTRICT bW = lag ? w->buf[w->bW] : NULL;
-    int i;
-    (void)nt;
-    HCBD__OMP(omp parallel for num_threads(nt) schedule(static))
-    for (i = 0; i < n; ++i) {
-        double fxs = 0, fys = 0, fzs = 0, pxs = 0, pys = 0, pzs = 0, ws = 0, sp = 0, sb = 0;
-        const double xi = w->x[i], yi = w->y[i], zi = w->z[i];
+    int64_t *HCBD__RESTRICT aFx = w->aF[0], *HCBD__RESTRICT aFy = w->aF[1];
+    int64_t *HCBD__RESTRICT aFz = w->aF[2], *HCBD__RESTRICT aPx = w->aP[0];
+    int64_t *HCBD__RESTRICT aPy = w->aP[1], *HCBD__RESTRICT aPz = w->aP[2];
+    int64_t *HCBD__RESTRICT aW = w->aW;
+    int q, worst = INT_MAX;
+    (void)flux;
+    for (q = q0; q < q1; ++q) {
+        const int i = w->perm[q];
+        int bad = 0;
+        int64_t fxs = 0, fys = 0, fzs = 0, pxs = 0, pys = 0, pzs = 0, ws = 0;
+        double sp = 0, sb = 0;
         const double vxi = gibd ? w->vx[i] : 0, vyi = gibd ? w->vy[i] : 0;
         const double vzi = gibd ? w->vz[i] : 0, iri = gibd ? w->inv_rho[i] : 0;
-        const int32_t idi = w->id[i];
-        int32_t p;
-        for (p = w->nb_start[i]; p < w->nb_start[i + 1]; ++p) {
-            int j = w->nb_j[p];
-            double d[3], dx, dy, dz, r2;
-            double Fx = 0, Fy = 0, Fz = 0, Px = 0, Py = 0, Pz = 0, wv = 0;
-            const int k = hcbd__delta_box(&box, xi - w->x[j], yi - w->y[j], zi - w->z[j], d);
-            dx = d[0]; dy = d[1]; dz = d[2];
-            r2 = dx * dx + dy * dy + dz * dz;
-            if (r2 < cut2) {
-                double r = sqrt(r2);
-                if (pot && r2 < rc2) {
-                    double fr = hcbd__force_over_r(w, r, r2);
-                    Fx = fr * dx; Fy = fr * dy; Fz = fr * dz;
-                }
-                if (fric && r2 < Rc2) {
-                    double q = r * invRc, a = 1.0 - q;
-                    double sdt = cs * (iri + w->inv_rho[j]) * a * a * a; /* S dt/tau */
-                    /* j's image across the sheared boundary moves faster
-                       by k gdot Ly */
+        const int32_t idi = w->id[i], pend = w->nb_start[i + 1];
+        int32_t p = w->nb_start[i];
+        while (p < pend) {
+        int32_t cj[HCBD__CHUNK], ck[HCBD__CHUNK];
+        double cx[HCBD__CHUNK], cy[HCBD__CHUNK], cz[HCBD__CHUNK], cr2[HCBD__CHUNK];
+        const int m = hcbd__gather(w, &box, i, &p, pend, cut2, cj, ck, cx, cy, cz, cr2);
+        int t;
+        for (t = 0; t < m; ++t) {
+            const int j = cj[t], k = ck[t];
+            const double dx = cx[t], dy = cy[t], dz = cz[t], r2 = cr2[t];
+            double r, Fx = 0, Fy = 0, Fz = 0, Px = 0, Py = 0, Pz = 0;
+            r = gibd || !table || flux ? sqrt(r2) : 0.0; /* the table needs r^2 only */
+            if (pot && r2 < rc2) {
+                const double fr = table ? hcbd__star_table(w, r2) : hcbd__force_over_r(w, r, r2);
+                int64_t a;
+                Fx = fr * dx; Fy = fr * dy; Fz = fr * dz;
+                bad |= !(fabs(Fx) <= limF && fabs(Fy) <= limF && fabs(Fz) <= limF);
+                a = hcbd__fix(Fx * qF); fxs += a; aFx[j] -= a;
+                a = hcbd__fix(Fy * qF); fys += a; aFy[j] -= a;
+                a = hcbd__fix(Fz * qF); fzs += a; aFz[j] -= a;
+            }
+            if (gibd && r2 < Rc2) {
+                const double qq = r * invRc, a = 1.0 - qq;
+                if (fric) {
+                    const double sdt = hcbd__sdt(cs, iri, w->inv_rho[j], a); /* S dt/tau */
+                    int64_t u;
+                    /* j's image across the sheared boundary moves faster by
+                       k gdot Ly */
                     Px = sdt * (w->vx[j] + k * vle - vxi);
                     Py = sdt * (w->vy[j] - vyi);
                     Pz = sdt * (w->vz[j] - vzi);
                     if (noise) {
                         double z3[3], b = sqrt(two_kT * sdt);
-                        hcbd__pair_noise(w, hcbd__pair_key(skey, idi, w->id[j]), z3);
+                        hcbd__noise3(w, hcbd__pair_key(skey, idi, w->id[j]), z3);
                         Px += b * z3[0]; Py += b * z3[1]; Pz += b * z3[2];
                     }
-                    if (lag) wv = cw * a * a * a * a * (4.0 * q + 1.0);
-                } else if (lag && r2 < Rc2) {
-                    double q = r * invRc, a = 1.0 - q;
-                    wv = cw * a * a * a * a * (4.0 * q + 1.0);
+                    bad |= !(fabs(Px) <= limP && fabs(Py) <= limP && fabs(Pz) <= limP);
+                    u = hcbd__fix(Px * qP); pxs += u; aPx[j] -= u;
+                    u = hcbd__fix(Py * qP); pys += u; aPy[j] -= u;
+                    u = hcbd__fix(Pz * qP); pzs += u; aPz[j] -= u;
                 }
-            }
-            if (pot) {
-                fxs += Fx; fys += Fy; fzs += Fz;
-                bFx[p] = (hcbd_real)Fx; bFy[p] = (hcbd_real)Fy; bFz[p] = (hcbd_real)Fz;
-            }
-            if (fric) {
-                /* the owner gets exactly the negative of what the partner
-                   gets, so momentum is conserved to round-off in the sums */
-                pxs += (hcbd_real)Px; pys += (hcbd_real)Py; pzs += (hcbd_real)Pz;
-                bPx[p] = (hcbd_real)Px; bPy[p] = (hcbd_real)Py; bPz[p] = (hcbd_real)Pz;
-            }
-            if (lag) {
-                ws += wv;
-                bW[p] = (hcbd_real)wv;
+                if (lag) {
+                    const int64_t v = hcbd__fix(hcbd__weight(cwq, qq, a));
+                    ws += v;
+                    aW[j] += v;
+                }
             }
             if (flux) { /* y_ij F_ij,x: flux of x momentum across y planes */
                 sp += 0.5 * (dy * Fx + dx * Fy);
                 sb += dy * Px;
             }
         }
+        }
         if (flux) {
             w->fl_p[i] = (hcbd_real)sp;
             if (fric) w->fl_b[i] = (hcbd_real)sb;
         }
-        if (pot) { w->fx[i] = (hcbd_real)fxs; w->fy[i] = (hcbd_real)fys; w->fz[i] = (hcbd_real)fzs; }
-        if (fric) { w->px[i] = (hcbd_real)pxs; w->py[i] = (hcbd_real)pys; w->pz[i] = (hcbd_real)pzs; }
-        if (lag) w->wown[i] = (hcbd_real)ws;
+        if (pot) { aFx[i] += fxs; aFy[i] += fys; aFz[i] += fzs; }
+        if (fric) { aPx[i] += pxs; aPy[i] += pys; aPz[i] += pzs; }
+        if (lag) aW[i] += ws;
+        if (bad && idi < worst) worst = idi;
     }
+    return worst;
+}
+
+/* The common cases with their switches constant, so that each loop holds
+   only its own work; anything else takes the general one. */
+static int hcbd__forces_pot(hcbd_world *w, int q0, int q1)
+{
+    return hcbd__forces_body(w, q0, q1, 1, 0, 0, 0);
+}
+
+static int hcbd__forces_gibd(hcbd_world *w, int q0, int q1)
+{
+    return hcbd__forces_body(w, q0, q1, 1, 1, 0, 0);
+}
+
+static int hcbd__forces_any(hcbd_world *w, int q0, int q1)
+{
+    return hcbd__forces_body(w, q0, q1, w->p.potential != HCBD_POT_IDEAL,
+                             w->gibd && !w->shardlow, w->gibd && w->p.lagged_density,
+                             w->flux_on);
+}
+
+static hcbd_result hcbd__forces(hcbd_world *w)
+{
+    const int n = w->n;
+    int d, bad;
+    for (d = 0; d < 3; ++d) {
+        if (w->p.potential != HCBD_POT_IDEAL) hcbd__zero64(w->aF[d], n);
+        if (w->gibd && !w->shardlow) hcbd__zero64(w->aP[d], n);
+    }
+    if (w->gibd && w->p.lagged_density) hcbd__zero64(w->aW, n);
+    {
+        const int pot = w->p.potential != HCBD_POT_IDEAL, fric = w->gibd && !w->shardlow;
+        const int plain = !w->flux_on && !(w->gibd && w->p.lagged_density) && pot;
+        bad = hcbd__owners(w, plain && !fric ? hcbd__forces_pot
+                              : plain ? hcbd__forces_gibd : hcbd__forces_any);
+    }
+    if (bad != INT_MAX)
+        return hcbd__fail(&w->err, HCBD_ERR_UNSTABLE, w->step, bad,
+                          "step %lld: particle id %d has a pair force beyond %g or a "
+                          "momentum exchange beyond %g (the fixed-point range of the "
+                          "pair sums: a move of 8 cut-offs in one step), or a non-finite "
+                          "one; particles overlap or dt = %g is too long",
+                          (long long)w->step, bad, w->limF, w->limP, w->p.dt);
+    return HCBD_OK;
 }
 
 /* HCBD_PAIR_SHARDLOW: the friction and noise of each pair solved exactly
@@ -2716,51 +3036,117 @@ static void hcbd__forces(hcbd_world *w)
    e = exp(-2 S dt/m), S dt = sdt as in the Euler scheme; i gets
    P = (m/2)(u' - u) and j gets -P (momentum exact, Galilean invariant).
    Every step of the sweep keeps the Maxwell distribution, so no
-   O(dt/tau) excess remains.  The pairs are visited by increasing owner id,
-   then partner id: the order, hence the bits, depend on neither threads
-   nor storage. */
-static void hcbd__shardlow(hcbd_world *w)
+   O(dt/tau) excess remains.
+
+   The order of the sweep: each particle, by its present position relative
+   to particle 0, lies in a row of y-z cells at least Rc wide (a multiple
+   of 3 along each axis, or a single one), and a pair belongs to the row of
+   its owner (the lower id).  A pair reaches at most one row up or down in y and z (across the
+   sheared boundary too: a row spans all x), so rows of one colour (y row
+   mod 3, z row mod 3) never touch the same particle: the nine colours run
+   in turn, the rows of a colour side by side.  Inside a row, owners go by
+   increasing id and partners by increasing id.  The order is set by the
+   positions and ids alone, so the bits depend on neither the thread count,
+   nor the storage, nor when the list was built. */
+
+/* 1 - e^{-x} for x >= 0: the series for small x (the usual case, 2 f dt/tau
+   ~ 0.05), which is exact to a few ulp and far cheaper than expm1 */
+static inline double hcbd__one_minus_exp(double x)
+{
+    if (x < 0.125)
+        return x * (1 - x * (1.0 / 2) * (1 - x * (1.0 / 3) * (1 - x * (1.0 / 4) * (1 - x * (1.0 / 5) *
+               (1 - x * (1.0 / 6) * (1 - x * (1.0 / 7) * (1 - x * (1.0 / 8) * (1 - x * (1.0 / 9) *
+               (1 - x * (1.0 / 10))))))))));
+    return -expm1(-x);
+}
+
+static void hcbd__shardlow_owner(hcbd_world *w, int i, uint64_t skey, uint64_t wkey)
 {
     const double m = w->m, inv_m = w->inv_m, kT = w->p.kT, vle = w->le_vjump;
     const double Rc2 = w->p.Rc * w->p.Rc, invRc = 1.0 / w->p.Rc;
     const double cs = w->cf * m * m * w->p.dt / w->p.tau;
-    const int noise = w->has_noise, flux = w->flux_on;
-    const int morris = HCBD__WALLS && w->walls && w->n_art > 0;
-    const uint64_t skey = hcbd__step_key(w, w->step);
-    const uint64_t wkey = morris ? hcbd__mix64(w->wall_pair_key ^ hcbd__mix64((uint64_t)w->step)) : 0;
+    const int noise = w->has_noise;
     const hcbd__box box = hcbd__box_of(w);
     hcbd_real *HCBD__RESTRICT vx = w->vx, *HCBD__RESTRICT vy = w->vy, *HCBD__RESTRICT vz = w->vz;
-    int k;
-    for (k = 0; k < w->n; ++k) {
-        const int i = w->slot[k];
-        const double xi = w->x[i], yi = w->y[i], zi = w->z[i], iri = w->inv_rho[i];
-        double sb = 0.0;
-        int32_t p;
-        for (p = w->nb_start[i]; p < w->nb_start[i + 1]; ++p) {
-            const int j = w->nb_j[p];
-            double d[3], r2, a, sdt, om, c, Px, Py, Pz;
-            const int kk = hcbd__delta_box(&box, xi - w->x[j], yi - w->y[j], zi - w->z[j], d);
-            r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-            if (r2 >= Rc2) continue;
-            a = 1.0 - sqrt(r2) * invRc;
-            sdt = cs * (iri + w->inv_rho[j]) * a * a * a;
-            om = -expm1(-2.0 * sdt * inv_m); /* 1 - e */
-            c = 0.5 * m * om;
-            Px = -c * (vx[i] - vx[j] - kk * vle);
-            Py = -c * (vy[i] - vy[j]);
-            Pz = -c * (vz[i] - vz[j]);
-            if (noise) {
-                double z3[3], b = sqrt(0.5 * kT * m * om * (2.0 - om));
-                hcbd__pair_noise(w, hcbd__pair_key(skey, w->id[i], w->id[j]), z3);
-                Px += b * z3[0]; Py += b * z3[1]; Pz += b * z3[2];
-            }
-            vx[i] = (hcbd_real)(vx[i] + Px * inv_m); vx[j] = (hcbd_real)(vx[j] - Px * inv_m);
-            vy[i] = (hcbd_real)(vy[i] + Py * inv_m); vy[j] = (hcbd_real)(vy[j] - Py * inv_m);
-            vz[i] = (hcbd_real)(vz[i] + Pz * inv_m); vz[j] = (hcbd_real)(vz[j] - Pz * inv_m);
-            sb += d[1] * Px;
+    const double yi = w->y[i], iri = w->inv_rho[i];
+    const int32_t pend = w->nb_start[i + 1];
+    double sb = 0.0;
+    int32_t p = w->nb_start[i];
+    while (p < pend) {
+    int32_t cj[HCBD__CHUNK], ck[HCBD__CHUNK];
+    double cx[HCBD__CHUNK], cy[HCBD__CHUNK], cz[HCBD__CHUNK], cr2[HCBD__CHUNK];
+    const int m2 = hcbd__gather(w, &box, i, &p, pend, Rc2, cj, ck, cx, cy, cz, cr2);
+    int t;
+    for (t = 0; t < m2; ++t) {
+        const int j = cj[t], kk = ck[t];
+        double a, sdt, om, c, Px, Py, Pz;
+        a = 1.0 - sqrt(cr2[t]) * invRc;
+        sdt = hcbd__sdt(cs, iri, w->inv_rho[j], a);
+        om = hcbd__one_minus_exp(2.0 * sdt * inv_m); /* 1 - e */
+        c = 0.5 * m * om;
+        Px = -c * (vx[i] - vx[j] - kk * vle);
+        Py = -c * (vy[i] - vy[j]);
+        Pz = -c * (vz[i] - vz[j]);
+        if (noise) {
+            double z3[3], b = sqrt(0.5 * kT * m * om * (2.0 - om));
+            hcbd__noise3(w, hcbd__pair_key(skey, w->id[i], w->id[j]), z3);
+            Px += b * z3[0]; Py += b * z3[1]; Pz += b * z3[2];
         }
-        if (morris && hcbd__near_wall(w, yi)) hcbd__morris(w, i, wkey, NULL, 1);
-        if (flux) w->fl_b[i] = (hcbd_real)sb;
+        vx[i] = (hcbd_real)(vx[i] + Px * inv_m); vx[j] = (hcbd_real)(vx[j] - Px * inv_m);
+        vy[i] = (hcbd_real)(vy[i] + Py * inv_m); vy[j] = (hcbd_real)(vy[j] - Py * inv_m);
+        vz[i] = (hcbd_real)(vz[i] + Pz * inv_m); vz[j] = (hcbd_real)(vz[j] - Pz * inv_m);
+        sb += cy[t] * Px;
+    }
+    }
+    if (HCBD__WALLS && wkey && hcbd__near_wall(w, yi)) hcbd__morris(w, i, wkey, NULL, 1);
+    if (w->flux_on) w->fl_b[i] = (hcbd_real)sb;
+}
+
+static void hcbd__shardlow(hcbd_world *w)
+{
+    const int n = w->n, nt = w->p.threads, ny = w->sw_n[0], nz = w->sw_n[1];
+    const int nrows = ny * nz;
+    const int morris = HCBD__WALLS && w->walls && w->n_art > 0;
+    const uint64_t skey = hcbd__step_key(w, w->step);
+    const uint64_t wkey = morris ? hcbd__mix64(w->wall_pair_key ^ hcbd__mix64((uint64_t)w->step)) | 1 : 0;
+    const double fy = ny / w->p.L[1], fz = nz / w->p.L[2], Ly = w->p.L[1], Lz = w->p.L[2];
+    /* rows move with particle 0, so that a boosted copy of the world sweeps
+       in the same order (Galilean invariance of the trajectory) */
+    const double y0 = w->y[w->slot[0]], z0 = w->z[w->slot[0]];
+    int32_t *HCBD__RESTRICT row = w->cell_of, *HCBD__RESTRICT start = w->sw_start;
+    int32_t *HCBD__RESTRICT list = (int32_t *)w->scratch;
+    int k, r;
+    (void)nt;
+    /* rows by counting sort, filled in id order */
+    for (r = 0; r <= nrows; ++r) start[r] = 0;
+    for (k = 0; k < n; ++k) {
+        const int i = w->slot[k];
+        const double yy = w->y[i] - y0, zz = w->z[i] - z0;
+        int a = (int)((yy < 0 ? yy + Ly : yy) * fy), b = (int)((zz < 0 ? zz + Lz : zz) * fz);
+        if (a > ny - 1) a = ny - 1;
+        if (b > nz - 1) b = nz - 1;
+        row[i] = b * ny + a;
+        start[row[i] + 1]++;
+    }
+    for (r = 0; r < nrows; ++r) start[r + 1] += start[r];
+    for (k = 0; k < n; ++k) {
+        const int i = w->slot[k];
+        list[start[row[i]]++] = i;
+    }
+    for (r = nrows; r > 0; --r) start[r] = start[r - 1];
+    start[0] = 0;
+    HCBD__OMP(omp parallel num_threads(nt))
+    {
+        int col;
+        for (col = 0; col < 9; ++col) {
+            int rr;
+            HCBD__OMP(omp for schedule(dynamic, 1))
+            for (rr = 0; rr < nrows; ++rr) {
+                int q;
+                if ((rr % ny) % 3 + 3 * ((rr / ny) % 3) != col) continue;
+                for (q = start[rr]; q < start[rr + 1]; ++q) hcbd__shardlow_owner(w, list[q], skey, wkey);
+            }
+        }
     }
 }
 
@@ -2792,45 +3178,22 @@ static hcbd_result hcbd__integrate(hcbd_world *w)
     /* positions at t + dt are remapped with the offset of t + dt */
     const double s_new = w->le_offset + w->p.gdot * L1 * dt;
     const hcbd__box box = hcbd__box_of(w);
-    const hcbd_real *HCBD__RESTRICT bFx = pot ? w->buf[w->bF] : NULL;
-    const hcbd_real *HCBD__RESTRICT bFy = pot ? w->buf[w->bF + 1] : NULL;
-    const hcbd_real *HCBD__RESTRICT bFz = pot ? w->buf[w->bF + 2] : NULL;
-    const hcbd_real *HCBD__RESTRICT bPx = fric ? w->buf[w->bP] : NULL;
-    const hcbd_real *HCBD__RESTRICT bPy = fric ? w->buf[w->bP + 1] : NULL;
-    const hcbd_real *HCBD__RESTRICT bPz = fric ? w->buf[w->bP + 2] : NULL;
-    const hcbd_real *HCBD__RESTRICT bW = lag ? w->buf[w->bW] : NULL;
+    const double iqF = pot ? 1.0 / w->qF : 0.0, iqP = fric ? 1.0 / w->qP : 0.0;
+    const double iqW = lag ? 1.0 / w->qW : 0.0;
+    const uint64_t bkey = hcbd__mix64(w->bd_key ^ hcbd__mix64((uint64_t)w->step));
     double dmax = 0.0;
     int bad_step = INT_MAX, bad_nan = INT_MAX, i;
     (void)nt;
     HCBD__OMP(omp parallel for num_threads(nt) schedule(static) reduction(max:dmax) reduction(min:bad_step) reduction(min:bad_nan) reduction(+:npen) reduction(min:pen_id))
     for (i = 0; i < n; ++i) {
         double F[3] = {0, 0, 0}, P[3] = {0, 0, 0}, G[3] = {0, 0, 0};
-        double ws = lag ? w->wown[i] : 0.0;
         double r[3], dr[3], d2, v2 = 0.0;
-        int32_t q;
         int d;
         if (flux) w->fl_c[i] = 0;
-        if (pot) {
-            F[0] = w->fx[i]; F[1] = w->fy[i]; F[2] = w->fz[i];
-            for (q = w->rev_start[i]; q < w->rev_start[i + 1]; ++q) {
-                int32_t p = w->rev_p[q];
-                F[0] -= bFx[p];
-                F[1] -= bFy[p];
-                F[2] -= bFz[p];
-            }
-        }
-        if (fric) {
-            P[0] = w->px[i]; P[1] = w->py[i]; P[2] = w->pz[i];
-            for (q = w->rev_start[i]; q < w->rev_start[i + 1]; ++q) {
-                int32_t p = w->rev_p[q];
-                P[0] -= bPx[p];
-                P[1] -= bPy[p];
-                P[2] -= bPz[p];
-                if (lag) ws += bW[p];
-            }
-        } else if (lag) {
-            for (q = w->rev_start[i]; q < w->rev_start[i + 1]; ++q) ws += bW[w->rev_p[q]];
-        }
+        if (pot)
+            for (d = 0; d < 3; ++d) F[d] = (double)w->aF[d][i] * iqF;
+        if (fric)
+            for (d = 0; d < 3; ++d) P[d] = (double)w->aP[d][i] * iqP;
         if (gauss) {
             double fw;
             hcbd_wall_potential(&w->p, w->y[i], &fw);
@@ -2847,13 +3210,9 @@ static hcbd_result hcbd__integrate(hcbd_world *w)
             dr[0] += w->vx[i] * dt; dr[1] += w->vy[i] * dt; dr[2] += w->vz[i] * dt;
         }
         if (noise) {
-            hcbd_rng g;
-            hcbd__gen gen;
-            g.s[0] = w->rs0[i]; g.s[1] = w->rs1[i]; g.s[2] = w->rs2[i]; g.s[3] = w->rs3[i];
-            gen.xo = &g;
-            gen.sm = 0;
-            for (d = 0; d < 3; ++d) dr[d] += sdr * hcbd__normal(w->zig, &gen);
-            w->rs0[i] = g.s[0]; w->rs1[i] = g.s[1]; w->rs2[i] = g.s[2]; w->rs3[i] = g.s[3];
+            double z3[3];
+            hcbd__noise3(w, hcbd__particle_key(bkey, w->id[i]), z3);
+            for (d = 0; d < 3; ++d) dr[d] += sdr * z3[d];
         }
         if (gibd) {
             double vx = w->vx[i] + (F[0] + G[0]) * dt_m + P[0] * inv_m;
@@ -2865,7 +3224,7 @@ static hcbd_result hcbd__integrate(hcbd_world *w)
                Euler): the explicit drift with the old v heats by O(dt) */
             if (!fric) { dr[0] += vx * dt; dr[1] += vy * dt; dr[2] += vz * dt; }
             if (lag) {
-                double rho = w->m * w->rho_norm * (w->w0 + ws);
+                double rho = w->m * w->rho_norm * (w->w0 + (double)w->aW[i] * iqW);
                 w->rho[i] = (hcbd_real)rho;
                 w->inv_rho[i] = (hcbd_real)(1.0 / rho);
             }
@@ -3024,8 +3383,10 @@ hcbd_result hcbd_step(hcbd_world *w, int nsteps)
         }
         if (w->gibd && hcbd__density_stale(w)) hcbd__density(w);
         if (w->has_pairs && !(w->shardlow && w->p.potential == HCBD_POT_IDEAL &&
-                              !w->p.lagged_density && !w->flux_on))
-            hcbd__forces(w);
+                              !w->p.lagged_density && !w->flux_on)) {
+            r = hcbd__forces(w);
+            if (r != HCBD_OK) return r;
+        }
         if (w->shardlow) hcbd__shardlow(w);
         r = hcbd__integrate(w);
         if (r == HCBD_OK && w->flux_on) hcbd__flux_add(w);
@@ -3265,7 +3626,7 @@ static void hcbd__fric_fn(void *c, int i, int j, double dx, double dy, double dz
     hcbd_world *w = f->w;
     double a = 1.0 - sqrt(r2) / w->p.Rc;
     /* f_ij = S_ij / m = cf m (1/rho_i + 1/rho_j) (1 - r/Rc)^3 = f_ji */
-    double fij = w->cf * w->m * ((double)w->inv_rho[i] + w->inv_rho[j]) * a * a * a;
+    double fij = hcbd__sdt(w->cf * w->m, w->inv_rho[i], w->inv_rho[j], a);
     double c3 = (1.0 - cos(f->k[0] * dx)) + (1.0 - cos(f->k[1] * dy)) +
                 (1.0 - cos(f->k[2] * dz));
     f->s[0] += 2.0 * fij;
@@ -3366,8 +3727,6 @@ uint64_t hcbd_state_checksum(const hcbd_world *w)
             h = hcbd__hash(h, &w->vy[s], sizeof(hcbd_real));
             h = hcbd__hash(h, &w->vz[s], sizeof(hcbd_real));
         }
-        h = hcbd__hash(h, &w->rs0[s], 8);
-        h = hcbd__hash(h, &w->rs3[s], 8);
     }
     return h;
 }
@@ -5740,15 +6099,6 @@ static void hcbd__ck_i32s(hcbd__ck *c, int32_t *a, const int32_t *map, int n)
     }
 }
 
-static void hcbd__ck_u64s(hcbd__ck *c, uint64_t *a, const int32_t *map, int n)
-{
-    int k;
-    for (k = 0; k < n; ++k) {
-        uint64_t v = c->in ? 0 : a[map ? map[k] : k];
-        hcbd__ck_u64(c, &v);
-        if (c->in) a[k] = v;
-    }
-}
 
 static void hcbd__ck_f64s(hcbd__ck *c, double *a, const int32_t *map, int n)
 {
@@ -5941,6 +6291,7 @@ static void hcbd__ck_params(hcbd__ck *c, hcbd_params *p)
     hcbd__ck_int(c, &p->wall_noise_beta);
     hcbd__ck_f64(c, &p->skin);
     hcbd__ck_int(c, &p->sort);
+    hcbd__ck_int(c, &p->force_table);
     hcbd__ck_u64(c, &p->seed);
     hcbd__ck_int(c, &p->threads);
     hcbd__ck_f64(c, &p->min_distance);
@@ -5970,13 +6321,10 @@ static void hcbd__ck_state(hcbd__ck *c, hcbd_world *w)
     hcbd__ck_reals(c, w->x, map, n); hcbd__ck_reals(c, w->y, map, n); hcbd__ck_reals(c, w->z, map, n);
     hcbd__ck_i32s(c, w->ix, map, n); hcbd__ck_i32s(c, w->iy, map, n); hcbd__ck_i32s(c, w->iz, map, n);
     hcbd__ck_f64s(c, w->lx, map, n);
-    hcbd__ck_u64s(c, w->rs0, map, n); hcbd__ck_u64s(c, w->rs1, map, n);
-    hcbd__ck_u64s(c, w->rs2, map, n); hcbd__ck_u64s(c, w->rs3, map, n);
     if (w->gibd) {
         hcbd__ck_reals(c, w->vx, map, n); hcbd__ck_reals(c, w->vy, map, n);
         hcbd__ck_reals(c, w->vz, map, n);
         hcbd__ck_reals(c, w->rho, map, n); hcbd__ck_reals(c, w->inv_rho, map, n);
-        hcbd__ck_reals(c, w->wown, map, n);
     }
 }
 
@@ -6064,9 +6412,9 @@ static hcbd_result hcbd__ck_load(hcbd_world *w, const void *buf, size_t size)
         def.params.table_F = tab;
         def.params.table_V = tab + tn;
     }
-    /* every particle takes at least 11 words: a short file is refused
-       before its capacity is allocated */
-    if ((size_t)n > (c.size - c.off) / (11 * 8)) {
+    /* every particle takes at least 7 words (position, images, Lees-Edwards
+       shift): a short file is refused before its capacity is allocated */
+    if ((size_t)n > (c.size - c.off) / (7 * 8)) {
         HCBD_FREE(tab);
         return hcbd__ck_bad(&w->err, &c, "is shorter than its particles");
     }

@@ -1,5 +1,5 @@
 /* bench_speed: nanoseconds per particle-step for the 2014 star-polymer
-   scene (f = 128, n# = 0.24, Rc = rcut = 2.5, skin 0.4, dt = 1e-4,
+   scene (f = 128, n# = 0.24, Rc = rcut = 2.5, skin 0.6, dt = 1e-4,
    tau = 3.6e-3) at N = 512, 4096, 32768, 262144 (and 1048576 with
    Nmax=1048576), classical BD and GI-BD, 1 and 2 threads, GI-BD under
    Lees-Edwards shear (gdot = 5, with the stress split accumulated every
@@ -11,7 +11,13 @@
    minimum over repeats of the time per particle-step; the state checksum
    of each run shows that the thread counts give identical bits.
 
-   usage: bench_speed [Nmax=262144] [threads=2] [out=out/bench] */
+   noise=uniform draws the pair and Brownian noise uniform with unit
+   variance (as LAMMPS fix brownian does by default); scenes= runs a comma
+   list of bd, gibd, gibd-le, channel; skin= sets the Verlet skin (default
+   HCBD_AUTO, 0.6).
+
+   usage: bench_speed [Nmax=262144] [threads=2] [out=out/bench]
+                      [noise=gauss|uniform] [scenes=bd,gibd,...] [skin=0.6] */
 #define _POSIX_C_SOURCE 200809L /* clock_gettime, mkdir under -std=c99 */
 #include "../hcbd.h"
 #include <math.h>
@@ -31,28 +37,35 @@ static double now(void)
 int main(int argc, char **argv)
 {
     int sizes[5] = {512, 4096, 32768, 262144, 1048576}, Nmax = 262144, maxth = 2, k, dyn, th;
-    char out[512] = "out/bench", path[600];
+    char out[512] = "out/bench", path[600], scenes[256] = "";
+    hcbd_noise noise = HCBD_NOISE_GAUSS;
+    double skin = HCBD_AUTO;
     FILE *csv;
     for (k = 1; k < argc; ++k) {
         if (!strncmp(argv[k], "Nmax=", 5)) Nmax = atoi(argv[k] + 5);
         else if (!strncmp(argv[k], "threads=", 8)) maxth = atoi(argv[k] + 8);
         else if (!strncmp(argv[k], "out=", 4)) snprintf(out, sizeof out, "%s", argv[k] + 4);
+        else if (!strcmp(argv[k], "noise=gauss")) noise = HCBD_NOISE_GAUSS;
+        else if (!strcmp(argv[k], "noise=uniform")) noise = HCBD_NOISE_UNIFORM;
+        else if (!strncmp(argv[k], "scenes=", 7)) snprintf(scenes, sizeof scenes, ",%s,", argv[k] + 7);
+        else if (!strncmp(argv[k], "skin=", 5)) skin = atof(argv[k] + 5);
         else {
-            fprintf(stderr, "bench_speed: unknown argument '%s' (Nmax=, threads=, out=)\n", argv[k]);
+            fprintf(stderr, "bench_speed: unknown argument '%s' (Nmax=, threads=, out=, "
+                            "noise=gauss|uniform, scenes=, skin=)\n", argv[k]);
             return 2;
         }
     }
     if (maxth < 1) maxth = 1;
     mkdir("out", 0755);
     mkdir(out, 0755);
-    snprintf(path, sizeof path, "%s/speed.csv", out);
+    snprintf(path, sizeof path, "%s/speed%s.csv", out, noise == HCBD_NOISE_UNIFORM ? "_uniform" : "");
     csv = fopen(path, "w");
     if (!csv) {
         fprintf(stderr, "bench_speed: cannot write %s\n", path);
         return 1;
     }
     fprintf(csv, "scene,N,artificial,threads,ns_per_particle_step,steps,rebuilds_per_100_steps,"
-                 "pairs_per_particle,checksum\n");
+                 "pairs_per_particle,noise,checksum\n");
     printf("%-8s %8s %6s %7s %14s %10s %10s %18s\n", "scene", "N", "artif.", "threads",
            "ns/particle-step", "rebuild%", "pairs/N", "checksum");
     for (k = 0; k < 5; ++k) {
@@ -67,10 +80,15 @@ int main(int argc, char **argv)
                 /* about a second of work per repeat, at least 20 steps */
                 int steps = (int)(1e9 / (N * 800.0)), rep, reps = N <= 32768 ? 3 : 1;
                 int64_t r0;
+                char tag[32];
+                snprintf(tag, sizeof tag, ",%s,", names[dyn]);
+                if (scenes[0] && !strstr(scenes, tag)) continue;
                 if (steps < 20) steps = 20;
                 d.capacity = N;
                 d.params.L[0] = d.params.L[1] = d.params.L[2] = L;
                 d.params.dynamics = dyn ? HCBD_DYN_GIBD : HCBD_DYN_BD;
+                d.params.noise = noise;
+                d.params.skin = skin;
                 if (dyn == 2) d.params.gdot = 5.0;
                 if (dyn == 3) { /* 2016 sec. IV C */
                     d.params.L[1] = L + 3.0;
@@ -103,8 +121,9 @@ int main(int argc, char **argv)
                 printf("%-8s %8d %6d %7d %14.1f %10.1f %10.2f  %016llx\n", names[dyn], N, w.n_art, th,
                        best, 100.0 * (w.n_rebuilds - r0) / (reps * steps), (double)w.npairs / N,
                        (unsigned long long)hcbd_state_checksum(&w));
-                fprintf(csv, "%s,%d,%d,%d,%.2f,%d,%.2f,%.3f,%016llx\n", names[dyn], N, w.n_art, th, best,
-                        steps * reps, 100.0 * (w.n_rebuilds - r0) / (reps * steps), (double)w.npairs / N,
+                fprintf(csv, "%s,%d,%d,%d,%.2f,%d,%.2f,%.3f,%s,%016llx\n", names[dyn], N, w.n_art, th,
+                        best, steps * reps, 100.0 * (w.n_rebuilds - r0) / (reps * steps),
+                        (double)w.npairs / N, noise == HCBD_NOISE_UNIFORM ? "uniform" : "gauss",
                         (unsigned long long)hcbd_state_checksum(&w));
                 fflush(stdout);
                 hcbd_world_destroy(&w);

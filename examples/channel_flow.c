@@ -46,7 +46,7 @@ static void usage(void)
             "  body=both|background  the body force drives particles and background, or\n"
             "                      the background only\n"
             "  density dt kT xi tau Rc f sigma rcut skin Lx Ly Lz potential=star|ideal\n"
-            "  density_norm=2014|2016 noise=gauss|uniform seed steps threads out\n"
+            "  density_norm=2014|2016 noise=gauss|uniform pair=shardlow|euler seed steps threads out\n"
             "  (N follows from the density and the channel volume)\n");
 }
 

@@ -158,6 +158,11 @@ static int parse_args(int argc, char **argv, config *c, own_key_fn own, void (*u
             if (!parse_choice(c, key, v, "gibd", "bd", &x, HCBD_DYN_GIBD, HCBD_DYN_BD)) return 0;
             p->dynamics = (hcbd_dynamics)x;
         }
+        else if (!strcmp(key, "pair")) {
+            int x;
+            if (!parse_choice(c, key, v, "shardlow", "euler", &x, HCBD_PAIR_SHARDLOW, HCBD_PAIR_EULER)) return 0;
+            p->pair_integrator = (hcbd_pair_integrator)x;
+        }
         else if (!strcmp(key, "noise")) {
             int x;
             if (!parse_choice(c, key, v, "gauss", "uniform", &x, HCBD_NOISE_GAUSS, HCBD_NOISE_UNIFORM)) return 0;

@@ -43,7 +43,7 @@ static void usage(void)
             "                      (gdot: Lees-Edwards shear rate, reports the viscosity)\n"
             "  Lx Ly Lz            box edges (default: cube of N/density)\n"
             "  potential=star|ideal  dynamics=gibd|bd  density_norm=2014|2016\n"
-            "  lagged=0|1 noise=gauss|uniform seed steps threads out\n"
+            "  lagged=0|1 noise=gauss|uniform pair=shardlow|euler seed steps threads out\n"
             "  xyz=FILE xyz_every=k  extended XYZ frames (OVITO) every k steps\n"
             "  thermo_every=k      a thermo line every k steps\n"
             "  checkpoint=FILE     save the world at the end; restart=FILE  start from\n"

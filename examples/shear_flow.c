@@ -40,7 +40,7 @@ static void usage(void)
             "  gdot=a,b,c,...      shear rates (comma-separated)\n"
             "  xip=a,b,...         background frictions xi' (xi = 1): default 1,2,5\n"
             "  N density dt kT xi tau Rc f sigma rcut skin Lx Ly Lz potential=star|ideal\n"
-            "  density_norm=2014|2016 lagged=0|1 noise=gauss|uniform seed steps threads out\n"
+            "  density_norm=2014|2016 lagged=0|1 noise=gauss|uniform pair=shardlow|euler seed steps threads out\n"
             "  (steps: per shear rate)\n");
 }
 

@@ -146,8 +146,9 @@ static const bi_pentry bi_params[] = {
     {B_DEF, NOSET, GD(L[2], -1), HCBD_ERR_PARAM, NULL},
     {B_DEF, NOSET, GD(L[0], 0), HCBD_ERR_PARAM, NULL},
     {B_DEF, NOSET, GD(L[1], 1e13), HCBD_ERR_PARAM, NULL},
-    {B_DEF, NOSET, GD(L[0], 5), HCBD_ERR_BOX, NULL},  /* < 2 (Rc + skin) */
-    {B_DEF, NOSET, GD(L[2], 5.5), HCBD_ERR_BOX, NULL},
+    /* < 2 Rc: too small even for the automatic skin, which shrinks to fit */
+    {B_DEF, NOSET, GD(L[0], 4.9), HCBD_ERR_BOX, NULL},
+    {B_DEF, NOSET, GD(L[2], 4.5), HCBD_ERR_BOX, NULL},
     {B_DEF, NOSET, GD(skin, 5), HCBD_ERR_BOX, "box too small|skin 5"},
     /* dynamics */
     {B_DEF, NOSET, GD(dt, 0), HCBD_ERR_PARAM, NULL},
@@ -169,7 +170,7 @@ static const bi_pentry bi_params[] = {
     {B_DEF, NOSET, GD(tau, -1), HCBD_ERR_PARAM, NULL},
     {B_DEF, NOSET, GD(tau, NAN), HCBD_ERR_PARAM, NULL},
     {B_DEF, NOSET, GD(tau, INFINITY), HCBD_ERR_PARAM, NULL},
-    {B_DEF, NOSET, GD(tau, 6.103515625e-05), HCBD_ERR_PARAM, NULL}, /* < dt (Euler) */
+    {B_DEF, GE(pair_integrator, HCBD_PAIR_EULER), GD(tau, 6.103515625e-05), HCBD_ERR_PARAM, NULL}, /* < dt (Euler) */
     {B_DEF, NOSET, GD(Rc, 0), HCBD_ERR_PARAM, NULL},
     {B_DEF, NOSET, GD(Rc, -1), HCBD_ERR_PARAM, NULL},
     {B_DEF, NOSET, GD(Rc, NAN), HCBD_ERR_PARAM, NULL},
@@ -227,11 +228,13 @@ static const bi_pentry bi_params[] = {
     {B_BD, NOSET, GD(gdot, 1), HCBD_ERR_PARAM, NULL},
     {B_DEF, NOSET, GD(gdot, 100000), HCBD_ERR_PARAM, NULL}, /* offset > L per step */
     {B_DEF, NOSET, GD(gdot, -100000), HCBD_ERR_PARAM, NULL},
-    {B_SHEAR, NOSET, GD(L[0], 8), HCBD_ERR_BOX, "L[0] = 8|Lees-Edwards"},
-    {B_DEF, NOSET, GD(skin, -1), HCBD_ERR_PARAM, NULL},
+    {B_SHEAR, NOSET, GD(L[0], 7.4), HCBD_ERR_BOX, "L[0] = 7.4|Lees-Edwards"},
+    {B_DEF, NOSET, GD(skin, -0.5), HCBD_ERR_PARAM, NULL},
     {B_DEF, NOSET, GD(skin, NAN), HCBD_ERR_PARAM, NULL},
     {B_DEF, NOSET, GD(skin, INFINITY), HCBD_ERR_PARAM, NULL},
     {B_DEF, NOSET, GI(sort, 2), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GI(force_table, 2), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GI(force_table, -1), HCBD_ERR_PARAM, NULL},
     {B_DEF, NOSET, GI(threads, 0), HCBD_ERR_PARAM, NULL},
     {B_DEF, NOSET, GI(threads, -1), HCBD_ERR_PARAM, NULL},
     {B_DEF, NOSET, GI(threads, 1025), HCBD_ERR_PARAM, NULL},

@@ -3,7 +3,11 @@
    here, for 1, 2 and 3 threads.  The bits of a run may change only on
    purpose: a change that alters them updates this table in the same
    commit and says why in its message (a failure prints the new hash).
-   gcc and clang, -O1 and -O2, give the same bits (-ffp-contract=off). */
+   gcc and clang, -O1 and -O2, give the same bits (-ffp-contract=off).
+   Changed on purpose (issue 14, the pair engine): fixed-point pair sums,
+   the star force from its table, counter-based Brownian noise, the exact
+   pair sweep's row-coloured order and its default use in the walled
+   scene. */
 #include "test.h"
 
 enum { G_GIBD_EULER, G_GIBD_SHARDLOW_SHEAR, G_BD, G_WALLS, G_HCBD, G_N };
@@ -14,10 +18,10 @@ static const char *g_name[G_N] = {"GI-BD Euler stars", "GI-BD Shardlow stars, sh
    skipped.  The GI-BD scenes give the same bits in every model's build. */
 static const uint64_t *golden_table(void)
 {
-    static const uint64_t dbl[G_N] = {0x79fc03b645050982ULL, 0x1f065bd1cdd52d6eULL, 0x4bcbd1519fb5f68eULL,
-                                      0xa5c4cae3e72cc56fULL, 0xdf0955770162da47ULL};
-    static const uint64_t flt[G_N] = {0xf124685e9a8c2ca0ULL, 0x1c5b035bb5d68876ULL, 0xa330a3b3f6f2d074ULL,
-                                      0xc4e33071bf1e5debULL, 0xfc7daabfd65a1e73ULL};
+    static const uint64_t dbl[G_N] = {0x34cb467a054c54e1ULL, 0x620ab7b3980b5a57ULL, 0x37004618b698f9a7ULL,
+                                      0xca08eed51029a528ULL, 0xdf0955770162da47ULL};
+    static const uint64_t flt[G_N] = {0xaed4993760453c3eULL, 0x4fc17811aa6eec78ULL, 0xd71b2af658a06d35ULL,
+                                      0x569afa9331137cf4ULL, 0xfc7daabfd65a1e73ULL};
     return sizeof(hcbd_real) == sizeof(double) ? dbl : flt;
 }
 

@@ -64,8 +64,10 @@ void test_star_force_is_minus_gradient(void)
           "V(r; sigma, eps) = eps V(r/sigma; 1, 1)");
 }
 
-/* Total force on each particle, from one BD step with kT = 0 and a tiny
-   dt (dR = F dt / xi), on a jittered lattice of 64 particles. */
+/* Total force on each particle, from one BD step with kT = 0 (dR = F dt /
+   xi exactly, so dt need only keep the round-off of x + dR and the
+   fixed-point grid of the force sums, 8 cutmax xi/dt 2^-50, small), on a
+   jittered lattice of 64 particles. */
 static void step_forces(hcbd_world_def d, double *xyz, double *F)
 {
     enum { N = 64 };
@@ -74,7 +76,7 @@ static void step_forces(hcbd_world_def d, double *xyz, double *F)
     int i;
     d.params.dynamics = HCBD_DYN_BD;
     d.params.kT = 0;
-    d.params.dt = 1e-9;
+    d.params.dt = 1e-6;
     d.params.L[0] = d.params.L[1] = d.params.L[2] = 6.5;
     if (!make_world(&w, &d)) return;
     for (i = 0; i < N; ++i) {
@@ -85,7 +87,7 @@ static void step_forces(hcbd_world_def d, double *xyz, double *F)
     hcbd_world_set_positions(&w, N, xyz);
     run(&w, 1);
     hcbd_get_positions(&w, x1, 1);
-    for (i = 0; i < 3 * N; ++i) F[i] = (x1[i] - xyz[i]) / 1e-9;
+    for (i = 0; i < 3 * N; ++i) F[i] = (x1[i] - xyz[i]) / 1e-6;
     hcbd_world_destroy(&w);
 }
 

@@ -78,7 +78,8 @@ void test_equipartition_shardlow(void)
              c[k].tau / c[k].dt, c[k].pot == HCBD_POT_STAR ? "stars" : "ideal", b, e, pred);
         if (t_quick) continue;
         CHECK(fabs(b) < 4 * e, "Shardlow temperature off by %g +- %g", b, e);
-        CHECK(e < 0.1 * pred, "run too short to see an Euler-size excess: %g +- %g", b, e);
+        /* Euler's excess would stand 7 errors out */
+        CHECK(e < 0.15 * pred, "run too short to see an Euler-size excess: %g +- %g", b, e);
     }
 }
 
@@ -416,7 +417,7 @@ static void tconf_terms(const double *xyz, int N, const double L[3], double *F2,
     free(F);
 }
 
-enum { GR_BD, GR_SHARDLOW, GR_EULER };
+enum { GR_BD, GR_SHARDLOW, GR_EULER, GR_BD2 };
 static gr_result gr_run(int kind, int steps, double *api_vs_test)
 {
     enum { N = 256, NB = 10 };
@@ -427,9 +428,9 @@ static gr_result gr_run(int kind, int steps, double *api_vs_test)
     int b, s, k;
     hcbd_rdf rdf;
     memset(&res, 0, sizeof res);
-    d.params.dynamics = kind == GR_BD ? HCBD_DYN_BD : HCBD_DYN_GIBD;
+    d.params.dynamics = kind == GR_BD || kind == GR_BD2 ? HCBD_DYN_BD : HCBD_DYN_GIBD;
     d.params.pair_integrator = kind == GR_SHARDLOW ? HCBD_PAIR_SHARDLOW : HCBD_PAIR_EULER;
-    d.params.seed = 3;
+    d.params.seed = kind == GR_BD2 ? 7 : 3;
     if (!make_world(&w, &d)) return res;
     hcbd_world_place_lattice(&w, N);
     run(&w, 5000);
@@ -467,14 +468,17 @@ void test_statics_default_tau(void)
 {
     const int steps = (int)((t_quick ? 10000 : 100000) * t_len);
     int k, nbins = 0;
-    double chi2 = 0, api = 1, ds, es, de, ee;
+    double chi2 = 0, chi2_0 = 0, api = 1, ds, es, de, ee;
     gr_result bd = gr_run(GR_BD, steps, NULL);
     gr_result sh = gr_run(GR_SHARDLOW, steps, &api);
     gr_result eu = gr_run(GR_EULER, steps, NULL);
+    gr_result b2 = t_quick ? bd : gr_run(GR_BD2, steps, NULL);
     for (k = 0; k < 50; ++k) {
         double e2s = bd.gerr[k] * bd.gerr[k] + sh.gerr[k] * sh.gerr[k];
-        if (bd.g[k] < 0.05 || e2s <= 0) continue; /* empty core bins */
+        double e20 = bd.gerr[k] * bd.gerr[k] + b2.gerr[k] * b2.gerr[k];
+        if (bd.g[k] < 0.05 || e2s <= 0 || e20 <= 0) continue; /* empty core bins */
         chi2 += (bd.g[k] - sh.g[k]) * (bd.g[k] - sh.g[k]) / e2s;
+        chi2_0 += (bd.g[k] - b2.g[k]) * (bd.g[k] - b2.g[k]) / e20;
         ++nbins;
     }
     ds = sh.tc - bd.tc;
@@ -484,13 +488,16 @@ void test_statics_default_tau(void)
     NOTE("T_conf: BD %.4f +- %.4f, GI-BD Shardlow %.4f +- %.4f, GI-BD Euler %.4f +- %.4f (%d steps)",
          bd.tc, bd.tcerr, sh.tc, sh.tcerr, eu.tc, eu.tcerr, steps);
     NOTE("Shardlow - BD = %.4f +- %.4f; Euler - BD = %.4f +- %.4f (reference 0.013 +- 0.0014)", ds, es, de, ee);
-    NOTE("g(r) Shardlow vs BD: chi2 = %.1f over %d bins; hcbd_config_temperature vs the test's sums: %.1e",
-         chi2, nbins, api);
+    NOTE("g(r) Shardlow vs BD: chi2 = %.1f over %d bins; two BD runs: %.1f; hcbd_config_temperature "
+         "vs the test's sums: %.1e", chi2, nbins, chi2_0, api);
     CHECK(api < 1e-9, "hcbd_config_temperature differs from 2014 eq. 28 evaluated here: %g", api);
     if (t_quick) return;
-    /* chi2 with n degrees of freedom: mean n, sd sqrt(2n); 10 blocks make
-       the error estimates themselves uncertain, hence 5 sd */
-    CHECK(chi2 < nbins + 5 * sqrt(2.0 * nbins), "g(r) differs: chi2 %g over %d bins", chi2, nbins);
+    /* Blocks of 4000 steps are not quite independent (two BD runs with
+       different seeds give chi2 ~ 1.6 n, not n), so the chi2 is measured
+       against that of two BD runs, which shares the flaw: their ratio is
+       F-distributed with (n, n) degrees of freedom, 2.7 its 0.1 % point
+       at n = 37. */
+    CHECK(chi2 < 2.7 * chi2_0, "g(r) differs: chi2 %g over %d bins, two BD runs %g", chi2, nbins, chi2_0);
     CHECK(fabs(ds) < 4 * es, "Shardlow T_conf differs from BD's: %g +- %g", ds, es);
     CHECK(fabs(de - 0.013) < 4 * sqrt(ee * ee + 0.0014 * 0.0014), "Euler excess %g +- %g, reference 0.013",
           de, ee);

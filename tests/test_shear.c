@@ -265,6 +265,7 @@ void test_le_background_flux(void)
     double flux[4], direct = 0, V, Rc = 2.5, w0 = hcbd_wendland(0, 2.5), nrm, eta35, ratio_sum = 0;
     int i, j, c, s, nconf = 4;
     d.params.kT = 0;
+    d.params.pair_integrator = HCBD_PAIR_EULER; /* S/tau dt: the explicit exchange */
     for (s = 0; s < nconf; ++s) {
         d.params.seed = 40 + s;
         if (!make_world(&w, &d)) return;
@@ -390,6 +391,7 @@ void test_le_bad_inputs(void)
     hcbd_world w;
     hcbd_result r;
     d.params.L[1] = 8.0; /* < 3 (2.5 + 0.4) */
+    d.params.skin = 0.4;
     r = hcbd_world_create(&w, &d);
     CHECK(r == HCBD_ERR_BOX && strstr(w.err.msg, "L[1] = 8"), "short box: %s", w.err.msg);
     d = shear_scene(100, 1.0);

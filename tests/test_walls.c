@@ -180,6 +180,7 @@ void test_wall_morris_friction(void)
             int k;
             d.capacity = 2;
             d.params.kT = 0;
+            d.params.pair_integrator = HCBD_PAIR_EULER; /* the explicit Morris sum below */
             d.params.wall_vx[0] = 0.2;
             d.params.wall_vx[1] = -0.7;
             d.params.wall_mode = mode ? HCBD_WALL_NOSLIP : HCBD_WALL_GAUSS;
@@ -651,7 +652,7 @@ void test_wall_channel_flow(void)
     NOTE("noslip:  v_max %.3f +- %.3f, slip %.4f +- %.4f, excluded width %.4f, centre density %.4f",
          ns.vmax, ns.vmax_err, ns.slip, ns.slip_err, ns.dep, ns.n_centre);
     if (!channel_run(HCBD_WALL_REFLECT, 1.5, time, len, &rf)) return;
-    NOTE("reflect: v_max %.3f +- %.3f, slip %.4f +- %.4f, excluded width %.4f (pile-up), centre "
+    NOTE("reflect: v_max %.3f +- %.3f, slip %.4f +- %.4f, excluded width %.4f, centre "
          "density %.4f", rf.vmax, rf.vmax_err, rf.slip, rf.slip_err, rf.dep, rf.n_centre);
     CHECK(g.pen == 0 && ns.pen == 0 && rf.pen == 0, "ideal particles entered a wall: %g %g %g",
           g.pen, ns.pen, rf.pen);
@@ -660,7 +661,13 @@ void test_wall_channel_flow(void)
           g.slip, g.slip_err);
     CHECK(fabs(ns.slip) + 2 * ns.slip_err < 0.05, "no-slip mode slips: %.4f +- %.4f", ns.slip,
           ns.slip_err);
-    CHECK(rf.dep < 0, "reflecting walls: no pile-up of ideal carriers (excluded width %.4f)", rf.dep);
+    /* The papers' Euler pairs drift with v(t) and pile the carriers up
+       where the Morris friction slows them (excluded width -0.48 here);
+       the exact sweep kicks before the drift, and the density of ideal
+       carriers is flat: a tenth of that pile-up, or of the Gaussian wall's
+       depletion (0.56), would show. */
+    CHECK(fabs(rf.dep) < 0.05, "reflecting walls change the density of ideal carriers (excluded "
+          "width %.4f)", rf.dep);
 
     if (!le_nu(4.0, 8.0 * len, &nu_le, &nu_le_err)) return;
     /* blocks of 1.5 len: still 4.5 times the decay to C_t(t)/C_t(0) = 0.1 at

@@ -105,14 +105,20 @@ for rep in $(seq 1 "$REPS"); do
     if [ "$hcbd_ok" = 1 ]; then
         d="$tmp/hcbd$rep"
         mkdir -p "$d"
-        (cd "$root" && ./build/bench_speed Nmax="$STAR_N" threads=1 out="$d" >"$d/speed.log" 2>&1) ||
-            { echo "bench/peers: bench_speed failed"; tail -n 5 "$d/speed.log"; }
+        for nz in uniform gauss; do
+            (cd "$root" && ./build/bench_speed Nmax="$STAR_N" threads=1 noise=$nz scenes=bd,gibd \
+                out="$d" >"$d/speed_$nz.log" 2>&1) ||
+                { echo "bench/peers: bench_speed failed"; tail -n 5 "$d/speed_$nz.log"; }
+        done
         (cd "$root" && ./build/bench_hcbd Nmax="$FLUID_N" threads=1 out="$d" >"$d/hcbd.log" 2>&1) ||
             { echo "bench/peers: bench_hcbd failed"; tail -n 5 "$d/hcbd.log"; }
         for s in bd gibd; do
-            [ -f "$d/speed.csv" ] || break
-            echo "$(csv_get "$d/speed.csv" "$s" N "$STAR_N" ns_per_particle_step)" \
-                 "$(csv_get "$d/speed.csv" "$s" N "$STAR_N" pairs_per_particle)" >>"$tmp/hcbd_$s.txt"
+            for f in "$d/speed_uniform.csv:_u" "$d/speed.csv:"; do
+                csvf=${f%%:*}
+                [ -f "$csvf" ] || continue
+                echo "$(csv_get "$csvf" "$s" N "$STAR_N" ns_per_particle_step)" \
+                     "$(csv_get "$csvf" "$s" N "$STAR_N" pairs_per_particle)" >>"$tmp/hcbd_$s${f##*:}.txt"
+            done
         done
         for s in fluid fluid-fluct; do
             [ -f "$d/speed_hcbd.csv" ] || break
@@ -150,12 +156,17 @@ row() { # hcbd_scene lammps_scene N target noise
         "$hs" "$ls" "$n" "$hns" "$lns" "$ratio" "$target" "$met" "$hnb" "$lnb"
     echo "$hs,$ls,$n,$hns,$lns,$pss,$ratio,$target,$met,$hnb,$lnb,$noise,\"$lmp_version\",$REPS" >>"$csv"
 }
-row gibd        star_bd       "$STAR_N"  2  "LAMMPS fix brownian rng uniform; hcbd Gaussian pair noise"
-row bd          star_bd       "$STAR_N"  3  "LAMMPS fix brownian rng uniform; hcbd Gaussian"
-row bd          star_bd_gauss "$STAR_N"  -  "LAMMPS fix brownian rng gaussian; hcbd Gaussian"
+row bd_u        star_bd       "$STAR_N"  3  "uniform noise on both sides (LAMMPS fix brownian default)"
+row bd          star_bd_gauss "$STAR_N"  3  "Gaussian noise on both sides (LAMMPS rng gaussian)"
+row gibd_u      star_bd       "$STAR_N"  2  "uniform: hcbd GI-BD pair and Brownian noise; LAMMPS fix brownian"
+row gibd        star_bd_gauss "$STAR_N"  -  "Gaussian: hcbd GI-BD; LAMMPS fix brownian rng gaussian"
 row gibd        star_dpd      "$STAR_N"  -  "LAMMPS dpd/tstat (1 Gaussian per pair) + fix nve"
 row fluid       sph_tait      "$FLUID_N" 2  "no noise"
 row fluid-fluct sdpd          "$FLUID_N" 10 "LAMMPS 6 Gaussians per pair; hcbd pairwise"
+own=$(awk -v a="$(med_col "$tmp/hcbd_gibd_u.txt" 1)" -v b="$(med_col "$tmp/hcbd_bd_u.txt" 1)" \
+    'BEGIN {if (a + 0 > 0 && b + 0 > 0) printf "%.2f", a / b; else print "n/a"}')
+echo "hcbd GI-BD / hcbd BD (uniform noise): $own (target <= 1.5)"
+echo "hcbd_gibd_over_bd,,$STAR_N,,,,$own,1.5,,,,uniform,\"$lmp_version\",$REPS" >>"$csv"
 echo
 echo "ns = nanoseconds per particle-step, single thread, median of $REPS runs"
 echo "(hcbd: each run's value is bench_speed/bench_hcbd's own minimum over repeats);"
