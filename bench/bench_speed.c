@@ -14,10 +14,12 @@
    noise=uniform draws the pair and Brownian noise uniform with unit
    variance (as LAMMPS fix brownian does by default); scenes= runs a comma
    list of bd, gibd, gibd-le, channel; skin= sets the Verlet skin (default
-   HCBD_AUTO, 0.6).
+   HCBD_AUTO, 0.6); pair=euler takes the papers' explicit pair step instead
+   of the exact sweep.
 
    usage: bench_speed [Nmax=262144] [threads=2] [out=out/bench]
-                      [noise=gauss|uniform] [scenes=bd,gibd,...] [skin=0.6] */
+                      [noise=gauss|uniform] [scenes=bd,gibd,...] [skin=0.6]
+                      [pair=shardlow|euler] */
 #define _POSIX_C_SOURCE 200809L /* clock_gettime, mkdir under -std=c99 */
 #include "../hcbd.h"
 #include <math.h>
@@ -40,6 +42,7 @@ int main(int argc, char **argv)
     char out[512] = "out/bench", path[600], scenes[256] = "";
     hcbd_noise noise = HCBD_NOISE_GAUSS;
     double skin = HCBD_AUTO;
+    hcbd_pair_integrator pair = HCBD_PAIR_SHARDLOW;
     FILE *csv;
     for (k = 1; k < argc; ++k) {
         if (!strncmp(argv[k], "Nmax=", 5)) Nmax = atoi(argv[k] + 5);
@@ -49,9 +52,11 @@ int main(int argc, char **argv)
         else if (!strcmp(argv[k], "noise=uniform")) noise = HCBD_NOISE_UNIFORM;
         else if (!strncmp(argv[k], "scenes=", 7)) snprintf(scenes, sizeof scenes, ",%s,", argv[k] + 7);
         else if (!strncmp(argv[k], "skin=", 5)) skin = atof(argv[k] + 5);
+        else if (!strcmp(argv[k], "pair=euler")) pair = HCBD_PAIR_EULER;
+        else if (!strcmp(argv[k], "pair=shardlow")) pair = HCBD_PAIR_SHARDLOW;
         else {
             fprintf(stderr, "bench_speed: unknown argument '%s' (Nmax=, threads=, out=, "
-                            "noise=gauss|uniform, scenes=, skin=)\n", argv[k]);
+                            "noise=gauss|uniform, scenes=, skin=, pair=shardlow|euler)\n", argv[k]);
             return 2;
         }
     }
@@ -89,6 +94,7 @@ int main(int argc, char **argv)
                 d.params.dynamics = dyn ? HCBD_DYN_GIBD : HCBD_DYN_BD;
                 d.params.noise = noise;
                 d.params.skin = skin;
+                d.params.pair_integrator = pair;
                 if (dyn == 2) d.params.gdot = 5.0;
                 if (dyn == 3) { /* 2016 sec. IV C */
                     d.params.L[1] = L + 3.0;
