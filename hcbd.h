@@ -363,7 +363,8 @@ typedef struct hcbd_world {
     int64_t wall_pen, wall_pen_step;
     int wall_pen_id;
     uint64_t wall_key, wall_pair_key;
-    void *scratch;               /* n x 8 bytes for permutations              */
+    void *scratch;               /* n x 8 bytes: permutations, degree counts at
+                                    a list build, the sweep's row lists        */
     double *tab_F, *tab_V;
     double tab_inv_dr;
     double *star_tab, star_u0, star_ih; /* cubic pieces of F/r in r^2 */
@@ -2875,9 +2876,13 @@ static void hcbd__density(hcbd_world *w)
    that lie within r^2 < cut2, without a branch (about half the list lies in
    the skin, and a branch on it would be mispredicted half the time);
    returns their count and advances *p. */
+typedef struct hcbd__near {
+    int32_t j[HCBD__CHUNK], k[HCBD__CHUNK]; /* partner, Lees-Edwards image     */
+    double x[HCBD__CHUNK], y[HCBD__CHUNK], z[HCBD__CHUNK], r2[HCBD__CHUNK];
+} hcbd__near;
+
 HCBD__INLINE int hcbd__gather(const hcbd_world *w, const hcbd__box *box, int i, int32_t *p,
-                              int32_t pend, double cut2, int32_t *cj, int32_t *ck, double *cx,
-                              double *cy, double *cz, double *cr2)
+                              int32_t pend, double cut2, hcbd__near *c)
 {
     const double xi = w->x[i], yi = w->y[i], zi = w->z[i];
     const int32_t pe = pend - *p > HCBD__CHUNK ? *p + HCBD__CHUNK : pend;
@@ -2887,7 +2892,7 @@ HCBD__INLINE int hcbd__gather(const hcbd_world *w, const hcbd__box *box, int i, 
         double d[3], r2;
         const int k = hcbd__delta_box(box, xi - w->x[j], yi - w->y[j], zi - w->z[j], d);
         r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-        cj[m] = j; ck[m] = k; cx[m] = d[0]; cy[m] = d[1]; cz[m] = d[2]; cr2[m] = r2;
+        c->j[m] = j; c->k[m] = k; c->x[m] = d[0]; c->y[m] = d[1]; c->z[m] = d[2]; c->r2[m] = r2;
         m += r2 < cut2;
     }
     return m;
@@ -2924,55 +2929,54 @@ HCBD__INLINE int hcbd__forces_body(hcbd_world *w, int q0, int q1, const int pot,
         const int32_t idi = w->id[i], pend = w->nb_start[i + 1];
         int32_t p = w->nb_start[i];
         while (p < pend) {
-        int32_t cj[HCBD__CHUNK], ck[HCBD__CHUNK];
-        double cx[HCBD__CHUNK], cy[HCBD__CHUNK], cz[HCBD__CHUNK], cr2[HCBD__CHUNK];
-        const int m = hcbd__gather(w, &box, i, &p, pend, cut2, cj, ck, cx, cy, cz, cr2);
-        int t;
-        for (t = 0; t < m; ++t) {
-            const int j = cj[t], k = ck[t];
-            const double dx = cx[t], dy = cy[t], dz = cz[t], r2 = cr2[t];
-            double r, Fx = 0, Fy = 0, Fz = 0, Px = 0, Py = 0, Pz = 0;
-            r = gibd || !table || flux ? sqrt(r2) : 0.0; /* the table needs r^2 only */
-            if (pot && r2 < rc2) {
-                const double fr = table ? hcbd__star_table(w, r2) : hcbd__force_over_r(w, r, r2);
-                int64_t a;
-                Fx = fr * dx; Fy = fr * dy; Fz = fr * dz;
-                bad |= !(fabs(Fx) <= limF && fabs(Fy) <= limF && fabs(Fz) <= limF);
-                a = hcbd__fix(Fx * qF); fxs += a; aFx[j] -= a;
-                a = hcbd__fix(Fy * qF); fys += a; aFy[j] -= a;
-                a = hcbd__fix(Fz * qF); fzs += a; aFz[j] -= a;
-            }
-            if (gibd && r2 < Rc2) {
-                const double qq = r * invRc, a = 1.0 - qq;
-                if (fric) {
-                    const double sdt = hcbd__sdt(cs, iri, w->inv_rho[j], a); /* S dt/tau */
-                    int64_t u;
-                    /* j's image across the sheared boundary moves faster by
-                       k gdot Ly */
-                    Px = sdt * (w->vx[j] + k * vle - vxi);
-                    Py = sdt * (w->vy[j] - vyi);
-                    Pz = sdt * (w->vz[j] - vzi);
-                    if (noise) {
-                        double z3[3], b = sqrt(two_kT * sdt);
-                        hcbd__noise3(w, hcbd__pair_key(skey, idi, w->id[j]), z3);
-                        Px += b * z3[0]; Py += b * z3[1]; Pz += b * z3[2];
+            hcbd__near c;
+            const int m = hcbd__gather(w, &box, i, &p, pend, cut2, &c);
+            int t;
+            for (t = 0; t < m; ++t) {
+                const int j = c.j[t], k = c.k[t];
+                const double dx = c.x[t], dy = c.y[t], dz = c.z[t], r2 = c.r2[t];
+                double r, Fx = 0, Fy = 0, Fz = 0, Px = 0, Py = 0, Pz = 0;
+                r = gibd || !table || flux ? sqrt(r2) : 0.0; /* the table needs r^2 only */
+                if (pot && r2 < rc2) {
+                    const double fr = table ? hcbd__star_table(w, r2) : hcbd__force_over_r(w, r, r2);
+                    int64_t a;
+                    Fx = fr * dx; Fy = fr * dy; Fz = fr * dz;
+                    bad |= !(fabs(Fx) <= limF && fabs(Fy) <= limF && fabs(Fz) <= limF);
+                    a = hcbd__fix(Fx * qF); fxs += a; aFx[j] -= a;
+                    a = hcbd__fix(Fy * qF); fys += a; aFy[j] -= a;
+                    a = hcbd__fix(Fz * qF); fzs += a; aFz[j] -= a;
+                }
+                if (gibd && r2 < Rc2) {
+                    const double qq = r * invRc, a = 1.0 - qq;
+                    if (fric) {
+                        const double sdt = hcbd__sdt(cs, iri, w->inv_rho[j], a); /* S dt/tau */
+                        int64_t u;
+                        /* j's image across the sheared boundary moves faster by
+                           k gdot Ly */
+                        Px = sdt * (w->vx[j] + k * vle - vxi);
+                        Py = sdt * (w->vy[j] - vyi);
+                        Pz = sdt * (w->vz[j] - vzi);
+                        if (noise) {
+                            double z3[3], b = sqrt(two_kT * sdt);
+                            hcbd__noise3(w, hcbd__pair_key(skey, idi, w->id[j]), z3);
+                            Px += b * z3[0]; Py += b * z3[1]; Pz += b * z3[2];
+                        }
+                        bad |= !(fabs(Px) <= limP && fabs(Py) <= limP && fabs(Pz) <= limP);
+                        u = hcbd__fix(Px * qP); pxs += u; aPx[j] -= u;
+                        u = hcbd__fix(Py * qP); pys += u; aPy[j] -= u;
+                        u = hcbd__fix(Pz * qP); pzs += u; aPz[j] -= u;
                     }
-                    bad |= !(fabs(Px) <= limP && fabs(Py) <= limP && fabs(Pz) <= limP);
-                    u = hcbd__fix(Px * qP); pxs += u; aPx[j] -= u;
-                    u = hcbd__fix(Py * qP); pys += u; aPy[j] -= u;
-                    u = hcbd__fix(Pz * qP); pzs += u; aPz[j] -= u;
+                    if (lag) {
+                        const int64_t v = hcbd__fix(hcbd__weight(cwq, qq, a));
+                        ws += v;
+                        aW[j] += v;
+                    }
                 }
-                if (lag) {
-                    const int64_t v = hcbd__fix(hcbd__weight(cwq, qq, a));
-                    ws += v;
-                    aW[j] += v;
+                if (flux) { /* y_ij F_ij,x: flux of x momentum across y planes */
+                    sp += 0.5 * (dy * Fx + dx * Fy);
+                    sb += dy * Px;
                 }
             }
-            if (flux) { /* y_ij F_ij,x: flux of x momentum across y planes */
-                sp += 0.5 * (dy * Fx + dx * Fy);
-                sb += dy * Px;
-            }
-        }
         }
         if (flux) {
             w->fl_p[i] = (hcbd_real)sp;
@@ -3073,30 +3077,29 @@ static void hcbd__shardlow_owner(hcbd_world *w, int i, uint64_t skey, uint64_t w
     double sb = 0.0;
     int32_t p = w->nb_start[i];
     while (p < pend) {
-    int32_t cj[HCBD__CHUNK], ck[HCBD__CHUNK];
-    double cx[HCBD__CHUNK], cy[HCBD__CHUNK], cz[HCBD__CHUNK], cr2[HCBD__CHUNK];
-    const int m2 = hcbd__gather(w, &box, i, &p, pend, Rc2, cj, ck, cx, cy, cz, cr2);
-    int t;
-    for (t = 0; t < m2; ++t) {
-        const int j = cj[t], kk = ck[t];
-        double a, sdt, om, c, Px, Py, Pz;
-        a = 1.0 - sqrt(cr2[t]) * invRc;
-        sdt = hcbd__sdt(cs, iri, w->inv_rho[j], a);
-        om = hcbd__one_minus_exp(2.0 * sdt * inv_m); /* 1 - e */
-        c = 0.5 * m * om;
-        Px = -c * (vx[i] - vx[j] - kk * vle);
-        Py = -c * (vy[i] - vy[j]);
-        Pz = -c * (vz[i] - vz[j]);
-        if (noise) {
-            double z3[3], b = sqrt(0.5 * kT * m * om * (2.0 - om));
-            hcbd__noise3(w, hcbd__pair_key(skey, w->id[i], w->id[j]), z3);
-            Px += b * z3[0]; Py += b * z3[1]; Pz += b * z3[2];
+        hcbd__near nc;
+        const int m2 = hcbd__gather(w, &box, i, &p, pend, Rc2, &nc);
+        int t;
+        for (t = 0; t < m2; ++t) {
+            const int j = nc.j[t], kk = nc.k[t];
+            double a, sdt, om, c, Px, Py, Pz;
+            a = 1.0 - sqrt(nc.r2[t]) * invRc;
+            sdt = hcbd__sdt(cs, iri, w->inv_rho[j], a);
+            om = hcbd__one_minus_exp(2.0 * sdt * inv_m); /* 1 - e */
+            c = 0.5 * m * om;
+            Px = -c * (vx[i] - vx[j] - kk * vle);
+            Py = -c * (vy[i] - vy[j]);
+            Pz = -c * (vz[i] - vz[j]);
+            if (noise) {
+                double z3[3], b = sqrt(0.5 * kT * m * om * (2.0 - om));
+                hcbd__noise3(w, hcbd__pair_key(skey, w->id[i], w->id[j]), z3);
+                Px += b * z3[0]; Py += b * z3[1]; Pz += b * z3[2];
+            }
+            vx[i] = (hcbd_real)(vx[i] + Px * inv_m); vx[j] = (hcbd_real)(vx[j] - Px * inv_m);
+            vy[i] = (hcbd_real)(vy[i] + Py * inv_m); vy[j] = (hcbd_real)(vy[j] - Py * inv_m);
+            vz[i] = (hcbd_real)(vz[i] + Pz * inv_m); vz[j] = (hcbd_real)(vz[j] - Pz * inv_m);
+            sb += nc.y[t] * Px;
         }
-        vx[i] = (hcbd_real)(vx[i] + Px * inv_m); vx[j] = (hcbd_real)(vx[j] - Px * inv_m);
-        vy[i] = (hcbd_real)(vy[i] + Py * inv_m); vy[j] = (hcbd_real)(vy[j] - Py * inv_m);
-        vz[i] = (hcbd_real)(vz[i] + Pz * inv_m); vz[j] = (hcbd_real)(vz[j] - Pz * inv_m);
-        sb += cy[t] * Px;
-    }
     }
     if (HCBD__WALLS && wkey && hcbd__near_wall(w, yi)) hcbd__morris(w, i, wkey, NULL, 1);
     if (w->flux_on) w->fl_b[i] = (hcbd_real)sb;
