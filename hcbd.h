@@ -509,8 +509,9 @@ void hcbd_profile_sample(hcbd_profile *pr, const hcbd_world *w);
    Returns the number of closed blocks (errors need at least 2). */
 int64_t hcbd_profile_result(const hcbd_profile *pr, double *out);
 
-/* 64-bit hash of positions, images, velocities and generator states in id
-   order: equal checksums mean bit-identical states. */
+/* 64-bit hash of the step, positions, images, Lees-Edwards shifts and
+   velocities in id order: equal checksums mean bit-identical states (the
+   noise is keyed by step and ids, so there is no generator state). */
 uint64_t hcbd_state_checksum(const hcbd_world *w);
 
 /* Radial distribution function.  The caller owns hist (nbins doubles). */
@@ -828,8 +829,8 @@ double hcbd_flory_g1(double phi, double chi);
 #endif /* HCBD_MODEL_HCBD */
 
 /* >>checkpoint/restart: the complete state of a world (every parameter,
-   tables included, positions, images, velocities, generator states,
-   densities, pair variables, step, Lees-Edwards offset, flux and stress
+   tables included, positions, images, velocities, the HCBD world's
+   generator states, densities, pair variables, step, Lees-Edwards offset, flux and stress
    sums) in a versioned format of little-endian 64-bit fields in id order,
    so a file is portable between machines and thread counts and a run of
    n + n steps equals n steps, save, load, n steps bit for bit.  The header
