@@ -1398,13 +1398,15 @@ static inline uint64_t hcbd__pair_key(uint64_t step_key, int32_t a, int32_t b)
     return hcbd__mix64(step_key ^ ((hi << 32) | lo));
 }
 
-/* Three noise numbers of unit variance (hcbd_params.noise) from a key. */
-static inline void hcbd__noise3(const hcbd_world *w, uint64_t key, double *z3)
+/* Three noise numbers of unit variance from a counter key, for any world:
+   Gaussian (the ziggurat on a splitmix64 stream started at the key) or
+   uniform. */
+static inline void hcbd__deviates3(const hcbd__zig *zig, hcbd_noise kind, uint64_t key, double *z3)
 {
     hcbd__gen g;
     g.xo = NULL;
     g.sm = key;
-    if (w->p.noise == HCBD_NOISE_UNIFORM) {
+    if (kind == HCBD_NOISE_UNIFORM) {
         /* 21 bits per component, uniform on (-sqrt 3, sqrt 3), taken from
            the key itself (already a mix64 output: one hash per pair) */
         const uint64_t u = key;
@@ -1413,10 +1415,25 @@ static inline void hcbd__noise3(const hcbd_world *w, uint64_t key, double *z3)
         z3[1] = ((double)((u >> 21) & 0x1FFFFF) + 0.5 - 1048576.0) * s;
         z3[2] = ((double)((u >> 42) & 0x1FFFFF) + 0.5 - 1048576.0) * s;
     } else {
-        z3[0] = hcbd__normal(w->zig, &g);
-        z3[1] = hcbd__normal(w->zig, &g);
-        z3[2] = hcbd__normal(w->zig, &g);
+        z3[0] = hcbd__normal(zig, &g);
+        z3[1] = hcbd__normal(zig, &g);
+        z3[2] = hcbd__normal(zig, &g);
     }
+}
+
+/* one Gaussian from a counter key */
+static inline double hcbd__normal_at(const hcbd__zig *zig, uint64_t key)
+{
+    hcbd__gen g;
+    g.xo = NULL;
+    g.sm = key;
+    return hcbd__normal(zig, &g);
+}
+
+/* the GI-BD world's noise (hcbd_params.noise) */
+static inline void hcbd__noise3(const hcbd_world *w, uint64_t key, double *z3)
+{
+    hcbd__deviates3(w->zig, w->p.noise, key, z3);
 }
 
 /* Brownian displacement noise of particle id at step s: counter based, so
@@ -2592,6 +2609,15 @@ static void hcbd__permute(hcbd_world *w)
     for (k = 0; k < n; ++k) w->slot[w->id[k]] = k;
 }
 
+/* a in [0, n): cell offsets reach at most a box or two past either end
+   (cheaper than two integer divisions per cell) */
+static inline int hcbd__wrap_cell(int a, int n)
+{
+    while (a < 0) a += n;
+    while (a >= n) a -= n;
+    return a;
+}
+
 /* Scans the cells around particle i for partners j with id_j > id_i within
    the list range; writes up to room of their slots to out (if not NULL)
    and returns the count, which may exceed room. */
@@ -2629,20 +2655,23 @@ static int hcbd__scan(const hcbd_world *w, int i, int32_t *out, int room)
         }
         for (o0 = x0; o0 <= x1; ++o0)
             for (o2 = lo[2]; o2 <= hi[2]; ++o2) {
-                int a = ((o0 % w->nc[0]) + w->nc[0]) % w->nc[0];
-                int b = (row + w->nc[1]) % w->nc[1];
-                int e = (c[2] + o2 + w->nc[2]) % w->nc[2];
-                int cc = (e * w->nc[1] + b) * w->nc[0] + a, q;
-                const int q1 = w->cell_start[cc + 1];
+                const int a = hcbd__wrap_cell(o0, w->nc[0]), b = hcbd__wrap_cell(row, w->nc[1]);
+                const int e = hcbd__wrap_cell(c[2] + o2, w->nc[2]);
+                const int cc = (e * w->nc[1] + b) * w->nc[0] + a, q1 = w->cell_start[cc + 1];
+                int q;
+                /* no branch on the range (about half the candidates lie
+                   outside it, at random): each one is written at the next
+                   free place, and one in range advances the count past it;
+                   the id test skips half of the work, and measured faster
+                   as a branch than folded in */
                 for (q = w->cell_start[cc]; q < q1; ++q) {
-                    int j = perm[q];
-                    double dd[3];
+                    const int j = perm[q];
+                    double dd[3], r2;
                     if (id[j] <= idi) continue;
                     hcbd__delta_box(&box, xi - x[j], yi - y[j], zi - z[j], dd);
-                    if (dd[0] * dd[0] + dd[1] * dd[1] + dd[2] * dd[2] < rl2) {
-                        if (out && cnt < room) out[cnt] = j;
-                        ++cnt;
-                    }
+                    r2 = dd[0] * dd[0] + dd[1] * dd[1] + dd[2] * dd[2];
+                    if (out && cnt < room) out[cnt] = j;
+                    cnt += r2 < rl2;
                 }
             }
     }
@@ -2852,14 +2881,13 @@ static int hcbd__density_owners(hcbd_world *w, int q0, int q1)
     return INT_MAX;
 }
 
-static void hcbd__density(hcbd_world *w)
+/* rho_i from the weight sums in aW (and the wall's artificial particles) */
+static void hcbd__density_finish(hcbd_world *w)
 {
     const int n = w->n, nt = w->p.threads;
     const double inv_q = 1.0 / w->qW;
     int i;
     (void)nt;
-    hcbd__zero64(w->aW, n);
-    hcbd__owners(w, hcbd__density_owners);
     HCBD__OMP(omp parallel for num_threads(nt) schedule(static))
     for (i = 0; i < n; ++i) {
         double s = (double)w->aW[i] * inv_q, rho;
@@ -2871,6 +2899,13 @@ static void hcbd__density(hcbd_world *w)
     }
     w->rho_current = 1;
     w->rho_valid = 1;
+}
+
+static void hcbd__density(hcbd_world *w)
+{
+    hcbd__zero64(w->aW, w->n);
+    hcbd__owners(w, hcbd__density_owners);
+    hcbd__density_finish(w);
 }
 
 /* Gathers the partners of i from list entries [*p, min(pend, *p + CHUNK))
@@ -3003,6 +3038,12 @@ static int hcbd__forces_gibd(hcbd_world *w, int q0, int q1)
     return hcbd__forces_body(w, q0, q1, 1, 1, 0, 0);
 }
 
+/* forces and this step's density weights in one pass (exact sweep) */
+static int hcbd__forces_dens(hcbd_world *w, int q0, int q1)
+{
+    return hcbd__forces_body(w, q0, q1, 1, 0, 1, 0);
+}
+
 static int hcbd__forces_any(hcbd_world *w, int q0, int q1)
 {
     return hcbd__forces_body(w, q0, q1, w->p.potential != HCBD_POT_IDEAL,
@@ -3010,7 +3051,9 @@ static int hcbd__forces_any(hcbd_world *w, int q0, int q1)
                              w->flux_on);
 }
 
-static hcbd_result hcbd__forces(hcbd_world *w)
+/* dens: the density of this step is summed in the same pass (the
+   exact sweep's forces, with neither flux nor lagged density) */
+static hcbd_result hcbd__forces(hcbd_world *w, int dens)
 {
     const int n = w->n;
     int d, bad;
@@ -3018,13 +3061,14 @@ static hcbd_result hcbd__forces(hcbd_world *w)
         if (w->p.potential != HCBD_POT_IDEAL) hcbd__zero64(w->aF[d], n);
         if (w->gibd && !w->shardlow) hcbd__zero64(w->aP[d], n);
     }
-    if (w->gibd && w->p.lagged_density) hcbd__zero64(w->aW, n);
+    if (w->gibd && (w->p.lagged_density || dens)) hcbd__zero64(w->aW, n);
     {
         const int pot = w->p.potential != HCBD_POT_IDEAL, fric = w->gibd && !w->shardlow;
         const int plain = !w->flux_on && !(w->gibd && w->p.lagged_density) && pot;
-        bad = hcbd__owners(w, plain && !fric ? hcbd__forces_pot
+        bad = hcbd__owners(w, dens ? hcbd__forces_dens : plain && !fric ? hcbd__forces_pot
                               : plain ? hcbd__forces_gibd : hcbd__forces_any);
     }
+    if (dens && bad == INT_MAX) hcbd__density_finish(w);
     if (bad != INT_MAX)
         return hcbd__fail(&w->err, HCBD_ERR_UNSTABLE, w->step, bad,
                           "step %lld: particle id %d has a pair force beyond %g or a "
@@ -3074,7 +3118,9 @@ static void hcbd__shardlow_owner(hcbd_world *w, int i, uint64_t skey, uint64_t w
     const hcbd__box box = hcbd__box_of(w);
     hcbd_real *HCBD__RESTRICT vx = w->vx, *HCBD__RESTRICT vy = w->vy, *HCBD__RESTRICT vz = w->vz;
     const double yi = w->y[i], iri = w->inv_rho[i];
-    const int32_t pend = w->nb_start[i + 1];
+    const int32_t pend = w->nb_start[i + 1], idi = w->id[i];
+    /* i's velocity stays in registers: no partner is i itself */
+    hcbd_real vxi = vx[i], vyi = vy[i], vzi = vz[i];
     double sb = 0.0;
     int32_t p = w->nb_start[i];
     while (p < pend) {
@@ -3088,20 +3134,21 @@ static void hcbd__shardlow_owner(hcbd_world *w, int i, uint64_t skey, uint64_t w
             sdt = hcbd__sdt(cs, iri, w->inv_rho[j], a);
             om = hcbd__one_minus_exp(2.0 * sdt * inv_m); /* 1 - e */
             c = 0.5 * m * om;
-            Px = -c * (vx[i] - vx[j] - kk * vle);
-            Py = -c * (vy[i] - vy[j]);
-            Pz = -c * (vz[i] - vz[j]);
+            Px = -c * (vxi - vx[j] - kk * vle);
+            Py = -c * (vyi - vy[j]);
+            Pz = -c * (vzi - vz[j]);
             if (noise) {
                 double z3[3], b = sqrt(0.5 * kT * m * om * (2.0 - om));
-                hcbd__noise3(w, hcbd__pair_key(skey, w->id[i], w->id[j]), z3);
+                hcbd__noise3(w, hcbd__pair_key(skey, idi, w->id[j]), z3);
                 Px += b * z3[0]; Py += b * z3[1]; Pz += b * z3[2];
             }
-            vx[i] = (hcbd_real)(vx[i] + Px * inv_m); vx[j] = (hcbd_real)(vx[j] - Px * inv_m);
-            vy[i] = (hcbd_real)(vy[i] + Py * inv_m); vy[j] = (hcbd_real)(vy[j] - Py * inv_m);
-            vz[i] = (hcbd_real)(vz[i] + Pz * inv_m); vz[j] = (hcbd_real)(vz[j] - Pz * inv_m);
+            vxi = (hcbd_real)(vxi + Px * inv_m); vx[j] = (hcbd_real)(vx[j] - Px * inv_m);
+            vyi = (hcbd_real)(vyi + Py * inv_m); vy[j] = (hcbd_real)(vy[j] - Py * inv_m);
+            vzi = (hcbd_real)(vzi + Pz * inv_m); vz[j] = (hcbd_real)(vz[j] - Pz * inv_m);
             sb += nc.y[t] * Px;
         }
     }
+    vx[i] = vxi; vy[i] = vyi; vz[i] = vzi;
     if (HCBD__WALLS && wkey && hcbd__near_wall(w, yi)) hcbd__morris(w, i, wkey, NULL, 1);
     if (w->flux_on) w->fl_b[i] = (hcbd_real)sb;
 }
@@ -3385,10 +3432,13 @@ hcbd_result hcbd_step(hcbd_world *w, int nsteps)
             hcbd__wall_draw(w);
             w->rho_current = 0;
         }
-        if (w->gibd && hcbd__density_stale(w)) hcbd__density(w);
+        const int dens = w->gibd && hcbd__density_stale(w);
+        const int fuse = dens && w->shardlow && w->p.potential != HCBD_POT_IDEAL &&
+                         !w->p.lagged_density && !w->flux_on;
+        if (dens && !fuse) hcbd__density(w);
         if (w->has_pairs && !(w->shardlow && w->p.potential == HCBD_POT_IDEAL &&
                               !w->p.lagged_density && !w->flux_on)) {
-            r = hcbd__forces(w);
+            r = hcbd__forces(w, fuse);
             if (r != HCBD_OK) return r;
         }
         if (w->shardlow) hcbd__shardlow(w);
@@ -5364,12 +5414,11 @@ static void hcbd__hc_fluid_shardlow(hcbd_hc_world *w, double dt, uint64_t skey)
             P[2] = -c * (vz[i] - vz[j]);
             if (noise) {
                 const double b = sqrt(0.5 * kT * m * om * (2.0 - om));
-                hcbd__gen g;
-                g.xo = NULL;
-                g.sm = hcbd__pair_key(skey, i, j);
-                P[0] += b * hcbd__normal(w->zig, &g);
-                P[1] += b * hcbd__normal(w->zig, &g);
-                P[2] += b * hcbd__normal(w->zig, &g);
+                double z3[3];
+                hcbd__deviates3(w->zig, HCBD_NOISE_GAUSS, hcbd__pair_key(skey, i, j), z3);
+                P[0] += b * z3[0];
+                P[1] += b * z3[1];
+                P[2] += b * z3[2];
             }
             vx[i] = (hcbd_real)(vx[i] + P[0] * inv_m); vx[j] = (hcbd_real)(vx[j] - P[0] * inv_m);
             vy[i] = (hcbd_real)(vy[i] + P[1] * inv_m); vy[j] = (hcbd_real)(vy[j] - P[1] * inv_m);
@@ -5439,12 +5488,7 @@ static void hcbd__hc_fluid_kick(hcbd_hc_world *w, double dt, uint64_t skey)
             if (noise) {
                 /* dp = sqrt(2 kT f_ij dt) zeta_ij on i, minus on j (2018 eq. 18-19) */
                 double z[3], s;
-                hcbd__gen g;
-                g.xo = NULL;
-                g.sm = hcbd__pair_key(skey, i, j);
-                z[0] = hcbd__normal(w->zig, &g);
-                z[1] = hcbd__normal(w->zig, &g);
-                z[2] = hcbd__normal(w->zig, &g);
+                hcbd__deviates3(w->zig, HCBD_NOISE_GAUSS, hcbd__pair_key(skey, i, j), z);
                 s = (i < j ? sn : -sn) * sqrt(f);
                 F[0] += s * z[0];
                 F[1] += s * z[1];
@@ -5487,12 +5531,7 @@ static void hcbd__hc_lambda_update(hcbd_hc_world *w)
         int k;
         for (k = 0; k < w->pair_n[a]; ++k) {
             double x = eq[k] + (l[k] - eq[k]) * e;
-            if (noise) {
-                hcbd__gen g;
-                g.xo = NULL;
-                g.sm = hcbd__pair_key(skey, a, b[k]);
-                x += s * hcbd__normal(w->zig, &g);
-            }
+            if (noise) x += s * hcbd__normal_at(w->zig, hcbd__pair_key(skey, a, b[k]));
             l[k] = (hcbd_real)x;
         }
     }
@@ -5561,12 +5600,11 @@ static int hcbd__hc_drift(hcbd_hc_world *w, double dt_f, int fluid, int poly, in
         dr[1] = w->puy[i] * dt;
         dr[2] = w->puz[i] * dt;
         if (noise) {
-            hcbd__gen g;
-            g.xo = NULL;
-            g.sm = hcbd__mix64(skey ^ (uint64_t)(uint32_t)i);
-            dr[0] += sdr * hcbd__normal(w->zig, &g);
-            dr[1] += sdr * hcbd__normal(w->zig, &g);
-            dr[2] += sdr * hcbd__normal(w->zig, &g);
+            double z3[3];
+            hcbd__deviates3(w->zig, HCBD_NOISE_GAUSS, hcbd__mix64(skey ^ (uint64_t)(uint32_t)i), z3);
+            dr[0] += sdr * z3[0];
+            dr[1] += sdr * z3[1];
+            dr[2] += sdr * z3[2];
         }
         if (!(isfinite(dr[0]) && isfinite(dr[1]) && isfinite(dr[2]))) {
             if (i < nan_p) nan_p = i;

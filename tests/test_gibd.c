@@ -172,7 +172,7 @@ static uint64_t run_hash(hcbd_world_def d, int steps)
    bits. */
 void test_determinism(void)
 {
-    const int steps = t_quick ? 100 : 400; /* the sanitizer builds need the paths */
+    const int steps = t_quick ? 50 : 400; /* the other builds need the paths */
     int lag, dyn;
     /* dyn 2: GI-BD with the Shardlow pair sweep */
     for (dyn = 0; dyn < 3; ++dyn)
