@@ -2937,7 +2937,9 @@ HCBD__INLINE int hcbd__gather(const hcbd_world *w, const hcbd__box *box, int i, 
 /* Forces, and in GI-BD the friction and noise momentum exchanges
    dp_ij = (S_ij/tau)(v_j - v_i) dt + sqrt(2 kT S_ij dt/tau) zeta,
    S_ij = m_i f_ij (MODEL 2, pair-momentum form), added to the owner i and
-   taken from the partner j. */
+   taken from the partner j.  With lag, the density weights of the same
+   positions are summed into aW (the next step's lagged density, or this
+   step's before the exact sweep). */
 HCBD__INLINE int hcbd__forces_body(hcbd_world *w, int q0, int q1, const int pot,
                                     const int fric, const int lag, const int flux)
 {
