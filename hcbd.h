@@ -313,41 +313,49 @@ typedef struct hcbd__zig {
     double r[256];
 } hcbd__zig;
 
+/* Cells and a half Verlet list of one set of particles, the machinery both
+   worlds share.  Cells: z slowest, at least rlist wide; perm lists the
+   slots cell by cell.  Owner = the lower id, partners (slots) in
+   increasing id: nb_j[nb_start[i] .. nb_start[i + 1]).  A cross list (one
+   set's particles listing the other's within rlist) has every pair. */
+typedef struct hcbd__nlist {
+    int nc[3], ncell;
+    int32_t *cell_start, *cell_cursor, *cell_of, *perm;
+    int32_t *nb_start, *nb_j, *nb_tmp;
+    hcbd_real *x0, *y0, *z0;     /* positions at the last build              */
+    int64_t max_pairs, npairs;
+    int64_t n_rebuilds, n_rescans; /* builds; second scans after overflow   */
+    double rlist, disp_max, le_drift;
+    int list_valid;
+} hcbd__nlist;
+
 typedef struct hcbd_world {
     hcbd_params p;
     hcbd_error err;
     int capacity, n;
-    int64_t max_pairs, npairs;
     int64_t step;
     /* derived constants */
-    double m, inv_m, w0, cw, cf, rho_norm, rlist, cutmax, skin;
+    double m, inv_m, w0, cw, cf, rho_norm, cutmax, skin;
     double star_a, star_b, star_s, star_ab, star_s_sigma;
     int has_pairs, has_fext, has_noise, gibd, shardlow;
-    /* statistics */
-    int64_t n_rebuilds, n_rescans; /* list builds; second scans after overflow */
     /* per-particle arrays (struct of arrays), storage order */
     hcbd_real *x, *y, *z;        /* positions in [0, L)                       */
     hcbd_real *vx, *vy, *vz;     /* background velocity (GI-BD)               */
     hcbd_real *rho, *inv_rho;
-    hcbd_real *x0, *y0, *z0;     /* positions at the last list build          */
     int32_t *ix, *iy, *iz;       /* periodic images crossed (unwrapped pos.)  */
     int32_t *id, *slot;          /* slot -> id, id -> slot                    */
     /* pair sums in 64-bit fixed point (scratch of one step): force, momentum
        exchange, weight; value = sum / q (see hcbd__fixed_scales) */
     int64_t *aF[3], *aP[3], *aW;
     double qF, qP, qW, limF, limP;
-    /* cells (z slowest) and the half neighbour list (owner = lower id,
-       partners in increasing id) */
-    int nc[3], ncell;
-    int32_t *cell_start, *cell_cursor, *cell_of, *perm;
-    int32_t *nb_start, *nb_j, *nb_tmp;
+    hcbd__nlist nl;              /* cells and the half neighbour list         */
     int sw_n[2];                 /* rows of the exact pair sweep (y, z)       */
     int32_t *sw_start;
-    double step_limit, disp_max;
+    double step_limit;
     /* Lees-Edwards: offset s of the image above, its drift since the list
        build, per-particle x shifts applied at crossings (unwrapped x) */
     int le_on;
-    double le_offset, le_drift, le_vjump;
+    double le_offset, le_vjump;
     double *lx;
     /* shear-stress flux accumulation (hcbd_flux_enable) */
     int flux_on;
@@ -371,7 +379,7 @@ typedef struct hcbd_world {
     int star_kmax;
     hcbd__zig *zig;
     uint64_t seed_key, bd_key;
-    int list_valid, rho_current, rho_valid;
+    int rho_current, rho_valid;
     uint64_t live;        /* HCBD__LIVE while initialised: loaders replace
                              a live world only once the new one is built */
     void *owned_mem;
@@ -1864,6 +1872,28 @@ static void hcbd__take(char *base, size_t *off, size_t bytes, void **out)
     *off = o + bytes;
 }
 
+/* The arrays of a list of N particles (N + 1 for a cross list's starts is
+   not needed: nb_start has N + 1) on nc cells with room for mp pairs. */
+static void hcbd__nl_take(char *base, size_t *off, hcbd__nlist *nl, size_t N, const int nc[3],
+                          int64_t mp)
+{
+    const size_t I = sizeof(int32_t), R = sizeof(hcbd_real);
+    const size_t ncell = (size_t)nc[0] * (size_t)nc[1] * (size_t)nc[2];
+    hcbd__take(base, off, N * R, (void **)&nl->x0);
+    hcbd__take(base, off, N * R, (void **)&nl->y0);
+    hcbd__take(base, off, N * R, (void **)&nl->z0);
+    hcbd__take(base, off, (ncell + 1) * I, (void **)&nl->cell_start);
+    hcbd__take(base, off, ncell * I, (void **)&nl->cell_cursor);
+    hcbd__take(base, off, N * I, (void **)&nl->cell_of);
+    hcbd__take(base, off, N * I, (void **)&nl->perm);
+    hcbd__take(base, off, (N + 1) * I, (void **)&nl->nb_start);
+    hcbd__take(base, off, (size_t)mp * I, (void **)&nl->nb_j);
+    hcbd__take(base, off, (size_t)mp * I, (void **)&nl->nb_tmp);
+    nl->nc[0] = nc[0]; nl->nc[1] = nc[1]; nl->nc[2] = nc[2];
+    nl->ncell = (int)ncell;
+    nl->max_pairs = mp;
+}
+
 static int hcbd__cells(const hcbd_params *p, int nc[3])
 {
     int d, total = 1;
@@ -1921,29 +1951,24 @@ static int hcbd__art_count(const hcbd_params *p, int acol[2])
 static size_t hcbd__layout(const hcbd_world_def *def, hcbd_world *w, char *base)
 {
     size_t off = 0, N = (size_t)def->capacity;
-    int nc[3], ncell = hcbd__cells(&def->params, nc), k;
+    int nc[3], k;
     int64_t mp = def->max_pairs == HCBD_AUTO ? hcbd__auto_pairs(def) : def->max_pairs;
-    size_t P = (size_t)mp, R = sizeof(hcbd_real), I = sizeof(int32_t);
+    size_t R = sizeof(hcbd_real), I = sizeof(int32_t);
     hcbd_world tmp;
     hcbd_world *t = w ? w : &tmp;
     const hcbd_params *p = &def->params;
-    int gibd = p->dynamics == HCBD_DYN_GIBD, pot = p->potential != HCBD_POT_IDEAL;
+    int gibd = (hcbd__cells(p, nc), p->dynamics == HCBD_DYN_GIBD), pot = p->potential != HCBD_POT_IDEAL;
     int acol[2], nart = hcbd__art_count(p, acol);
     size_t A = (size_t)nart, ncol = (size_t)acol[0] * (size_t)acol[1], Q = sizeof(int64_t);
     hcbd__take(base, &off, sizeof(hcbd__zig), (void **)&t->zig);
 #define HCBD__ARR(ptr, bytes) hcbd__take(base, &off, (bytes), (void **)&(t->ptr))
     HCBD__ARR(x, N * R); HCBD__ARR(y, N * R); HCBD__ARR(z, N * R);
-    HCBD__ARR(x0, N * R); HCBD__ARR(y0, N * R); HCBD__ARR(z0, N * R);
+    hcbd__nl_take(base, &off, &t->nl, N, nc, mp);
     HCBD__ARR(ix, N * I); HCBD__ARR(iy, N * I); HCBD__ARR(iz, N * I);
     HCBD__ARR(id, N * I); HCBD__ARR(slot, N * I);
     HCBD__ARR(scratch, N * 8);
     HCBD__ARR(lx, N * sizeof(double));
     HCBD__ARR(fl_p, N * R); HCBD__ARR(fl_b, N * R); HCBD__ARR(fl_c, N * R);
-    HCBD__ARR(cell_start, (size_t)(ncell + 1) * I);
-    HCBD__ARR(cell_cursor, (size_t)ncell * I);
-    HCBD__ARR(cell_of, N * I); HCBD__ARR(perm, N * I);
-    HCBD__ARR(nb_start, (N + 1) * I);
-    HCBD__ARR(nb_j, P * I); HCBD__ARR(nb_tmp, P * I);
     t->sw_start = NULL;
     t->sw_n[0] = t->sw_n[1] = 1;
     if (gibd && p->pair_integrator == HCBD_PAIR_SHARDLOW && p->Rc > 0)
@@ -1976,9 +2001,6 @@ static size_t hcbd__layout(const hcbd_world_def *def, hcbd_world *w, char *base)
     if (p->potential == HCBD_POT_STAR && p->force_table)
         HCBD__ARR(star_tab, 4 * (size_t)hcbd__star_pieces(p) * sizeof(double));
 #undef HCBD__ARR
-    t->nc[0] = nc[0]; t->nc[1] = nc[1]; t->nc[2] = nc[2];
-    t->ncell = ncell;
-    t->max_pairs = mp;
     return off + HCBD__ALIGN; /* room to align the caller's block */
 }
 
@@ -2052,7 +2074,7 @@ hcbd_result hcbd_world_init(hcbd_world *w, const hcbd_world_def *def, void *mem,
     w->rho_norm = p->density_norm == 2016 ? 1.0 / (1.0 + w->w0 / p->density) : 1.0;
     w->cutmax = hcbd__cutmax(p);
     w->skin = hcbd__skin(p);
-    w->rlist = w->cutmax + w->skin;
+    w->nl.rlist = w->cutmax + w->skin;
     /* List validity is checked before every force evaluation, so a long
        step never misses a pair; a step longer than half the interaction
        range jumps through neighbours and means dt is unstable. */
@@ -2223,7 +2245,7 @@ static hcbd_result hcbd__set_particles(hcbd_world *w, int n, hcbd__src *src)
        replayed for the images at commit. */
     src->n = n;
     src0 = *src;
-    w->list_valid = 0;
+    w->nl.list_valid = 0;
     for (i = 0; i < n; ++i) {
         double r[3];
         int32_t img[3] = {0, 0, 0};
@@ -2236,11 +2258,11 @@ static hcbd_result hcbd__set_particles(hcbd_world *w, int n, hcbd__src *src)
             return hcbd__fail(&w->err, HCBD_ERR_WALL, -1, i,
                               "particle %d at y = %g is inside a wall (the channel is "
                               "%g <= y <= %g)", i, r[1], w->wall_lo, w->wall_hi);
-        w->x0[i] = (hcbd_real)r[0]; w->y0[i] = (hcbd_real)r[1]; w->z0[i] = (hcbd_real)r[2];
+        w->nl.x0[i] = (hcbd_real)r[0]; w->nl.y0[i] = (hcbd_real)r[1]; w->nl.z0[i] = (hcbd_real)r[2];
         /* A position that rounds to L in float storage belongs at 0. */
-        if (w->x0[i] >= (hcbd_real)w->p.L[0]) w->x0[i] = 0;
-        if (w->y0[i] >= (hcbd_real)w->p.L[1]) w->y0[i] = 0;
-        if (w->z0[i] >= (hcbd_real)w->p.L[2]) w->z0[i] = 0;
+        if (w->nl.x0[i] >= (hcbd_real)w->p.L[0]) w->nl.x0[i] = 0;
+        if (w->nl.y0[i] >= (hcbd_real)w->p.L[1]) w->nl.y0[i] = 0;
+        if (w->nl.z0[i] >= (hcbd_real)w->p.L[2]) w->nl.z0[i] = 0;
     }
     if (w->p.min_distance > 0) {
         /* O(N^2), once at set-up; in id order, so the first pair reported
@@ -2250,9 +2272,9 @@ static hcbd_result hcbd__set_particles(hcbd_world *w, int n, hcbd__src *src)
         for (i = 0; i < n; ++i)
             for (j = i + 1; j < n; ++j) {
                 double e[3];
-                e[0] = hcbd__mi((double)w->x0[i] - w->x0[j], w->p.L[0]);
-                e[1] = hcbd__mi((double)w->y0[i] - w->y0[j], w->p.L[1]);
-                e[2] = hcbd__mi((double)w->z0[i] - w->z0[j], w->p.L[2]);
+                e[0] = hcbd__mi((double)w->nl.x0[i] - w->nl.x0[j], w->p.L[0]);
+                e[1] = hcbd__mi((double)w->nl.y0[i] - w->nl.y0[j], w->p.L[1]);
+                e[2] = hcbd__mi((double)w->nl.z0[i] - w->nl.z0[j], w->p.L[2]);
                 if (e[0] * e[0] + e[1] * e[1] + e[2] * e[2] < m2)
                     return hcbd__fail(&w->err, HCBD_ERR_OVERLAP, -1, i,
                                       "particles %d and %d are %.17g apart, closer than "
@@ -2271,7 +2293,7 @@ static hcbd_result hcbd__set_particles(hcbd_world *w, int n, hcbd__src *src)
         if (w->walls && !src->xyz)
             r[1] = w->wall_lo + r[1] / w->p.L[1] * (w->wall_hi - w->wall_lo);
         for (d = 0; d < 3; ++d) hcbd__wrap(w->p.L[d], &r[d], &img[d]);
-        w->x[i] = w->x0[i]; w->y[i] = w->y0[i]; w->z[i] = w->z0[i];
+        w->x[i] = w->nl.x0[i]; w->y[i] = w->nl.y0[i]; w->z[i] = w->nl.z0[i];
         w->ix[i] = img[0]; w->iy[i] = img[1]; w->iz[i] = img[2];
         w->id[i] = i;
         w->slot[i] = i;
@@ -2289,7 +2311,7 @@ static hcbd_result hcbd__set_particles(hcbd_world *w, int n, hcbd__src *src)
     }
     for (i = 0; i < n; ++i) w->lx[i] = 0.0;
     w->le_offset = 0.0;
-    w->le_drift = 0.0;
+    w->nl.le_drift = 0.0;
     if (w->gibd)
         for (i = 0; i < n; ++i) {
             w->vx[i] -= (hcbd_real)(mom[0] / n);
@@ -2300,10 +2322,10 @@ static hcbd_result hcbd__set_particles(hcbd_world *w, int n, hcbd__src *src)
     w->wall_pen = 0;
     w->wall_pen_step = -1;
     w->wall_pen_id = -1;
-    w->list_valid = 0;
+    w->nl.list_valid = 0;
     w->rho_current = 0;
     w->rho_valid = 0;
-    w->n_rebuilds = 0;
+    w->nl.n_rebuilds = 0;
     /* no artificial particles before the first step draws them */
     if (w->n_art > 0) memset(w->acol_start, 0, (size_t)(w->acol[0] * w->acol[1] + 1) * sizeof(int32_t));
     return HCBD_OK;
@@ -2564,17 +2586,43 @@ static inline int hcbd__delta(const hcbd_world *w, double dx, double dy, double 
     return hcbd__delta_box(&b, dx, dy, dz, d);
 }
 
-static int hcbd__cell_index(const hcbd_world *w, int i)
+/* One set of particles as the list machinery sees it: positions by slot
+   and the id of each slot (NULL: slot = id). */
+typedef struct hcbd__pset {
+    const hcbd_real *x, *y, *z;
+    const int32_t *id;
+    int n;
+} hcbd__pset;
+
+static inline int hcbd__nl_cell(const hcbd__nlist *nl, const double L[3], double x, double y,
+                                double z)
 {
     int c[3], d;
     double r[3];
-    r[0] = w->x[i]; r[1] = w->y[i]; r[2] = w->z[i];
+    r[0] = x; r[1] = y; r[2] = z;
     for (d = 0; d < 3; ++d) {
-        c[d] = (int)(r[d] * w->nc[d] / w->p.L[d]);
-        if (c[d] >= w->nc[d]) c[d] = w->nc[d] - 1;
+        c[d] = (int)(r[d] * nl->nc[d] / L[d]);
+        if (c[d] >= nl->nc[d]) c[d] = nl->nc[d] - 1;
         if (c[d] < 0) c[d] = 0;
     }
-    return (c[2] * w->nc[1] + c[1]) * w->nc[0] + c[0];
+    return (c[2] * nl->nc[1] + c[1]) * nl->nc[0] + c[0];
+}
+
+/* Counting sort of the set into the cells: perm lists the slots cell by
+   cell, in slot order within a cell. */
+static void hcbd__nl_sort(hcbd__nlist *nl, const double L[3], const hcbd__pset *s)
+{
+    int i, c;
+    for (c = 0; c <= nl->ncell; ++c) nl->cell_start[c] = 0;
+    for (i = 0; i < s->n; ++i) {
+        nl->cell_of[i] = hcbd__nl_cell(nl, L, s->x[i], s->y[i], s->z[i]);
+        nl->cell_start[nl->cell_of[i] + 1]++;
+    }
+    for (c = 0; c < nl->ncell; ++c) {
+        nl->cell_start[c + 1] += nl->cell_start[c];
+        nl->cell_cursor[c] = nl->cell_start[c];
+    }
+    for (i = 0; i < s->n; ++i) nl->perm[nl->cell_cursor[nl->cell_of[i]]++] = i;
 }
 
 /* Moves every per-particle array into the order given by perm (new slot k
@@ -2594,16 +2642,16 @@ static void hcbd__permute(hcbd_world *w)
     }
     ia[0] = w->ix; ia[1] = w->iy; ia[2] = w->iz; ia[3] = w->id;
     for (a = 0; a < nr; ++a) {
-        for (k = 0; k < n; ++k) rr[k] = ra[a][w->perm[k]];
+        for (k = 0; k < n; ++k) rr[k] = ra[a][w->nl.perm[k]];
         memcpy(ra[a], rr, (size_t)n * sizeof *rr);
     }
     for (a = 0; a < 4; ++a) {
-        for (k = 0; k < n; ++k) ii[k] = ia[a][w->perm[k]];
+        for (k = 0; k < n; ++k) ii[k] = ia[a][w->nl.perm[k]];
         memcpy(ia[a], ii, (size_t)n * sizeof *ii);
     }
     {
         double *dd = (double *)w->scratch;
-        for (k = 0; k < n; ++k) dd[k] = w->lx[w->perm[k]];
+        for (k = 0; k < n; ++k) dd[k] = w->lx[w->nl.perm[k]];
         memcpy(w->lx, dd, (size_t)n * sizeof *dd);
     }
     for (k = 0; k < n; ++k) w->slot[w->id[k]] = k;
@@ -2618,57 +2666,56 @@ static inline int hcbd__wrap_cell(int a, int n)
     return a;
 }
 
-/* Scans the cells around particle i for partners j with id_j > id_i within
-   the list range; writes up to room of their slots to out (if not NULL)
-   and returns the count, which may exceed room. */
-static int hcbd__scan(const hcbd_world *w, int i, int32_t *out, int room)
+/* Scans the cells of cl (holding set t) around the point r for partners j
+   with id_j > idi within rl; writes up to room of their slots to out (if
+   not NULL) and returns the count, which may exceed room. */
+static int hcbd__nl_scan(const hcbd__nlist *cl, const hcbd__pset *t, const hcbd__box *box,
+                         const double r[3], int32_t idi, double rl, int32_t *out, int room)
 {
     int c[3], d, cnt = 0, o0, o1, o2, lo[3], hi[3];
-    const double rl2 = w->rlist * w->rlist;
-    const double xi = w->x[i], yi = w->y[i], zi = w->z[i];
-    const int32_t idi = w->id[i];
-    const int32_t *HCBD__RESTRICT perm = w->perm, *HCBD__RESTRICT id = w->id;
-    const hcbd_real *HCBD__RESTRICT x = w->x, *HCBD__RESTRICT y = w->y, *HCBD__RESTRICT z = w->z;
-    const hcbd__box box = hcbd__box_of(w);
-    int ci = hcbd__cell_index(w, i);
-    c[0] = ci % w->nc[0];
-    c[1] = (ci / w->nc[0]) % w->nc[1];
-    c[2] = ci / (w->nc[0] * w->nc[1]);
+    const double rl2 = rl * rl, xi = r[0], yi = r[1], zi = r[2];
+    const int32_t *HCBD__RESTRICT perm = cl->perm, *HCBD__RESTRICT id = t->id;
+    const hcbd_real *HCBD__RESTRICT x = t->x, *HCBD__RESTRICT y = t->y, *HCBD__RESTRICT z = t->z;
+    const int *nc = cl->nc;
+    int ci = hcbd__nl_cell(cl, box->L, xi, yi, zi);
+    c[0] = ci % nc[0];
+    c[1] = (ci / nc[0]) % nc[1];
+    c[2] = ci / (nc[0] * nc[1]);
     /* With fewer than 3 cells along an axis, -1 and +1 are the same cell
        (or the cell itself): visit each cell once. */
     for (d = 0; d < 3; ++d) {
-        lo[d] = w->nc[d] >= 3 ? -1 : 0;
-        hi[d] = w->nc[d] >= 3 ? 1 : w->nc[d] - 1;
+        lo[d] = nc[d] >= 3 ? -1 : 0;
+        hi[d] = nc[d] >= 3 ? 1 : nc[d] - 1;
     }
     for (o1 = lo[1]; o1 <= hi[1]; ++o1) {
-        int row = c[1] + o1, k = row < 0 ? -1 : (row >= w->nc[1] ? 1 : 0);
+        int row = c[1] + o1, k = row < 0 ? -1 : (row >= nc[1] ? 1 : 0);
         int x0 = c[0] + lo[0], x1 = c[0] + hi[0];
-        if (k && w->le_on) {
+        if (k && box->le) {
             /* the row across the sheared boundary: its image sits shifted
                by k * offset in x, so take the cells around x_i - k offset
                (Lees-Edwards needs at least 3 cells along x and y) */
-            double cw = w->p.L[0] / w->nc[0], xs = xi - k * w->le_offset;
-            x0 = (int)floor((xs - w->rlist) / cw);
-            x1 = (int)floor((xs + w->rlist) / cw);
+            double cw = box->L[0] / nc[0], xs = xi - k * box->offset;
+            x0 = (int)floor((xs - rl) / cw);
+            x1 = (int)floor((xs + rl) / cw);
             if (x1 - x0 > 2) x1 = x0 + 2;
-            if (x1 - x0 > w->nc[0] - 1) x1 = x0 + w->nc[0] - 1; /* each cell once */
+            if (x1 - x0 > nc[0] - 1) x1 = x0 + nc[0] - 1; /* each cell once */
         }
         for (o0 = x0; o0 <= x1; ++o0)
             for (o2 = lo[2]; o2 <= hi[2]; ++o2) {
-                const int a = hcbd__wrap_cell(o0, w->nc[0]), b = hcbd__wrap_cell(row, w->nc[1]);
-                const int e = hcbd__wrap_cell(c[2] + o2, w->nc[2]);
-                const int cc = (e * w->nc[1] + b) * w->nc[0] + a, q1 = w->cell_start[cc + 1];
+                const int a = hcbd__wrap_cell(o0, nc[0]), b = hcbd__wrap_cell(row, nc[1]);
+                const int e = hcbd__wrap_cell(c[2] + o2, nc[2]);
+                const int cc = (e * nc[1] + b) * nc[0] + a, q1 = cl->cell_start[cc + 1];
                 int q;
                 /* no branch on the range (about half the candidates lie
                    outside it, at random): each one is written at the next
                    free place, and one in range advances the count past it;
                    the id test skips half of the work, and measured faster
                    as a branch than folded in */
-                for (q = w->cell_start[cc]; q < q1; ++q) {
+                for (q = cl->cell_start[cc]; q < q1; ++q) {
                     const int j = perm[q];
                     double dd[3], r2;
-                    if (id[j] <= idi) continue;
-                    hcbd__delta_box(&box, xi - x[j], yi - y[j], zi - z[j], dd);
+                    if ((id ? id[j] : j) <= idi) continue;
+                    hcbd__delta_box(box, xi - x[j], yi - y[j], zi - z[j], dd);
                     r2 = dd[0] * dd[0] + dd[1] * dd[1] + dd[2] * dd[2];
                     if (out && cnt < room) out[cnt] = j;
                     cnt += r2 < rl2;
@@ -2678,130 +2725,162 @@ static int hcbd__scan(const hcbd_world *w, int i, int32_t *out, int room)
     return cnt;
 }
 
-/* Insertion sort of a short slot list by id (lists hold ~10-40 entries). */
-static void hcbd__sort_by_id(const int32_t *id, int32_t *a, int n, const int32_t *key_of)
+/* Insertion sort of a short slot list by id (lists hold ~10-80 entries). */
+static void hcbd__sort_by_id(const int32_t *id, int32_t *a, int n)
 {
     int k, m;
     for (k = 1; k < n; ++k) {
         int32_t v = a[k];
-        int32_t kv = id[key_of ? key_of[v] : v];
-        for (m = k - 1; m >= 0 && id[key_of ? key_of[a[m]] : a[m]] > kv; --m)
-            a[m + 1] = a[m];
+        int32_t kv = id ? id[v] : v;
+        for (m = k - 1; m >= 0 && (id ? id[a[m]] : a[m]) > kv; --m) a[m + 1] = a[m];
         a[m + 1] = v;
     }
 }
 
-static hcbd_result hcbd__rebuild(hcbd_world *w)
+static int hcbd__nl_query(const hcbd__nlist *cl, const hcbd__pset *q, const hcbd__pset *t,
+                          const hcbd__box *box, int i, int half, double rl, int32_t *out,
+                          int room)
 {
-    int n = w->n, i, c, nt = w->p.threads;
+    double r[3];
+    r[0] = q->x[i]; r[1] = q->y[i]; r[2] = q->z[i];
+    return hcbd__nl_scan(cl, t, box, r, half ? (q->id ? q->id[i] : i) : -1, rl, out, room);
+}
+
+/* The list nl of the set q against the set t held in the cells of cl (cl =
+   nl, q = t for a half list; half = 0 lists every partner) within
+   nl->rlist, partners sorted by id.  Each thread lists its contiguous
+   share of q into its own slice of nb_tmp, then prefix sums and a
+   compacting copy; only if a slice overflows are the cells scanned a
+   second time.  Returns 0, or -1 when the pairs exceed max_pairs. */
+static int hcbd__nl_pairs(hcbd__nlist *nl, const hcbd__nlist *cl, const hcbd__pset *q,
+                          const hcbd__pset *t, const hcbd__box *box, int half, int nt)
+{
+    const int n = q->n;
+    const double rl = nl->rlist;
+    int i, overflow = 0;
     int64_t total = 0;
     (void)nt;
-    w->list_valid = 0; /* until the new list is complete */
-    /* cells by counting sort */
-    for (c = 0; c <= w->ncell; ++c) w->cell_start[c] = 0;
+    nl->list_valid = 0; /* until the new list is complete */
+    HCBD__OMP(omp parallel num_threads(nt) reduction(max:overflow))
+    {
+        int tid = 0, nth = 1, a, b, ii, ovf = 0;
+        int64_t pos, end;
+#ifdef _OPENMP
+        tid = omp_get_thread_num();
+        nth = omp_get_num_threads();
+#endif
+        a = (int)((int64_t)n * tid / nth);
+        b = (int)((int64_t)n * (tid + 1) / nth);
+        pos = nl->max_pairs * tid / nth;
+        end = nl->max_pairs * (tid + 1) / nth;
+        for (ii = a; ii < b; ++ii) {
+            /* a particle has at most t->n partners */
+            int room = end - pos < t->n ? (int)(end - pos) : t->n;
+            int cnt = hcbd__nl_query(cl, q, t, box, ii, half, rl, nl->nb_tmp + pos, room);
+            if (cnt > room) {
+                ovf = 1;
+                break;
+            }
+            nl->cell_of[ii] = (int32_t)pos; /* cell_of is free now */
+            nl->nb_start[ii + 1] = cnt;
+            pos += cnt;
+        }
+        /* the private copy of a max-reduction starts at INT_MIN */
+        overflow = ovf;
+    }
+    nl->nb_start[0] = 0;
+    if (overflow) {
+        nl->n_rescans++;
+        HCBD__OMP(omp parallel for num_threads(nt) schedule(static))
+        for (i = 0; i < n; ++i) nl->nb_start[i + 1] = hcbd__nl_query(cl, q, t, box, i, half, rl, NULL, 0);
+    }
     for (i = 0; i < n; ++i) {
-        w->cell_of[i] = hcbd__cell_index(w, i);
-        w->cell_start[w->cell_of[i] + 1]++;
+        total += nl->nb_start[i + 1];
+        if (total > nl->max_pairs) return -1;
+        nl->nb_start[i + 1] = (int32_t)total;
     }
-    for (c = 0; c < w->ncell; ++c) {
-        w->cell_start[c + 1] += w->cell_start[c];
-        w->cell_cursor[c] = w->cell_start[c];
+    nl->npairs = total;
+    HCBD__OMP(omp parallel for num_threads(nt) schedule(static))
+    for (i = 0; i < n; ++i) {
+        int32_t p0 = nl->nb_start[i], cnt = nl->nb_start[i + 1] - p0;
+        if (overflow)
+            hcbd__nl_query(cl, q, t, box, i, half, rl, nl->nb_j + p0, cnt);
+        else
+            memcpy(nl->nb_j + p0, nl->nb_tmp + nl->cell_of[i], (size_t)cnt * sizeof(int32_t));
+        hcbd__sort_by_id(t->id, nl->nb_j + p0, cnt);
     }
-    for (i = 0; i < n; ++i) w->perm[w->cell_cursor[w->cell_of[i]]++] = i;
+    return 0;
+}
+
+/* A particle's fixed-point sums hold at most HCBD__FIX_DEG pair terms (see
+   hcbd__fixed_scales): the slot of the first with more partners in the half
+   list, or -1.  The 27 cells around a particle bound its partners, so only
+   a dense corner is counted exactly (deg: n ints of scratch). */
+static int hcbd__nl_degree(const hcbd__nlist *nl, int n, int32_t *deg, int *most_out)
+{
+    int most = 0, c, i;
+    int64_t p;
+    for (c = 0; c < nl->ncell; ++c)
+        if (nl->cell_start[c + 1] - nl->cell_start[c] > most)
+            most = nl->cell_start[c + 1] - nl->cell_start[c];
+    if ((int64_t)27 * most <= HCBD__FIX_DEG) return -1;
+    for (i = 0; i < n; ++i) deg[i] = nl->nb_start[i + 1] - nl->nb_start[i];
+    for (p = 0; p < nl->npairs; ++p) deg[nl->nb_j[p]]++;
+    for (i = 0; i < n; ++i)
+        if (deg[i] > HCBD__FIX_DEG) {
+            *most_out = deg[i];
+            return i;
+        }
+    return -1;
+}
+
+/* The build is complete: positions kept for the displacement test. */
+static void hcbd__nl_done(hcbd__nlist *nl, const hcbd__pset *s)
+{
+    int i;
+    for (i = 0; i < s->n; ++i) {
+        nl->x0[i] = s->x[i];
+        nl->y0[i] = s->y[i];
+        nl->z0[i] = s->z[i];
+    }
+    nl->disp_max = 0.0;
+    nl->le_drift = 0.0;
+    nl->list_valid = 1;
+    nl->n_rebuilds++;
+}
+
+static inline hcbd__pset hcbd__pset_of(const hcbd_world *w)
+{
+    hcbd__pset s;
+    s.x = w->x; s.y = w->y; s.z = w->z;
+    s.id = w->id;
+    s.n = w->n;
+    return s;
+}
+
+static hcbd_result hcbd__rebuild(hcbd_world *w)
+{
+    hcbd__pset s = hcbd__pset_of(w);
+    const hcbd__box box = hcbd__box_of(w);
+    int i, bad, most = 0;
+    w->nl.list_valid = 0;
+    hcbd__nl_sort(&w->nl, w->p.L, &s);
     if (w->p.sort) {
         hcbd__permute(w);
-        for (i = 0; i < n; ++i) w->perm[i] = i;
+        for (i = 0; i < w->n; ++i) w->nl.perm[i] = i;
     }
-    /* half list in one scan: each thread lists its contiguous share of
-       particles into its own slice of nb_tmp, then prefix sums and a
-       compacting copy.  Only if a slice overflows are the cells scanned a
-       second time. */
-    {
-        int overflow = 0;
-        HCBD__OMP(omp parallel num_threads(nt) reduction(max:overflow))
-        {
-            int tid = 0, nth = 1, a, b, ii, ovf = 0;
-            int64_t pos, end;
-#ifdef _OPENMP
-            tid = omp_get_thread_num();
-            nth = omp_get_num_threads();
-#endif
-            a = (int)((int64_t)n * tid / nth);
-            b = (int)((int64_t)n * (tid + 1) / nth);
-            pos = w->max_pairs * tid / nth;
-            end = w->max_pairs * (tid + 1) / nth;
-            for (ii = a; ii < b; ++ii) {
-                /* a particle has at most n - 1 partners */
-                int room = end - pos < n ? (int)(end - pos) : n;
-                int cnt = hcbd__scan(w, ii, w->nb_tmp + pos, room);
-                if (cnt > room) {
-                    ovf = 1;
-                    break;
-                }
-                w->cell_of[ii] = (int32_t)pos; /* cell_of is free now */
-                w->nb_start[ii + 1] = cnt;
-                pos += cnt;
-            }
-            /* the private copy of a max-reduction starts at INT_MIN */
-            overflow = ovf;
-        }
-        w->nb_start[0] = 0;
-        if (overflow) {
-            w->n_rescans++;
-            HCBD__OMP(omp parallel for num_threads(nt) schedule(static))
-            for (i = 0; i < n; ++i) w->nb_start[i + 1] = hcbd__scan(w, i, NULL, 0);
-        }
-        for (i = 0; i < n; ++i) {
-            total += w->nb_start[i + 1];
-            if (total > w->max_pairs)
-                return hcbd__fail(&w->err, HCBD_ERR_CAPACITY, w->step, -1,
-                                  "neighbour list needs more than max_pairs = %lld "
-                                  "pairs (list range %g); raise hcbd_world_def.max_pairs",
-                                  (long long)w->max_pairs, w->rlist);
-            w->nb_start[i + 1] = (int32_t)total;
-        }
-        w->npairs = total;
-        HCBD__OMP(omp parallel for num_threads(nt) schedule(static))
-        for (i = 0; i < n; ++i) {
-            int32_t p0 = w->nb_start[i], cnt = w->nb_start[i + 1] - p0;
-            if (overflow)
-                hcbd__scan(w, i, w->nb_j + p0, cnt);
-            else
-                memcpy(w->nb_j + p0, w->nb_tmp + w->cell_of[i], (size_t)cnt * sizeof(int32_t));
-            hcbd__sort_by_id(w->id, w->nb_j + p0, cnt, NULL);
-        }
-    }
-    {
-        /* a particle's fixed-point sums hold at most HCBD__FIX_DEG pair
-           terms (see hcbd__fixed_scales); the 27 cells around it bound its
-           partners, and only a dense corner is counted exactly */
-        int most = 0;
-        for (c = 0; c < w->ncell; ++c)
-            if (w->cell_start[c + 1] - w->cell_start[c] > most)
-                most = w->cell_start[c + 1] - w->cell_start[c];
-        if ((int64_t)27 * most > HCBD__FIX_DEG) {
-            int32_t *deg = (int32_t *)w->scratch;
-            int64_t p;
-            for (i = 0; i < n; ++i) deg[i] = w->nb_start[i + 1] - w->nb_start[i];
-            for (p = 0; p < w->npairs; ++p) deg[w->nb_j[p]]++;
-            for (i = 0; i < n; ++i)
-                if (deg[i] > HCBD__FIX_DEG)
-                    return hcbd__fail(&w->err, HCBD_ERR_CAPACITY, w->step, w->id[i],
-                                      "particle %d has %d neighbours within the list "
-                                      "range %g, more than the %d its fixed-point pair "
-                                      "sums hold", (int)w->id[i], (int)deg[i], w->rlist,
-                                      HCBD__FIX_DEG);
-        }
-    }
-    for (i = 0; i < n; ++i) {
-        w->x0[i] = w->x[i];
-        w->y0[i] = w->y[i];
-        w->z0[i] = w->z[i];
-    }
-    w->disp_max = 0.0;
-    w->le_drift = 0.0;
-    w->list_valid = 1;
-    w->n_rebuilds++;
+    if (hcbd__nl_pairs(&w->nl, &w->nl, &s, &s, &box, 1, w->p.threads) < 0)
+        return hcbd__fail(&w->err, HCBD_ERR_CAPACITY, w->step, -1,
+                          "neighbour list needs more than max_pairs = %lld "
+                          "pairs (list range %g); raise hcbd_world_def.max_pairs",
+                          (long long)w->nl.max_pairs, w->nl.rlist);
+    bad = hcbd__nl_degree(&w->nl, w->n, (int32_t *)w->scratch, &most);
+    if (bad >= 0)
+        return hcbd__fail(&w->err, HCBD_ERR_CAPACITY, w->step, w->id[bad],
+                          "particle %d has %d neighbours within the list "
+                          "range %g, more than the %d its fixed-point pair "
+                          "sums hold", (int)w->id[bad], most, w->nl.rlist, HCBD__FIX_DEG);
+    hcbd__nl_done(&w->nl, &s);
     return HCBD_OK;
 }
 
@@ -2811,7 +2890,7 @@ static hcbd_result hcbd__ensure_list(hcbd_world *w)
     /* two particles close in by 2 disp_max; across the sheared boundary the
        offset drift adds to that, and a particle that crossed since the
        build is measured with today's offset (error <= drift): 3 drift */
-    if (w->list_valid && 2.0 * w->disp_max + 3.0 * w->le_drift <= w->skin) return HCBD_OK;
+    if (w->nl.list_valid && 2.0 * w->nl.disp_max + 3.0 * w->nl.le_drift <= w->skin) return HCBD_OK;
     return hcbd__rebuild(w);
 }
 
@@ -2830,13 +2909,13 @@ static int hcbd__density_stale(const hcbd_world *w)
    or down (cells are at least the list range wide), so slabs of one parity
    never write to the same particle: they run side by side, then those of
    the other parity.  The sums are integers, so the cut changes no bit. */
-typedef int (*hcbd__owner_fn)(hcbd_world *w, int q0, int q1);
-static int hcbd__owners(hcbd_world *w, hcbd__owner_fn fn)
+typedef int (*hcbd__owner_fn)(void *ctx, int q0, int q1);
+static int hcbd__nl_owners(const hcbd__nlist *L, int n, int T, void *ctx, hcbd__owner_fn fn)
 {
-    const int nl = w->nc[2], layer = w->nc[0] * w->nc[1];
-    int T = w->p.threads, bad = INT_MAX;
+    const int nl = L->nc[2], layer = L->nc[0] * L->nc[1];
+    int bad = INT_MAX;
     if (T > nl / 4) T = nl / 4;
-    if (T <= 1) return fn(w, 0, w->n);
+    if (T <= 1) return fn(ctx, 0, n);
     HCBD__OMP(omp parallel num_threads(T) reduction(min:bad))
     {
         const int K = 2 * T;
@@ -2844,8 +2923,8 @@ static int hcbd__owners(hcbd_world *w, hcbd__owner_fn fn)
         for (ph = 0; ph < 2; ++ph) {
             HCBD__OMP(omp for schedule(static))
             for (k = ph; k < K; k += 2) {
-                int b = fn(w, w->cell_start[(int64_t)k * nl / K * layer],
-                           w->cell_start[(int64_t)(k + 1) * nl / K * layer]);
+                int b = fn(ctx, L->cell_start[(int64_t)k * nl / K * layer],
+                           L->cell_start[(int64_t)(k + 1) * nl / K * layer]);
                 if (b < bad) bad = b;
             }
         }
@@ -2853,19 +2932,25 @@ static int hcbd__owners(hcbd_world *w, hcbd__owner_fn fn)
     return bad;
 }
 
-static int hcbd__density_owners(hcbd_world *w, int q0, int q1)
+static int hcbd__owners(hcbd_world *w, hcbd__owner_fn fn)
 {
+    return hcbd__nl_owners(&w->nl, w->n, w->p.threads, w, fn);
+}
+
+static int hcbd__density_owners(void *ctx, int q0, int q1)
+{
+    hcbd_world *w = (hcbd_world *)ctx;
     const double Rc2 = w->p.Rc * w->p.Rc, invRc = 1.0 / w->p.Rc, cwq = w->cw * w->qW;
     const hcbd__box box = hcbd__box_of(w);
     int64_t *HCBD__RESTRICT aW = w->aW;
     int q;
     for (q = q0; q < q1; ++q) {
-        const int i = w->perm[q];
+        const int i = w->nl.perm[q];
         const double xi = w->x[i], yi = w->y[i], zi = w->z[i];
         int64_t s = 0;
         int32_t p;
-        for (p = w->nb_start[i]; p < w->nb_start[i + 1]; ++p) {
-            const int j = w->nb_j[p];
+        for (p = w->nl.nb_start[i]; p < w->nl.nb_start[i + 1]; ++p) {
+            const int j = w->nl.nb_j[p];
             double d[3], r2;
             hcbd__delta_box(&box, xi - w->x[j], yi - w->y[j], zi - w->z[j], d);
             r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
@@ -2924,7 +3009,7 @@ HCBD__INLINE int hcbd__gather(const hcbd_world *w, const hcbd__box *box, int i, 
     const int32_t pe = pend - *p > HCBD__CHUNK ? *p + HCBD__CHUNK : pend;
     int m = 0;
     for (; *p < pe; ++*p) {
-        const int j = w->nb_j[*p];
+        const int j = w->nl.nb_j[*p];
         double d[3], r2;
         const int k = hcbd__delta_box(box, xi - w->x[j], yi - w->y[j], zi - w->z[j], d);
         r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
@@ -2958,14 +3043,14 @@ HCBD__INLINE int hcbd__forces_body(hcbd_world *w, int q0, int q1, const int pot,
     int q, worst = INT_MAX;
     (void)flux;
     for (q = q0; q < q1; ++q) {
-        const int i = w->perm[q];
+        const int i = w->nl.perm[q];
         int bad = 0;
         int64_t fxs = 0, fys = 0, fzs = 0, pxs = 0, pys = 0, pzs = 0, ws = 0;
         double sp = 0, sb = 0;
         const double vxi = gibd ? w->vx[i] : 0, vyi = gibd ? w->vy[i] : 0;
         const double vzi = gibd ? w->vz[i] : 0, iri = gibd ? w->inv_rho[i] : 0;
-        const int32_t idi = w->id[i], pend = w->nb_start[i + 1];
-        int32_t p = w->nb_start[i];
+        const int32_t idi = w->id[i], pend = w->nl.nb_start[i + 1];
+        int32_t p = w->nl.nb_start[i];
         while (p < pend) {
             hcbd__near c;
             const int m = hcbd__gather(w, &box, i, &p, pend, cut2, &c);
@@ -3030,24 +3115,28 @@ HCBD__INLINE int hcbd__forces_body(hcbd_world *w, int q0, int q1, const int pot,
 
 /* The common cases with their switches constant, so that each loop holds
    only its own work; anything else takes the general one. */
-static int hcbd__forces_pot(hcbd_world *w, int q0, int q1)
+static int hcbd__forces_pot(void *ctx, int q0, int q1)
 {
+    hcbd_world *w = (hcbd_world *)ctx;
     return hcbd__forces_body(w, q0, q1, 1, 0, 0, 0);
 }
 
-static int hcbd__forces_gibd(hcbd_world *w, int q0, int q1)
+static int hcbd__forces_gibd(void *ctx, int q0, int q1)
 {
+    hcbd_world *w = (hcbd_world *)ctx;
     return hcbd__forces_body(w, q0, q1, 1, 1, 0, 0);
 }
 
 /* forces and this step's density weights in one pass (exact sweep) */
-static int hcbd__forces_dens(hcbd_world *w, int q0, int q1)
+static int hcbd__forces_dens(void *ctx, int q0, int q1)
 {
+    hcbd_world *w = (hcbd_world *)ctx;
     return hcbd__forces_body(w, q0, q1, 1, 0, 1, 0);
 }
 
-static int hcbd__forces_any(hcbd_world *w, int q0, int q1)
+static int hcbd__forces_any(void *ctx, int q0, int q1)
 {
+    hcbd_world *w = (hcbd_world *)ctx;
     return hcbd__forces_body(w, q0, q1, w->p.potential != HCBD_POT_IDEAL,
                              w->gibd && !w->shardlow, w->gibd && w->p.lagged_density,
                              w->flux_on);
@@ -3120,11 +3209,11 @@ static void hcbd__shardlow_owner(hcbd_world *w, int i, uint64_t skey, uint64_t w
     const hcbd__box box = hcbd__box_of(w);
     hcbd_real *HCBD__RESTRICT vx = w->vx, *HCBD__RESTRICT vy = w->vy, *HCBD__RESTRICT vz = w->vz;
     const double yi = w->y[i], iri = w->inv_rho[i];
-    const int32_t pend = w->nb_start[i + 1], idi = w->id[i];
+    const int32_t pend = w->nl.nb_start[i + 1], idi = w->id[i];
     /* i's velocity stays in registers: no partner is i itself */
     hcbd_real vxi = vx[i], vyi = vy[i], vzi = vz[i];
     double sb = 0.0;
-    int32_t p = w->nb_start[i];
+    int32_t p = w->nl.nb_start[i];
     while (p < pend) {
         hcbd__near nc;
         const int m2 = hcbd__gather(w, &box, i, &p, pend, Rc2, &nc);
@@ -3166,7 +3255,7 @@ static void hcbd__shardlow(hcbd_world *w)
     /* rows move with particle 0, so that a boosted copy of the world sweeps
        in the same order (Galilean invariance of the trajectory) */
     const double y0 = w->y[w->slot[0]], z0 = w->z[w->slot[0]];
-    int32_t *HCBD__RESTRICT row = w->cell_of, *HCBD__RESTRICT start = w->sw_start;
+    int32_t *HCBD__RESTRICT row = w->nl.cell_of, *HCBD__RESTRICT start = w->sw_start;
     int32_t *HCBD__RESTRICT list = (int32_t *)w->scratch;
     int k, r;
     (void)nt;
@@ -3337,12 +3426,12 @@ static hcbd_result hcbd__integrate(hcbd_world *w)
         }
         if (track) {
             double e[3], e2;
-            hcbd__delta_box(&box, r[0] - w->x0[i], r[1] - w->y0[i], r[2] - w->z0[i], e);
+            hcbd__delta_box(&box, r[0] - w->nl.x0[i], r[1] - w->nl.y0[i], r[2] - w->nl.z0[i], e);
             e2 = e[0] * e[0] + e[1] * e[1] + e[2] * e[2];
             if (e2 > dmax) dmax = e2;
         }
     }
-    w->disp_max = sqrt(dmax);
+    w->nl.disp_max = sqrt(dmax);
     w->rho_current = 0;
     if (npen) {
         w->wall_pen += npen;
@@ -3351,7 +3440,7 @@ static hcbd_result hcbd__integrate(hcbd_world *w)
     }
     if (le) {
         w->le_offset = s_new - L0 * floor(s_new / L0);
-        w->le_drift += fabs(w->p.gdot * L1 * dt);
+        w->nl.le_drift += fabs(w->p.gdot * L1 * dt);
     }
     if (bad_nan != INT_MAX)
         return hcbd__fail(&w->err, HCBD_ERR_NONFINITE, w->step, bad_nan,
@@ -3536,8 +3625,8 @@ static hcbd_result hcbd__for_pairs(hcbd_world *w, double rmax, hcbd__pair_fn fn,
     for (k = 0; k < w->n; ++k) { /* owners in id order, partners in id order */
         int i = w->slot[k];
         int32_t p;
-        for (p = w->nb_start[i]; p < w->nb_start[i + 1]; ++p) {
-            int j = w->nb_j[p];
+        for (p = w->nl.nb_start[i]; p < w->nl.nb_start[i + 1]; ++p) {
+            int j = w->nl.nb_j[p];
             double d[3], r2;
             hcbd__delta(w, (double)w->x[i] - w->x[j], (double)w->y[i] - w->y[j],
                         (double)w->z[i] - w->z[j], d);
@@ -6360,8 +6449,8 @@ static void hcbd__ck_state(hcbd__ck *c, hcbd_world *w)
     hcbd__ck_int(c, &w->wall_pen_id);
     hcbd__ck_int(c, &w->rho_valid);
     hcbd__ck_int(c, &w->rho_current);
-    hcbd__ck_i64(c, &w->n_rebuilds);
-    hcbd__ck_i64(c, &w->n_rescans);
+    hcbd__ck_i64(c, &w->nl.n_rebuilds);
+    hcbd__ck_i64(c, &w->nl.n_rescans);
     hcbd__ck_reals(c, w->x, map, n); hcbd__ck_reals(c, w->y, map, n); hcbd__ck_reals(c, w->z, map, n);
     hcbd__ck_i32s(c, w->ix, map, n); hcbd__ck_i32s(c, w->iy, map, n); hcbd__ck_i32s(c, w->iz, map, n);
     hcbd__ck_f64s(c, w->lx, map, n);
@@ -6375,7 +6464,7 @@ static void hcbd__ck_state(hcbd__ck *c, hcbd_world *w)
 /* capacity, max_pairs, n, parameters, table; the state follows */
 static void hcbd__ck_world(hcbd__ck *c, hcbd_world *w)
 {
-    int64_t cap = w->capacity, mp = w->max_pairs;
+    int64_t cap = w->capacity, mp = w->nl.max_pairs;
     hcbd__ck_i64(c, &cap);
     hcbd__ck_i64(c, &mp);
     hcbd__ck_int(c, &w->n);
@@ -6485,8 +6574,8 @@ static hcbd_result hcbd__ck_load(hcbd_world *w, const void *buf, size_t size)
         w->id[k] = k;
         w->slot[k] = k;
     }
-    w->list_valid = 0;
-    w->le_drift = 0.0;
+    w->nl.list_valid = 0;
+    w->nl.le_drift = 0.0;
     /* a checksum-valid file from elsewhere may still hold nonsense */
     r = hcbd__guard(w);
     if (r == HCBD_OK && ((w->flux_on & ~1) || !(w->le_offset >= 0 && w->le_offset < w->p.L[0])))
@@ -6622,7 +6711,7 @@ hcbd_result hcbd_xyz_offenders(const hcbd_world *w, FILE *f)
     /* the scratch area holds n ints; the frame needs no allocation */
     ids = (int *)w->scratch;
     {
-        const double rr = w->rlist > 0 ? w->rlist : 0.0;
+        const double rr = w->nl.rlist > 0 ? w->nl.rlist : 0.0;
         const int i = w->slot[bad];
         for (k = 0; k < w->n; ++k) {
             const int j = w->slot[k];
@@ -6653,7 +6742,7 @@ int hcbd_thermo_line(const hcbd_world *w, double ns_pstep, char *buf, size_t siz
     else snprintf(ns, sizeof ns, "-");
     return snprintf(buf, size, "%lld %.9g %.9g %.6e %.6e %.6e %lld %lld %s",
                     (long long)w->step, (double)w->step * w->p.dt, hcbd_temperature(w), p[0],
-                    p[1], p[2], (long long)w->npairs, (long long)w->wall_pen, ns);
+                    p[1], p[2], (long long)w->nl.npairs, (long long)w->wall_pen, ns);
 }
 
 #if HCBD_MODEL == HCBD_MODEL_HCBD

@@ -112,7 +112,7 @@ int main(int argc, char **argv)
                     fprintf(stderr, "bench_speed: %s\n", w.err.msg);
                     return 1;
                 }
-                r0 = w.n_rebuilds;
+                r0 = w.nl.n_rebuilds;
                 if (dyn == 2) hcbd_flux_enable(&w, 1);
                 for (rep = 0; rep < reps; ++rep) {
                     double dtm;
@@ -125,11 +125,11 @@ int main(int argc, char **argv)
                     if (dtm < best) best = dtm;
                 }
                 printf("%-8s %8d %6d %7d %14.1f %10.1f %10.2f  %016llx\n", names[dyn], N, w.n_art, th,
-                       best, 100.0 * (w.n_rebuilds - r0) / (reps * steps), (double)w.npairs / N,
+                       best, 100.0 * (w.nl.n_rebuilds - r0) / (reps * steps), (double)w.nl.npairs / N,
                        (unsigned long long)hcbd_state_checksum(&w));
                 fprintf(csv, "%s,%d,%d,%d,%.2f,%d,%.2f,%.3f,%s,%016llx\n", names[dyn], N, w.n_art, th,
-                        best, steps * reps, 100.0 * (w.n_rebuilds - r0) / (reps * steps),
-                        (double)w.npairs / N, noise == HCBD_NOISE_UNIFORM ? "uniform" : "gauss",
+                        best, steps * reps, 100.0 * (w.nl.n_rebuilds - r0) / (reps * steps),
+                        (double)w.nl.npairs / N, noise == HCBD_NOISE_UNIFORM ? "uniform" : "gauss",
                         (unsigned long long)hcbd_state_checksum(&w));
                 fflush(stdout);
                 hcbd_world_destroy(&w);

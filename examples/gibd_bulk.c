@@ -468,7 +468,7 @@ int main(int argc, char **argv)
         printf("eta_carrier_measured=%.6g\neta_total_measured=%.6g\n", fl[2] / p->gdot, fl[3] / p->gdot);
         printf("eta_background_theory=%.6g\n", p->Rc * p->Rc * c.density * p->xip / 28);
     }
-    printf("neighbour_rebuilds=%lld\n", (long long)w.n_rebuilds);
+    printf("neighbour_rebuilds=%lld\n", (long long)w.nl.n_rebuilds);
     printf("state_checksum=%016llx\n", (unsigned long long)hcbd_state_checksum(&w));
     if (!run_out_close(&c, &ro, &w)) return 1;
     hcbd_world_destroy(&w);

@@ -251,7 +251,7 @@ void test_skipped_work(void)
     if (!make_world(&w, &d)) return;
     hcbd_world_place_lattice(&w, 512);
     run(&w, 50);
-    CHECK(w.n_rebuilds == 0, "ideal BD built %lld neighbour lists", (long long)w.n_rebuilds);
+    CHECK(w.nl.n_rebuilds == 0, "ideal BD built %lld neighbour lists", (long long)w.nl.n_rebuilds);
     hcbd_world_destroy(&w);
 }
 

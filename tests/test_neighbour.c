@@ -9,18 +9,18 @@ static void compare(hcbd_world *w, const char *what)
     unsigned char *seen = (unsigned char *)calloc((size_t)n * n, 1);
     for (i = 0; i < n; ++i) {
         int32_t p;
-        for (p = w->nb_start[i]; p < w->nb_start[i + 1]; ++p) {
-            int a = w->id[i], b = w->id[w->nb_j[p]], c;
+        for (p = w->nl.nb_start[i]; p < w->nl.nb_start[i + 1]; ++p) {
+            int a = w->id[i], b = w->id[w->nl.nb_j[p]], c;
             double d2 = 0;
             if (a >= b) ++wrong_owner;
             for (c = 0; c < 3; ++c) {
                 double r0 = c == 0 ? w->x[i] : c == 1 ? w->y[i] : w->z[i];
-                double r1 = c == 0 ? w->x[w->nb_j[p]] : c == 1 ? w->y[w->nb_j[p]] : w->z[w->nb_j[p]];
+                double r1 = c == 0 ? w->x[w->nl.nb_j[p]] : c == 1 ? w->y[w->nl.nb_j[p]] : w->z[w->nl.nb_j[p]];
                 double dx = r0 - r1;
                 dx -= w->p.L[c] * round(dx / w->p.L[c]);
                 d2 += dx * dx;
             }
-            if (d2 >= w->rlist * w->rlist) ++too_far;
+            if (d2 >= w->nl.rlist * w->nl.rlist) ++too_far;
             if (seen[(size_t)a * n + b]++) ++dup;
         }
     }
@@ -49,8 +49,8 @@ static void compare(hcbd_world *w, const char *what)
         int bad = 0;
         for (i = 0; i < n; ++i) {
             int32_t p;
-            for (p = w->nb_start[i] + 1; p < w->nb_start[i + 1]; ++p)
-                if (w->id[w->nb_j[p]] <= w->id[w->nb_j[p - 1]]) ++bad;
+            for (p = w->nl.nb_start[i] + 1; p < w->nl.nb_start[i + 1]; ++p)
+                if (w->id[w->nl.nb_j[p]] <= w->id[w->nl.nb_j[p - 1]]) ++bad;
         }
         CHECK(bad == 0, "%s: %d partners out of id order", what, bad);
     }
@@ -90,7 +90,7 @@ void test_neighbour_list_vs_brute_force(void)
             /* after particles moved and the list was rebuilt */
             if (!dyn) {
                 run(&w, 50);
-                w.disp_max = 1e9; /* force a rebuild at the present positions */
+                w.nl.disp_max = 1e9; /* force a rebuild at the present positions */
                 build(&w);
                 compare(&w, what);
             }
@@ -112,7 +112,7 @@ void test_neighbour_slice_overflow(void)
     if (!make_world(&w, &d)) return;
     hcbd_world_place_random(&w, 400);
     build(&w);
-    needed = (int)w.npairs;
+    needed = (int)w.nl.npairs;
     run(&w, 1);
     h1 = hcbd_state_checksum(&w);
     /* exactly enough in total: unless the two shares are equal, one
@@ -125,7 +125,7 @@ void test_neighbour_slice_overflow(void)
     run(&v, 1);
     h2 = hcbd_state_checksum(&v);
 #ifdef _OPENMP
-    CHECK(v.n_rescans == 1, "the fallback did not run (%lld rescans)", (long long)v.n_rescans);
+    CHECK(v.nl.n_rescans == 1, "the fallback did not run (%lld rescans)", (long long)v.nl.n_rescans);
 #endif
     CHECK(h1 == h2, "fallback changed the trajectory");
     hcbd_world_destroy(&w);

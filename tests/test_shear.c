@@ -58,25 +58,25 @@ void test_le_neighbour_list(void)
             hcbd_get_positions(&w, xyz, 0);
             if (away) /* squeeze y into [rlist, Ly - rlist]: nothing crosses */
                 for (i = 0; i < 500; ++i)
-                    xyz[3 * i + 1] = w.rlist + xyz[3 * i + 1] / w.p.L[1] * (w.p.L[1] - 2 * w.rlist);
+                    xyz[3 * i + 1] = w.nl.rlist + xyz[3 * i + 1] / w.p.L[1] * (w.p.L[1] - 2 * w.nl.rlist);
             hcbd_world_set_positions(&w, 500, xyz);
             w.le_offset = offsets[o];
             hcbd_friction_average(&w, 1, out); /* builds the list */
             for (i = 0; i < 500; ++i) {
                 int32_t p;
-                for (p = w.nb_start[w.slot[i]]; p < w.nb_start[w.slot[i] + 1]; ++p) {
-                    int jd = w.id[w.nb_j[p]];
-                    if (le_r2(xyz, i, jd, w.p.L, offsets[o], NULL) >= w.rlist * w.rlist) ++extra;
+                for (p = w.nl.nb_start[w.slot[i]]; p < w.nl.nb_start[w.slot[i] + 1]; ++p) {
+                    int jd = w.id[w.nl.nb_j[p]];
+                    if (le_r2(xyz, i, jd, w.p.L, offsets[o], NULL) >= w.nl.rlist * w.nl.rlist) ++extra;
                     ++listed;
                 }
             }
             for (i = 0; i < 500; ++i)
                 for (j = i + 1; j < 500; ++j)
-                    if (le_r2(xyz, i, j, w.p.L, offsets[o], NULL) < w.rlist * w.rlist) {
+                    if (le_r2(xyz, i, j, w.p.L, offsets[o], NULL) < w.nl.rlist * w.nl.rlist) {
                         int32_t p, si = w.slot[i], ok = 0;
                         ++found;
-                        for (p = w.nb_start[si]; p < w.nb_start[si + 1]; ++p)
-                            if (w.id[w.nb_j[p]] == j) ok = 1;
+                        for (p = w.nl.nb_start[si]; p < w.nl.nb_start[si + 1]; ++p)
+                            if (w.id[w.nl.nb_j[p]] == j) ok = 1;
                         if (!ok) ++missing;
                     }
             if (o == 3) NOTE("offset %g, %s: %d pairs in range, all listed once", offsets[o],
@@ -166,7 +166,7 @@ void test_le_list_every_step(void)
         d.params.dt = 1e-3;
         d.params.L[0] = d.params.L[1] = d.params.L[2] = 8.75; /* 3 cells of 2.9 */
         if (!make_world(&w, &d)) return;
-        CHECK(w.nc[0] == 3 && w.nc[1] == 3, "cells %d %d", w.nc[0], w.nc[1]);
+        CHECK(w.nl.nc[0] == 3 && w.nl.nc[1] == 3, "cells %d %d", w.nl.nc[0], w.nl.nc[1]);
         hcbd_world_place_random(&w, N);
         /* from rest, not on the shear profile: then only the offset drift
            moves pairs across the boundary relative to each other */
@@ -181,19 +181,19 @@ void test_le_list_every_step(void)
                 for (j = i + 1; j < N; ++j)
                     if (le_r2(xyz, i, j, w.p.L, w.le_offset, NULL) < 2.5 * 2.5) {
                         int32_t p, si = w.slot[i], ok = 0;
-                        for (p = w.nb_start[si]; p < w.nb_start[si + 1]; ++p)
-                            if (w.id[w.nb_j[p]] == j) ok = 1;
+                        for (p = w.nl.nb_start[si]; p < w.nl.nb_start[si + 1]; ++p)
+                            if (w.id[w.nl.nb_j[p]] == j) ok = 1;
                         missing += !ok;
                         ++checked;
                     }
         }
         NOTE("gdot %g: %d pair-steps checked over 600 steps, %lld rebuilds", rates[g], checked,
-             (long long)w.n_rebuilds);
+             (long long)w.nl.n_rebuilds);
         CHECK(missing == 0, "gdot %g: %d of %d in-range pairs missing from the list", rates[g], missing,
               checked);
         if (g == 0)
-            CHECK(w.n_rebuilds < 300, "the list is rebuilt every step (%lld): reuse not exercised",
-                  (long long)w.n_rebuilds);
+            CHECK(w.nl.n_rebuilds < 300, "the list is rebuilt every step (%lld): reuse not exercised",
+                  (long long)w.nl.n_rebuilds);
         hcbd_world_destroy(&w);
     }
 }
