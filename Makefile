@@ -139,7 +139,7 @@ test-gibd: $(B)/run_tests_gibd | $(B)/logs
 	HCBD_TEST_SKIP=determinism_parallel ./$(B)/run_tests_gibd --quick test_determinism test_golden test_bad_param test_bad_input test_model_switch test_momentum test_checkpoint test_runtime $(call LOG,gibd)
 
 test-hcbd: $(B)/run_tests_hcbd | $(B)/logs
-	./$(B)/run_tests_hcbd test_hc_ $(call LOG,hcbd)
+	./$(B)/run_tests_hcbd test_hc_ test_golden $(call LOG,hcbd)
 
 # Under the sanitizers the longest statistical runs are left out: they
 # repeat code paths that shorter tests (the absolute one-step tests, the

@@ -687,14 +687,13 @@ typedef struct hcbd_hc_def {
     int pair_capacity;    /* transient pairs a polymer owns (partners of
                              higher id); HCBD_AUTO sizes it from the densest
                              polymer solution the capacity allows           */
+    int64_t max_pairs;    /* room of the fluid's neighbour list (pairs
+                             within 2h + skin); HCBD_AUTO: 1.5 times the
+                             mean count at nbar, plus 16 per blob (not kept
+                             in checkpoints: a loaded world has HCBD_AUTO)  */
     hcbd_hc_params params;
 } hcbd_hc_def;
 hcbd_hc_def hcbd_hc_def_default(void);
-
-typedef struct hcbd__grid {
-    int nc[3], ncell;
-    int32_t *start, *list, *sten_start, *sten;
-} hcbd__grid;
 
 /* Stress contributions, S_yx = -(1/V) sum y_ij F_ij,x (the flux of x
    momentum across y planes, the one Lees-Edwards shear measures; the
@@ -742,9 +741,20 @@ typedef struct hcbd_hc_world {
     hcbd_real *pair_l, *pair_eq, *pair_l2, *pair_eq2;
     int64_t npairs, n_created, n_coincident;
     int fresh_pairs;             /* 1: the next pair search keeps no pair   */
-    /* cells: fluid (edge >= max(2h, rc)) and polymer (edge >= rc) */
-    hcbd__grid gf, gp;
-    int32_t *fcell, *pcell;
+    /* Verlet lists of the engine (hcbd__nlist), all built together when a
+       blob has moved skin/2 since the last build: the fluid's half list
+       (within 2h + skin, cells at least max(2h, rc) + skin wide), the
+       polymers' half list (rc + skin), and each polymer's fluid blobs (lx,
+       within rc + skin, from the fluid cells) with its transpose, each
+       fluid blob's polymers in increasing id at xt_a[xt_start[i] ..] */
+    hcbd__nlist lf, lp, lx;
+    int32_t *xt_start, *xt_a, *scratch;
+    double skin;
+    /* the fluid's pair sums of one step in 64-bit fixed point (see
+       hcbd__fix): weights and pair forces */
+    int64_t *aW, *aF[3];
+    double qW, qF, limF;
+    uint64_t kick_key;           /* pair-noise key of the fluid step        */
     /* stress accumulation (hcbd_hc_stress_enable) */
     int stress_on;
     int64_t stress_steps;
@@ -2699,6 +2709,10 @@ static int hcbd__nl_scan(const hcbd__nlist *cl, const hcbd__pset *t, const hcbd_
             x1 = (int)floor((xs + rl) / cw);
             if (x1 - x0 > 2) x1 = x0 + 2;
             if (x1 - x0 > nc[0] - 1) x1 = x0 + nc[0] - 1; /* each cell once */
+        } else if (box->le && nc[1] < 3) {
+            /* every row meets the sheared boundary's images: all of x */
+            x0 = 0;
+            x1 = nc[0] - 1;
         }
         for (o0 = x0; o0 <= x1; ++o0)
             for (o2 = lo[2]; o2 <= hi[2]; ++o2) {
@@ -4543,6 +4557,7 @@ hcbd_hc_def hcbd_hc_def_default(void)
     d.fluid_capacity = 1024;
     d.polymer_capacity = 0;
     d.pair_capacity = HCBD_AUTO;
+    d.max_pairs = HCBD_AUTO;
     d.params = hcbd_hc_params_default();
     return d;
 }
@@ -4671,7 +4686,15 @@ static double hcbd__hc_reach(const hcbd_hc_params *p)
     return 2.0 * p->h > p->rc ? 2.0 * p->h : p->rc;
 }
 
-static void hcbd__grid_dims(const hcbd_hc_params *p, double cut, int nc[3])
+/* The Verlet skin of all three lists: a tenth of the longest range (blobs
+   move about 1e-4 h per step at Table I, so the lists last for hundreds of
+   steps), and the cells of a list of range cut. */
+static double hcbd__hc_skin(const hcbd_hc_params *p)
+{
+    return 0.1 * hcbd__hc_reach(p);
+}
+
+static void hcbd__hc_dims(const hcbd_hc_params *p, double cut, int nc[3])
 {
     int d;
     for (d = 0; d < 3; ++d) {
@@ -4680,29 +4703,39 @@ static void hcbd__grid_dims(const hcbd_hc_params *p, double cut, int nc[3])
     }
 }
 
-/* Neighbour cells of cell c, each once.  An axis with fewer than three
-   cells is scanned whole.  Under Lees-Edwards the row across the y
-   boundary is scanned whole in x, so the stencil does not depend on the
-   offset. */
-static int hcbd__stencil(const int nc[3], int le, int c, int32_t *out)
+/* Fixed-point bounds of the fluid sums (see hcbd__fixed_scales): a weight
+   w(0) = 1/(pi h^3) (exact), and a pair force that alone moves a blob 16 h
+   in one fluid step, 16 h m/dt_f^2 (at Table I the resolution is then 1e-7
+   in force, 5e-9 of a typical pressure term; beyond it the step stops with
+   HCBD_ERR_UNSTABLE). */
+static void hcbd__hc_fixed_scales(hcbd_hc_world *w)
 {
-    int cx = c / (nc[1] * nc[2]), cy = (c / nc[2]) % nc[1], cz = c % nc[2];
-    int ally = nc[1] < 3, allz = nc[2] < 3, ny = ally ? nc[1] : 3, nz = allz ? nc[2] : 3;
-    int a, b, e, cnt = 0;
-    for (a = 0; a < ny; ++a) {
-        int yr = ally ? a : cy - 1 + a, cross = ally || yr < 0 || yr >= nc[1];
-        int allx = nc[0] < 3 || (le && cross), nx = allx ? nc[0] : 3;
-        yr = (yr + nc[1]) % nc[1];
-        for (b = 0; b < nx; ++b) {
-            int xr = allx ? b : (cx - 1 + b + nc[0]) % nc[0];
-            for (e = 0; e < nz; ++e) {
-                int zr = allz ? e : (cz - 1 + e + nc[2]) % nc[2];
-                if (out) out[cnt] = (xr * nc[1] + yr) * nc[2] + zr;
-                ++cnt;
-            }
-        }
-    }
-    return cnt;
+    const hcbd_hc_params *p = &w->p;
+    const double dt_f = p->dt / p->substeps;
+    w->qW = hcbd__fix_scale(1.0 / (HCBD__PI * p->h * p->h * p->h));
+    w->limF = 16.0 * p->h * w->m / (dt_f * dt_f);
+    w->qF = hcbd__fix_scale(w->limF);
+}
+
+/* Room of the three lists, from the densest mean the capacities or nbar
+   allow: the fluid's half list (def->max_pairs, or 1.5 times the mean plus
+   16 per blob), the polymers' full list (twice the mean plus 32 each, at
+   most all pairs) and the cross list (the same for the fluid blobs within
+   rc + skin of a polymer). */
+static void hcbd__hc_rooms(const hcbd_hc_def *def, int64_t mp[3])
+{
+    const hcbd_hc_params *p = &def->params;
+    const double V = p->L[0] * p->L[1] * p->L[2], s = hcbd__hc_skin(p), c = 4.0 / 3.0 * HCBD__PI;
+    const double rf = 2.0 * p->h + s, rp = p->rc + s;
+    const double nf = def->fluid_capacity, np = def->polymer_capacity;
+    const double nfl = nf / V > p->nbar ? nf / V : p->nbar;
+    double per_f = 0.5 * nfl * c * rf * rf * rf, per_p = 2.0 * np / V * c * rp * rp * rp + 32.0;
+    double per_x = 2.0 * nfl * c * rp * rp * rp + 32.0;
+    if (per_p > np) per_p = np;
+    if (per_x > nf) per_x = nf;
+    mp[0] = def->max_pairs != HCBD_AUTO ? def->max_pairs : (int64_t)(nf * (1.5 * per_f + 16.0));
+    mp[1] = (int64_t)(np * per_p);
+    mp[2] = (int64_t)(np * per_x);
 }
 
 static int hcbd__hc_pair_cap(const hcbd_hc_def *def)
@@ -4720,9 +4753,11 @@ static size_t hcbd__hc_layout(const hcbd_hc_def *def, hcbd_hc_world *t, char *ba
 {
     size_t off = 0, R = sizeof(hcbd_real), I = sizeof(int32_t), D = sizeof(double);
     size_t nf = (size_t)def->fluid_capacity, np = (size_t)def->polymer_capacity;
-    size_t npc = np * (size_t)hcbd__hc_pair_cap(def);
+    size_t npc = np * (size_t)hcbd__hc_pair_cap(def), Q = sizeof(int64_t);
     const hcbd_hc_params *p = &def->params;
-    int le = p->gdot != 0, c, g;
+    const double s = hcbd__hc_skin(p);
+    int ncf[3], ncp[3], one[3] = {1, 1, 1}, d;
+    int64_t mp[3];
     hcbd_hc_world dummy;
     if (!t) t = &dummy;
 #define HCBD__HA(ptr, bytes) hcbd__take(base, &off, (bytes), (void **)&(t->ptr))
@@ -4731,29 +4766,28 @@ static size_t hcbd__hc_layout(const hcbd_hc_def *def, hcbd_hc_world *t, char *ba
     HCBD__HA(fn, nf * R); HCBD__HA(fP, nf * R); HCBD__HA(fPn2, nf * R);
     HCBD__HA(fax, nf * R); HCBD__HA(fay, nf * R); HCBD__HA(faz, nf * R);
     HCBD__HA(nvx, nf * R); HCBD__HA(nvy, nf * R); HCBD__HA(nvz, nf * R);
-    HCBD__HA(fs, 3 * nf * D); HCBD__HA(fcell, nf * I);
+    HCBD__HA(fs, 3 * nf * D);
     HCBD__HA(px, np * R); HCBD__HA(py, np * R); HCBD__HA(pz, np * R);
     HCBD__HA(pn, np * R); HCBD__HA(pmu, np * R);
     HCBD__HA(pFx, np * R); HCBD__HA(pFy, np * R); HCBD__HA(pFz, np * R);
     HCBD__HA(pux, np * R); HCBD__HA(puy, np * R); HCBD__HA(puz, np * R);
     HCBD__HA(pbx, np * R); HCBD__HA(pby, np * R); HCBD__HA(pbz, np * R);
-    HCBD__HA(pS, np * R); HCBD__HA(ps, 3 * np * D); HCBD__HA(pcell, np * I);
+    HCBD__HA(pS, np * R); HCBD__HA(ps, 3 * np * D);
     HCBD__HA(pair_n, np * I); HCBD__HA(pair_n2, np * I);
     HCBD__HA(pair_b, npc * I); HCBD__HA(pair_b2, npc * I);
     HCBD__HA(pair_l, npc * R); HCBD__HA(pair_l2, npc * R);
     HCBD__HA(pair_eq, npc * R); HCBD__HA(pair_eq2, npc * R);
     HCBD__HA(zig, sizeof(hcbd__zig));
-    for (g = 0; g < 2; ++g) {
-        hcbd__grid *gr = g ? &t->gp : &t->gf;
-        size_t nsten = 0, cap = g ? np : nf;
-        hcbd__grid_dims(p, g ? p->rc : hcbd__hc_reach(p), gr->nc);
-        gr->ncell = gr->nc[0] * gr->nc[1] * gr->nc[2];
-        for (c = 0; c < gr->ncell; ++c) nsten += (size_t)hcbd__stencil(gr->nc, le, c, NULL);
-        hcbd__take(base, &off, ((size_t)gr->ncell + 1) * I, (void **)&gr->start);
-        hcbd__take(base, &off, cap * I, (void **)&gr->list);
-        hcbd__take(base, &off, ((size_t)gr->ncell + 1) * I, (void **)&gr->sten_start);
-        hcbd__take(base, &off, nsten * I, (void **)&gr->sten);
-    }
+    HCBD__HA(aW, nf * Q);
+    for (d = 0; d < 3; ++d) HCBD__HA(aF[d], nf * Q);
+    hcbd__hc_rooms(def, mp);
+    hcbd__hc_dims(p, hcbd__hc_reach(p) + s, ncf);
+    hcbd__hc_dims(p, p->rc + s, ncp);
+    hcbd__nl_take(base, &off, &t->lf, nf, ncf, mp[0]);
+    hcbd__nl_take(base, &off, &t->lp, np, ncp, mp[1]);
+    hcbd__nl_take(base, &off, &t->lx, np, one, mp[2]);
+    HCBD__HA(xt_start, (nf + 1) * I); HCBD__HA(xt_a, (size_t)mp[2] * I);
+    HCBD__HA(scratch, ((nf > np ? nf : np) + 1) * I);
 #undef HCBD__HA
     return off + HCBD__ALIGN;
 }
@@ -4774,17 +4808,10 @@ static hcbd_result hcbd__hc_check_def(const hcbd_hc_def *def, char *msg, size_t 
     HCBD__CHECK(def->pair_capacity == HCBD_AUTO ||
                     (def->pair_capacity >= 0 && def->pair_capacity <= (1 << 20)),
                 "pair_capacity", def->pair_capacity);
+    HCBD__CHECK(def->max_pairs == HCBD_AUTO ||
+                    (def->max_pairs >= 1 && def->max_pairs <= ((int64_t)1 << 40)),
+                "max_pairs", def->max_pairs);
     return HCBD_OK;
-}
-
-static void hcbd__grid_stencils(hcbd__grid *g, int le)
-{
-    int c, k = 0;
-    for (c = 0; c < g->ncell; ++c) {
-        g->sten_start[c] = k;
-        k += hcbd__stencil(g->nc, le, c, g->sten + k);
-    }
-    g->sten_start[g->ncell] = k;
 }
 
 size_t hcbd_hc_world_bytes(const hcbd_hc_def *def)
@@ -4834,8 +4861,10 @@ hcbd_result hcbd_hc_world_init(hcbd_hc_world *w, const hcbd_hc_def *def, void *m
     w->key_fpair = hcbd__mix64(p->seed ^ hcbd__mix64(HCBD__STREAM_FPAIR));
     w->key_lambda = hcbd__mix64(p->seed ^ hcbd__mix64(HCBD__STREAM_LAMBDA));
     w->key_poly = hcbd__mix64(p->seed ^ hcbd__mix64(HCBD__STREAM_POLY));
-    hcbd__grid_stencils(&w->gf, w->le_on);
-    hcbd__grid_stencils(&w->gp, w->le_on);
+    w->skin = hcbd__hc_skin(p);
+    w->lf.rlist = 2.0 * p->h + w->skin;
+    w->lp.rlist = w->lx.rlist = p->rc + w->skin;
+    hcbd__hc_fixed_scales(w);
     hcbd__zig_init(w->zig);
     w->live = HCBD__LIVE;
     return HCBD_OK;
@@ -5106,39 +5135,12 @@ hcbd_result hcbd_hc_place_polymers_random(hcbd_hc_world *w, int n)
     return hcbd__hc_poly_finish(w, n);
 }
 
-/* >>HCBD: cells and pair passes.  Every particle sums over its partners
-   itself (each pair is evaluated from both sides with bitwise opposite
-   results), in a fixed cell and id order: no writes to shared memory, and
-   the same bits for any thread count. */
-static int hcbd__grid_cell(const hcbd__grid *g, const double L[3], double x, double y, double z)
-{
-    double r[3];
-    int c[3], d;
-    r[0] = x; r[1] = y; r[2] = z;
-    for (d = 0; d < 3; ++d) {
-        c[d] = (int)(r[d] * g->nc[d] / L[d]);
-        if (c[d] >= g->nc[d]) c[d] = g->nc[d] - 1;
-        if (c[d] < 0) c[d] = 0;
-    }
-    return (c[0] * g->nc[1] + c[1]) * g->nc[2] + c[2];
-}
-
-/* Counting sort: stable, so ids increase within a cell. */
-static void hcbd__grid_build(hcbd__grid *g, const double L[3], int n, const hcbd_real *x,
-                             const hcbd_real *y, const hcbd_real *z, int32_t *cell)
-{
-    int i, c;
-    for (c = 0; c <= g->ncell; ++c) g->start[c] = 0;
-    for (i = 0; i < n; ++i) {
-        cell[i] = hcbd__grid_cell(g, L, x[i], y[i], z[i]);
-        g->start[cell[i] + 1]++;
-    }
-    for (c = 0; c < g->ncell; ++c) g->start[c + 1] += g->start[c];
-    for (i = 0; i < n; ++i) g->list[g->start[cell[i]]++] = i;
-    for (c = g->ncell; c > 0; --c) g->start[c] = g->start[c - 1];
-    g->start[0] = 0;
-}
-
+/* >>HCBD: lists and pair passes.  Fluid and polymer pairs run over the
+   engine's half lists, owner = the lower id, in the slabs of
+   hcbd__nl_owners, with 64-bit fixed-point sums (exactly opposite on the
+   two sides, so momentum is exact, and the same bits for any thread count
+   or list build).  The coupling passes run over the cross list and its
+   transpose, each particle summing its own partners in increasing id. */
 static inline hcbd__box hcbd__hc_box(const hcbd_hc_world *w)
 {
     hcbd__box b;
@@ -5148,40 +5150,162 @@ static inline hcbd__box hcbd__hc_box(const hcbd_hc_world *w)
     return b;
 }
 
-/* Loop over the particles j of grid g near cell c: sets j. */
-#define HCBD__NEAR(g, c, j)                                                    \
-    for (int hcbd__s = (g)->sten_start[c]; hcbd__s < (g)->sten_start[(c) + 1]; ++hcbd__s) \
-        for (int hcbd__q = (g)->start[(g)->sten[hcbd__s]],                     \
-                 hcbd__e = (g)->start[(g)->sten[hcbd__s] + 1];                 \
-             hcbd__q < hcbd__e && ((j) = (g)->list[hcbd__q], 1); ++hcbd__q)
+static hcbd__pset hcbd__hc_pset(const hcbd_hc_world *w, int poly)
+{
+    hcbd__pset s;
+    s.x = poly ? w->px : w->fx;
+    s.y = poly ? w->py : w->fy;
+    s.z = poly ? w->pz : w->fz;
+    s.id = NULL; /* both species are stored in id order */
+    s.n = poly ? w->np : w->nf;
+    return s;
+}
+
+static hcbd_result hcbd__hc_phi_fail(hcbd_hc_world *w, int64_t step, int a, double n)
+{
+    return hcbd__fail(&w->err, HCBD_ERR_PARAM, step, a,
+                      "polymer %d: volume fraction phi = n/n_max = %.17g >= 1 "
+                      "(Flory-Huggins needs phi < 1)", a, n / w->p.n_max);
+}
+
+/* When the polymer list overflows: the first polymer with phi >= 1, found
+   from the cells (one polymer's partners at a time in nb_tmp), or -1. */
+static int hcbd__hc_dense(hcbd_hc_world *w, const hcbd__pset *sp, const hcbd__box *box,
+                          double *n_out)
+{
+    const double rc = w->p.rc, sg = w->p.sigma, A = hcbd__rapid_A(sg, rc);
+    const int room = w->lp.max_pairs < w->np ? (int)w->lp.max_pairs : w->np;
+    int a, k;
+    for (a = 0; a < w->np; ++a) {
+        double r[3], s = A * (rc - sg) * (rc + sg);
+        int cnt;
+        r[0] = w->px[a]; r[1] = w->py[a]; r[2] = w->pz[a];
+        cnt = hcbd__nl_scan(&w->lp, sp, box, r, -1, rc, w->lp.nb_tmp, room);
+        for (k = 0; k < cnt && k < room; ++k) {
+            const int b = w->lp.nb_tmp[k];
+            double d[3];
+            if (b == a) continue;
+            hcbd__delta_box(box, r[0] - w->px[b], r[1] - w->py[b], r[2] - w->pz[b], d);
+            s += hcbd__rapid(sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]), sg, rc, A);
+        }
+        if (!(s < w->p.n_max)) {
+            *n_out = s;
+            return a;
+        }
+    }
+    return -1;
+}
+
+/* Builds the three lists at the present positions unless every blob is
+   still within skin/2 of where the last build saw it. */
+static hcbd_result hcbd__hc_lists(hcbd_hc_world *w, int64_t step)
+{
+    const hcbd__pset sf = hcbd__hc_pset(w, 0), sp = hcbd__hc_pset(w, 1);
+    const hcbd__box box = hcbd__hc_box(w);
+    const double dm = w->lf.disp_max > w->lp.disp_max ? w->lf.disp_max : w->lp.disp_max;
+    const int nt = w->p.threads;
+    int bad, most = 0, i, a;
+    int32_t *cur = w->scratch;
+    if (w->lf.list_valid && w->lx.list_valid && 2.0 * dm + 3.0 * w->lf.le_drift <= w->skin)
+        return HCBD_OK;
+    w->lx.list_valid = 0;
+    hcbd__nl_sort(&w->lf, w->p.L, &sf);
+    if (hcbd__nl_pairs(&w->lf, &w->lf, &sf, &sf, &box, 1, nt) < 0)
+        return hcbd__fail(&w->err, HCBD_ERR_CAPACITY, step, -1,
+                          "fluid neighbour list needs more than max_pairs = %lld pairs (range "
+                          "2h + skin = %g); raise hcbd_hc_def.max_pairs",
+                          (long long)w->lf.max_pairs, w->lf.rlist);
+    if ((bad = hcbd__nl_degree(&w->lf, w->nf, w->scratch, &most)) >= 0)
+        return hcbd__fail(&w->err, HCBD_ERR_CAPACITY, step, bad,
+                          "fluid blob %d has %d neighbours within %g, more than the %d its "
+                          "fixed-point sums hold", bad, most, w->lf.rlist, HCBD__FIX_DEG);
+    hcbd__nl_sort(&w->lp, w->p.L, &sp);
+    if (hcbd__nl_pairs(&w->lp, &w->lp, &sp, &sp, &box, 0, nt) < 0) {
+        double n = 0;
+        if ((bad = hcbd__hc_dense(w, &sp, &box, &n)) >= 0) return hcbd__hc_phi_fail(w, step, bad, n);
+        return hcbd__fail(&w->err, HCBD_ERR_CAPACITY, step, -1,
+                          "polymer neighbour list needs more than its %lld pairs (range rc + "
+                          "skin = %g): the polymers are far denser than polymer_capacity "
+                          "spread over the box", (long long)w->lp.max_pairs, w->lp.rlist);
+    }
+    if (hcbd__nl_pairs(&w->lx, &w->lf, &sp, &sf, &box, 0, nt) < 0)
+        return hcbd__fail(&w->err, HCBD_ERR_CAPACITY, step, -1,
+                          "polymer-fluid list needs more than its %lld pairs (range rc + skin "
+                          "= %g): the fluid is far denser than nbar", (long long)w->lx.max_pairs,
+                          w->lx.rlist);
+    /* the transpose by counting sort; polymers come in increasing id */
+    for (i = 0; i <= w->nf; ++i) w->xt_start[i] = 0;
+    for (i = 0; i < (int)w->lx.npairs; ++i) w->xt_start[w->lx.nb_j[i] + 1]++;
+    for (i = 0; i < w->nf; ++i) {
+        w->xt_start[i + 1] += w->xt_start[i];
+        cur[i] = w->xt_start[i];
+    }
+    for (a = 0; a < w->np; ++a)
+        for (i = w->lx.nb_start[a]; i < w->lx.nb_start[a + 1]; ++i) w->xt_a[cur[w->lx.nb_j[i]]++] = a;
+    hcbd__nl_done(&w->lf, &sf);
+    hcbd__nl_done(&w->lp, &sp);
+    w->lx.list_valid = 1;
+    return HCBD_OK;
+}
+
+/* Forget the lists (positions were set from outside). */
+static void hcbd__hc_lists_stale(hcbd_hc_world *w)
+{
+    w->lf.list_valid = w->lp.list_valid = w->lx.list_valid = 0;
+}
+
+/* M4 kernel over c0 = 1/(4 pi h^3) at q = r/h < 2 */
+static inline double hcbd__m4u(double q)
+{
+    const double a = 2.0 - q, b = q < 1.0 ? 1.0 - q : 0.0;
+    return a * a * a - 4.0 * b * b * b;
+}
+
+static int hcbd__hc_dens_owners(void *ctx, int q0, int q1)
+{
+    hcbd_hc_world *w = (hcbd_hc_world *)ctx;
+    const double h = w->p.h, cut2 = 4.0 * h * h, ih = 1.0 / h;
+    const double cq = w->qW / (4.0 * HCBD__PI * h * h * h);
+    const hcbd__box box = hcbd__hc_box(w);
+    const hcbd_real *HCBD__RESTRICT x = w->fx, *HCBD__RESTRICT y = w->fy, *HCBD__RESTRICT z = w->fz;
+    const int32_t *HCBD__RESTRICT nb = w->lf.nb_j;
+    int64_t *HCBD__RESTRICT aW = w->aW;
+    int q;
+    for (q = q0; q < q1; ++q) {
+        const int i = w->lf.perm[q];
+        const double xi = x[i], yi = y[i], zi = z[i];
+        int64_t s = 0;
+        int32_t p;
+        for (p = w->lf.nb_start[i]; p < w->lf.nb_start[i + 1]; ++p) {
+            const int j = nb[p];
+            double d[3], r2;
+            hcbd__delta_box(&box, xi - x[j], yi - y[j], zi - z[j], d);
+            r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+            if (r2 < cut2) {
+                const int64_t v = hcbd__fix(cq * hcbd__m4u(sqrt(r2) * ih));
+                s += v;
+                aW[j] += v;
+            }
+        }
+        aW[i] += s;
+    }
+    return INT_MAX;
+}
 
 /* Fluid densities and Tait pressures (MODEL 6). */
 static void hcbd__hc_fluid_density(hcbd_hc_world *w)
 {
     const int n = w->nf, nt = w->p.threads;
-    const double h = w->p.h, cut2 = 4.0 * h * h, c0 = 1.0 / (4.0 * HCBD__PI * h * h * h);
+    const double h = w->p.h, w0 = 1.0 / (HCBD__PI * h * h * h), inv_q = 1.0 / w->qW;
     const double inv_nbar = 1.0 / w->p.nbar, P0 = w->p.P0;
-    const hcbd__box box = hcbd__hc_box(w);
     int i;
     (void)nt;
+    hcbd__zero64(w->aW, n);
+    hcbd__nl_owners(&w->lf, n, nt, w, hcbd__hc_dens_owners);
     HCBD__OMP(omp parallel for num_threads(nt) schedule(static))
     for (i = 0; i < n; ++i) {
-        const double xi = w->fx[i], yi = w->fy[i], zi = w->fz[i];
-        double s = 4.0 * c0, x, x7; /* w(0) */
-        int j;
-        HCBD__NEAR(&w->gf, w->fcell[i], j) {
-            double d[3], r2;
-            if (j == i) continue;
-            hcbd__delta_box(&box, xi - w->fx[j], yi - w->fy[j], zi - w->fz[j], d);
-            r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-            if (r2 < cut2) {
-                double q = sqrt(r2) / h, a = 2.0 - q;
-                s += q >= 1.0 ? c0 * a * a * a
-                              : c0 * (a * a * a - 4.0 * (1.0 - q) * (1.0 - q) * (1.0 - q));
-            }
-        }
-        x = s * inv_nbar;
-        x7 = x * x * x;
+        const double s = w0 + (double)w->aW[i] * inv_q, x = s * inv_nbar;
+        double x7 = x * x * x;
         x7 = x7 * x7 * x;
         w->fn[i] = (hcbd_real)s;
         w->fP[i] = (hcbd_real)(P0 * (x7 - 1.0));
@@ -5203,19 +5327,17 @@ static int hcbd__hc_poly_density(hcbd_hc_world *w)
     for (i = 0; i < n; ++i) {
         const double xi = w->px[i], yi = w->py[i], zi = w->pz[i];
         double s = w0, phi;
-        int j;
-        HCBD__NEAR(&w->gp, w->pcell[i], j) {
+        int32_t p;
+        for (p = w->lp.nb_start[i]; p < w->lp.nb_start[i + 1]; ++p) {
+            const int j = w->lp.nb_j[p];
             double d[3], r2;
             if (j == i) continue;
             hcbd__delta_box(&box, xi - w->px[j], yi - w->py[j], zi - w->pz[j], d);
             r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-            if (r2 < cut2) {
-                double r = sqrt(r2);
-                s += hcbd__rapid(r, sg, rc, A);
-            }
+            if (r2 < cut2) s += hcbd__rapid(sqrt(r2), sg, rc, A);
         }
-        w->pn[i] = (hcbd_real)s;
         phi = s * inv_nmax;
+        w->pn[i] = (hcbd_real)s;
         if (!(phi < 1.0)) {
             if (i < bad) bad = i;
             w->pmu[i] = 0;
@@ -5232,10 +5354,11 @@ static inline double hcbd__leq(double r, double rc)
     return u * u;
 }
 
-/* Transient pairs at the present positions: the partners b > a within rc,
-   merged with the old list (both sorted by id) so a persisting pair keeps
-   its lambda, a new one starts at lambda_eq, a departed one is dropped.
-   Returns the first polymer whose pairs overflow pair_cap, or -1. */
+/* Transient pairs at the present positions: the partners b > a within rc
+   (from the list, already in increasing id), merged with the old list
+   so a persisting pair keeps its lambda, a new one starts at lambda_eq, a
+   departed one is dropped.  Returns the first polymer whose pairs overflow
+   pair_cap, or -1. */
 static int hcbd__hc_pairs(hcbd_hc_world *w, int *need)
 {
     const int n = w->np, nt = w->p.threads, cap = w->pair_cap;
@@ -5251,24 +5374,18 @@ static int hcbd__hc_pairs(hcbd_hc_world *w, int *need)
         hcbd_real *nl = w->pair_l2 + (size_t)a * cap, *ne = w->pair_eq2 + (size_t)a * cap;
         const int32_t *ob = w->pair_b + (size_t)a * cap;
         const hcbd_real *ol = w->pair_l + (size_t)a * cap;
-        int cnt = 0, k, o = 0, on = w->fresh_pairs ? 0 : w->pair_n[a], b;
-        HCBD__NEAR(&w->gp, w->pcell[a], b) {
+        int cnt = 0, k, o = 0, on = w->fresh_pairs ? 0 : w->pair_n[a];
+        int32_t p;
+        for (p = w->lp.nb_start[a]; p < w->lp.nb_start[a + 1]; ++p) {
+            const int b = w->lp.nb_j[p];
             double d[3], r2;
             if (b <= a) continue;
             hcbd__delta_box(&box, xa - w->px[b], ya - w->py[b], za - w->pz[b], d);
             r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
             if (r2 >= cut2) continue;
             if (cnt < cap) {
-                /* insertion by id; lists are short */
-                int q = cnt;
-                hcbd_real e = (hcbd_real)hcbd__leq(sqrt(r2), rc);
-                while (q > 0 && nb[q - 1] > b) {
-                    nb[q] = nb[q - 1];
-                    ne[q] = ne[q - 1];
-                    --q;
-                }
-                nb[q] = b;
-                ne[q] = e;
+                nb[cnt] = b;
+                ne[cnt] = (hcbd_real)hcbd__leq(sqrt(r2), rc);
             }
             ++cnt;
         }
@@ -5309,7 +5426,10 @@ static int hcbd__hc_find(const hcbd_hc_world *w, int a, int b)
     return lo < w->pair_n[a] && l[lo] == b ? lo : -1;
 }
 
-/* Polymer forces: Flory-Huggins and transient (MODEL 8). */
+/* Polymer forces: Flory-Huggins and transient (MODEL 8).  Each polymer
+   sums all its partners itself (both sides of a pair give bitwise opposite
+   terms), in increasing id: polymer forces span far more decades than a
+   fixed-point range could hold at full precision. */
 static void hcbd__hc_poly_forces(hcbd_hc_world *w)
 {
     const int n = w->np, nt = w->p.threads, tr = w->transient, fc = w->has_fc;
@@ -5324,9 +5444,13 @@ static void hcbd__hc_poly_forces(hcbd_hc_world *w)
     HCBD__OMP(omp parallel for num_threads(nt) schedule(static) reduction(+:coinc))
     for (a = 0; a < n; ++a) {
         const double xa = w->px[a], ya = w->py[a], za = w->pz[a], mua = w->pmu[a];
+        const int32_t *pb = w->pair_b + a * cap;
+        const int pn = tr ? w->pair_n[a] : 0;
         double F[3] = {0, 0, 0}, sc = 0, st = 0;
-        int b;
-        HCBD__NEAR(&w->gp, w->pcell[a], b) {
+        int k = 0;
+        int32_t p;
+        for (p = w->lp.nb_start[a]; p < w->lp.nb_start[a + 1]; ++p) {
+            const int b = w->lp.nb_j[p];
             double d[3], r2, r, fr = 0, ft = 0;
             if (b == a) continue;
             hcbd__delta_box(&box, xa - w->px[b], ya - w->py[b], za - w->pz[b], d);
@@ -5342,10 +5466,18 @@ static void hcbd__hc_poly_forces(hcbd_hc_world *w)
                 fr = -cfh * (mua + w->pmu[b]) * wd / r;
             }
             if (tr) {
-                int lo = a < b ? a : b, hi = a < b ? b : a, k = hcbd__hc_find(w, lo, hi);
-                if (k >= 0) {
+                /* a's own pairs run in step with the list (both in
+                   increasing id); one of lower id owns the pair */
+                int kk = -1;
+                if (b > a) {
+                    while (k < pn && pb[k] < b) ++k;
+                    if (k < pn && pb[k] == b) kk = k;
+                } else {
+                    kk = hcbd__hc_find(w, b, a);
+                }
+                if (kk >= 0) {
                     double u = 1.0 - r / rc;
-                    ft = alpha * (w->pair_l[lo * cap + k] - u * u) * (-2.0 * u / rc) / r;
+                    ft = alpha * (w->pair_l[(b > a ? a : b) * cap + kk] - u * u) * (-2.0 * u / rc) / r;
                 }
             }
             F[0] += (fr + ft) * d[0];
@@ -5384,9 +5516,10 @@ static int hcbd__hc_interp(hcbd_hc_world *w)
     for (a = 0; a < n; ++a) {
         const double xa = w->px[a], ya = w->py[a], za = w->pz[a];
         double S = 0, dv[3] = {0, 0, 0}, vref[3] = {0, 0, 0}, ydy = 0, v[3];
-        const int c = hcbd__grid_cell(&w->gf, w->p.L, xa, ya, za);
-        int i, first = 1;
-        HCBD__NEAR(&w->gf, c, i) {
+        int first = 1;
+        int32_t p;
+        for (p = w->lx.nb_start[a]; p < w->lx.nb_start[a + 1]; ++p) {
+            const int i = w->lx.nb_j[p];
             double d[3], r2, r, wt, u[3];
             int k = hcbd__delta_box(&box, xa - w->fx[i], ya - w->fy[i], za - w->fz[i], d);
             r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
@@ -5425,7 +5558,8 @@ static int hcbd__hc_interp(hcbd_hc_world *w)
     return bad == INT_MAX ? -1 : bad;
 }
 
-/* Polymer forces redistributed onto the fluid blobs with the same psi. */
+/* Polymer forces redistributed onto the fluid blobs with the same psi,
+   each blob over its polymers in increasing id (the transpose list). */
 static void hcbd__hc_redistribute(hcbd_hc_world *w)
 {
     const int n = w->nf, nt = w->p.threads;
@@ -5437,16 +5571,15 @@ static void hcbd__hc_redistribute(hcbd_hc_world *w)
     for (i = 0; i < n; ++i) {
         const double xi = w->fx[i], yi = w->fy[i], zi = w->fz[i];
         double F[3] = {0, 0, 0};
-        const int c = hcbd__grid_cell(&w->gp, w->p.L, xi, yi, zi);
-        int a;
-        HCBD__NEAR(&w->gp, c, a) {
+        int32_t p;
+        for (p = w->xt_start[i]; p < w->xt_start[i + 1]; ++p) {
+            const int a = w->xt_a[p];
             double d[3], r2, r, psi;
             hcbd__delta_box(&box, w->px[a] - xi, w->py[a] - yi, w->pz[a] - zi, d);
             r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
             if (r2 >= cut2) continue;
             r = sqrt(r2);
-            psi = hcbd__rapid(r, sg, rc, A) /
-                  w->fn[i] / w->pS[a];
+            psi = hcbd__rapid(r, sg, rc, A) / w->fn[i] / w->pS[a];
             F[0] += psi * w->pFx[a];
             F[1] += psi * w->pFy[a];
             F[2] += psi * w->pFz[a];
@@ -5475,9 +5608,9 @@ static inline double hcbd__morris_f(double two_eta, double r, double h, double c
 /* HCBD_PAIR_SHARDLOW for the fluid: each pair's Morris friction and noise
    solved exactly in turn (the pair's relative velocity is an Ornstein-
    Uhlenbeck process with rate 2 f/m and variance 2 kT/m, as in
-   hcbd__shardlow), pairs i < j by i, then by cell order of j; serial, so
-   the bits do not depend on threads.  The viscous and noise stresses go
-   together into the viscous column. */
+   hcbd__shardlow), owners i by increasing id, partners j > i by increasing
+   id; serial, so the bits depend neither on threads nor on list builds.
+   The viscous and noise stresses go together into the viscous column. */
 static void hcbd__hc_fluid_shardlow(hcbd_hc_world *w, double dt, uint64_t skey)
 {
     const int n = w->nf, noise = w->noise_f, stress = w->stress_on;
@@ -5490,12 +5623,11 @@ static void hcbd__hc_fluid_shardlow(hcbd_hc_world *w, double dt, uint64_t skey)
     for (i = 0; i < n; ++i) {
         const double xi = w->fx[i], yi = w->fy[i], zi = w->fz[i], ni = w->fn[i];
         double sv = 0;
-        int j;
-        HCBD__NEAR(&w->gf, w->fcell[i], j) {
+        int32_t p;
+        for (p = w->lf.nb_start[i]; p < w->lf.nb_start[i + 1]; ++p) {
+            const int j = w->lf.nb_j[p];
             double d[3], r2, om, c, P[3];
-            int k;
-            if (j <= i) continue;
-            k = hcbd__delta_box(&box, xi - w->fx[j], yi - w->fy[j], zi - w->fz[j], d);
+            int k = hcbd__delta_box(&box, xi - w->fx[j], yi - w->fy[j], zi - w->fz[j], d);
             r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
             if (r2 >= cut2) continue;
             om = -expm1(-2.0 * dt * inv_m * hcbd__morris_f(two_eta, sqrt(r2), h, c1, ni, w->fn[j]));
@@ -5523,74 +5655,66 @@ static void hcbd__hc_fluid_shardlow(hcbd_hc_world *w, double dt, uint64_t skey)
     }
 }
 
-/* Fluid velocities of t + dt (MODEL 6) into the scratch velocities.  With
-   the Shardlow sweep the viscous pairs are done and only pressure, body and
-   polymer forces remain. */
-static void hcbd__hc_fluid_kick(hcbd_hc_world *w, double dt, uint64_t skey)
+/* The fluid pair forces of the owners: pressure, and with Euler pairs the
+   Morris friction and the pair noise, dp = sqrt(2 kT f_ij dt) zeta_ij on
+   the owner i (the lower id) and minus on j (2018 eq. 18-19). */
+HCBD__INLINE int hcbd__hc_kick_body(hcbd_hc_world *w, int q0, int q1, const int visc,
+                                    const int noise, const int stress)
 {
-    const int n = w->nf, nt = w->p.threads, stress = w->stress_on;
-    const int visc = w->p.pair_integrator == HCBD_PAIR_EULER, noise = visc && w->noise_f;
-    const int rp = w->p.reverse_poiseuille;
     const double h = w->p.h, cut2 = 4.0 * h * h, c1 = 1.0 / (4.0 * HCBD__PI * h * h * h * h);
-    const double two_eta = 2.0 * w->p.eta, dt_m = dt * w->inv_m;
+    const double two_eta = 2.0 * w->p.eta, dt = w->p.dt / w->p.substeps;
     const double sn = noise ? sqrt(2.0 * w->p.kT / dt) : 0.0, vj = w->le_vjump;
-    const double gx = w->p.g[0], gy = w->p.g[1], gz = w->p.g[2], half = 0.5 * w->p.L[1];
+    const double qF = w->qF, lim = w->limF;
+    const uint64_t skey = w->kick_key;
     const hcbd__box box = hcbd__hc_box(w);
-    double gmean = 0;
-    int i;
-    (void)nt;
-    if (rp) {
-        /* halves holding different numbers of blobs would get a net force
-           and the whole fluid would drift: remove the mean */
-        for (i = 0; i < n; ++i) gmean += w->fy[i] >= half ? 1.0 : -1.0;
-        gmean /= n;
-    }
-    HCBD__OMP(omp parallel for num_threads(nt) schedule(static))
-    for (i = 0; i < n; ++i) {
-        const double xi = w->fx[i], yi = w->fy[i], zi = w->fz[i];
-        const double vxi = w->fvx[i], vyi = w->fvy[i], vzi = w->fvz[i];
-        const double Pi = w->fPn2[i], ni = w->fn[i];
-        double F[3], sp = 0, sv = 0, sz = 0, sgn;
-        int j;
-        F[0] = w->fax[i]; F[1] = w->fay[i]; F[2] = w->faz[i];
-        HCBD__NEAR(&w->gf, w->fcell[i], j) {
-            double d[3], r2, r, fp, f = 0, Fv[3] = {0, 0, 0};
-            int k;
-            if (j == i) continue;
-            k = hcbd__delta_box(&box, xi - w->fx[j], yi - w->fy[j], zi - w->fz[j], d);
+    const hcbd_real *HCBD__RESTRICT x = w->fx, *HCBD__RESTRICT y = w->fy, *HCBD__RESTRICT z = w->fz;
+    const hcbd_real *HCBD__RESTRICT vx = w->fvx, *HCBD__RESTRICT vy = w->fvy;
+    const hcbd_real *HCBD__RESTRICT vz = w->fvz, *HCBD__RESTRICT Pn2 = w->fPn2, *HCBD__RESTRICT fn = w->fn;
+    int64_t *HCBD__RESTRICT aFx = w->aF[0], *HCBD__RESTRICT aFy = w->aF[1];
+    int64_t *HCBD__RESTRICT aFz = w->aF[2];
+    int q, worst = INT_MAX;
+    for (q = q0; q < q1; ++q) {
+        const int i = w->lf.perm[q];
+        const double xi = x[i], yi = y[i], zi = z[i], vxi = vx[i], vyi = vy[i], vzi = vz[i];
+        const double Pi = Pn2[i], ni = fn[i];
+        int64_t fx = 0, fy = 0, fz = 0;
+        double sp = 0, sv = 0, sz = 0;
+        int bad = 0;
+        int32_t p;
+        for (p = w->lf.nb_start[i]; p < w->lf.nb_start[i + 1]; ++p) {
+            const int j = w->lf.nb_j[p];
+            double d[3], r2, r, fp, F[3];
+            int64_t u;
+            const int k = hcbd__delta_box(&box, xi - x[j], yi - y[j], zi - z[j], d);
             r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
             if (r2 >= cut2) continue;
             r = sqrt(r2);
             /* -(P_i/n_i^2 + P_j/n_j^2) w' e_ij */
-            fp = r > 0 ? -(Pi + w->fPn2[j]) * hcbd__m4d(r, h, c1) / r : 0.0;
+            fp = r > 0 ? -(Pi + Pn2[j]) * hcbd__m4d(r, h, c1) / r : 0.0;
+            F[0] = fp * d[0]; F[1] = fp * d[1]; F[2] = fp * d[2];
+            if (stress) sp += d[1] * F[0];
             if (visc) {
-                f = hcbd__morris_f(two_eta, r, h, c1, ni, w->fn[j]);
-                Fv[0] = -f * (vxi - (w->fvx[j] + k * vj));
-                Fv[1] = -f * (vyi - w->fvy[j]);
-                Fv[2] = -f * (vzi - w->fvz[j]);
+                const double f = hcbd__morris_f(two_eta, r, h, c1, ni, fn[j]);
+                const double Fv0 = -f * (vxi - (vx[j] + k * vj));
+                F[0] += Fv0;
+                F[1] += -f * (vyi - vy[j]);
+                F[2] += -f * (vzi - vz[j]);
+                if (stress) sv += d[1] * Fv0;
+                if (noise) {
+                    double zz[3], s = sn * sqrt(f);
+                    hcbd__deviates3(w->zig, HCBD_NOISE_GAUSS, hcbd__pair_key(skey, i, j), zz);
+                    F[0] += s * zz[0];
+                    F[1] += s * zz[1];
+                    F[2] += s * zz[2];
+                    if (stress) sz += d[1] * s * zz[0];
+                }
             }
-            F[0] += fp * d[0] + Fv[0];
-            F[1] += fp * d[1] + Fv[1];
-            F[2] += fp * d[2] + Fv[2];
-            if (stress) {
-                sp += 0.5 * d[1] * fp * d[0];
-                sv += 0.5 * d[1] * Fv[0];
-            }
-            if (noise) {
-                /* dp = sqrt(2 kT f_ij dt) zeta_ij on i, minus on j (2018 eq. 18-19) */
-                double z[3], s;
-                hcbd__deviates3(w->zig, HCBD_NOISE_GAUSS, hcbd__pair_key(skey, i, j), z);
-                s = (i < j ? sn : -sn) * sqrt(f);
-                F[0] += s * z[0];
-                F[1] += s * z[1];
-                F[2] += s * z[2];
-                if (stress) sz += 0.5 * d[1] * s * z[0];
-            }
+            bad |= !(fabs(F[0]) <= lim && fabs(F[1]) <= lim && fabs(F[2]) <= lim);
+            u = hcbd__fix(F[0] * qF); fx += u; aFx[j] -= u;
+            u = hcbd__fix(F[1] * qF); fy += u; aFy[j] -= u;
+            u = hcbd__fix(F[2] * qF); fz += u; aFz[j] -= u;
         }
-        sgn = rp ? (yi >= half ? 1.0 : -1.0) - gmean : 1.0;
-        w->nvx[i] = (hcbd_real)(vxi + dt_m * F[0] + sgn * gx * dt);
-        w->nvy[i] = (hcbd_real)(vyi + dt_m * F[1] + sgn * gy * dt);
-        w->nvz[i] = (hcbd_real)(vzi + dt_m * F[2] + sgn * gz * dt);
+        aFx[i] += fx; aFy[i] += fy; aFz[i] += fz;
         if (stress) {
             w->fs[3 * i] = sp;
             if (visc) {
@@ -5598,7 +5722,67 @@ static void hcbd__hc_fluid_kick(hcbd_hc_world *w, double dt, uint64_t skey)
                 w->fs[3 * i + 2] = sz;
             }
         }
+        if (bad && i < worst) worst = i;
     }
+    return worst;
+}
+
+static int hcbd__hc_kick_p(void *c, int q0, int q1)
+{
+    return hcbd__hc_kick_body((hcbd_hc_world *)c, q0, q1, 0, 0, 0);
+}
+
+static int hcbd__hc_kick_v(void *c, int q0, int q1)
+{
+    return hcbd__hc_kick_body((hcbd_hc_world *)c, q0, q1, 1, 0, 0);
+}
+
+static int hcbd__hc_kick_vn(void *c, int q0, int q1)
+{
+    return hcbd__hc_kick_body((hcbd_hc_world *)c, q0, q1, 1, 1, 0);
+}
+
+static int hcbd__hc_kick_any(void *c, int q0, int q1)
+{
+    hcbd_hc_world *w = (hcbd_hc_world *)c;
+    const int visc = w->p.pair_integrator == HCBD_PAIR_EULER;
+    return hcbd__hc_kick_body(w, q0, q1, visc, visc && w->noise_f, w->stress_on);
+}
+
+/* Fluid velocities of t + dt (MODEL 6) into the scratch velocities.  With
+   the Shardlow sweep the viscous pairs are done and only pressure, body and
+   polymer forces remain.  Returns the first blob with a pair force beyond
+   the fixed-point range, or -1. */
+static int hcbd__hc_fluid_kick(hcbd_hc_world *w, double dt, uint64_t skey)
+{
+    const int n = w->nf, nt = w->p.threads, rp = w->p.reverse_poiseuille;
+    const int visc = w->p.pair_integrator == HCBD_PAIR_EULER, noise = visc && w->noise_f;
+    const double dt_m = dt * w->inv_m, inv_q = 1.0 / w->qF;
+    const double gx = w->p.g[0], gy = w->p.g[1], gz = w->p.g[2], half = 0.5 * w->p.L[1];
+    double gmean = 0;
+    int i, d, bad;
+    (void)nt;
+    if (rp) {
+        /* halves holding different numbers of blobs would get a net force
+           and the whole fluid would drift: remove the mean */
+        for (i = 0; i < n; ++i) gmean += w->fy[i] >= half ? 1.0 : -1.0;
+        gmean /= n;
+    }
+    for (d = 0; d < 3; ++d) hcbd__zero64(w->aF[d], n);
+    w->kick_key = skey;
+    bad = hcbd__nl_owners(&w->lf, n, nt, w,
+                          w->stress_on ? hcbd__hc_kick_any
+                          : !visc      ? hcbd__hc_kick_p
+                          : noise      ? hcbd__hc_kick_vn
+                                       : hcbd__hc_kick_v);
+    HCBD__OMP(omp parallel for num_threads(nt) schedule(static))
+    for (i = 0; i < n; ++i) {
+        const double sgn = rp ? (w->fy[i] >= half ? 1.0 : -1.0) - gmean : 1.0;
+        w->nvx[i] = (hcbd_real)(w->fvx[i] + dt_m * ((double)w->aF[0][i] * inv_q + w->fax[i]) + sgn * gx * dt);
+        w->nvy[i] = (hcbd_real)(w->fvy[i] + dt_m * ((double)w->aF[1][i] * inv_q + w->fay[i]) + sgn * gy * dt);
+        w->nvz[i] = (hcbd_real)(w->fvz[i] + dt_m * ((double)w->aF[2][i] * inv_q + w->faz[i]) + sgn * gz * dt);
+    }
+    return bad == INT_MAX ? -1 : bad;
 }
 
 /* Exact Ornstein-Uhlenbeck update of the pair variables over dt with
@@ -5660,11 +5844,14 @@ static int hcbd__hc_drift(hcbd_hc_world *w, double dt_f, int fluid, int poly, in
     const double s_new = fluid ? fmod(w->le_offset + w->p.gdot * w->p.L[1] * dt_f, w->p.L[0])
                                : w->le_offset;
     const uint64_t skey = hcbd__mix64(w->key_poly ^ hcbd__mix64((uint64_t)w->step));
+    hcbd__box box = hcbd__hc_box(w);
+    double dm_f = 0, dm_p = 0;
     int i, bad_f = INT_MAX, bad_p = INT_MAX, nan_f = INT_MAX, nan_p = INT_MAX;
     (void)nt;
-    HCBD__OMP(omp parallel for num_threads(nt) schedule(static) reduction(min:bad_f) reduction(min:nan_f))
+    box.offset = s_new;
+    HCBD__OMP(omp parallel for num_threads(nt) schedule(static) reduction(min:bad_f) reduction(min:nan_f) reduction(max:dm_f))
     for (i = 0; i < nf; ++i) {
-        double v[3], x, y, z;
+        double v[3], x, y, z, e[3];
         int k;
         v[0] = w->nvx[i]; v[1] = w->nvy[i]; v[2] = w->nvz[i];
         if (!(isfinite(v[0]) && isfinite(v[1]) && isfinite(v[2]))) {
@@ -5680,13 +5867,15 @@ static int hcbd__hc_drift(hcbd_hc_world *w, double dt_f, int fluid, int poly, in
         w->fx[i] = (hcbd_real)x;
         w->fy[i] = (hcbd_real)y;
         w->fz[i] = (hcbd_real)z;
+        hcbd__delta_box(&box, x - w->lf.x0[i], y - w->lf.y0[i], z - w->lf.z0[i], e);
+        if (e[0] * e[0] + e[1] * e[1] + e[2] * e[2] > dm_f) dm_f = e[0] * e[0] + e[1] * e[1] + e[2] * e[2];
         w->fvx[i] = (hcbd_real)(v[0] - k * vj);
         w->fvy[i] = (hcbd_real)v[1];
         w->fvz[i] = (hcbd_real)v[2];
     }
-    HCBD__OMP(omp parallel for num_threads(nt) schedule(static) reduction(min:bad_p) reduction(min:nan_p))
+    HCBD__OMP(omp parallel for num_threads(nt) schedule(static) reduction(min:bad_p) reduction(min:nan_p) reduction(max:dm_p))
     for (i = 0; i < np; ++i) {
-        double dr[3], x, y, z;
+        double dr[3], x, y, z, e[3];
         dr[0] = w->pux[i] * dt;
         dr[1] = w->puy[i] * dt;
         dr[2] = w->puz[i] * dt;
@@ -5709,7 +5898,14 @@ static int hcbd__hc_drift(hcbd_hc_world *w, double dt_f, int fluid, int poly, in
         w->px[i] = (hcbd_real)x;
         w->py[i] = (hcbd_real)y;
         w->pz[i] = (hcbd_real)z;
+        hcbd__delta_box(&box, x - w->lp.x0[i], y - w->lp.y0[i], z - w->lp.z0[i], e);
+        if (e[0] * e[0] + e[1] * e[1] + e[2] * e[2] > dm_p) dm_p = e[0] * e[0] + e[1] * e[1] + e[2] * e[2];
     }
+    /* a blob that crossed the sheared boundary since the build is measured
+       with today's offset: the drift term of the rebuild test covers it */
+    if (fluid) w->lf.le_drift += fabs(w->p.gdot * w->p.L[1] * dt_f);
+    if (sqrt(dm_f) > w->lf.disp_max) w->lf.disp_max = sqrt(dm_f);
+    if (sqrt(dm_p) > w->lp.disp_max) w->lp.disp_max = sqrt(dm_p);
     w->le_offset = s_new;
     if (nan_f != INT_MAX) { *why = 0; return nan_f; }
     if (nan_p != INT_MAX) { *why = 1; return nan_p; }
@@ -5722,15 +5918,12 @@ static int hcbd__hc_drift(hcbd_hc_world *w, double dt_f, int fluid, int poly, in
 static hcbd_result hcbd__hc_prepare(hcbd_hc_world *w, int64_t step)
 {
     int bad, need = 0;
-    hcbd__grid_build(&w->gf, w->p.L, w->nf, w->fx, w->fy, w->fz, w->fcell);
-    hcbd__grid_build(&w->gp, w->p.L, w->np, w->px, w->py, w->pz, w->pcell);
+    hcbd_result r = hcbd__hc_lists(w, step);
+    if (r != HCBD_OK) return r;
     hcbd__hc_fluid_density(w);
     if (w->np > 0) {
         bad = hcbd__hc_poly_density(w);
-        if (bad >= 0)
-            return hcbd__fail(&w->err, HCBD_ERR_PARAM, step, bad,
-                              "polymer %d: volume fraction phi = n/n_max = %.17g >= 1 "
-                              "(Flory-Huggins needs phi < 1)", bad, w->pn[bad] / w->p.n_max);
+        if (bad >= 0) return hcbd__hc_phi_fail(w, step, bad, w->pn[bad]);
         if (w->transient) {
             bad = hcbd__hc_pairs(w, &need);
             if (bad >= 0)
@@ -5759,6 +5952,7 @@ hcbd_result hcbd_hc_refresh(hcbd_hc_world *w)
 {
     if (!w) return HCBD_ERR_NULL;
     if (w->nf < 2) return hcbd__fail(&w->err, HCBD_ERR_STATE, -1, -1, "no fluid blobs set");
+    hcbd__hc_lists_stale(w); /* positions may have been written directly */
     return hcbd__hc_prepare(w, -1);
 }
 
@@ -5807,8 +6001,8 @@ hcbd_result hcbd_hc_step(hcbd_hc_world *w, int nsteps)
         if (!w->ready && (r = hcbd__hc_prepare(w, w->step)) != HCBD_OK) return r;
         for (k = 0; k < nsub && bad < 0; ++k) {
             const uint64_t skey = hcbd__mix64(w->key_fpair ^ hcbd__mix64((uint64_t)(w->step * nsub + k)));
-            if (k > 0) { /* the fluid alone moved: its own grid and densities */
-                hcbd__grid_build(&w->gf, w->p.L, w->nf, w->fx, w->fy, w->fz, w->fcell);
+            if (k > 0) { /* the fluid alone moved: its lists and densities */
+                if ((r = hcbd__hc_lists(w, w->step)) != HCBD_OK) return r;
                 hcbd__hc_fluid_density(w);
             }
             for (i = 0; i < w->nf; ++i) {
@@ -5819,7 +6013,11 @@ hcbd_result hcbd_hc_step(hcbd_hc_world *w, int nsteps)
                                       "dt too long for the sound speed or the flow", i, x);
             }
             if (w->p.pair_integrator == HCBD_PAIR_SHARDLOW) hcbd__hc_fluid_shardlow(w, dt_f, skey);
-            hcbd__hc_fluid_kick(w, dt_f, skey);
+            if ((bad = hcbd__hc_fluid_kick(w, dt_f, skey)) >= 0)
+                return hcbd__fail(&w->err, HCBD_ERR_UNSTABLE, w->step, bad,
+                                  "fluid blob %d has a pair force beyond %g (the fixed-point "
+                                  "range: a move of 16 h in one step); dt = %g is too long",
+                                  bad, w->limF, dt_f);
             if (k == nsub - 1) {
                 if (w->stress_on) hcbd__hc_stress_add(w);
                 if (w->transient && w->np > 0) hcbd__hc_lambda_update(w);
@@ -6899,6 +7097,7 @@ static hcbd_result hcbd__hc_ck_load(hcbd_hc_world *w, const void *buf, size_t si
     hcbd__clear(&w->err);
     if ((r = hcbd__ck_open(&w->err, buf, size, HCBD__CK_HC, &c)) != HCBD_OK) return r;
     memset(&def, 0, sizeof def);
+    def.max_pairs = HCBD_AUTO;
     hcbd__ck_i64(&c, &cap[0]); hcbd__ck_i64(&c, &cap[1]); hcbd__ck_i64(&c, &cap[2]);
     hcbd__ck_int(&c, &nf); hcbd__ck_int(&c, &np);
     hcbd__ck_hc_params(&c, &def.params);

@@ -400,7 +400,8 @@ void test_hc_lees_edwards_two_species(void)
 void test_hc_determinism(void)
 {
     int f;
-    /* f = 2: the Shardlow sweep with 3 fluid sub-steps per step */
+    /* f = 2: the Shardlow sweep with 3 fluid sub-steps per step; runs of 1
+       and 2 threads, and of 1 thread with the lists rebuilt every 5 steps */
     for (f = 0; f < 3; ++f) {
         uint64_t sum[3];
         int t;
@@ -416,7 +417,17 @@ void test_hc_determinism(void)
             d.params.n_max = 3.0;
             d.params.threads = t == 1 ? 2 : 1;
             if (!hc_make(&w, &d, 120)) return;
-            hc_run(&w, t_quick ? 20 : 60);
+            if (t < 2) {
+                hc_run(&w, t_quick ? 20 : 60);
+            } else { /* the lists rebuilt at other steps: the same bits */
+                int s;
+                for (s = 0; s < (t_quick ? 20 : 60); s += 5) {
+                    hc_run(&w, 5);
+                    CHECK(hcbd_hc_refresh(&w) == HCBD_OK, "refresh: %s", w.err.msg);
+                }
+                CHECK(w.lf.n_rebuilds >= (t_quick ? 4 : 12), "only %lld list builds",
+                      (long long)w.lf.n_rebuilds);
+            }
             sum[t] = hcbd_hc_state_checksum(&w);
             hcbd_hc_world_destroy(&w);
         }
