@@ -110,7 +110,8 @@ for rep in $(seq 1 "$REPS"); do
                 out="$d" >"$d/speed_$nz.log" 2>&1) ||
                 { echo "bench/peers: bench_speed failed"; tail -n 5 "$d/speed_$nz.log"; }
         done
-        (cd "$root" && ./build/bench_hcbd Nmax="$FLUID_N" threads=1 out="$d" >"$d/hcbd.log" 2>&1) ||
+        (cd "$root" && ./build/bench_hcbd Nmax="$FLUID_N" threads=1 scenes=sph,sdpd out="$d" \
+            >"$d/hcbd.log" 2>&1) ||
             { echo "bench/peers: bench_hcbd failed"; tail -n 5 "$d/hcbd.log"; }
         for s in bd gibd; do
             for f in "$d/speed_uniform.csv:_u" "$d/speed.csv:"; do
@@ -120,9 +121,10 @@ for rep in $(seq 1 "$REPS"); do
                      "$(csv_get "$csvf" "$s" N "$STAR_N" pairs_per_particle)" >>"$tmp/hcbd_$s${f##*:}.txt"
             done
         done
-        for s in fluid fluid-fluct; do
+        for s in sph sdpd; do
             [ -f "$d/speed_hcbd.csv" ] || break
             echo "$(csv_get "$d/speed_hcbd.csv" "$s" N_fluid "$FLUID_N" ns_per_particle_step)" \
+                 "$(csv_get "$d/speed_hcbd.csv" "$s" N_fluid "$FLUID_N" pairs_per_particle)" \
                  >>"$tmp/hcbd_$s.txt"
         done
     fi
@@ -161,8 +163,8 @@ row bd          star_bd_gauss "$STAR_N"  3  "Gaussian noise on both sides (LAMMP
 row gibd_u      star_bd       "$STAR_N"  2  "uniform: hcbd GI-BD pair and Brownian noise; LAMMPS fix brownian"
 row gibd        star_bd_gauss "$STAR_N"  -  "Gaussian: hcbd GI-BD; LAMMPS fix brownian rng gaussian"
 row gibd        star_dpd      "$STAR_N"  -  "LAMMPS dpd/tstat (1 Gaussian per pair) + fix nve"
-row fluid       sph_tait      "$FLUID_N" 2  "no noise"
-row fluid-fluct sdpd          "$FLUID_N" 10 "LAMMPS 6 Gaussians per pair; hcbd pairwise"
+row sph         sph_tait      "$FLUID_N" 2  "no noise; both from random positions"
+row sdpd        sdpd          "$FLUID_N" 5  "LAMMPS 6 Gaussians per pair; hcbd pairwise"
 own=$(awk -v a="$(med_col "$tmp/hcbd_gibd_u.txt" 1)" -v b="$(med_col "$tmp/hcbd_bd_u.txt" 1)" \
     'BEGIN {if (a + 0 > 0 && b + 0 > 0) printf "%.2f", a / b; else print "n/a"}')
 echo "hcbd GI-BD / hcbd BD (uniform noise): $own (target <= 1.5)"
