@@ -749,6 +749,11 @@ typedef struct hcbd_hc_world {
        fluid blob's polymers in increasing id at xt_a[xt_start[i] ..] */
     hcbd__nlist lf, lp, lx;
     int32_t *xt_start, *xt_a, *scratch;
+    /* the fluid in cell order (copies made each step, so the pair loops
+       read neighbours close in memory): slot s holds blob fid[s], blob i
+       sits at slot fslot[i]; the lists lf and lx index these slots */
+    int32_t *fid, *fslot;
+    hcbd_real *sx, *sy, *sz, *svx, *svy, *svz, *sn, *sP, *sIn; /* sIn = 1/n */
     double skin;
     /* the fluid's pair sums of one step in 64-bit fixed point (see
        hcbd__fix): weights and pair forces */
@@ -3016,21 +3021,29 @@ typedef struct hcbd__near {
     double x[HCBD__CHUNK], y[HCBD__CHUNK], z[HCBD__CHUNK], r2[HCBD__CHUNK];
 } hcbd__near;
 
-HCBD__INLINE int hcbd__gather(const hcbd_world *w, const hcbd__box *box, int i, int32_t *p,
-                              int32_t pend, double cut2, hcbd__near *c)
+HCBD__INLINE int hcbd__gather_at(const hcbd_real *HCBD__RESTRICT x, const hcbd_real *HCBD__RESTRICT y,
+                                 const hcbd_real *HCBD__RESTRICT z, const int32_t *HCBD__RESTRICT nb,
+                                 const hcbd__box *box, double xi, double yi, double zi, int32_t *p,
+                                 int32_t pend, double cut2, hcbd__near *c)
 {
-    const double xi = w->x[i], yi = w->y[i], zi = w->z[i];
     const int32_t pe = pend - *p > HCBD__CHUNK ? *p + HCBD__CHUNK : pend;
     int m = 0;
     for (; *p < pe; ++*p) {
-        const int j = w->nl.nb_j[*p];
+        const int j = nb[*p];
         double d[3], r2;
-        const int k = hcbd__delta_box(box, xi - w->x[j], yi - w->y[j], zi - w->z[j], d);
+        const int k = hcbd__delta_box(box, xi - x[j], yi - y[j], zi - z[j], d);
         r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
         c->j[m] = j; c->k[m] = k; c->x[m] = d[0]; c->y[m] = d[1]; c->z[m] = d[2]; c->r2[m] = r2;
         m += r2 < cut2;
     }
     return m;
+}
+
+HCBD__INLINE int hcbd__gather(const hcbd_world *w, const hcbd__box *box, int i, int32_t *p,
+                              int32_t pend, double cut2, hcbd__near *c)
+{
+    return hcbd__gather_at(w->x, w->y, w->z, w->nl.nb_j, box, w->x[i], w->y[i], w->z[i], p, pend,
+                           cut2, c);
 }
 
 /* Forces, and in GI-BD the friction and noise momentum exchanges
@@ -4788,6 +4801,10 @@ static size_t hcbd__hc_layout(const hcbd_hc_def *def, hcbd_hc_world *t, char *ba
     hcbd__nl_take(base, &off, &t->lx, np, one, mp[2]);
     HCBD__HA(xt_start, (nf + 1) * I); HCBD__HA(xt_a, (size_t)mp[2] * I);
     HCBD__HA(scratch, ((nf > np ? nf : np) + 1) * I);
+    HCBD__HA(fid, nf * I); HCBD__HA(fslot, nf * I);
+    HCBD__HA(sx, nf * R); HCBD__HA(sy, nf * R); HCBD__HA(sz, nf * R);
+    HCBD__HA(svx, nf * R); HCBD__HA(svy, nf * R); HCBD__HA(svz, nf * R);
+    HCBD__HA(sn, nf * R); HCBD__HA(sP, nf * R); HCBD__HA(sIn, nf * R);
 #undef HCBD__HA
     return off + HCBD__ALIGN;
 }
@@ -5150,15 +5167,31 @@ static inline hcbd__box hcbd__hc_box(const hcbd_hc_world *w)
     return b;
 }
 
+/* poly 1: the polymers (id order); 0: the fluid in id order; 2: the
+   fluid's cell-ordered copy */
 static hcbd__pset hcbd__hc_pset(const hcbd_hc_world *w, int poly)
 {
     hcbd__pset s;
-    s.x = poly ? w->px : w->fx;
-    s.y = poly ? w->py : w->fy;
-    s.z = poly ? w->pz : w->fz;
-    s.id = NULL; /* both species are stored in id order */
-    s.n = poly ? w->np : w->nf;
+    s.x = poly == 1 ? w->px : poly ? w->sx : w->fx;
+    s.y = poly == 1 ? w->py : poly ? w->sy : w->fy;
+    s.z = poly == 1 ? w->pz : poly ? w->sz : w->fz;
+    s.id = poly == 2 ? w->fid : NULL;
+    s.n = poly == 1 ? w->np : w->nf;
     return s;
+}
+
+/* The cell-ordered copies of the fluid's positions and velocities. */
+static void hcbd__hc_sync(hcbd_hc_world *w)
+{
+    const int n = w->nf, nt = w->p.threads;
+    int s;
+    (void)nt;
+    HCBD__OMP(omp parallel for num_threads(nt) schedule(static))
+    for (s = 0; s < n; ++s) {
+        const int i = w->fid[s];
+        w->sx[s] = w->fx[i]; w->sy[s] = w->fy[i]; w->sz[s] = w->fz[i];
+        w->svx[s] = w->fvx[i]; w->svy[s] = w->fvy[i]; w->svz[s] = w->fvz[i];
+    }
 }
 
 static hcbd_result hcbd__hc_phi_fail(hcbd_hc_world *w, int64_t step, int a, double n)
@@ -5200,25 +5233,34 @@ static int hcbd__hc_dense(hcbd_hc_world *w, const hcbd__pset *sp, const hcbd__bo
    still within skin/2 of where the last build saw it. */
 static hcbd_result hcbd__hc_lists(hcbd_hc_world *w, int64_t step)
 {
-    const hcbd__pset sf = hcbd__hc_pset(w, 0), sp = hcbd__hc_pset(w, 1);
+    const hcbd__pset sf = hcbd__hc_pset(w, 0), sp = hcbd__hc_pset(w, 1), ss = hcbd__hc_pset(w, 2);
     const hcbd__box box = hcbd__hc_box(w);
     const double dm = w->lf.disp_max > w->lp.disp_max ? w->lf.disp_max : w->lp.disp_max;
     const int nt = w->p.threads;
     int bad, most = 0, i, a;
     int32_t *cur = w->scratch;
-    if (w->lf.list_valid && w->lx.list_valid && 2.0 * dm + 3.0 * w->lf.le_drift <= w->skin)
+    if (w->lf.list_valid && w->lx.list_valid && 2.0 * dm + 3.0 * w->lf.le_drift <= w->skin) {
+        hcbd__hc_sync(w);
         return HCBD_OK;
+    }
     w->lx.list_valid = 0;
     hcbd__nl_sort(&w->lf, w->p.L, &sf);
-    if (hcbd__nl_pairs(&w->lf, &w->lf, &sf, &sf, &box, 1, nt) < 0)
+    for (i = 0; i < w->nf; ++i) {
+        w->fid[i] = w->lf.perm[i];
+        w->fslot[w->fid[i]] = i;
+        w->lf.perm[i] = i;
+    }
+    hcbd__hc_sync(w);
+    if (hcbd__nl_pairs(&w->lf, &w->lf, &ss, &ss, &box, 1, nt) < 0)
         return hcbd__fail(&w->err, HCBD_ERR_CAPACITY, step, -1,
                           "fluid neighbour list needs more than max_pairs = %lld pairs (range "
                           "2h + skin = %g); raise hcbd_hc_def.max_pairs",
                           (long long)w->lf.max_pairs, w->lf.rlist);
     if ((bad = hcbd__nl_degree(&w->lf, w->nf, w->scratch, &most)) >= 0)
-        return hcbd__fail(&w->err, HCBD_ERR_CAPACITY, step, bad,
+        return hcbd__fail(&w->err, HCBD_ERR_CAPACITY, step, w->fid[bad],
                           "fluid blob %d has %d neighbours within %g, more than the %d its "
-                          "fixed-point sums hold", bad, most, w->lf.rlist, HCBD__FIX_DEG);
+                          "fixed-point sums hold", (int)w->fid[bad], most, w->lf.rlist,
+                          HCBD__FIX_DEG);
     hcbd__nl_sort(&w->lp, w->p.L, &sp);
     if (hcbd__nl_pairs(&w->lp, &w->lp, &sp, &sp, &box, 0, nt) < 0) {
         double n = 0;
@@ -5228,7 +5270,7 @@ static hcbd_result hcbd__hc_lists(hcbd_hc_world *w, int64_t step)
                           "skin = %g): the polymers are far denser than polymer_capacity "
                           "spread over the box", (long long)w->lp.max_pairs, w->lp.rlist);
     }
-    if (hcbd__nl_pairs(&w->lx, &w->lf, &sp, &sf, &box, 0, nt) < 0)
+    if (hcbd__nl_pairs(&w->lx, &w->lf, &sp, &ss, &box, 0, nt) < 0)
         return hcbd__fail(&w->err, HCBD_ERR_CAPACITY, step, -1,
                           "polymer-fluid list needs more than its %lld pairs (range rc + skin "
                           "= %g): the fluid is far denser than nbar", (long long)w->lx.max_pairs,
@@ -5267,24 +5309,23 @@ static int hcbd__hc_dens_owners(void *ctx, int q0, int q1)
     const double h = w->p.h, cut2 = 4.0 * h * h, ih = 1.0 / h;
     const double cq = w->qW / (4.0 * HCBD__PI * h * h * h);
     const hcbd__box box = hcbd__hc_box(w);
-    const hcbd_real *HCBD__RESTRICT x = w->fx, *HCBD__RESTRICT y = w->fy, *HCBD__RESTRICT z = w->fz;
+    const hcbd_real *HCBD__RESTRICT x = w->sx, *HCBD__RESTRICT y = w->sy, *HCBD__RESTRICT z = w->sz;
     const int32_t *HCBD__RESTRICT nb = w->lf.nb_j;
     int64_t *HCBD__RESTRICT aW = w->aW;
     int q;
     for (q = q0; q < q1; ++q) {
         const int i = w->lf.perm[q];
-        const double xi = x[i], yi = y[i], zi = z[i];
+        const int32_t pend = w->lf.nb_start[i + 1];
         int64_t s = 0;
-        int32_t p;
-        for (p = w->lf.nb_start[i]; p < w->lf.nb_start[i + 1]; ++p) {
-            const int j = nb[p];
-            double d[3], r2;
-            hcbd__delta_box(&box, xi - x[j], yi - y[j], zi - z[j], d);
-            r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-            if (r2 < cut2) {
-                const int64_t v = hcbd__fix(cq * hcbd__m4u(sqrt(r2) * ih));
+        int32_t p = w->lf.nb_start[i];
+        while (p < pend) {
+            hcbd__near c;
+            const int m = hcbd__gather_at(x, y, z, nb, &box, x[i], y[i], z[i], &p, pend, cut2, &c);
+            int t;
+            for (t = 0; t < m; ++t) {
+                const int64_t v = hcbd__fix(cq * hcbd__m4u(sqrt(c.r2[t]) * ih));
                 s += v;
-                aW[j] += v;
+                aW[c.j[t]] += v;
             }
         }
         aW[i] += s;
@@ -5303,13 +5344,15 @@ static void hcbd__hc_fluid_density(hcbd_hc_world *w)
     hcbd__zero64(w->aW, n);
     hcbd__nl_owners(&w->lf, n, nt, w, hcbd__hc_dens_owners);
     HCBD__OMP(omp parallel for num_threads(nt) schedule(static))
-    for (i = 0; i < n; ++i) {
+    for (i = 0; i < n; ++i) { /* i: slot */
         const double s = w0 + (double)w->aW[i] * inv_q, x = s * inv_nbar;
+        const int id = w->fid[i];
         double x7 = x * x * x;
         x7 = x7 * x7 * x;
-        w->fn[i] = (hcbd_real)s;
-        w->fP[i] = (hcbd_real)(P0 * (x7 - 1.0));
-        w->fPn2[i] = (hcbd_real)(P0 * (x7 - 1.0) / (s * s));
+        w->fn[id] = w->sn[i] = (hcbd_real)s;
+        w->sIn[i] = (hcbd_real)(1.0 / s);
+        w->fP[id] = (hcbd_real)(P0 * (x7 - 1.0));
+        w->fPn2[id] = w->sP[i] = (hcbd_real)(P0 * (x7 - 1.0) / (s * s));
     }
 }
 
@@ -5519,17 +5562,17 @@ static int hcbd__hc_interp(hcbd_hc_world *w)
         int first = 1;
         int32_t p;
         for (p = w->lx.nb_start[a]; p < w->lx.nb_start[a + 1]; ++p) {
-            const int i = w->lx.nb_j[p];
+            const int i = w->lx.nb_j[p]; /* a fluid slot */
             double d[3], r2, r, wt, u[3];
-            int k = hcbd__delta_box(&box, xa - w->fx[i], ya - w->fy[i], za - w->fz[i], d);
+            int k = hcbd__delta_box(&box, xa - w->sx[i], ya - w->sy[i], za - w->sz[i], d);
             r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
             if (r2 >= cut2) continue;
             r = sqrt(r2);
-            wt = hcbd__rapid(r, sg, rc, A) / w->fn[i];
+            wt = hcbd__rapid(r, sg, rc, A) / w->sn[i];
             /* the image of blob i moves with the velocity of its layer */
-            u[0] = w->fvx[i] + k * vj;
-            u[1] = w->fvy[i];
-            u[2] = w->fvz[i];
+            u[0] = w->svx[i] + k * vj;
+            u[1] = w->svy[i];
+            u[2] = w->svz[i];
             if (first) {
                 vref[0] = u[0]; vref[1] = u[1]; vref[2] = u[2];
                 first = 0;
@@ -5568,8 +5611,9 @@ static void hcbd__hc_redistribute(hcbd_hc_world *w)
     int i;
     (void)nt;
     HCBD__OMP(omp parallel for num_threads(nt) schedule(static))
-    for (i = 0; i < n; ++i) {
-        const double xi = w->fx[i], yi = w->fy[i], zi = w->fz[i];
+    for (i = 0; i < n; ++i) { /* i: slot */
+        const double xi = w->sx[i], yi = w->sy[i], zi = w->sz[i];
+        const int id = w->fid[i];
         double F[3] = {0, 0, 0};
         int32_t p;
         for (p = w->xt_start[i]; p < w->xt_start[i + 1]; ++p) {
@@ -5579,14 +5623,14 @@ static void hcbd__hc_redistribute(hcbd_hc_world *w)
             r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
             if (r2 >= cut2) continue;
             r = sqrt(r2);
-            psi = hcbd__rapid(r, sg, rc, A) / w->fn[i] / w->pS[a];
+            psi = hcbd__rapid(r, sg, rc, A) / w->sn[i] / w->pS[a];
             F[0] += psi * w->pFx[a];
             F[1] += psi * w->pFy[a];
             F[2] += psi * w->pFz[a];
         }
-        w->fax[i] = (hcbd_real)F[0];
-        w->fay[i] = (hcbd_real)F[1];
-        w->faz[i] = (hcbd_real)F[2];
+        w->fax[id] = (hcbd_real)F[0];
+        w->fay[id] = (hcbd_real)F[1];
+        w->faz[id] = (hcbd_real)F[2];
     }
 }
 
@@ -5618,19 +5662,21 @@ static void hcbd__hc_fluid_shardlow(hcbd_hc_world *w, double dt, uint64_t skey)
     const double two_eta = 2.0 * w->p.eta, m = w->m, inv_m = w->inv_m, kT = w->p.kT;
     const double vj = w->le_vjump;
     const hcbd__box box = hcbd__hc_box(w);
-    hcbd_real *HCBD__RESTRICT vx = w->fvx, *HCBD__RESTRICT vy = w->fvy, *HCBD__RESTRICT vz = w->fvz;
-    int i;
-    for (i = 0; i < n; ++i) {
-        const double xi = w->fx[i], yi = w->fy[i], zi = w->fz[i], ni = w->fn[i];
+    hcbd_real *HCBD__RESTRICT vx = w->svx, *HCBD__RESTRICT vy = w->svy, *HCBD__RESTRICT vz = w->svz;
+    const hcbd_real *HCBD__RESTRICT x = w->sx, *HCBD__RESTRICT y = w->sy, *HCBD__RESTRICT z = w->sz;
+    int id, s;
+    for (id = 0; id < n; ++id) {
+        const int i = w->fslot[id]; /* slots: i owner, j partner */
+        const double xi = x[i], yi = y[i], zi = z[i], ni = w->sn[i];
         double sv = 0;
         int32_t p;
         for (p = w->lf.nb_start[i]; p < w->lf.nb_start[i + 1]; ++p) {
             const int j = w->lf.nb_j[p];
             double d[3], r2, om, c, P[3];
-            int k = hcbd__delta_box(&box, xi - w->fx[j], yi - w->fy[j], zi - w->fz[j], d);
+            int k = hcbd__delta_box(&box, xi - x[j], yi - y[j], zi - z[j], d);
             r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
             if (r2 >= cut2) continue;
-            om = -expm1(-2.0 * dt * inv_m * hcbd__morris_f(two_eta, sqrt(r2), h, c1, ni, w->fn[j]));
+            om = -expm1(-2.0 * dt * inv_m * hcbd__morris_f(two_eta, sqrt(r2), h, c1, ni, w->sn[j]));
             c = 0.5 * m * om;
             P[0] = -c * (vx[i] - vx[j] - k * vj);
             P[1] = -c * (vy[i] - vy[j]);
@@ -5638,7 +5684,7 @@ static void hcbd__hc_fluid_shardlow(hcbd_hc_world *w, double dt, uint64_t skey)
             if (noise) {
                 const double b = sqrt(0.5 * kT * m * om * (2.0 - om));
                 double z3[3];
-                hcbd__deviates3(w->zig, HCBD_NOISE_GAUSS, hcbd__pair_key(skey, i, j), z3);
+                hcbd__deviates3(w->zig, HCBD_NOISE_GAUSS, hcbd__pair_key(skey, id, w->fid[j]), z3);
                 P[0] += b * z3[0];
                 P[1] += b * z3[1];
                 P[2] += b * z3[2];
@@ -5649,9 +5695,13 @@ static void hcbd__hc_fluid_shardlow(hcbd_hc_world *w, double dt, uint64_t skey)
             sv += d[1] * P[0] / dt;
         }
         if (stress) {
-            w->fs[3 * i + 1] = sv;
-            w->fs[3 * i + 2] = 0;
+            w->fs[3 * id + 1] = sv;
+            w->fs[3 * id + 2] = 0;
         }
+    }
+    for (s = 0; s < n; ++s) {
+        const int i = w->fid[s];
+        w->fvx[i] = vx[s]; w->fvy[i] = vy[s]; w->fvz[i] = vz[s];
     }
 }
 
@@ -5661,68 +5711,78 @@ static void hcbd__hc_fluid_shardlow(hcbd_hc_world *w, double dt, uint64_t skey)
 HCBD__INLINE int hcbd__hc_kick_body(hcbd_hc_world *w, int q0, int q1, const int visc,
                                     const int noise, const int stress)
 {
-    const double h = w->p.h, cut2 = 4.0 * h * h, c1 = 1.0 / (4.0 * HCBD__PI * h * h * h * h);
+    const double h = w->p.h, cut2 = 4.0 * h * h, ih = 1.0 / h;
+    const double c1h = 1.0 / (4.0 * HCBD__PI * h * h * h * h * h);
     const double two_eta = 2.0 * w->p.eta, dt = w->p.dt / w->p.substeps;
     const double sn = noise ? sqrt(2.0 * w->p.kT / dt) : 0.0, vj = w->le_vjump;
     const double qF = w->qF, lim = w->limF;
     const uint64_t skey = w->kick_key;
     const hcbd__box box = hcbd__hc_box(w);
-    const hcbd_real *HCBD__RESTRICT x = w->fx, *HCBD__RESTRICT y = w->fy, *HCBD__RESTRICT z = w->fz;
-    const hcbd_real *HCBD__RESTRICT vx = w->fvx, *HCBD__RESTRICT vy = w->fvy;
-    const hcbd_real *HCBD__RESTRICT vz = w->fvz, *HCBD__RESTRICT Pn2 = w->fPn2, *HCBD__RESTRICT fn = w->fn;
+    const hcbd_real *HCBD__RESTRICT x = w->sx, *HCBD__RESTRICT y = w->sy, *HCBD__RESTRICT z = w->sz;
+    const hcbd_real *HCBD__RESTRICT vx = w->svx, *HCBD__RESTRICT vy = w->svy;
+    const hcbd_real *HCBD__RESTRICT vz = w->svz, *HCBD__RESTRICT Pn2 = w->sP, *HCBD__RESTRICT In = w->sIn;
+    const int32_t *HCBD__RESTRICT fid = w->fid;
     int64_t *HCBD__RESTRICT aFx = w->aF[0], *HCBD__RESTRICT aFy = w->aF[1];
     int64_t *HCBD__RESTRICT aFz = w->aF[2];
     int q, worst = INT_MAX;
     for (q = q0; q < q1; ++q) {
         const int i = w->lf.perm[q];
         const double xi = x[i], yi = y[i], zi = z[i], vxi = vx[i], vyi = vy[i], vzi = vz[i];
-        const double Pi = Pn2[i], ni = fn[i];
+        const double Pi = Pn2[i], ini = In[i];
         int64_t fx = 0, fy = 0, fz = 0;
         double sp = 0, sv = 0, sz = 0;
+        const int32_t pend = w->lf.nb_start[i + 1];
         int bad = 0;
-        int32_t p;
-        for (p = w->lf.nb_start[i]; p < w->lf.nb_start[i + 1]; ++p) {
-            const int j = w->lf.nb_j[p];
-            double d[3], r2, r, fp, F[3];
-            int64_t u;
-            const int k = hcbd__delta_box(&box, xi - x[j], yi - y[j], zi - z[j], d);
-            r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-            if (r2 >= cut2) continue;
-            r = sqrt(r2);
-            /* -(P_i/n_i^2 + P_j/n_j^2) w' e_ij */
-            fp = r > 0 ? -(Pi + Pn2[j]) * hcbd__m4d(r, h, c1) / r : 0.0;
-            F[0] = fp * d[0]; F[1] = fp * d[1]; F[2] = fp * d[2];
-            if (stress) sp += d[1] * F[0];
-            if (visc) {
-                const double f = hcbd__morris_f(two_eta, r, h, c1, ni, fn[j]);
-                const double Fv0 = -f * (vxi - (vx[j] + k * vj));
-                F[0] += Fv0;
-                F[1] += -f * (vyi - vy[j]);
-                F[2] += -f * (vzi - vz[j]);
-                if (stress) sv += d[1] * Fv0;
-                if (noise) {
-                    double zz[3], s = sn * sqrt(f);
-                    hcbd__deviates3(w->zig, HCBD_NOISE_GAUSS, hcbd__pair_key(skey, i, j), zz);
-                    F[0] += s * zz[0];
-                    F[1] += s * zz[1];
-                    F[2] += s * zz[2];
-                    if (stress) sz += d[1] * s * zz[0];
+        int32_t p = w->lf.nb_start[i];
+        while (p < pend) {
+            hcbd__near c;
+            const int m = hcbd__gather_at(x, y, z, w->lf.nb_j, &box, xi, yi, zi, &p, pend, cut2, &c);
+            int t;
+            for (t = 0; t < m; ++t) {
+                const int j = c.j[t], k = c.k[t];
+                /* -w'(r)/r of M4: c1 (12 - 9 q)/h for q < 1 (its r -> 0 limit
+                   included), 3 c1 (2 - q)^2/(q h) beyond: one division */
+                const double q = sqrt(c.r2[t]) * ih, a = 2.0 - q;
+                const double wdr = q < 1.0 ? c1h * (12.0 - 9.0 * q) : 3.0 * c1h * a * a / q;
+                double d[3], fp, F[3];
+                int64_t u;
+                d[0] = c.x[t]; d[1] = c.y[t]; d[2] = c.z[t];
+                /* -(P_i/n_i^2 + P_j/n_j^2) w' e_ij */
+                fp = (Pi + Pn2[j]) * wdr;
+                F[0] = fp * d[0]; F[1] = fp * d[1]; F[2] = fp * d[2];
+                if (stress) sp += d[1] * F[0];
+                if (visc) {
+                    /* Morris: f_ij = -2 eta w'/(n_i n_j r) */
+                    const double f = two_eta * wdr * ini * In[j];
+                    const double Fv0 = -f * (vxi - (vx[j] + k * vj));
+                    F[0] += Fv0;
+                    F[1] += -f * (vyi - vy[j]);
+                    F[2] += -f * (vzi - vz[j]);
+                    if (stress) sv += d[1] * Fv0;
+                    if (noise) {
+                        double zz[3], s = sn * sqrt(f);
+                        hcbd__deviates3(w->zig, HCBD_NOISE_GAUSS, hcbd__pair_key(skey, fid[i], fid[j]), zz);
+                        F[0] += s * zz[0];
+                        F[1] += s * zz[1];
+                        F[2] += s * zz[2];
+                        if (stress) sz += d[1] * s * zz[0];
+                    }
                 }
+                bad |= !(fabs(F[0]) <= lim && fabs(F[1]) <= lim && fabs(F[2]) <= lim);
+                u = hcbd__fix(F[0] * qF); fx += u; aFx[j] -= u;
+                u = hcbd__fix(F[1] * qF); fy += u; aFy[j] -= u;
+                u = hcbd__fix(F[2] * qF); fz += u; aFz[j] -= u;
             }
-            bad |= !(fabs(F[0]) <= lim && fabs(F[1]) <= lim && fabs(F[2]) <= lim);
-            u = hcbd__fix(F[0] * qF); fx += u; aFx[j] -= u;
-            u = hcbd__fix(F[1] * qF); fy += u; aFy[j] -= u;
-            u = hcbd__fix(F[2] * qF); fz += u; aFz[j] -= u;
         }
         aFx[i] += fx; aFy[i] += fy; aFz[i] += fz;
-        if (stress) {
-            w->fs[3 * i] = sp;
+        if (stress) { /* by id: the sum over blobs in a fixed order */
+            w->fs[3 * fid[i]] = sp;
             if (visc) {
-                w->fs[3 * i + 1] = sv;
-                w->fs[3 * i + 2] = sz;
+                w->fs[3 * fid[i] + 1] = sv;
+                w->fs[3 * fid[i] + 2] = sz;
             }
         }
-        if (bad && i < worst) worst = i;
+        if (bad && fid[i] < worst) worst = fid[i];
     }
     return worst;
 }
@@ -5778,9 +5838,10 @@ static int hcbd__hc_fluid_kick(hcbd_hc_world *w, double dt, uint64_t skey)
     HCBD__OMP(omp parallel for num_threads(nt) schedule(static))
     for (i = 0; i < n; ++i) {
         const double sgn = rp ? (w->fy[i] >= half ? 1.0 : -1.0) - gmean : 1.0;
-        w->nvx[i] = (hcbd_real)(w->fvx[i] + dt_m * ((double)w->aF[0][i] * inv_q + w->fax[i]) + sgn * gx * dt);
-        w->nvy[i] = (hcbd_real)(w->fvy[i] + dt_m * ((double)w->aF[1][i] * inv_q + w->fay[i]) + sgn * gy * dt);
-        w->nvz[i] = (hcbd_real)(w->fvz[i] + dt_m * ((double)w->aF[2][i] * inv_q + w->faz[i]) + sgn * gz * dt);
+        const int s = w->fslot[i];
+        w->nvx[i] = (hcbd_real)(w->fvx[i] + dt_m * ((double)w->aF[0][s] * inv_q + w->fax[i]) + sgn * gx * dt);
+        w->nvy[i] = (hcbd_real)(w->fvy[i] + dt_m * ((double)w->aF[1][s] * inv_q + w->fay[i]) + sgn * gy * dt);
+        w->nvz[i] = (hcbd_real)(w->fvz[i] + dt_m * ((double)w->aF[2][s] * inv_q + w->faz[i]) + sgn * gz * dt);
     }
     return bad == INT_MAX ? -1 : bad;
 }
@@ -6012,6 +6073,7 @@ hcbd_result hcbd_hc_step(hcbd_hc_world *w, int nsteps)
                                       "fluid blob %d: density n/nbar = %g is outside (1/3, 3): "
                                       "dt too long for the sound speed or the flow", i, x);
             }
+            hcbd__hc_sync(w); /* velocities may have been set between steps */
             if (w->p.pair_integrator == HCBD_PAIR_SHARDLOW) hcbd__hc_fluid_shardlow(w, dt_f, skey);
             if ((bad = hcbd__hc_fluid_kick(w, dt_f, skey)) >= 0)
                 return hcbd__fail(&w->err, HCBD_ERR_UNSTABLE, w->step, bad,
