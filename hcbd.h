@@ -2562,13 +2562,18 @@ typedef struct hcbd__box {
 
 /* Hot loops copy the box into a local: a store into a pair buffer could
    otherwise alias w->p.L and force a reload at every pair. */
-static inline hcbd__box hcbd__box_of(const hcbd_world *w)
+static inline hcbd__box hcbd__box_make(const double L[3], double offset, int le)
 {
     hcbd__box b;
-    b.L[0] = w->p.L[0]; b.L[1] = w->p.L[1]; b.L[2] = w->p.L[2];
-    b.offset = w->le_offset;
-    b.le = w->le_on;
+    b.L[0] = L[0]; b.L[1] = L[1]; b.L[2] = L[2];
+    b.offset = offset;
+    b.le = le;
     return b;
+}
+
+static inline hcbd__box hcbd__box_of(const hcbd_world *w)
+{
+    return hcbd__box_make(w->p.L, w->le_offset, w->le_on);
 }
 
 static inline int hcbd__delta_box(const hcbd__box *b, double dx, double dy, double dz, double d[3])
@@ -5160,11 +5165,7 @@ hcbd_result hcbd_hc_place_polymers_random(hcbd_hc_world *w, int n)
    transpose, each particle summing its own partners in increasing id. */
 static inline hcbd__box hcbd__hc_box(const hcbd_hc_world *w)
 {
-    hcbd__box b;
-    b.L[0] = w->p.L[0]; b.L[1] = w->p.L[1]; b.L[2] = w->p.L[2];
-    b.offset = w->le_offset;
-    b.le = w->le_on;
-    return b;
+    return hcbd__box_make(w->p.L, w->le_offset, w->le_on);
 }
 
 /* poly 1: the polymers (id order); 0: the fluid in id order; 2: the
