@@ -749,6 +749,16 @@ typedef struct hcbd_hc_world {
        fluid blob's polymers in increasing id at xt_a[xt_start[i] ..] */
     hcbd__nlist lf, lp, lx;
     int32_t *xt_start, *xt_a, *scratch;
+    /* the polymers' pairs (half list): owners' separations dx dy dz r (pd,
+       r = -1 beyond rc), weights (pw) and forces (pf) per pair, the owners'
+       own weight sums (pown), and each polymer's pairs as the partner
+       (rv_p[rv_start[b] ..], owners in increasing id) */
+    double *pd, *pw, *pf, *pown;
+    int32_t *rv_start, *rv_p;
+    double *xw;                  /* W-RaPiD weight of each cross pair (0
+                                    beyond rc), entry xt_p[k] of lx for the
+                                    transpose's entry k                    */
+    int32_t *xt_p;
     /* the fluid in cell order (copies made each step, so the pair loops
        read neighbours close in memory): slot s holds blob fid[s], blob i
        sits at slot fslot[i]; the lists lf and lx index these slots */
@@ -4737,9 +4747,9 @@ static void hcbd__hc_fixed_scales(hcbd_hc_world *w)
 
 /* Room of the three lists, from the densest mean the capacities or nbar
    allow: the fluid's half list (def->max_pairs, or 1.5 times the mean plus
-   16 per blob), the polymers' full list (twice the mean plus 32 each, at
-   most all pairs) and the cross list (the same for the fluid blobs within
-   rc + skin of a polymer). */
+   16 per blob), the polymers' half list (twice the mean plus 32 each, at
+   most all pairs) and the cross list (twice the fluid blobs within rc +
+   skin of a polymer, plus 32). */
 static void hcbd__hc_rooms(const hcbd_hc_def *def, int64_t mp[3])
 {
     const hcbd_hc_params *p = &def->params;
@@ -4747,7 +4757,7 @@ static void hcbd__hc_rooms(const hcbd_hc_def *def, int64_t mp[3])
     const double rf = 2.0 * p->h + s, rp = p->rc + s;
     const double nf = def->fluid_capacity, np = def->polymer_capacity;
     const double nfl = nf / V > p->nbar ? nf / V : p->nbar;
-    double per_f = 0.5 * nfl * c * rf * rf * rf, per_p = 2.0 * np / V * c * rp * rp * rp + 32.0;
+    double per_f = 0.5 * nfl * c * rf * rf * rf, per_p = np / V * c * rp * rp * rp + 32.0;
     double per_x = 2.0 * nfl * c * rp * rp * rp + 32.0;
     if (per_p > np) per_p = np;
     if (per_x > nf) per_x = nf;
@@ -4805,6 +4815,10 @@ static size_t hcbd__hc_layout(const hcbd_hc_def *def, hcbd_hc_world *t, char *ba
     hcbd__nl_take(base, &off, &t->lp, np, ncp, mp[1]);
     hcbd__nl_take(base, &off, &t->lx, np, one, mp[2]);
     HCBD__HA(xt_start, (nf + 1) * I); HCBD__HA(xt_a, (size_t)mp[2] * I);
+    HCBD__HA(pd, 4 * (size_t)mp[1] * D); HCBD__HA(pw, (size_t)mp[1] * D);
+    HCBD__HA(pf, 3 * (size_t)mp[1] * D); HCBD__HA(pown, np * D);
+    HCBD__HA(rv_start, (np + 1) * I); HCBD__HA(rv_p, (size_t)mp[1] * I);
+    HCBD__HA(xw, (size_t)mp[2] * D); HCBD__HA(xt_p, (size_t)mp[2] * I);
     HCBD__HA(scratch, ((nf > np ? nf : np) + 1) * I);
     HCBD__HA(fid, nf * I); HCBD__HA(fslot, nf * I);
     HCBD__HA(sx, nf * R); HCBD__HA(sy, nf * R); HCBD__HA(sz, nf * R);
@@ -5263,7 +5277,7 @@ static hcbd_result hcbd__hc_lists(hcbd_hc_world *w, int64_t step)
                           "fixed-point sums hold", (int)w->fid[bad], most, w->lf.rlist,
                           HCBD__FIX_DEG);
     hcbd__nl_sort(&w->lp, w->p.L, &sp);
-    if (hcbd__nl_pairs(&w->lp, &w->lp, &sp, &sp, &box, 0, nt) < 0) {
+    if (hcbd__nl_pairs(&w->lp, &w->lp, &sp, &sp, &box, 1, nt) < 0) {
         double n = 0;
         if ((bad = hcbd__hc_dense(w, &sp, &box, &n)) >= 0) return hcbd__hc_phi_fail(w, step, bad, n);
         return hcbd__fail(&w->err, HCBD_ERR_CAPACITY, step, -1,
@@ -5276,7 +5290,15 @@ static hcbd_result hcbd__hc_lists(hcbd_hc_world *w, int64_t step)
                           "polymer-fluid list needs more than its %lld pairs (range rc + skin "
                           "= %g): the fluid is far denser than nbar", (long long)w->lx.max_pairs,
                           w->lx.rlist);
-    /* the transpose by counting sort; polymers come in increasing id */
+    /* the transposes by counting sort; owners come in increasing id */
+    for (a = 0; a <= w->np; ++a) w->rv_start[a] = 0;
+    for (i = 0; i < (int)w->lp.npairs; ++i) w->rv_start[w->lp.nb_j[i] + 1]++;
+    for (a = 0; a < w->np; ++a) {
+        w->rv_start[a + 1] += w->rv_start[a];
+        cur[a] = w->rv_start[a];
+    }
+    for (a = 0; a < w->np; ++a)
+        for (i = w->lp.nb_start[a]; i < w->lp.nb_start[a + 1]; ++i) w->rv_p[cur[w->lp.nb_j[i]]++] = i;
     for (i = 0; i <= w->nf; ++i) w->xt_start[i] = 0;
     for (i = 0; i < (int)w->lx.npairs; ++i) w->xt_start[w->lx.nb_j[i] + 1]++;
     for (i = 0; i < w->nf; ++i) {
@@ -5284,7 +5306,11 @@ static hcbd_result hcbd__hc_lists(hcbd_hc_world *w, int64_t step)
         cur[i] = w->xt_start[i];
     }
     for (a = 0; a < w->np; ++a)
-        for (i = w->lx.nb_start[a]; i < w->lx.nb_start[a + 1]; ++i) w->xt_a[cur[w->lx.nb_j[i]]++] = a;
+        for (i = w->lx.nb_start[a]; i < w->lx.nb_start[a + 1]; ++i) {
+            const int k = cur[w->lx.nb_j[i]]++;
+            w->xt_a[k] = a;
+            w->xt_p[k] = i;
+        }
     hcbd__nl_done(&w->lf, &sf);
     hcbd__nl_done(&w->lp, &sp);
     w->lx.list_valid = 1;
@@ -5357,29 +5383,48 @@ static void hcbd__hc_fluid_density(hcbd_hc_world *w)
     }
 }
 
-/* Polymer densities and mu(phi) (MODEL 8).  Returns the first id with
-   phi >= 1, or -1. */
+/* Polymer pairs run over the half list (owner a < partner b) in two
+   steps: the owner evaluates each pair once and keeps its separation and
+   weight (pd: dx, dy, dz, r, with r = -1 beyond rc) or force (pf); then
+   each polymer sums its own pairs and, through the reverse list (its pairs
+   as a partner, owners in increasing id), the others.  Double precision,
+   a fixed order set by the ids alone (the skin's entries add zeros), any
+   thread count.  Returns the first id with phi >= 1, or -1. */
 static int hcbd__hc_poly_density(hcbd_hc_world *w)
 {
     const int n = w->np, nt = w->p.threads, fc = w->has_fc;
     const double rc = w->p.rc, sg = w->p.sigma, cut2 = rc * rc, A = hcbd__rapid_A(sg, rc);
     const double w0 = A * (rc - sg) * (rc + sg), inv_nmax = 1.0 / w->p.n_max;
     const hcbd__box box = hcbd__hc_box(w);
-    int i, bad = INT_MAX;
+    int q, bad = INT_MAX;
     (void)nt;
-    HCBD__OMP(omp parallel for num_threads(nt) schedule(static) reduction(min:bad))
-    for (i = 0; i < n; ++i) {
+    HCBD__OMP(omp parallel for num_threads(nt) schedule(static))
+    for (q = 0; q < n; ++q) {
+        const int i = w->lp.perm[q];
         const double xi = w->px[i], yi = w->py[i], zi = w->pz[i];
-        double s = w0, phi;
+        double s = 0;
         int32_t p;
         for (p = w->lp.nb_start[i]; p < w->lp.nb_start[i + 1]; ++p) {
             const int j = w->lp.nb_j[p];
-            double d[3], r2;
-            if (j == i) continue;
+            double *d = w->pd + 4 * (size_t)p, r2, wt = 0;
             hcbd__delta_box(&box, xi - w->px[j], yi - w->py[j], zi - w->pz[j], d);
             r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-            if (r2 < cut2) s += hcbd__rapid(sqrt(r2), sg, rc, A);
+            d[3] = -1.0;
+            if (r2 < cut2) {
+                d[3] = sqrt(r2);
+                wt = hcbd__rapid(d[3], sg, rc, A);
+            }
+            w->pw[p] = wt;
+            s += wt;
         }
+        w->pown[i] = s;
+    }
+    HCBD__OMP(omp parallel for num_threads(nt) schedule(static) reduction(min:bad))
+    for (q = 0; q < n; ++q) {
+        const int i = w->lp.perm[q];
+        double s = w0 + w->pown[i], phi;
+        int32_t e;
+        for (e = w->rv_start[i]; e < w->rv_start[i + 1]; ++e) s += w->pw[w->rv_p[e]];
         phi = s * inv_nmax;
         w->pn[i] = (hcbd_real)s;
         if (!(phi < 1.0)) {
@@ -5406,14 +5451,13 @@ static inline double hcbd__leq(double r, double rc)
 static int hcbd__hc_pairs(hcbd_hc_world *w, int *need)
 {
     const int n = w->np, nt = w->p.threads, cap = w->pair_cap;
-    const double rc = w->p.rc, cut2 = rc * rc;
-    const hcbd__box box = hcbd__hc_box(w);
-    int a, bad = INT_MAX, most = 0;
+    const double rc = w->p.rc;
+    int q, bad = INT_MAX, most = 0;
     int64_t created = 0, total = 0;
     (void)nt;
     HCBD__OMP(omp parallel for num_threads(nt) schedule(static) reduction(min:bad) reduction(max:most) reduction(+:created) reduction(+:total))
-    for (a = 0; a < n; ++a) {
-        const double xa = w->px[a], ya = w->py[a], za = w->pz[a];
+    for (q = 0; q < n; ++q) {
+        const int a = w->lp.perm[q];
         int32_t *nb = w->pair_b2 + (size_t)a * cap;
         hcbd_real *nl = w->pair_l2 + (size_t)a * cap, *ne = w->pair_eq2 + (size_t)a * cap;
         const int32_t *ob = w->pair_b + (size_t)a * cap;
@@ -5421,15 +5465,11 @@ static int hcbd__hc_pairs(hcbd_hc_world *w, int *need)
         int cnt = 0, k, o = 0, on = w->fresh_pairs ? 0 : w->pair_n[a];
         int32_t p;
         for (p = w->lp.nb_start[a]; p < w->lp.nb_start[a + 1]; ++p) {
-            const int b = w->lp.nb_j[p];
-            double d[3], r2;
-            if (b <= a) continue;
-            hcbd__delta_box(&box, xa - w->px[b], ya - w->py[b], za - w->pz[b], d);
-            r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-            if (r2 >= cut2) continue;
+            const double r = w->pd[4 * (size_t)p + 3];
+            if (r < 0) continue; /* beyond rc */
             if (cnt < cap) {
-                nb[cnt] = b;
-                ne[cnt] = (hcbd_real)hcbd__leq(sqrt(r2), rc);
+                nb[cnt] = w->lp.nb_j[p];
+                ne[cnt] = (hcbd_real)hcbd__leq(r, rc);
             }
             ++cnt;
         }
@@ -5470,66 +5510,55 @@ static int hcbd__hc_find(const hcbd_hc_world *w, int a, int b)
     return lo < w->pair_n[a] && l[lo] == b ? lo : -1;
 }
 
-/* Polymer forces: Flory-Huggins and transient (MODEL 8).  Each polymer
-   sums all its partners itself (both sides of a pair give bitwise opposite
-   terms), in increasing id: polymer forces span far more decades than a
-   fixed-point range could hold at full precision. */
+/* Polymer forces: Flory-Huggins and transient (MODEL 8), each pair once
+   from the separations of hcbd__hc_poly_density, in the same two steps.
+   The owner keeps the pair's stress; the transient pairs are the list's
+   entries within rc, in the same order. */
 static void hcbd__hc_poly_forces(hcbd_hc_world *w)
 {
     const int n = w->np, nt = w->p.threads, tr = w->transient, fc = w->has_fc;
     const int stress = w->stress_on;
-    const double rc = w->p.rc, sg = w->p.sigma, cut2 = rc * rc, A = hcbd__rapid_A(sg, rc);
+    const double rc = w->p.rc, sg = w->p.sigma, A = hcbd__rapid_A(sg, rc);
     const double cfh = w->p.p_kuhn * w->p.kT / w->p.n_max, alpha = w->p.alpha;
-    const hcbd__box box = hcbd__hc_box(w);
     const size_t cap = (size_t)w->pair_cap;
-    int a;
+    int q;
     int64_t coinc = 0;
     (void)nt;
     HCBD__OMP(omp parallel for num_threads(nt) schedule(static) reduction(+:coinc))
-    for (a = 0; a < n; ++a) {
-        const double xa = w->px[a], ya = w->py[a], za = w->pz[a], mua = w->pmu[a];
-        const int32_t *pb = w->pair_b + a * cap;
-        const int pn = tr ? w->pair_n[a] : 0;
+    for (q = 0; q < n; ++q) {
+        const int a = w->lp.perm[q];
+        const double mua = w->pmu[a];
+        const hcbd_real *lam = w->pair_l + a * cap;
         double F[3] = {0, 0, 0}, sc = 0, st = 0;
         int k = 0;
         int32_t p;
         for (p = w->lp.nb_start[a]; p < w->lp.nb_start[a + 1]; ++p) {
-            const int b = w->lp.nb_j[p];
-            double d[3], r2, r, fr = 0, ft = 0;
-            if (b == a) continue;
-            hcbd__delta_box(&box, xa - w->px[b], ya - w->py[b], za - w->pz[b], d);
-            r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-            if (r2 >= cut2) continue;
-            r = sqrt(r2);
+            const double *d = w->pd + 4 * (size_t)p, r = d[3];
+            double *f = w->pf + 3 * (size_t)p, fr = 0, ft = 0;
+            f[0] = f[1] = f[2] = 0;
+            if (r < 0) continue; /* beyond rc */
+            if (tr) ++k;
             if (r < 1e-12 * sg) { /* no direction: counted, no force */
                 ++coinc;
                 continue;
             }
             if (fc) {
                 double wd = r <= sg ? -2.0 * A * (rc - sg) : 2.0 * A * (r - rc);
-                fr = -cfh * (mua + w->pmu[b]) * wd / r;
+                fr = -cfh * (mua + w->pmu[w->lp.nb_j[p]]) * wd / r;
             }
             if (tr) {
-                /* a's own pairs run in step with the list (both in
-                   increasing id); one of lower id owns the pair */
-                int kk = -1;
-                if (b > a) {
-                    while (k < pn && pb[k] < b) ++k;
-                    if (k < pn && pb[k] == b) kk = k;
-                } else {
-                    kk = hcbd__hc_find(w, b, a);
-                }
-                if (kk >= 0) {
-                    double u = 1.0 - r / rc;
-                    ft = alpha * (w->pair_l[(b > a ? a : b) * cap + kk] - u * u) * (-2.0 * u / rc) / r;
-                }
+                double u = 1.0 - r / rc;
+                ft = alpha * (lam[k - 1] - u * u) * (-2.0 * u / rc) / r;
             }
-            F[0] += (fr + ft) * d[0];
-            F[1] += (fr + ft) * d[1];
-            F[2] += (fr + ft) * d[2];
+            f[0] = (fr + ft) * d[0];
+            f[1] = (fr + ft) * d[1];
+            f[2] = (fr + ft) * d[2];
+            F[0] += f[0];
+            F[1] += f[1];
+            F[2] += f[2];
             if (stress) {
-                sc += 0.5 * d[1] * fr * d[0];
-                st += 0.5 * d[1] * ft * d[0];
+                sc += d[1] * fr * d[0];
+                st += d[1] * ft * d[0];
             }
         }
         w->pFx[a] = (hcbd_real)F[0];
@@ -5539,6 +5568,22 @@ static void hcbd__hc_poly_forces(hcbd_hc_world *w)
             w->ps[3 * a] = sc;
             w->ps[3 * a + 1] = st;
         }
+    }
+    HCBD__OMP(omp parallel for num_threads(nt) schedule(static))
+    for (q = 0; q < n; ++q) {
+        const int a = w->lp.perm[q];
+        double F[3];
+        int32_t e;
+        F[0] = w->pFx[a]; F[1] = w->pFy[a]; F[2] = w->pFz[a];
+        for (e = w->rv_start[a]; e < w->rv_start[a + 1]; ++e) {
+            const double *f = w->pf + 3 * (size_t)w->rv_p[e];
+            F[0] -= f[0];
+            F[1] -= f[1];
+            F[2] -= f[2];
+        }
+        w->pFx[a] = (hcbd_real)F[0];
+        w->pFy[a] = (hcbd_real)F[1];
+        w->pFz[a] = (hcbd_real)F[2];
     }
     w->n_coincident += coinc;
 }
@@ -5554,10 +5599,11 @@ static int hcbd__hc_interp(hcbd_hc_world *w)
     const double rc = w->p.rc, sg = w->p.sigma, cut2 = rc * rc, A = hcbd__rapid_A(sg, rc);
     const double inv_xi = 1.0 / w->p.xi, vj = w->le_vjump;
     const hcbd__box box = hcbd__hc_box(w);
-    int a, bad = INT_MAX;
+    int q, bad = INT_MAX;
     (void)nt;
     HCBD__OMP(omp parallel for num_threads(nt) schedule(static) reduction(min:bad))
-    for (a = 0; a < n; ++a) {
+    for (q = 0; q < n; ++q) {
+        const int a = w->lp.perm[q];
         const double xa = w->px[a], ya = w->py[a], za = w->pz[a];
         double S = 0, dv[3] = {0, 0, 0}, vref[3] = {0, 0, 0}, ydy = 0, v[3];
         int first = 1;
@@ -5567,9 +5613,11 @@ static int hcbd__hc_interp(hcbd_hc_world *w)
             double d[3], r2, r, wt, u[3];
             int k = hcbd__delta_box(&box, xa - w->sx[i], ya - w->sy[i], za - w->sz[i], d);
             r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+            w->xw[p] = 0;
             if (r2 >= cut2) continue;
             r = sqrt(r2);
-            wt = hcbd__rapid(r, sg, rc, A) / w->sn[i];
+            w->xw[p] = hcbd__rapid(r, sg, rc, A);
+            wt = w->xw[p] / w->sn[i];
             /* the image of blob i moves with the velocity of its layer */
             u[0] = w->svx[i] + k * vj;
             u[1] = w->svy[i];
@@ -5603,28 +5651,22 @@ static int hcbd__hc_interp(hcbd_hc_world *w)
 }
 
 /* Polymer forces redistributed onto the fluid blobs with the same psi,
-   each blob over its polymers in increasing id (the transpose list). */
+   each blob over its polymers in increasing id (the transpose list), with
+   the weights the interpolation found. */
 static void hcbd__hc_redistribute(hcbd_hc_world *w)
 {
     const int n = w->nf, nt = w->p.threads;
-    const double rc = w->p.rc, sg = w->p.sigma, cut2 = rc * rc, A = hcbd__rapid_A(sg, rc);
-    const hcbd__box box = hcbd__hc_box(w);
     int i;
     (void)nt;
     HCBD__OMP(omp parallel for num_threads(nt) schedule(static))
     for (i = 0; i < n; ++i) { /* i: slot */
-        const double xi = w->sx[i], yi = w->sy[i], zi = w->sz[i];
         const int id = w->fid[i];
         double F[3] = {0, 0, 0};
         int32_t p;
         for (p = w->xt_start[i]; p < w->xt_start[i + 1]; ++p) {
             const int a = w->xt_a[p];
-            double d[3], r2, r, psi;
-            hcbd__delta_box(&box, w->px[a] - xi, w->py[a] - yi, w->pz[a] - zi, d);
-            r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-            if (r2 >= cut2) continue;
-            r = sqrt(r2);
-            psi = hcbd__rapid(r, sg, rc, A) / w->sn[i] / w->pS[a];
+            const double wt = w->xw[w->xt_p[p]], psi = wt / w->sn[i] / w->pS[a];
+            if (wt == 0) continue; /* beyond rc */
             F[0] += psi * w->pFx[a];
             F[1] += psi * w->pFy[a];
             F[2] += psi * w->pFz[a];
@@ -5743,8 +5785,8 @@ HCBD__INLINE int hcbd__hc_kick_body(hcbd_hc_world *w, int q0, int q1, const int 
                 const int j = c.j[t], k = c.k[t];
                 /* -w'(r)/r of M4: c1 (12 - 9 q)/h for q < 1 (its r -> 0 limit
                    included), 3 c1 (2 - q)^2/(q h) beyond: one division */
-                const double q = sqrt(c.r2[t]) * ih, a = 2.0 - q;
-                const double wdr = q < 1.0 ? c1h * (12.0 - 9.0 * q) : 3.0 * c1h * a * a / q;
+                const double qr = sqrt(c.r2[t]) * ih, a = 2.0 - qr;
+                const double wdr = qr < 1.0 ? c1h * (12.0 - 9.0 * qr) : 3.0 * c1h * a * a / qr;
                 double d[3], fp, F[3];
                 int64_t u;
                 d[0] = c.x[t]; d[1] = c.y[t]; d[2] = c.z[t];

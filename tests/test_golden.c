@@ -10,7 +10,7 @@
    scene.  Changed on purpose (issue 15, the HCBD world on the engine's
    lists): the fluid's densities and pair forces as fixed-point sums over
    its half list, the fluid's exact sweep and every polymer sum in
-   increasing partner id. */
+   increasing partner id, each polymer pair evaluated once by its owner. */
 #include "test.h"
 
 enum { G_GIBD_EULER, G_GIBD_SHARDLOW_SHEAR, G_BD, G_WALLS, G_HCBD, G_N };
@@ -22,9 +22,9 @@ static const char *g_name[G_N] = {"GI-BD Euler stars", "GI-BD Shardlow stars, sh
 static const uint64_t *golden_table(void)
 {
     static const uint64_t dbl[G_N] = {0x34cb467a054c54e1ULL, 0x620ab7b3980b5a57ULL, 0x37004618b698f9a7ULL,
-                                      0xca08eed51029a528ULL, 0x78644d70ebd4900cULL};
+                                      0xca08eed51029a528ULL, 0x96ce85883c2ea501ULL};
     static const uint64_t flt[G_N] = {0xaed4993760453c3eULL, 0x4fc17811aa6eec78ULL, 0xd71b2af658a06d35ULL,
-                                      0x569afa9331137cf4ULL, 0xc460f902ed86dfe4ULL};
+                                      0x569afa9331137cf4ULL, 0xc7dcd6f715395431ULL};
     return sizeof(hcbd_real) == sizeof(double) ? dbl : flt;
 }
 
