@@ -739,7 +739,9 @@ typedef struct hcbd_hc_world {
        pair_n[a] of them at pair_b/pair_l/pair_eq[a * pair_cap + k] */
     int32_t *pair_n, *pair_b, *pair_n2, *pair_b2;
     hcbd_real *pair_l, *pair_eq, *pair_l2, *pair_eq2;
-    int64_t npairs, n_created, n_coincident;
+    int64_t npairs, n_created;
+    int64_t n_coincident;        /* polymer pairs at zero distance (no force,
+                                    no direction) met by the force passes  */
     int fresh_pairs;             /* 1: the next pair search keeps no pair   */
     /* Verlet lists of the engine (hcbd__nlist), all built together when a
        blob has moved skin/2 since the last build: the fluid's half list
@@ -5524,6 +5526,14 @@ static void hcbd__hc_poly_forces(hcbd_hc_world *w)
     int q;
     int64_t coinc = 0;
     (void)nt;
+    if (!fc && !tr) { /* no polymer pair forces: nothing to sum */
+        memset(w->pFx, 0, (size_t)n * sizeof(hcbd_real));
+        memset(w->pFy, 0, (size_t)n * sizeof(hcbd_real));
+        memset(w->pFz, 0, (size_t)n * sizeof(hcbd_real));
+        if (stress)
+            for (q = 0; q < n; ++q) w->ps[3 * q] = w->ps[3 * q + 1] = 0;
+        return;
+    }
     HCBD__OMP(omp parallel for num_threads(nt) schedule(static) reduction(+:coinc))
     for (q = 0; q < n; ++q) {
         const int a = w->lp.perm[q];
