@@ -808,10 +808,11 @@ hcbd_result hcbd_hc_place_polymers_random(hcbd_hc_world *w, int n);
    without moving anything: the neighbour rebuild the step does first. */
 hcbd_result hcbd_hc_refresh(hcbd_hc_world *w);
 /* Advances nsteps.  HCBD_ERR_PARAM when phi >= 1 or a polymer has no fluid
-   blob within rc, HCBD_ERR_CAPACITY on pair overflow, HCBD_ERR_UNSTABLE
-   when a fluid blob moves more than h/2 or a polymer rc/4 in one step or a
-   fluid density n_i leaves (nbar/3, 3 nbar), HCBD_ERR_NONFINITE on non-finite
-   state. */
+   blob within rc, HCBD_ERR_CAPACITY on pair or neighbour-list overflow,
+   HCBD_ERR_UNSTABLE when a fluid blob moves more than h/2 or a polymer rc/4
+   in one step, a fluid density n_i leaves (nbar/3, 3 nbar) or a fluid pair
+   force leaves the fixed-point range (one that alone would move a blob 16 h
+   in a step), HCBD_ERR_NONFINITE on non-finite state. */
 hcbd_result hcbd_hc_step(hcbd_hc_world *w, int nsteps);
 
 /* Pair variable of polymers a, b (any order); HCBD_ERR_STATE if the pair
