@@ -6790,33 +6790,52 @@ static void hcbd__ck_world(hcbd__ck *c, hcbd_world *w)
     hcbd__ck_state(c, w);
 }
 
-size_t hcbd_checkpoint_size(const hcbd_world *w)
+/* Either world's checkpoint: walk writes (or, with c->out NULL, only
+   measures) its fields; name is the size function the caller has. */
+typedef void (*hcbd__walk_fn)(hcbd__ck *c, void *w);
+static size_t hcbd__ck_measure(const void *w, hcbd__walk_fn walk)
 {
     hcbd__ck c;
     if (!w) return 0;
     memset(&c, 0, sizeof c);
-    hcbd__ck_world(&c, (hcbd_world *)w); /* measures only: nothing is written */
+    walk(&c, (void *)w); /* measures only: nothing is written */
     return HCBD__CK_HEAD + c.off;
+}
+
+static hcbd_result hcbd__ck_save(void *w, hcbd_error *e, int64_t step, hcbd__walk_fn walk,
+                                 uint64_t kind, const char *name, void *buf, size_t size)
+{
+    hcbd__ck c;
+    const size_t need = hcbd__ck_measure(w, walk);
+    hcbd__clear(e);
+    if (!buf) return hcbd__fail(e, HCBD_ERR_NULL, step, -1, "checkpoint buffer is NULL");
+    if (size < need)
+        return hcbd__fail(e, HCBD_ERR_MEMORY, step, -1,
+                          "checkpoint buffer of %zu bytes is smaller than the %zu bytes "
+                          "%s asks for", size, need, name);
+    memset(&c, 0, sizeof c);
+    c.out = (unsigned char *)buf + HCBD__CK_HEAD;
+    c.size = need - HCBD__CK_HEAD;
+    walk(&c, w);
+    hcbd__ck_head((unsigned char *)buf, kind, c.off);
+    return HCBD_OK;
+}
+
+static void hcbd__ck_walk(hcbd__ck *c, void *w)
+{
+    hcbd__ck_world(c, (hcbd_world *)w);
+}
+
+size_t hcbd_checkpoint_size(const hcbd_world *w)
+{
+    return hcbd__ck_measure(w, hcbd__ck_walk);
 }
 
 hcbd_result hcbd_checkpoint_save(hcbd_world *w, void *buf, size_t size)
 {
-    hcbd__ck c;
-    size_t need;
     if (!w) return HCBD_ERR_NULL;
-    hcbd__clear(&w->err);
-    if (!buf) return hcbd__fail(&w->err, HCBD_ERR_NULL, w->step, -1, "checkpoint buffer is NULL");
-    need = hcbd_checkpoint_size(w);
-    if (size < need)
-        return hcbd__fail(&w->err, HCBD_ERR_MEMORY, w->step, -1,
-                          "checkpoint buffer of %zu bytes is smaller than the %zu bytes "
-                          "hcbd_checkpoint_size asks for", size, need);
-    memset(&c, 0, sizeof c);
-    c.out = (unsigned char *)buf + HCBD__CK_HEAD;
-    c.size = need - HCBD__CK_HEAD;
-    hcbd__ck_world(&c, w);
-    hcbd__ck_head((unsigned char *)buf, HCBD__CK_WORLD, c.off);
-    return HCBD_OK;
+    return hcbd__ck_save(w, &w->err, w->step, hcbd__ck_walk, HCBD__CK_WORLD,
+                         "hcbd_checkpoint_size", buf, size);
 }
 
 /* The definition is read into a scratch world struct first (it only
@@ -6913,21 +6932,53 @@ static hcbd_result hcbd__ck_load(hcbd_world *w, const void *buf, size_t size)
     return HCBD_OK;
 }
 
-hcbd_result hcbd_save(hcbd_world *w, const char *path)
+/* Saving and loading through a file, for either world: w is the world,
+   e its error, n its checkpoint size and put its checkpoint_save. */
+typedef hcbd_result (*hcbd__put_fn)(void *w, void *buf, size_t size);
+static hcbd_result hcbd__save_path(void *w, hcbd_error *e, int64_t step, size_t n,
+                                   hcbd__put_fn put, const char *path)
 {
-    size_t n;
     unsigned char *b;
     hcbd_result r;
-    if (!w) return HCBD_ERR_NULL;
-    hcbd__clear(&w->err);
-    if (!path) return hcbd__fail(&w->err, HCBD_ERR_NULL, w->step, -1, "path is NULL");
-    n = hcbd_checkpoint_size(w);
+    hcbd__clear(e);
+    if (!path) return hcbd__fail(e, HCBD_ERR_NULL, step, -1, "path is NULL");
     b = (unsigned char *)HCBD_MALLOC(n);
-    if (!b) return hcbd__fail(&w->err, HCBD_ERR_MEMORY, w->step, -1, "malloc of %zu bytes failed", n);
-    r = hcbd_checkpoint_save(w, b, n);
-    if (r == HCBD_OK) r = hcbd__save_file(&w->err, b, n, path);
+    if (!b) return hcbd__fail(e, HCBD_ERR_MEMORY, step, -1, "malloc of %zu bytes failed", n);
+    r = put(w, b, n);
+    if (r == HCBD_OK) r = hcbd__save_file(e, b, n, path);
     HCBD_FREE(b);
     return r;
+}
+
+/* t: the world being built (zeroed), e its error, load its loader. */
+typedef hcbd_result (*hcbd__get_fn)(void *t, const void *buf, size_t size);
+static hcbd_result hcbd__load_path(void *t, hcbd_error *e, hcbd__get_fn load, const char *path)
+{
+    unsigned char *b;
+    size_t n;
+    hcbd_result r;
+    if (!path) return hcbd__fail(e, HCBD_ERR_NULL, -1, -1, "path is NULL");
+    if ((r = hcbd__read_file(e, path, &b, &n)) != HCBD_OK) return r;
+    r = load(t, b, n);
+    HCBD_FREE(b);
+    if (r != HCBD_OK) hcbd__prefix(e, path, ": ");
+    return r;
+}
+
+static hcbd_result hcbd__put(void *w, void *buf, size_t size)
+{
+    return hcbd_checkpoint_save((hcbd_world *)w, buf, size);
+}
+
+static hcbd_result hcbd__get(void *t, const void *buf, size_t size)
+{
+    return hcbd__ck_load((hcbd_world *)t, buf, size);
+}
+
+hcbd_result hcbd_save(hcbd_world *w, const char *path)
+{
+    if (!w) return HCBD_ERR_NULL;
+    return hcbd__save_path(w, &w->err, w->step, hcbd_checkpoint_size(w), hcbd__put, path);
 }
 
 /* The loaders build the new world aside: on success it replaces w (a live
@@ -6959,18 +7010,11 @@ hcbd_result hcbd_checkpoint_load(hcbd_world *w, const void *buf, size_t size)
 
 hcbd_result hcbd_load(hcbd_world *w, const char *path)
 {
-    unsigned char *b;
-    size_t n;
     hcbd_result r;
     hcbd_world t;
     if (!w) return HCBD_ERR_NULL;
     memset(&t, 0, sizeof t);
-    if (!path) r = hcbd__fail(&t.err, HCBD_ERR_NULL, -1, -1, "path is NULL");
-    else if ((r = hcbd__read_file(&t.err, path, &b, &n)) == HCBD_OK) {
-        r = hcbd__ck_load(&t, b, n);
-        HCBD_FREE(b);
-        if (r != HCBD_OK) hcbd__prefix(&t.err, path, ": ");
-    }
+    r = hcbd__load_path(&t, &t.err, hcbd__get, path);
     HCBD__ADOPT(w, &t, r, hcbd_world_destroy);
     return r;
 }
@@ -7171,33 +7215,21 @@ static void hcbd__ck_hc_world(hcbd__ck *c, hcbd_hc_world *w)
     hcbd__ck_hc_state(c, w);
 }
 
+static void hcbd__ck_hc_walk(hcbd__ck *c, void *w)
+{
+    hcbd__ck_hc_world(c, (hcbd_hc_world *)w);
+}
+
 size_t hcbd_hc_checkpoint_size(const hcbd_hc_world *w)
 {
-    hcbd__ck c;
-    if (!w) return 0;
-    memset(&c, 0, sizeof c);
-    hcbd__ck_hc_world(&c, (hcbd_hc_world *)w); /* measures only */
-    return HCBD__CK_HEAD + c.off;
+    return hcbd__ck_measure(w, hcbd__ck_hc_walk);
 }
 
 hcbd_result hcbd_hc_checkpoint_save(hcbd_hc_world *w, void *buf, size_t size)
 {
-    hcbd__ck c;
-    size_t need;
     if (!w) return HCBD_ERR_NULL;
-    hcbd__clear(&w->err);
-    if (!buf) return hcbd__fail(&w->err, HCBD_ERR_NULL, w->step, -1, "checkpoint buffer is NULL");
-    need = hcbd_hc_checkpoint_size(w);
-    if (size < need)
-        return hcbd__fail(&w->err, HCBD_ERR_MEMORY, w->step, -1,
-                          "checkpoint buffer of %zu bytes is smaller than the %zu bytes "
-                          "hcbd_hc_checkpoint_size asks for", size, need);
-    memset(&c, 0, sizeof c);
-    c.out = (unsigned char *)buf + HCBD__CK_HEAD;
-    c.size = need - HCBD__CK_HEAD;
-    hcbd__ck_hc_world(&c, w);
-    hcbd__ck_head((unsigned char *)buf, HCBD__CK_HC, c.off);
-    return HCBD_OK;
+    return hcbd__ck_save(w, &w->err, w->step, hcbd__ck_hc_walk, HCBD__CK_HC,
+                         "hcbd_hc_checkpoint_size", buf, size);
 }
 
 static hcbd_result hcbd__hc_ck_load(hcbd_hc_world *w, const void *buf, size_t size)
@@ -7270,21 +7302,20 @@ static hcbd_result hcbd__hc_ck_load(hcbd_hc_world *w, const void *buf, size_t si
     return HCBD_OK;
 }
 
+static hcbd_result hcbd__hc_put(void *w, void *buf, size_t size)
+{
+    return hcbd_hc_checkpoint_save((hcbd_hc_world *)w, buf, size);
+}
+
+static hcbd_result hcbd__hc_get(void *t, const void *buf, size_t size)
+{
+    return hcbd__hc_ck_load((hcbd_hc_world *)t, buf, size);
+}
+
 hcbd_result hcbd_hc_save(hcbd_hc_world *w, const char *path)
 {
-    size_t n;
-    unsigned char *b;
-    hcbd_result r;
     if (!w) return HCBD_ERR_NULL;
-    hcbd__clear(&w->err);
-    if (!path) return hcbd__fail(&w->err, HCBD_ERR_NULL, w->step, -1, "path is NULL");
-    n = hcbd_hc_checkpoint_size(w);
-    b = (unsigned char *)HCBD_MALLOC(n);
-    if (!b) return hcbd__fail(&w->err, HCBD_ERR_MEMORY, w->step, -1, "malloc of %zu bytes failed", n);
-    r = hcbd_hc_checkpoint_save(w, b, n);
-    if (r == HCBD_OK) r = hcbd__save_file(&w->err, b, n, path);
-    HCBD_FREE(b);
-    return r;
+    return hcbd__save_path(w, &w->err, w->step, hcbd_hc_checkpoint_size(w), hcbd__hc_put, path);
 }
 
 hcbd_result hcbd_hc_checkpoint_load(hcbd_hc_world *w, const void *buf, size_t size)
@@ -7299,18 +7330,11 @@ hcbd_result hcbd_hc_checkpoint_load(hcbd_hc_world *w, const void *buf, size_t si
 
 hcbd_result hcbd_hc_load(hcbd_hc_world *w, const char *path)
 {
-    unsigned char *b;
-    size_t n;
     hcbd_result r;
     hcbd_hc_world t;
     if (!w) return HCBD_ERR_NULL;
     memset(&t, 0, sizeof t);
-    if (!path) r = hcbd__fail(&t.err, HCBD_ERR_NULL, -1, -1, "path is NULL");
-    else if ((r = hcbd__read_file(&t.err, path, &b, &n)) == HCBD_OK) {
-        r = hcbd__hc_ck_load(&t, b, n);
-        HCBD_FREE(b);
-        if (r != HCBD_OK) hcbd__prefix(&t.err, path, ": ");
-    }
+    r = hcbd__load_path(&t, &t.err, hcbd__hc_get, path);
     HCBD__ADOPT(w, &t, r, hcbd_hc_world_destroy);
     return r;
 }
