@@ -2058,6 +2058,44 @@ static hcbd_result hcbd__check_def(const hcbd_world_def *def, char *msg, size_t 
     return HCBD_OK;
 }
 
+/* The start both worlds' init share: the definition's verdict r (its
+   message already in e), then the block; the block aligned, or NULL with
+   e set.  bytes_fn names the caller's size function. */
+static char *hcbd__init_block(hcbd_error *e, hcbd_result r, void *mem, size_t bytes, size_t need,
+                              const char *bytes_fn)
+{
+    char *base = (char *)mem;
+    if (r != HCBD_OK) {
+        e->code = r;
+        return NULL;
+    }
+    if (!mem) {
+        hcbd__fail(e, HCBD_ERR_NULL, -1, -1, "memory block is NULL");
+        return NULL;
+    }
+    if (bytes < need) {
+        hcbd__fail(e, HCBD_ERR_MEMORY, -1, -1,
+                   "memory block of %zu bytes is smaller than the %zu bytes %s asks for", bytes,
+                   need, bytes_fn);
+        return NULL;
+    }
+    return base + ((HCBD__ALIGN - ((uintptr_t)base & (HCBD__ALIGN - 1))) & (HCBD__ALIGN - 1));
+}
+
+/* Both worlds' create: the block for a definition whose verdict is r (its
+   message already in e), or NULL with e set. */
+static void *hcbd__create_block(hcbd_error *e, hcbd_result r, size_t need)
+{
+    void *mem;
+    if (r != HCBD_OK) {
+        e->code = r;
+        return NULL;
+    }
+    mem = HCBD_MALLOC(need);
+    if (!mem) hcbd__fail(e, HCBD_ERR_MEMORY, -1, -1, "malloc of %zu bytes failed", need);
+    return mem;
+}
+
 size_t hcbd_world_bytes(const hcbd_world_def *def)
 {
     char msg[256];
@@ -2069,26 +2107,15 @@ hcbd_result hcbd_world_init(hcbd_world *w, const hcbd_world_def *def, void *mem,
                             size_t bytes)
 {
     hcbd_result r;
-    size_t need;
     char *base;
     const hcbd_params *p;
     if (!w) return HCBD_ERR_NULL;
     memset(w, 0, sizeof *w);
     hcbd__clear(&w->err);
     r = hcbd__check_def(def, w->err.msg, sizeof w->err.msg);
-    if (r != HCBD_OK) {
-        w->err.code = r;
-        return r;
-    }
-    need = hcbd__layout(def, NULL, NULL);
-    if (!mem)
-        return hcbd__fail(&w->err, HCBD_ERR_NULL, -1, -1, "memory block is NULL");
-    if (bytes < need)
-        return hcbd__fail(&w->err, HCBD_ERR_MEMORY, -1, -1,
-                          "memory block of %zu bytes is smaller than the %zu "
-                          "bytes hcbd_world_bytes asks for", bytes, need);
-    base = (char *)mem;
-    base += (HCBD__ALIGN - ((uintptr_t)base & (HCBD__ALIGN - 1))) & (HCBD__ALIGN - 1);
+    base = hcbd__init_block(&w->err, r, mem, bytes, r == HCBD_OK ? hcbd__layout(def, NULL, NULL) : 0,
+                            "hcbd_world_bytes");
+    if (!base) return w->err.code;
     hcbd__layout(def, w, base);
     w->p = def->params;
     p = &w->p;
@@ -2160,22 +2187,15 @@ hcbd_result hcbd_world_init(hcbd_world *w, const hcbd_world_def *def, void *mem,
 
 hcbd_result hcbd_world_create(hcbd_world *w, const hcbd_world_def *def)
 {
-    size_t need;
+    size_t need = 0;
     void *mem;
     hcbd_result r;
     if (!w) return HCBD_ERR_NULL;
     memset(w, 0, sizeof *w);
     hcbd__clear(&w->err);
     r = hcbd__check_def(def, w->err.msg, sizeof w->err.msg);
-    if (r != HCBD_OK) {
-        w->err.code = r;
-        return r;
-    }
-    need = hcbd_world_bytes(def);
-    mem = HCBD_MALLOC(need);
-    if (!mem)
-        return hcbd__fail(&w->err, HCBD_ERR_MEMORY, -1, -1,
-                          "malloc of %zu bytes failed", need);
+    if (r == HCBD_OK) need = hcbd_world_bytes(def);
+    if (!(mem = hcbd__create_block(&w->err, r, need))) return w->err.code;
     r = hcbd_world_init(w, def, mem, need);
     if (r != HCBD_OK) {
         HCBD_FREE(mem);
@@ -4863,25 +4883,16 @@ hcbd_result hcbd_hc_world_init(hcbd_hc_world *w, const hcbd_hc_def *def, void *m
                                size_t bytes)
 {
     hcbd_result r;
-    size_t need;
     char *base;
     const hcbd_hc_params *p;
     if (!w) return HCBD_ERR_NULL;
     memset(w, 0, sizeof *w);
     hcbd__clear(&w->err);
     r = hcbd__hc_check_def(def, w->err.msg, sizeof w->err.msg);
-    if (r != HCBD_OK) {
-        w->err.code = r;
-        return r;
-    }
-    need = hcbd__hc_layout(def, NULL, NULL);
-    if (!mem) return hcbd__fail(&w->err, HCBD_ERR_NULL, -1, -1, "memory block is NULL");
-    if (bytes < need)
-        return hcbd__fail(&w->err, HCBD_ERR_MEMORY, -1, -1,
-                          "memory block of %zu bytes is smaller than the %zu bytes "
-                          "hcbd_hc_world_bytes asks for", bytes, need);
-    base = (char *)mem;
-    base += (HCBD__ALIGN - ((uintptr_t)base & (HCBD__ALIGN - 1))) & (HCBD__ALIGN - 1);
+    base = hcbd__init_block(&w->err, r, mem, bytes,
+                            r == HCBD_OK ? hcbd__hc_layout(def, NULL, NULL) : 0,
+                            "hcbd_hc_world_bytes");
+    if (!base) return w->err.code;
     hcbd__hc_layout(def, w, base);
     w->p = def->params;
     p = &w->p;
@@ -4911,20 +4922,15 @@ hcbd_result hcbd_hc_world_init(hcbd_hc_world *w, const hcbd_hc_def *def, void *m
 
 hcbd_result hcbd_hc_world_create(hcbd_hc_world *w, const hcbd_hc_def *def)
 {
-    size_t need;
+    size_t need = 0;
     void *mem;
     hcbd_result r;
     if (!w) return HCBD_ERR_NULL;
     memset(w, 0, sizeof *w);
     hcbd__clear(&w->err);
     r = hcbd__hc_check_def(def, w->err.msg, sizeof w->err.msg);
-    if (r != HCBD_OK) {
-        w->err.code = r;
-        return r;
-    }
-    need = hcbd_hc_world_bytes(def);
-    mem = HCBD_MALLOC(need);
-    if (!mem) return hcbd__fail(&w->err, HCBD_ERR_MEMORY, -1, -1, "malloc of %zu bytes failed", need);
+    if (r == HCBD_OK) need = hcbd_hc_world_bytes(def);
+    if (!(mem = hcbd__create_block(&w->err, r, need))) return w->err.code;
     r = hcbd_hc_world_init(w, def, mem, need);
     if (r != HCBD_OK) {
         HCBD_FREE(mem);
