@@ -5694,19 +5694,15 @@ static void hcbd__hc_redistribute(hcbd_hc_world *w)
     }
 }
 
-/* The M4 kernel's derivative w'(r) for 0 <= r < 2h, c1 = 1/(4 pi h^4). */
-static inline double hcbd__m4d(double r, double h, double c1)
+/* -w'(r)/r of the M4 kernel at q = r/h < 2, c1h = 1/(4 pi h^5): c1h (12 -
+   9 q) for q < 1 (its r -> 0 limit included), 3 c1h (2 - q)^2/q beyond;
+   one division.  The pressure force is (P_i/n_i^2 + P_j/n_j^2) times it
+   along r_ij, the Morris friction f_ij = -2 eta w'/(n_i n_j r) = 2 eta
+   times it / (n_i n_j). */
+static inline double hcbd__m4_wdr(double q, double c1h)
 {
-    const double q = r / h, a = 2.0 - q;
-    return q >= 1.0 ? -3.0 * c1 * a * a : c1 * (-3.0 * a * a + 12.0 * (1.0 - q) * (1.0 - q));
-}
-
-/* Morris friction f_ij = -2 eta w'/(n_i n_j r) of a fluid pair, with its
-   r -> 0 limit: -w'(r)/r = c1 (12 - 9 q)/h for q < 1, so 12 c1/h. */
-static inline double hcbd__morris_f(double two_eta, double r, double h, double c1, double ni,
-                                    double nj)
-{
-    return r > 0 ? -two_eta * hcbd__m4d(r, h, c1) / (ni * nj * r) : two_eta * 12.0 * c1 / (h * ni * nj);
+    const double a = 2.0 - q;
+    return q < 1.0 ? c1h * (12.0 - 9.0 * q) : 3.0 * c1h * a * a / q;
 }
 
 /* HCBD_PAIR_SHARDLOW for the fluid: each pair's Morris friction and noise
@@ -5718,7 +5714,8 @@ static inline double hcbd__morris_f(double two_eta, double r, double h, double c
 static void hcbd__hc_fluid_shardlow(hcbd_hc_world *w, double dt, uint64_t skey)
 {
     const int n = w->nf, noise = w->noise_f, stress = w->stress_on;
-    const double h = w->p.h, cut2 = 4.0 * h * h, c1 = 1.0 / (4.0 * HCBD__PI * h * h * h * h);
+    const double h = w->p.h, cut2 = 4.0 * h * h, ih = 1.0 / h;
+    const double c1h = 1.0 / (4.0 * HCBD__PI * h * h * h * h * h);
     const double two_eta = 2.0 * w->p.eta, m = w->m, inv_m = w->inv_m, kT = w->p.kT;
     const double vj = w->le_vjump;
     const hcbd__box box = hcbd__hc_box(w);
@@ -5727,7 +5724,7 @@ static void hcbd__hc_fluid_shardlow(hcbd_hc_world *w, double dt, uint64_t skey)
     int id, s;
     for (id = 0; id < n; ++id) {
         const int i = w->fslot[id]; /* slots: i owner, j partner */
-        const double xi = x[i], yi = y[i], zi = z[i], ni = w->sn[i];
+        const double xi = x[i], yi = y[i], zi = z[i], ini = w->sIn[i];
         double sv = 0;
         int32_t p;
         for (p = w->lf.nb_start[i]; p < w->lf.nb_start[i + 1]; ++p) {
@@ -5736,7 +5733,7 @@ static void hcbd__hc_fluid_shardlow(hcbd_hc_world *w, double dt, uint64_t skey)
             int k = hcbd__delta_box(&box, xi - x[j], yi - y[j], zi - z[j], d);
             r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
             if (r2 >= cut2) continue;
-            om = -expm1(-2.0 * dt * inv_m * hcbd__morris_f(two_eta, sqrt(r2), h, c1, ni, w->sn[j]));
+            om = -expm1(-2.0 * dt * inv_m * two_eta * hcbd__m4_wdr(sqrt(r2) * ih, c1h) * ini * w->sIn[j]);
             c = 0.5 * m * om;
             P[0] = -c * (vx[i] - vx[j] - k * vj);
             P[1] = -c * (vy[i] - vy[j]);
@@ -5800,10 +5797,7 @@ HCBD__INLINE int hcbd__hc_kick_body(hcbd_hc_world *w, int q0, int q1, const int 
             int t;
             for (t = 0; t < m; ++t) {
                 const int j = c.j[t], k = c.k[t];
-                /* -w'(r)/r of M4: c1 (12 - 9 q)/h for q < 1 (its r -> 0 limit
-                   included), 3 c1 (2 - q)^2/(q h) beyond: one division */
-                const double qr = sqrt(c.r2[t]) * ih, a = 2.0 - qr;
-                const double wdr = qr < 1.0 ? c1h * (12.0 - 9.0 * qr) : 3.0 * c1h * a * a / qr;
+                const double wdr = hcbd__m4_wdr(sqrt(c.r2[t]) * ih, c1h);
                 double d[3], fp, F[3];
                 int64_t u;
                 d[0] = c.x[t]; d[1] = c.y[t]; d[2] = c.z[t];
@@ -5812,8 +5806,7 @@ HCBD__INLINE int hcbd__hc_kick_body(hcbd_hc_world *w, int q0, int q1, const int 
                 F[0] = fp * d[0]; F[1] = fp * d[1]; F[2] = fp * d[2];
                 if (stress) sp += d[1] * F[0];
                 if (visc) {
-                    /* Morris: f_ij = -2 eta w'/(n_i n_j r) */
-                    const double f = two_eta * wdr * ini * In[j];
+                    const double f = two_eta * wdr * ini * In[j]; /* Morris */
                     const double Fv0 = -f * (vxi - (vx[j] + k * vj));
                     F[0] += Fv0;
                     F[1] += -f * (vyi - vy[j]);
