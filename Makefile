@@ -32,7 +32,7 @@ HC_EXAMPLES := $(B)/hcbd_fluid $(B)/hcbd_polymer
 HEADERS  := hcbd.h
 TEST_SRC := $(wildcard tests/test_*.c) tests/main.c
 
-.PHONY: all run test validate mutants test-main test-walls test-float test-gibd test-hcbd test-sanitize test-sanitize-hcbd test-tsan test-tsan-hcbd test-fuzz-args test-fuzz-ckpt test-install test-build build-check install fuzz bench bench-wp bench-stability bench-peers bench-parts bench-soak clean
+.PHONY: all run test validate mutants test-main test-walls test-float test-hcbd-float test-gibd test-hcbd test-sanitize test-sanitize-hcbd test-tsan test-tsan-hcbd test-fuzz-args test-fuzz-ckpt test-install test-build build-check install fuzz bench bench-wp bench-stability bench-peers bench-parts bench-soak clean
 
 all: $(B)/hcbd_impl.o $(EXAMPLES) $(HC_EXAMPLES)
 
@@ -69,6 +69,9 @@ SAN := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-po
 $(B)/run_tests_hcbd: $(TEST_SRC) tests/test.h tests/list.h $(B)/hcbd_impl_hc.o
 	$(CC) $(HC_CFLAGS) $(TEST_SRC) $(B)/hcbd_impl_hc.o -o $@ $(LDLIBS)
 
+$(B)/run_tests_hcbd_float: $(TEST_SRC) tests/test.h tests/list.h hcbd_impl.c $(HEADERS) | $(B)
+	$(CC) $(HC_CFLAGS) -DHCBD_REAL=float $(TEST_SRC) hcbd_impl.c -o $@ $(LDLIBS)
+
 # The library under ASan + UBSan, one object per model, shared by the
 # sanitized suite and the fuzz-input replays.  The HCBD one has the
 # fuzzers' 64 MiB cap on the worlds a checkpoint may ask for.
@@ -98,7 +101,7 @@ $(B)/run_tests_san: $(TEST_SRC) tests/test.h tests/list.h $(B)/san_impl.o
 # the fuzz inputs replayed under ASan + UBSan; an install and a program
 # built against the installed header only.
 JOBS ?= 2
-TEST_PARTS := main walls hcbd sanitize sanitize-hcbd float gibd tsan tsan-hcbd fuzz-args fuzz-ckpt install build
+TEST_PARTS := main walls hcbd hcbd-float sanitize sanitize-hcbd float gibd tsan tsan-hcbd fuzz-args fuzz-ckpt install build
 LOG = > $(CURDIR)/$(B)/logs/$(1).log 2>&1 || { tail -n 30 $(CURDIR)/$(B)/logs/$(1).log; exit 1; }
 test:
 	@rm -rf $(B)/logs && mkdir -p $(B)/logs
@@ -140,6 +143,9 @@ test-gibd: $(B)/run_tests_gibd | $(B)/logs
 
 test-hcbd: $(B)/run_tests_hcbd | $(B)/logs
 	./$(B)/run_tests_hcbd test_hc_ test_golden $(call LOG,hcbd)
+
+test-hcbd-float: $(B)/run_tests_hcbd_float | $(B)/logs
+	./$(B)/run_tests_hcbd_float --quick test_golden test_hc_determinism test_hc_checkpoint $(call LOG,hcbd-float)
 
 # Under the sanitizers the longest statistical runs are left out: they
 # repeat code paths that shorter tests (the absolute one-step tests, the

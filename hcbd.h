@@ -2082,20 +2082,6 @@ static char *hcbd__init_block(hcbd_error *e, hcbd_result r, void *mem, size_t by
     return base + ((HCBD__ALIGN - ((uintptr_t)base & (HCBD__ALIGN - 1))) & (HCBD__ALIGN - 1));
 }
 
-/* Both worlds' create: the block for a definition whose verdict is r (its
-   message already in e), or NULL with e set. */
-static void *hcbd__create_block(hcbd_error *e, hcbd_result r, size_t need)
-{
-    void *mem;
-    if (r != HCBD_OK) {
-        e->code = r;
-        return NULL;
-    }
-    mem = HCBD_MALLOC(need);
-    if (!mem) hcbd__fail(e, HCBD_ERR_MEMORY, -1, -1, "malloc of %zu bytes failed", need);
-    return mem;
-}
-
 size_t hcbd_world_bytes(const hcbd_world_def *def)
 {
     char msg[256];
@@ -2183,34 +2169,6 @@ hcbd_result hcbd_world_init(hcbd_world *w, const hcbd_world_def *def, void *mem,
     w->n = 0;
     w->live = HCBD__LIVE;
     return HCBD_OK;
-}
-
-hcbd_result hcbd_world_create(hcbd_world *w, const hcbd_world_def *def)
-{
-    size_t need = 0;
-    void *mem;
-    hcbd_result r;
-    if (!w) return HCBD_ERR_NULL;
-    memset(w, 0, sizeof *w);
-    hcbd__clear(&w->err);
-    r = hcbd__check_def(def, w->err.msg, sizeof w->err.msg);
-    if (r == HCBD_OK) need = hcbd_world_bytes(def);
-    if (!(mem = hcbd__create_block(&w->err, r, need))) return w->err.code;
-    r = hcbd_world_init(w, def, mem, need);
-    if (r != HCBD_OK) {
-        HCBD_FREE(mem);
-        return r;
-    }
-    w->owned_mem = mem;
-    return HCBD_OK;
-}
-
-void hcbd_world_destroy(hcbd_world *w)
-{
-    if (!w) return;
-    if (w->owned_mem) HCBD_FREE(w->owned_mem);
-    /* a destroyed world has no particles and no arrays to touch */
-    memset(w, 0, sizeof *w);
 }
 
 static inline void hcbd__wrap(double L, double *x, int32_t *img)
@@ -4920,33 +4878,6 @@ hcbd_result hcbd_hc_world_init(hcbd_hc_world *w, const hcbd_hc_def *def, void *m
     return HCBD_OK;
 }
 
-hcbd_result hcbd_hc_world_create(hcbd_hc_world *w, const hcbd_hc_def *def)
-{
-    size_t need = 0;
-    void *mem;
-    hcbd_result r;
-    if (!w) return HCBD_ERR_NULL;
-    memset(w, 0, sizeof *w);
-    hcbd__clear(&w->err);
-    r = hcbd__hc_check_def(def, w->err.msg, sizeof w->err.msg);
-    if (r == HCBD_OK) need = hcbd_hc_world_bytes(def);
-    if (!(mem = hcbd__create_block(&w->err, r, need))) return w->err.code;
-    r = hcbd_hc_world_init(w, def, mem, need);
-    if (r != HCBD_OK) {
-        HCBD_FREE(mem);
-        return r;
-    }
-    w->owned_mem = mem;
-    return HCBD_OK;
-}
-
-void hcbd_hc_world_destroy(hcbd_hc_world *w)
-{
-    if (!w) return;
-    if (w->owned_mem) HCBD_FREE(w->owned_mem);
-    memset(w, 0, sizeof *w);
-}
-
 /* >>HCBD: set-up */
 static hcbd_result hcbd__hc_check_xyz(hcbd_hc_world *w, int n, const double *xyz,
                                       const char *what)
@@ -6393,18 +6324,6 @@ int64_t hcbd_slabs_result(const hcbd_slabs *s, double *out)
     return s->nblocks;
 }
 
-/* >>set-up after creation */
-hcbd_result hcbd_set_threads(hcbd_world *w, int threads)
-{
-    if (!w) return HCBD_ERR_NULL;
-    hcbd__clear(&w->err);
-    if (threads < 1 || threads > 1024)
-        return hcbd__fail(&w->err, HCBD_ERR_PARAM, w->step, -1,
-                          "threads = %d is invalid (need 1..1024)", threads);
-    w->p.threads = threads;
-    return HCBD_OK;
-}
-
 /* >>run-time guard: the whole state, in id order so the particle reported
    is the lowest offending id whatever the storage. */
 static hcbd_result hcbd__guard(hcbd_world *w)
@@ -6789,57 +6708,14 @@ static void hcbd__ck_world(hcbd__ck *c, hcbd_world *w)
     hcbd__ck_state(c, w);
 }
 
-/* Either world's checkpoint: walk writes (or, with c->out NULL, only
-   measures) its fields; name is the size function the caller has. */
-typedef void (*hcbd__walk_fn)(hcbd__ck *c, void *w);
-static size_t hcbd__ck_measure(const void *w, hcbd__walk_fn walk)
-{
-    hcbd__ck c;
-    if (!w) return 0;
-    memset(&c, 0, sizeof c);
-    walk(&c, (void *)w); /* measures only: nothing is written */
-    return HCBD__CK_HEAD + c.off;
-}
-
-static hcbd_result hcbd__ck_save(void *w, hcbd_error *e, int64_t step, hcbd__walk_fn walk,
-                                 uint64_t kind, const char *name, void *buf, size_t size)
-{
-    hcbd__ck c;
-    const size_t need = hcbd__ck_measure(w, walk);
-    hcbd__clear(e);
-    if (!buf) return hcbd__fail(e, HCBD_ERR_NULL, step, -1, "checkpoint buffer is NULL");
-    if (size < need)
-        return hcbd__fail(e, HCBD_ERR_MEMORY, step, -1,
-                          "checkpoint buffer of %zu bytes is smaller than the %zu bytes "
-                          "%s asks for", size, need, name);
-    memset(&c, 0, sizeof c);
-    c.out = (unsigned char *)buf + HCBD__CK_HEAD;
-    c.size = need - HCBD__CK_HEAD;
-    walk(&c, w);
-    hcbd__ck_head((unsigned char *)buf, kind, c.off);
-    return HCBD_OK;
-}
-
 static void hcbd__ck_walk(hcbd__ck *c, void *w)
 {
     hcbd__ck_world(c, (hcbd_world *)w);
 }
 
-size_t hcbd_checkpoint_size(const hcbd_world *w)
-{
-    return hcbd__ck_measure(w, hcbd__ck_walk);
-}
-
-hcbd_result hcbd_checkpoint_save(hcbd_world *w, void *buf, size_t size)
-{
-    if (!w) return HCBD_ERR_NULL;
-    return hcbd__ck_save(w, &w->err, w->step, hcbd__ck_walk, HCBD__CK_WORLD,
-                         "hcbd_checkpoint_size", buf, size);
-}
-
-/* The definition is read into a scratch world struct first (it only
-   holds values), then the real world is created from it. */
-/* Loads into a fresh world w (its old contents are not looked at). */
+/* Loads into a fresh world w (its old contents are not looked at): the
+   definition first, then the world created from it and its state.  A
+   failure after the creation leaves w live, for hcbd__adopt to free. */
 static hcbd_result hcbd__ck_load(hcbd_world *w, const void *buf, size_t size)
 {
     hcbd__ck c;
@@ -6895,13 +6771,9 @@ static hcbd_result hcbd__ck_load(hcbd_world *w, const void *buf, size_t size)
     if (r != HCBD_OK) return r; /* w->err names the parameter */
     w->n = n;
     hcbd__ck_state(&c, w);
-    if (c.bad || c.off != c.size) {
-        hcbd_error e = w->err;
-        hcbd__ck_bad(&e, &c, c.bad ? "ends inside the particle state" : "has trailing bytes");
-        hcbd_world_destroy(w);
-        w->err = e;
-        return e.code;
-    }
+    if (c.bad || c.off != c.size)
+        return hcbd__ck_bad(&w->err, &c,
+                            c.bad ? "ends inside the particle state" : "has trailing bytes");
     for (k = 0; k < n; ++k) {
         w->id[k] = k;
         w->slot[k] = k;
@@ -6921,9 +6793,6 @@ static hcbd_result hcbd__ck_load(hcbd_world *w, const void *buf, size_t size)
         w->step++;
     }
     if (r != HCBD_OK) {
-        hcbd_error e = w->err;
-        hcbd_world_destroy(w);
-        w->err = e;
         hcbd__prefix(&w->err, "checkpoint state refused: ", "");
         return r;
     }
@@ -6931,91 +6800,242 @@ static hcbd_result hcbd__ck_load(hcbd_world *w, const void *buf, size_t size)
     return HCBD_OK;
 }
 
-/* Saving and loading through a file, for either world: w is the world,
-   e its error, n its checkpoint size and put its checkpoint_save. */
-typedef hcbd_result (*hcbd__put_fn)(void *w, void *buf, size_t size);
-static hcbd_result hcbd__save_path(void *w, hcbd_error *e, int64_t step, size_t n,
-                                   hcbd__put_fn put, const char *path)
+/* >>world kinds: the lifecycle, the thread setting and the checkpoint
+   wrappers of both worlds, written once over a description of each world
+   type (its size, where its shared fields sit, its model's functions). */
+typedef void (*hcbd__walk_fn)(hcbd__ck *c, void *w);
+typedef struct hcbd__kind {
+    size_t size, o_err, o_step, o_live, o_owned, o_threads; /* sizeof, offsetof */
+    uint64_t tag;            /* checkpoint world kind (HCBD__CK_*)             */
+    const char *size_fn;     /* the checkpoint size function a message names  */
+    hcbd_result (*check)(const void *def, char *msg, size_t n);
+    size_t (*bytes)(const void *def);
+    hcbd_result (*init)(void *w, const void *def, void *mem, size_t bytes);
+    hcbd__walk_fn walk;      /* writes, or with c->out NULL measures, fields  */
+    hcbd_result (*load)(void *w, const void *buf, size_t size); /* into a
+                                zeroed world; may fail leaving it live      */
+} hcbd__kind;
+
+#define HCBD__AT(T, k, w, o) ((T *)(void *)((char *)(w) + (k)->o))
+
+/* scratch room for a world of either kind while a load builds it aside */
+typedef union hcbd__any_world {
+    hcbd_world bd;
+#if HCBD_MODEL == HCBD_MODEL_HCBD
+    hcbd_hc_world hc;
+#endif
+} hcbd__any_world;
+
+static hcbd_result hcbd__create(const hcbd__kind *k, void *w, const void *def)
 {
-    unsigned char *b;
+    hcbd_error *e;
+    size_t need = 0;
+    void *mem = NULL;
     hcbd_result r;
+    if (!w) return HCBD_ERR_NULL;
+    memset(w, 0, k->size);
+    e = HCBD__AT(hcbd_error, k, w, o_err);
+    hcbd__clear(e);
+    r = k->check(def, e->msg, sizeof e->msg);
+    if (r != HCBD_OK) {
+        e->code = r;
+        return r;
+    }
+    need = k->bytes(def);
+    if (!(mem = HCBD_MALLOC(need)))
+        return hcbd__fail(e, HCBD_ERR_MEMORY, -1, -1, "malloc of %zu bytes failed", need);
+    r = k->init(w, def, mem, need);
+    if (r != HCBD_OK) {
+        HCBD_FREE(mem);
+        return r;
+    }
+    *HCBD__AT(void *, k, w, o_owned) = mem;
+    return HCBD_OK;
+}
+
+static void hcbd__destroy(const hcbd__kind *k, void *w)
+{
+    void *mem;
+    if (!w) return;
+    mem = *HCBD__AT(void *, k, w, o_owned);
+    if (mem) HCBD_FREE(mem);
+    /* a destroyed world has no particles and no arrays to touch */
+    memset(w, 0, k->size);
+}
+
+static hcbd_result hcbd__set_threads(const hcbd__kind *k, void *w, int threads)
+{
+    hcbd_error *e;
+    if (!w) return HCBD_ERR_NULL;
+    e = HCBD__AT(hcbd_error, k, w, o_err);
+    hcbd__clear(e);
+    if (threads < 1 || threads > 1024)
+        return hcbd__fail(e, HCBD_ERR_PARAM, *HCBD__AT(int64_t, k, w, o_step), -1,
+                          "threads = %d is invalid (need 1..1024)", threads);
+    *HCBD__AT(int, k, w, o_threads) = threads;
+    return HCBD_OK;
+}
+
+static size_t hcbd__ck_size(const hcbd__kind *k, const void *w)
+{
+    hcbd__ck c;
+    if (!w) return 0;
+    memset(&c, 0, sizeof c);
+    k->walk(&c, (void *)w); /* measures only: nothing is written */
+    return HCBD__CK_HEAD + c.off;
+}
+
+static hcbd_result hcbd__ck_put(const hcbd__kind *k, void *w, void *buf, size_t size)
+{
+    hcbd__ck c;
+    hcbd_error *e;
+    int64_t step;
+    size_t need;
+    if (!w) return HCBD_ERR_NULL;
+    e = HCBD__AT(hcbd_error, k, w, o_err);
+    step = *HCBD__AT(int64_t, k, w, o_step);
+    need = hcbd__ck_size(k, w);
+    hcbd__clear(e);
+    if (!buf) return hcbd__fail(e, HCBD_ERR_NULL, step, -1, "checkpoint buffer is NULL");
+    if (size < need)
+        return hcbd__fail(e, HCBD_ERR_MEMORY, step, -1,
+                          "checkpoint buffer of %zu bytes is smaller than the %zu bytes "
+                          "%s asks for", size, need, k->size_fn);
+    memset(&c, 0, sizeof c);
+    c.out = (unsigned char *)buf + HCBD__CK_HEAD;
+    c.size = need - HCBD__CK_HEAD;
+    k->walk(&c, w);
+    hcbd__ck_head((unsigned char *)buf, k->tag, c.off);
+    return HCBD_OK;
+}
+
+/* The loaders build the new world aside in t: on success it replaces w (a
+   live w is destroyed first); on failure t is freed, a live w keeps its
+   state and only its error changes, and a w that is not live (never
+   initialised, or destroyed) is zeroed and carries the error. */
+static hcbd_result hcbd__adopt(const hcbd__kind *k, void *w, void *t, hcbd_result r)
+{
+    const hcbd_error e = *HCBD__AT(hcbd_error, k, t, o_err);
+    const int live = *HCBD__AT(uint64_t, k, w, o_live) == HCBD__LIVE;
+    if (r == HCBD_OK) {
+        if (live) hcbd__destroy(k, w);
+        memcpy(w, t, k->size);
+        return r;
+    }
+    if (*HCBD__AT(uint64_t, k, t, o_live) == HCBD__LIVE) hcbd__destroy(k, t);
+    if (!live) memset(w, 0, k->size);
+    *HCBD__AT(hcbd_error, k, w, o_err) = e;
+    return r;
+}
+
+static hcbd_result hcbd__ck_get(const hcbd__kind *k, void *w, const void *buf, size_t size)
+{
+    hcbd__any_world t;
+    if (!w) return HCBD_ERR_NULL;
+    return hcbd__adopt(k, w, &t, k->load(&t, buf, size));
+}
+
+static hcbd_result hcbd__save(const hcbd__kind *k, void *w, const char *path)
+{
+    hcbd_error *e;
+    int64_t step;
+    unsigned char *b;
+    size_t n;
+    hcbd_result r;
+    if (!w) return HCBD_ERR_NULL;
+    e = HCBD__AT(hcbd_error, k, w, o_err);
+    step = *HCBD__AT(int64_t, k, w, o_step);
     hcbd__clear(e);
     if (!path) return hcbd__fail(e, HCBD_ERR_NULL, step, -1, "path is NULL");
-    b = (unsigned char *)HCBD_MALLOC(n);
-    if (!b) return hcbd__fail(e, HCBD_ERR_MEMORY, step, -1, "malloc of %zu bytes failed", n);
-    r = put(w, b, n);
+    n = hcbd__ck_size(k, w);
+    if (!(b = (unsigned char *)HCBD_MALLOC(n)))
+        return hcbd__fail(e, HCBD_ERR_MEMORY, step, -1, "malloc of %zu bytes failed", n);
+    r = hcbd__ck_put(k, w, b, n);
     if (r == HCBD_OK) r = hcbd__save_file(e, b, n, path);
     HCBD_FREE(b);
     return r;
 }
 
-/* t: the world being built (zeroed), e its error, load its loader. */
-typedef hcbd_result (*hcbd__get_fn)(void *t, const void *buf, size_t size);
-static hcbd_result hcbd__load_path(void *t, hcbd_error *e, hcbd__get_fn load, const char *path)
+static hcbd_result hcbd__load(const hcbd__kind *k, void *w, const char *path)
 {
+    hcbd__any_world t;
+    hcbd_error *e = HCBD__AT(hcbd_error, k, &t, o_err);
     unsigned char *b;
     size_t n;
     hcbd_result r;
-    if (!path) return hcbd__fail(e, HCBD_ERR_NULL, -1, -1, "path is NULL");
-    if ((r = hcbd__read_file(e, path, &b, &n)) != HCBD_OK) return r;
-    r = load(t, b, n);
-    HCBD_FREE(b);
-    if (r != HCBD_OK) hcbd__prefix(e, path, ": ");
-    return r;
+    if (!w) return HCBD_ERR_NULL;
+    memset(&t, 0, sizeof t);
+    if (!path) {
+        r = hcbd__fail(e, HCBD_ERR_NULL, -1, -1, "path is NULL");
+    } else if ((r = hcbd__read_file(e, path, &b, &n)) == HCBD_OK) {
+        r = k->load(&t, b, n);
+        HCBD_FREE(b);
+        if (r != HCBD_OK) hcbd__prefix(e, path, ": ");
+    }
+    return hcbd__adopt(k, w, &t, r);
 }
 
-static hcbd_result hcbd__put(void *w, void *buf, size_t size)
+/* The GI-BD world's kind and its public lifecycle, thread and checkpoint
+   functions. */
+static hcbd_result hcbd__bd_check(const void *def, char *msg, size_t n)
 {
-    return hcbd_checkpoint_save((hcbd_world *)w, buf, size);
+    return hcbd__check_def((const hcbd_world_def *)def, msg, n);
 }
 
-static hcbd_result hcbd__get(void *t, const void *buf, size_t size)
+static size_t hcbd__bd_bytes(const void *def)
 {
-    return hcbd__ck_load((hcbd_world *)t, buf, size);
+    return hcbd_world_bytes((const hcbd_world_def *)def);
+}
+
+static hcbd_result hcbd__bd_init(void *w, const void *def, void *mem, size_t bytes)
+{
+    return hcbd_world_init((hcbd_world *)w, (const hcbd_world_def *)def, mem, bytes);
+}
+
+static hcbd_result hcbd__bd_load(void *w, const void *buf, size_t size)
+{
+    return hcbd__ck_load((hcbd_world *)w, buf, size);
+}
+
+static const hcbd__kind hcbd__kind_bd = {
+    sizeof(hcbd_world), offsetof(hcbd_world, err), offsetof(hcbd_world, step),
+    offsetof(hcbd_world, live), offsetof(hcbd_world, owned_mem),
+    offsetof(hcbd_world, p) + offsetof(hcbd_params, threads), HCBD__CK_WORLD,
+    "hcbd_checkpoint_size", hcbd__bd_check, hcbd__bd_bytes, hcbd__bd_init, hcbd__ck_walk,
+    hcbd__bd_load};
+
+hcbd_result hcbd_world_create(hcbd_world *w, const hcbd_world_def *def)
+{
+    return hcbd__create(&hcbd__kind_bd, w, def);
+}
+
+void hcbd_world_destroy(hcbd_world *w) { hcbd__destroy(&hcbd__kind_bd, w); }
+
+hcbd_result hcbd_set_threads(hcbd_world *w, int threads)
+{
+    return hcbd__set_threads(&hcbd__kind_bd, w, threads);
+}
+
+size_t hcbd_checkpoint_size(const hcbd_world *w) { return hcbd__ck_size(&hcbd__kind_bd, w); }
+
+hcbd_result hcbd_checkpoint_save(hcbd_world *w, void *buf, size_t size)
+{
+    return hcbd__ck_put(&hcbd__kind_bd, w, buf, size);
+}
+
+hcbd_result hcbd_checkpoint_load(hcbd_world *w, const void *buf, size_t size)
+{
+    return hcbd__ck_get(&hcbd__kind_bd, w, buf, size);
 }
 
 hcbd_result hcbd_save(hcbd_world *w, const char *path)
 {
-    if (!w) return HCBD_ERR_NULL;
-    return hcbd__save_path(w, &w->err, w->step, hcbd_checkpoint_size(w), hcbd__put, path);
-}
-
-/* The loaders build the new world aside: on success it replaces w (a live
-   w is destroyed first), on failure a live w keeps its state and only its
-   error changes; a w that is not live (never initialised, or destroyed)
-   is zeroed and carries the error. */
-#define HCBD__ADOPT(W, T, R, DESTROY)                                         \
-    do {                                                                       \
-        if ((R) == HCBD_OK) {                                                  \
-            if ((W)->live == HCBD__LIVE) DESTROY(W);                           \
-            *(W) = *(T);                                                       \
-        } else if ((W)->live == HCBD__LIVE) {                                  \
-            (W)->err = (T)->err;                                               \
-        } else {                                                               \
-            memset((W), 0, sizeof *(W));                                       \
-            (W)->err = (T)->err;                                               \
-        }                                                                      \
-    } while (0)
-
-hcbd_result hcbd_checkpoint_load(hcbd_world *w, const void *buf, size_t size)
-{
-    hcbd_world t;
-    hcbd_result r;
-    if (!w) return HCBD_ERR_NULL;
-    r = hcbd__ck_load(&t, buf, size);
-    HCBD__ADOPT(w, &t, r, hcbd_world_destroy);
-    return r;
+    return hcbd__save(&hcbd__kind_bd, w, path);
 }
 
 hcbd_result hcbd_load(hcbd_world *w, const char *path)
 {
-    hcbd_result r;
-    hcbd_world t;
-    if (!w) return HCBD_ERR_NULL;
-    memset(&t, 0, sizeof t);
-    r = hcbd__load_path(&t, &t.err, hcbd__get, path);
-    HCBD__ADOPT(w, &t, r, hcbd_world_destroy);
-    return r;
+    return hcbd__load(&hcbd__kind_bd, w, path);
 }
 
 /* >>extended XYZ and thermo lines */
@@ -7103,17 +7123,6 @@ int hcbd_thermo_line(const hcbd_world *w, double ns_pstep, char *buf, size_t siz
 }
 
 #if HCBD_MODEL == HCBD_MODEL_HCBD
-hcbd_result hcbd_hc_set_threads(hcbd_hc_world *w, int threads)
-{
-    if (!w) return HCBD_ERR_NULL;
-    hcbd__clear(&w->err);
-    if (threads < 1 || threads > 1024)
-        return hcbd__fail(&w->err, HCBD_ERR_PARAM, w->step, -1,
-                          "threads = %d is invalid (need 1..1024)", threads);
-    w->p.threads = threads;
-    return HCBD_OK;
-}
-
 /* Positions inside the box, finite velocities and pair variables. */
 static hcbd_result hcbd__hc_guard(hcbd_hc_world *w)
 {
@@ -7219,18 +7228,6 @@ static void hcbd__ck_hc_walk(hcbd__ck *c, void *w)
     hcbd__ck_hc_world(c, (hcbd_hc_world *)w);
 }
 
-size_t hcbd_hc_checkpoint_size(const hcbd_hc_world *w)
-{
-    return hcbd__ck_measure(w, hcbd__ck_hc_walk);
-}
-
-hcbd_result hcbd_hc_checkpoint_save(hcbd_hc_world *w, void *buf, size_t size)
-{
-    if (!w) return HCBD_ERR_NULL;
-    return hcbd__ck_save(w, &w->err, w->step, hcbd__ck_hc_walk, HCBD__CK_HC,
-                         "hcbd_hc_checkpoint_size", buf, size);
-}
-
 static hcbd_result hcbd__hc_ck_load(hcbd_hc_world *w, const void *buf, size_t size)
 {
     hcbd__ck c;
@@ -7273,14 +7270,10 @@ static hcbd_result hcbd__hc_ck_load(hcbd_hc_world *w, const void *buf, size_t si
     ready = w->ready;
     w->ready = 0;
     if (c.bad || c.off != c.size || (ready & ~1) || (w->stress_on & ~1) ||
-        !(w->le_offset >= 0 && w->le_offset < w->p.L[0])) {
-        hcbd_error e = w->err;
-        hcbd__ck_bad(&e, &c, c.bad ? "ends inside, or holds invalid, particle state"
-                                   : c.off != c.size ? "has trailing bytes" : "has a bad flag");
-        hcbd_hc_world_destroy(w);
-        w->err = e;
-        return e.code;
-    }
+        !(w->le_offset >= 0 && w->le_offset < w->p.L[0]))
+        return hcbd__ck_bad(&w->err, &c,
+                            c.bad ? "ends inside, or holds invalid, particle state"
+                            : c.off != c.size ? "has trailing bytes" : "has a bad flag");
     for (np = 0; np < w->np && w->transient; ++np) w->npairs += w->pair_n[np];
     r = hcbd__hc_guard(w);
     /* the densities and forces of the saved step, recomputed from the
@@ -7291,9 +7284,6 @@ static hcbd_result hcbd__hc_ck_load(hcbd_hc_world *w, const void *buf, size_t si
         w->n_coincident = coincident;
     }
     if (r != HCBD_OK) {
-        hcbd_error e = w->err;
-        hcbd_hc_world_destroy(w);
-        w->err = e;
         hcbd__prefix(&w->err, "checkpoint state refused: ", "");
         return r;
     }
@@ -7301,41 +7291,70 @@ static hcbd_result hcbd__hc_ck_load(hcbd_hc_world *w, const void *buf, size_t si
     return HCBD_OK;
 }
 
-static hcbd_result hcbd__hc_put(void *w, void *buf, size_t size)
+/* The HCBD world's kind and its public lifecycle, thread and checkpoint
+   functions. */
+static hcbd_result hcbd__hc_check(const void *def, char *msg, size_t n)
 {
-    return hcbd_hc_checkpoint_save((hcbd_hc_world *)w, buf, size);
+    return hcbd__hc_check_def((const hcbd_hc_def *)def, msg, n);
 }
 
-static hcbd_result hcbd__hc_get(void *t, const void *buf, size_t size)
+static size_t hcbd__hc_bytes(const void *def)
 {
-    return hcbd__hc_ck_load((hcbd_hc_world *)t, buf, size);
+    return hcbd_hc_world_bytes((const hcbd_hc_def *)def);
 }
 
-hcbd_result hcbd_hc_save(hcbd_hc_world *w, const char *path)
+static hcbd_result hcbd__hc_init(void *w, const void *def, void *mem, size_t bytes)
 {
-    if (!w) return HCBD_ERR_NULL;
-    return hcbd__save_path(w, &w->err, w->step, hcbd_hc_checkpoint_size(w), hcbd__hc_put, path);
+    return hcbd_hc_world_init((hcbd_hc_world *)w, (const hcbd_hc_def *)def, mem, bytes);
+}
+
+static hcbd_result hcbd__hc_load(void *w, const void *buf, size_t size)
+{
+    return hcbd__hc_ck_load((hcbd_hc_world *)w, buf, size);
+}
+
+static const hcbd__kind hcbd__kind_hc = {
+    sizeof(hcbd_hc_world), offsetof(hcbd_hc_world, err), offsetof(hcbd_hc_world, step),
+    offsetof(hcbd_hc_world, live), offsetof(hcbd_hc_world, owned_mem),
+    offsetof(hcbd_hc_world, p) + offsetof(hcbd_hc_params, threads), HCBD__CK_HC,
+    "hcbd_hc_checkpoint_size", hcbd__hc_check, hcbd__hc_bytes, hcbd__hc_init,
+    hcbd__ck_hc_walk, hcbd__hc_load};
+
+hcbd_result hcbd_hc_world_create(hcbd_hc_world *w, const hcbd_hc_def *def)
+{
+    return hcbd__create(&hcbd__kind_hc, w, def);
+}
+
+void hcbd_hc_world_destroy(hcbd_hc_world *w) { hcbd__destroy(&hcbd__kind_hc, w); }
+
+hcbd_result hcbd_hc_set_threads(hcbd_hc_world *w, int threads)
+{
+    return hcbd__set_threads(&hcbd__kind_hc, w, threads);
+}
+
+size_t hcbd_hc_checkpoint_size(const hcbd_hc_world *w)
+{
+    return hcbd__ck_size(&hcbd__kind_hc, w);
+}
+
+hcbd_result hcbd_hc_checkpoint_save(hcbd_hc_world *w, void *buf, size_t size)
+{
+    return hcbd__ck_put(&hcbd__kind_hc, w, buf, size);
 }
 
 hcbd_result hcbd_hc_checkpoint_load(hcbd_hc_world *w, const void *buf, size_t size)
 {
-    hcbd_hc_world t;
-    hcbd_result r;
-    if (!w) return HCBD_ERR_NULL;
-    r = hcbd__hc_ck_load(&t, buf, size);
-    HCBD__ADOPT(w, &t, r, hcbd_hc_world_destroy);
-    return r;
+    return hcbd__ck_get(&hcbd__kind_hc, w, buf, size);
+}
+
+hcbd_result hcbd_hc_save(hcbd_hc_world *w, const char *path)
+{
+    return hcbd__save(&hcbd__kind_hc, w, path);
 }
 
 hcbd_result hcbd_hc_load(hcbd_hc_world *w, const char *path)
 {
-    hcbd_result r;
-    hcbd_hc_world t;
-    if (!w) return HCBD_ERR_NULL;
-    memset(&t, 0, sizeof t);
-    r = hcbd__load_path(&t, &t.err, hcbd__hc_get, path);
-    HCBD__ADOPT(w, &t, r, hcbd_hc_world_destroy);
-    return r;
+    return hcbd__load(&hcbd__kind_hc, w, path);
 }
 
 hcbd_result hcbd_hc_xyz_write(const hcbd_hc_world *w, FILE *f)
