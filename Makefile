@@ -27,7 +27,7 @@ ALL_CFLAGS = $(WARN) $(FP) $(MODELFLAG) $(CFLAGS) $(OMPFLAG)
 LDLIBS  := -lm
 B       := build
 
-EXAMPLES := $(B)/gibd_bulk $(B)/shear_flow $(B)/channel_flow
+EXAMPLES := $(B)/first_step $(B)/gibd_bulk $(B)/shear_flow $(B)/channel_flow
 HC_EXAMPLES := $(B)/hcbd_fluid $(B)/hcbd_polymer
 HEADERS  := hcbd.h
 TEST_SRC := $(wildcard tests/test_*.c) tests/main.c

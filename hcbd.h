@@ -91,6 +91,11 @@
      builds, bits agree only if the compiler may not contract a*b+c into
      FMA: compile with -ffp-contract=off (the Makefile does).
 
+   EQUATIONS
+     "MODEL n" in the comments below is section n of docs/MODEL.md: the
+     equations as implemented, the papers' equation numbers, the decisions
+     taken where the papers are ambiguous, and what was measured.
+
    CONTENTS (implementation, in the order data flows through a step)
      errors; parameters and their checks; random numbers; kernels (Wendland,
      star potential and its force table); fixed-point pair sums; world and
@@ -306,6 +311,13 @@ typedef struct hcbd_world_def {
 } hcbd_world_def;
 
 hcbd_world_def hcbd_world_def_default(void);
+/* n particles at number density `density`: capacity = n, params.density =
+   density, and the box scaled, its edge ratios kept, so that the volume
+   open to the particles (with walls, L[1] less both walls) holds n at that
+   density.  Bad values of n or density are written as given, for
+   hcbd_world_create to name, and leave the box as it was; the result is
+   HCBD_ERR_PARAM then. */
+hcbd_result hcbd_world_def_set_density(hcbd_world_def *def, int n, double density);
 
 /* >>world -----------------------------------------------------------------*/
 typedef struct hcbd__zig {
@@ -450,6 +462,12 @@ double hcbd_potential_energy(hcbd_world *w);
    excess of an explicit step.  Uses the world's scratch array (no
    allocation); HCBD_ERR_STATE without a potential. */
 hcbd_result hcbd_config_temperature(hcbd_world *w, double out[2]);
+/* The conservative force on every particle at the present positions, the
+   one a step's drift uses: pair potential, Gaussian wall repulsion and
+   the body force fext (unless it drives only the background), in id
+   order, f[3 id + d].  Pair sums go owner by owner in increasing id, so
+   the bits do not depend on the storage order. */
+hcbd_result hcbd_forces(hcbd_world *w, double *f);
 /* Shear-stress flux, accumulated every step while enabled (off by default,
    and then it costs nothing).  hcbd_flux_enable(w, 1) clears the sums and
    starts; hcbd_flux_read gives the averages over the steps since:
@@ -1101,6 +1119,24 @@ hcbd_world_def hcbd_world_def_default(void)
     return d;
 }
 
+hcbd_result hcbd_world_def_set_density(hcbd_world_def *def, int n, double density)
+{
+    double *L, t, open, s;
+    if (!def) return HCBD_ERR_NULL;
+    L = def->params.L;
+    t = HCBD__WALLS ? 2.0 * def->params.wall_thickness : 0.0;
+    open = L[0] * (L[1] - t) * L[2];
+    def->capacity = n;
+    def->params.density = density;
+    if (!(n >= 1 && isfinite(density) && density > 0 && isfinite(open) && open > 0))
+        return HCBD_ERR_PARAM; /* the box is left as it was */
+    s = cbrt(n / density / open);
+    L[0] *= s;
+    L[1] = t + (L[1] - t) * s;
+    L[2] *= s;
+    return HCBD_OK;
+}
+
 static double hcbd__cutmax(const hcbd_params *p)
 {
     double c = 0.0;
@@ -1525,7 +1561,7 @@ double hcbd_wendland_dr(double r, double Rc)
      w(r)          = cw a^4 (1 + 4q)                 2014 eq. 22, 2016 eq. 21
      rho_i         = m N (w(0) + sum_j w(r_ij))      2014 eq. 12; N = 1 (2014)
                                                      or 1/(1 + w(0)/n#) (2016 eq. 7)
-     f_ij          = cf m (1/rho_i + 1/rho_j) a^3    2014 eq. 20
+     f_ij          = cf m (1/rho_i + 1/rho_j) a^3    2014 eq. 24
      S_ij dt/tau   = m f_ij dt/tau = cs (1/rho_i + 1/rho_j) a^3, cs = cf m^2 dt/tau
      Euler:    dp_ij = (S dt/tau)(v_j - v_i) + sqrt(2 kT S dt/tau) zeta   2014 eq. 15, 21
      Shardlow: u' = u e + sqrt(2 kT/m (1 - e^2)) zeta, e = exp(-2 S dt/(m tau)),
@@ -3782,6 +3818,40 @@ hcbd_result hcbd_config_temperature(hcbd_world *w, double out[2])
         }
     }
     out[1] += t.lap;
+    return HCBD_OK;
+}
+
+typedef struct { hcbd_world *w; double *f; } hcbd__force_ctx;
+
+static void hcbd__force_fn(void *c, int i, int j, double dx, double dy, double dz, double r2)
+{
+    hcbd__force_ctx *t = (hcbd__force_ctx *)c;
+    const double fr = hcbd__force_over_r(t->w, sqrt(r2), r2);
+    double *fi = t->f + 3 * (size_t)t->w->id[i], *fj = t->f + 3 * (size_t)t->w->id[j];
+    fi[0] += fr * dx; fi[1] += fr * dy; fi[2] += fr * dz;
+    fj[0] -= fr * dx; fj[1] -= fr * dy; fj[2] -= fr * dz;
+}
+
+hcbd_result hcbd_forces(hcbd_world *w, double *f)
+{
+    hcbd__force_ctx t;
+    hcbd_result r;
+    int k, d;
+    if (!w) return HCBD_ERR_NULL;
+    hcbd__clear(&w->err);
+    if (!f) return hcbd__fail(&w->err, HCBD_ERR_NULL, w->step, -1, "f is NULL");
+    for (k = 0; k < w->n; ++k)
+        for (d = 0; d < 3; ++d) f[3 * k + d] = w->p.fext_background_only ? 0.0 : w->p.fext[d];
+    t.w = w;
+    t.f = f;
+    if (w->p.potential != HCBD_POT_IDEAL && w->n > 1 &&
+        (r = hcbd__for_pairs(w, w->p.rcut, hcbd__force_fn, &t)) != HCBD_OK)
+        return r;
+    for (k = 0; HCBD__WALLS && w->has_gauss && k < w->n; ++k) {
+        double fy = 0.0;
+        hcbd_wall_potential(&w->p, w->y[w->slot[k]], &fy);
+        f[3 * k + 1] += fy;
+    }
     return HCBD_OK;
 }
 

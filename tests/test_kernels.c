@@ -120,6 +120,78 @@ void test_pair_forces_vs_energy(void)
     hcbd_world_destroy(&w);
 }
 
+/* hcbd_forces gives the forces the step applies (body force included),
+   they sum to N fext (the pair forces cancel in pairs), and they do not
+   depend on the storage order. */
+void test_forces_observable(void)
+{
+    enum { N = 64 };
+    hcbd_world_def d = scene(N, 0.24);
+    hcbd_world w;
+    double xyz[3 * N], F[3 * N], G[3 * N], H[3 * N], sum[3] = {0, 0, 0}, xr[3 * N];
+    int i, c;
+    d.params.fext[0] = 0.3;
+    d.params.fext[2] = -0.1;
+    step_forces(d, xyz, F);
+    d.params.L[0] = d.params.L[1] = d.params.L[2] = 6.5;
+    if (!make_world(&w, &d)) return;
+    CHECK(hcbd_forces(&w, NULL) == HCBD_ERR_NULL && strstr(w.err.msg, "f is NULL"), "%s", w.err.msg);
+    hcbd_world_set_positions(&w, N, xyz);
+    CHECK(hcbd_forces(&w, G) == HCBD_OK, "%s", w.err.msg);
+    for (i = 0; i < N; ++i)
+        for (c = 0; c < 3; ++c) {
+            CHECK(fabs(G[3 * i + c] - F[3 * i + c]) < 1e-6 * (1 + fabs(F[3 * i + c])),
+                  "particle %d comp %d: hcbd_forces %g, the step's %g", i, c, G[3 * i + c],
+                  F[3 * i + c]);
+            sum[c] += G[3 * i + c];
+        }
+    CHECK(fabs(sum[0] - N * 0.3) < 1e-9 && fabs(sum[1]) < 1e-9 && fabs(sum[2] + N * 0.1) < 1e-9,
+          "sum of forces (%g, %g, %g), want N fext = (%g, 0, %g)", sum[0], sum[1], sum[2], N * 0.3,
+          -N * 0.1);
+    /* the same particles given in reverse: each id keeps its force, bit for bit */
+    for (i = 0; i < N; ++i)
+        for (c = 0; c < 3; ++c) xr[3 * i + c] = xyz[3 * (N - 1 - i) + c];
+    hcbd_world_set_positions(&w, N, xr);
+    hcbd_forces(&w, H);
+    for (i = 0; i < N; ++i)
+        for (c = 0; c < 3; ++c)
+            CHECK(fabs(H[3 * i + c] - G[3 * (N - 1 - i) + c]) < 1e-12 * (1 + fabs(G[3 * (N - 1 - i) + c])),
+                  "particle %d comp %d after relabelling: %g vs %g", i, c, H[3 * i + c],
+                  G[3 * (N - 1 - i) + c]);
+    hcbd_world_destroy(&w);
+}
+
+/* hcbd_world_def_set_density: n over the open volume is the density, the
+   edge ratios stay, and bad values are named by the create. */
+void test_set_density(void)
+{
+    hcbd_world_def d = hcbd_world_def_default();
+    hcbd_world w;
+    double t = 0, open;
+    d.params.L[0] = 10;
+    d.params.L[1] = 20;
+    d.params.L[2] = 5;
+#if HCBD_MODEL == HCBD_MODEL_WALLED
+    d.params.wall_thickness = 1.5;
+    t = 3.0;
+#endif
+    CHECK(hcbd_world_def_set_density(&d, 1000, 0.24) == HCBD_OK, "set_density refused a good scene");
+    open = d.params.L[0] * (d.params.L[1] - t) * d.params.L[2];
+    CHECK(d.capacity == 1000 && d.params.density == 0.24 && fabs(1000 / open - 0.24) < 1e-12,
+          "capacity %d, density %g, n / open volume %.15g", d.capacity, d.params.density, 1000 / open);
+    CHECK(fabs(d.params.L[0] / d.params.L[2] - 2) < 1e-12 &&
+              fabs((d.params.L[1] - t) / d.params.L[2] - (20 - t) / 5) < 1e-12,
+          "edge ratios not kept: %g %g %g", d.params.L[0], d.params.L[1], d.params.L[2]);
+    CHECK(hcbd_world_def_set_density(NULL, 10, 1) == HCBD_ERR_NULL, "NULL def accepted");
+    CHECK(hcbd_world_def_set_density(&d, 1000, -1) == HCBD_ERR_PARAM &&
+              hcbd_world_create(&w, &d) == HCBD_ERR_PARAM && strstr(w.err.msg, "density"),
+          "negative density: %s", w.err.msg);
+    d = hcbd_world_def_default();
+    CHECK(hcbd_world_def_set_density(&d, 0, 0.24) == HCBD_ERR_PARAM &&
+              hcbd_world_create(&w, &d) == HCBD_ERR_PARAM && strstr(w.err.msg, "capacity = 0"),
+          "n = 0: %s", w.err.msg);
+}
+
 /* A table of the star force reproduces the analytic forces within the
    linear-interpolation error dr^2 max|F''| / 8 per pair (~1e-6 relative
    here; an index off by one would give ~1e-3). */
