@@ -32,7 +32,7 @@ HC_EXAMPLES := $(B)/hcbd_fluid $(B)/hcbd_polymer
 HEADERS  := hcbd.h
 TEST_SRC := $(wildcard tests/test_*.c) tests/main.c
 
-.PHONY: all run test validate mutants test-main test-walls test-float test-hcbd-float test-gibd test-hcbd test-sanitize test-sanitize-hcbd test-tsan test-tsan-hcbd test-fuzz-args test-fuzz-ckpt test-install test-build build-check install fuzz bench bench-wp bench-stability bench-peers bench-parts bench-soak clean
+.PHONY: all run test validate mutants exercise test-main test-walls test-float test-hcbd-float test-examples test-gibd test-hcbd test-sanitize test-sanitize-hcbd test-tsan test-tsan-hcbd test-fuzz-args test-fuzz-ckpt test-install test-build build-check install fuzz bench bench-wp bench-stability bench-peers bench-parts bench-soak clean
 
 all: $(B)/hcbd_impl.o $(EXAMPLES) $(HC_EXAMPLES)
 
@@ -101,7 +101,7 @@ $(B)/run_tests_san: $(TEST_SRC) tests/test.h tests/list.h $(B)/san_impl.o
 # the fuzz inputs replayed under ASan + UBSan; an install and a program
 # built against the installed header only.
 JOBS ?= 2
-TEST_PARTS := main walls hcbd hcbd-float sanitize sanitize-hcbd float gibd tsan tsan-hcbd fuzz-args fuzz-ckpt install build
+TEST_PARTS := main walls hcbd hcbd-float examples sanitize sanitize-hcbd float gibd tsan tsan-hcbd fuzz-args fuzz-ckpt install build
 LOG = > $(CURDIR)/$(B)/logs/$(1).log 2>&1 || { tail -n 30 $(CURDIR)/$(B)/logs/$(1).log; exit 1; }
 test:
 	@rm -rf $(B)/logs && mkdir -p $(B)/logs
@@ -143,6 +143,17 @@ test-gibd: $(B)/run_tests_gibd | $(B)/logs
 
 test-hcbd: $(B)/run_tests_hcbd | $(B)/logs
 	./$(B)/run_tests_hcbd test_hc_ test_golden $(call LOG,hcbd)
+
+# Every example's argument handling, first_step against its theory, and
+# the exercise checker on exercises 1 and 2.
+test-examples: $(EXAMPLES) $(HC_EXAMPLES) | $(B)/logs
+	tests/examples.sh $(B) $(call LOG,examples)
+
+# make exercise N=k [ANSWER=x]: runs exercise k of docs/exercises.md and
+# says whether the run, and the answer, are within its tolerance.
+exercise: $(EXAMPLES)
+	@mkdir -p out
+	@examples/exercise.sh $(B) "$(N)" "$(ANSWER)"
 
 test-hcbd-float: $(B)/run_tests_hcbd_float | $(B)/logs
 	./$(B)/run_tests_hcbd_float --quick test_golden test_hc_determinism test_hc_checkpoint $(call LOG,hcbd-float)

@@ -3351,8 +3351,10 @@ static void hcbd__shardlow(hcbd_world *w)
     }
 }
 
-/* >>integrator: Euler-Maruyama, all right-hand sides at time t (MODEL 2):
-   dR = v dt + F/xi dt + dW,  dv = F/m dt + (pair exchanges)/m. */
+/* >>integrator (MODEL 2, 13.2): dv = F/m dt + (pair exchanges)/m, dR = v dt
+   + F/xi dt + dW.  With Euler pairs every right-hand side is of time t;
+   after the exact sweep the kick comes first and the drift uses the new
+   v (kick before drift). */
 static hcbd_result hcbd__integrate(hcbd_world *w)
 {
     const int n = w->n, nt = w->p.threads;

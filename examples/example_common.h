@@ -1,4 +1,4 @@
-/* Shared by the examples: key=value arguments named as in MODEL.md and
+/* Shared by the examples: key=value arguments named as in docs/MODEL.md and
    DESIGN.md, output files, block statistics.  Each example handles its own
    keys in a callback and leaves the physical ones to parse_args. */
 #ifndef HCBD_EXAMPLE_COMMON_H
@@ -102,12 +102,16 @@ static int check_preset(const config *c, const char *v)
     return 0;
 }
 
-/* Physical keys of MODEL.md, seed, steps, threads, out; the example's own
-   keys first through own().  Returns 0 after printing what was wrong. */
+/* Physical keys of docs/MODEL.md, seed, steps, threads, out; the example's
+   own keys first through own().  threads defaults to the cores online (the
+   results are the same bits for any count).  Returns 0 after printing what
+   was wrong. */
 static int parse_args(int argc, char **argv, config *c, own_key_fn own, void (*usage)(void))
 {
     hcbd_params *p = &c->def.params;
+    long cores = sysconf(_SC_NPROCESSORS_ONLN);
     int k, e;
+    p->threads = cores < 1 ? 1 : cores > 1024 ? 1024 : (int)cores;
     for (k = 1; k < argc; ++k) {
         char key[64], *eq = strchr(argv[k], '=');
         const char *v;
