@@ -82,6 +82,7 @@ static struct {
     int ngdot;
     double g_si;               /* reverse-Poiseuille body force, m/s^2   */
 } opt;
+static hcbd_hc_si si; /* the fluid's physical parameters, SI (Table I by default) */
 
 static void usage(void)
 {
@@ -92,6 +93,8 @@ static void usage(void)
             "                      blocks=5 gdot=5,15,50; paper: 3000, 5000, 200000,\n"
             "                      6000, 12000, blocks=10, gdot=2,5,10,20,50\n"
             "  time_unit=1e-6      reduced time unit in seconds (dt of Table I = 1 us)\n"
+            "  rho eta nbar P0 T dt sigma h  the fluid of docs/MODEL.md 6 in SI units (kg/m^3,\n"
+            "                      Pa s, 1/m^3, Pa, K, s, m; h in sigma); Table I by default\n"
             "  relax_steps=N       noise-free quench of the start lattice (0: none)\n"
             "  relax_stiffness=25  P0 factor during the quench\n"
             "  eq_steps=N          Table I equilibration after the quench (not measured)\n"
@@ -131,6 +134,14 @@ static int own_key(config *c, const char *key, const char *v)
 {
     if (!strcmp(key, "preset")) return check_preset(c, v);
     if (!strcmp(key, "time_unit")) return positive_key(c, key, v, &opt.time_unit);
+    if (!strcmp(key, "rho")) return positive_key(c, key, v, &si.rho);
+    if (!strcmp(key, "eta")) return positive_key(c, key, v, &si.eta);
+    if (!strcmp(key, "nbar")) return positive_key(c, key, v, &si.nbar);
+    if (!strcmp(key, "P0")) return positive_key(c, key, v, &si.P0);
+    if (!strcmp(key, "T")) return positive_key(c, key, v, &si.T);
+    if (!strcmp(key, "dt")) return positive_key(c, key, v, &si.dt);
+    if (!strcmp(key, "sigma")) return positive_key(c, key, v, &si.sigma);
+    if (!strcmp(key, "h")) return positive_key(c, key, v, &si.h_sigma);
     if (!strcmp(key, "relax_stiffness")) return positive_key(c, key, v, &opt.relax_stiffness);
     if (!strcmp(key, "g")) return positive_key(c, key, v, &opt.g_si);
     if (!strcmp(key, "relax_steps")) return int_key(c, key, v, &opt.relax_steps, 0, 100000000);
@@ -671,7 +682,6 @@ int main(int argc, char **argv)
 {
     config c;
     ctx x;
-    hcbd_hc_si si = hcbd_hc_si_table1();
     hcbd_hc_params *p;
     hcbd_hc_world w;
     hcbd_hc_theory thr;
@@ -696,6 +706,7 @@ int main(int argc, char **argv)
     c.steps = 1000;
     for (k = 1; k < argc; ++k) /* the preset first: explicit keys override it */
         if (!strcmp(argv[k], "preset=paper")) paper = 1;
+    si = hcbd_hc_si_table1();
     opt.time_unit = 1e-6;
     opt.relax_steps = paper ? 3000 : 1500;
     opt.relax_stiffness = 25;
@@ -747,10 +758,10 @@ int main(int argc, char **argv)
     x.def.polymer_capacity = 0;
     mkdirs(c.out);
 
-    printf("hcbd_fluid: pure SPH fluid of HCBD (2018 sec. IV A), Table I, %d fluid blobs, "
+    printf("hcbd_fluid: pure SPH fluid of HCBD (2018 sec. IV A), %d fluid blobs, "
            "box %.4g x %.4g x %.4g sigma, threads = %d, seed = %llu\n",
            x.N, p->L[0], p->L[1], p->L[2], p->threads, (unsigned long long)p->seed);
-    printf("# Table I (SI): sigma = %g m, dt = %g s, T = %g K, rho = %g kg/m^3, eta = %g Pa s, "
+    printf("# fluid (SI; Table I where not set): sigma = %g m, dt = %g s, T = %g K, rho = %g kg/m^3, eta = %g Pa s, "
            "nbar = %g m^-3, P0 = %g Pa, h = %g sigma\n",
            si.sigma, si.dt, si.T, si.rho, si.eta, si.nbar, si.P0, si.h_sigma);
     printf("# reduced units: sigma = %g m, kT = %g J, time unit = %g s, mass unit kT t^2/sigma^2 "

@@ -31,6 +31,7 @@ for e in gibd_bulk shear_flow channel_flow; do
     expect threads "$B/$e" threads=x
 done
 expect steps "$B/gibd_bulk" steps=12.5
+for key in rho eta nbar P0 T dt sigma h; do expect $key "$B/hcbd_fluid" $key=-1; done
 
 # first_step: T within 4 errors of kT; nu within 4 errors plus 0.5 % (the
 # deficit docs/MODEL.md 12 records at this tau) of the mean field at k.
