@@ -6901,8 +6901,8 @@ typedef union hcbd__any_world {
 static hcbd_result hcbd__create(const hcbd__kind *k, void *w, const void *def)
 {
     hcbd_error *e;
-    size_t need = 0;
-    void *mem = NULL;
+    size_t need;
+    void *mem;
     hcbd_result r;
     if (!w) return HCBD_ERR_NULL;
     memset(w, 0, k->size);
