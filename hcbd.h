@@ -540,20 +540,37 @@ int64_t hcbd_profile_result(const hcbd_profile *pr, double *out);
    noise is keyed by step and ids, so there is no generator state). */
 uint64_t hcbd_state_checksum(const hcbd_world *w);
 
-/* Radial distribution function.  The caller owns hist (nbins doubles). */
+/* Radial distribution function in nbins shells of width rmax / nbins, with
+   block errors when block > 0 (block samples per block; block = 0: no
+   errors).  The caller owns mem (hcbd_rdf_bytes(nbins, block)). */
 typedef struct hcbd_rdf {
     double rmax, dr;
-    int nbins;
-    double *hist;
-    int64_t samples;
-    double pair_norm;
+    int nbins, block;
+    double *hist;       /* pairs per shell, all samples                  */
+    double *cur;        /* the same in the open block                     */
+    double *gsum, *gsum2, *csum, *csum2; /* closed blocks: sums of g and of
+                                            the coordination at shell edges */
+    int64_t samples, blocks, cur_samples;
+    double pair_norm, cur_norm; /* sum over samples of n (n - 1) / (2 V) */
+    double half_n, cur_half_n;  /* sum over samples of n / 2             */
 } hcbd_rdf;
-hcbd_result hcbd_rdf_init(hcbd_rdf *g, double rmax, int nbins, double *hist);
+size_t hcbd_rdf_bytes(int nbins, int block);
+hcbd_result hcbd_rdf_init(hcbd_rdf *g, double rmax, int nbins, int block, void *mem,
+                          size_t bytes);
 /* Uses the neighbour list when rmax <= the interaction cut-off, else all
    pairs (O(n^2)); rmax must not exceed half the shortest box edge. */
 hcbd_result hcbd_rdf_sample(hcbd_rdf *g, hcbd_world *w);
-/* r[b] bin centres, g[b] values (either may be NULL). */
-void hcbd_rdf_result(const hcbd_rdf *g, double *r, double *gr);
+/* r[b] shell centres, g[b] over all samples, err[b] its standard error from
+   the closed blocks (NaN with fewer than two); any may be NULL.  Returns
+   the number of closed blocks. */
+int64_t hcbd_rdf_result(const hcbd_rdf *g, double *r, double *gr, double *err);
+/* Coordination number, the mean number of neighbours within rc <= rmax:
+   4 pi rho int_0^rc g(r) r^2 dr with rho = (n - 1) / V, i.e. 2 (pairs
+   closer than rc) / n per sample; inside a shell g is taken as constant.
+   *err (may be NULL) its block error (NaN with fewer than two closed
+   blocks; between shell edges the interpolated edge errors, an upper
+   bound). */
+hcbd_result hcbd_rdf_coordination(const hcbd_rdf *g, double rc, double *nc, double *err);
 
 /* Multiple-tau correlator (Ramirez et al. 2010) for nch channels; the
    correlation is averaged over channels.  Level 0 holds lags 0..p-1, level
@@ -581,23 +598,48 @@ int hcbd_mtcorr_result(const hcbd_mtcorr *c, int64_t min_count, double *lag,
                        double *corr, int64_t *count, int max);
 
 /* Mean-squared displacement with multiple time origins, order-n scheme
-   (Frenkel & Smit sec. 4.4): level l keeps the last B positions sampled
-   every B^l samples and correlates each new one with them; lags j B^l,
-   j = 1..B-1.  Feed unwrapped positions (3n, id order) every sample. */
+   (Frenkel & Smit sec. 4.4): lags j B^l, j = 1..B-1, at levels l =
+   0..levels-1.  With dense = 0 level l keeps positions every B^l samples
+   (one origin per B^l samples, the book's scheme); dense = k > 0 keeps
+   them every B^(l-k) samples (at least every sample), k levels denser:
+   B^k times the origins at the long lags for B^k times the memory and
+   work of those levels.  block > 0 samples per block: the origins restart
+   at each block, whose MSD is one independent estimate (hcbd_msd_stats);
+   lags of block samples or more are not measured.  Feed unwrapped
+   positions (3n, id order) every sample. */
 typedef struct hcbd_msd {
-    int n, B, levels;
-    double *pos;        /* levels x B x 3n       */
-    double *sum;        /* levels x B            */
-    int64_t *count;     /* levels x B            */
-    int *fill, *head;
-    int64_t nsamples;
+    int n, B, levels, dense, nlag;
+    int64_t block;
+    double *pos;        /* per level: slots[l] x 3n, from offset[l]       */
+    size_t *offset;
+    int *slots, *stride, *fill, *head;
+    double *sum;        /* per lag (nlag = levels (B - 1)): all samples   */
+    int64_t *count;
+    double *cur;        /* per lag: the open block                        */
+    int64_t *cur_count;
+    double *bsum, *bcross; /* closed blocks: sums of the block means and of
+                              their products (nlag x nlag)               */
+    int64_t nsamples, cur_samples, blocks;
 } hcbd_msd;
-size_t hcbd_msd_bytes(int n, int B, int levels);
-hcbd_result hcbd_msd_init(hcbd_msd *d, int n, int B, int levels, void *mem,
-                          size_t bytes);
+size_t hcbd_msd_bytes(int n, int B, int levels, int dense);
+hcbd_result hcbd_msd_init(hcbd_msd *d, int n, int B, int levels, int dense, int64_t block,
+                          void *mem, size_t bytes);
 void hcbd_msd_add(hcbd_msd *d, const double *xyz);
+/* All origins of all samples: lag (in samples), MSD, origins averaged;
+   any array may be NULL; returns how many lags (at most max). */
 int hcbd_msd_result(const hcbd_msd *d, double *lag, double *msd, int64_t *count,
                     int max);
+/* The mean over closed blocks and its standard error (NaN with fewer than
+   two blocks; the all-sample mean and NaN errors when block = 0); returns
+   how many lags (at most max). */
+int hcbd_msd_stats(const hcbd_msd *d, double *lag, double *msd, double *err, int max);
+/* Diffusion coefficient D = slope / 6 of the least-squares line through
+   the MSD at the lags in [lag_min, lag_max] (samples), in length^2 per
+   sample (divide by the time between samples), with the block error of
+   that slope (the blocks' covariance of the lags taken in); needs two
+   lags in the window. */
+hcbd_result hcbd_msd_diffusion(const hcbd_msd *d, double lag_min, double lag_max, double *D,
+                               double *err);
 
 /* Carreau fit of a flow curve (2016 eq. 34, 2018 eq. 36) with eta_inf
    fixed (for GI-BD the background viscosity of eq. 35):
@@ -3972,19 +4014,59 @@ uint64_t hcbd_state_checksum(const hcbd_world *w)
 }
 
 /* >>g(r) */
-hcbd_result hcbd_rdf_init(hcbd_rdf *g, double rmax, int nbins, double *hist)
+size_t hcbd_rdf_bytes(int nbins, int block)
 {
-    int b;
-    if (!g || !hist) return HCBD_ERR_NULL;
-    if (!(rmax > 0) || !isfinite(rmax) || nbins < 1) return HCBD_ERR_PARAM;
+    if (nbins < 1 || nbins > (1 << 24) || block < 0) return 0;
+    return (size_t)nbins * (block ? 6 : 1) * sizeof(double);
+}
+
+hcbd_result hcbd_rdf_init(hcbd_rdf *g, double rmax, int nbins, int block, void *mem,
+                          size_t bytes)
+{
+    size_t need = hcbd_rdf_bytes(nbins, block), nb = (size_t)nbins;
+    if (!g || !mem) return HCBD_ERR_NULL;
+    if (!(rmax > 0) || !isfinite(rmax) || !need) return HCBD_ERR_PARAM;
+    if (bytes < need) return HCBD_ERR_MEMORY;
+    memset(g, 0, sizeof *g);
+    memset(mem, 0, need);
     g->rmax = rmax;
     g->nbins = nbins;
+    g->block = block;
     g->dr = rmax / nbins;
-    g->hist = hist;
-    g->samples = 0;
-    g->pair_norm = 0.0;
-    for (b = 0; b < nbins; ++b) hist[b] = 0.0;
+    g->hist = (double *)mem;
+    if (block) {
+        g->cur = g->hist + nb;
+        g->gsum = g->cur + nb;
+        g->gsum2 = g->gsum + nb;
+        g->csum = g->gsum2 + nb;
+        g->csum2 = g->csum + nb;
+    }
     return HCBD_OK;
+}
+
+static double hcbd__shell(const hcbd_rdf *g, int b)
+{
+    double r0 = b * g->dr, r1 = r0 + g->dr;
+    return 4.0 / 3.0 * HCBD__PI * (r1 * r1 * r1 - r0 * r0 * r0);
+}
+
+/* The open block's g and its coordination at the outer shell edges join
+   the closed blocks' sums. */
+static void hcbd__rdf_close(hcbd_rdf *g)
+{
+    double cum = 0.0;
+    int b;
+    for (b = 0; b < g->nbins; ++b) {
+        double gb = g->cur[b] / (g->cur_norm * hcbd__shell(g, b)), c;
+        cum += g->cur[b];
+        c = cum / g->cur_half_n;
+        g->gsum[b] += gb; g->gsum2[b] += gb * gb;
+        g->csum[b] += c; g->csum2[b] += c * c;
+        g->cur[b] = 0.0;
+    }
+    g->cur_norm = g->cur_half_n = 0.0;
+    g->cur_samples = 0;
+    g->blocks++;
 }
 
 static void hcbd__rdf_fn(void *c, int i, int j, double dx, double dy, double dz,
@@ -3993,7 +4075,10 @@ static void hcbd__rdf_fn(void *c, int i, int j, double dx, double dy, double dz,
     hcbd_rdf *g = (hcbd_rdf *)c;
     int b = (int)(sqrt(r2) / g->dr);
     (void)i; (void)j; (void)dx; (void)dy; (void)dz;
-    if (b < g->nbins) g->hist[b] += 1.0;
+    if (b < g->nbins) {
+        g->hist[b] += 1.0;
+        if (g->cur) g->cur[b] += 1.0;
+    }
 }
 
 hcbd_result hcbd_rdf_sample(hcbd_rdf *g, hcbd_world *w)
@@ -4024,20 +4109,61 @@ hcbd_result hcbd_rdf_sample(hcbd_rdf *g, hcbd_world *w)
     V = w->p.L[0] * w->p.L[1] * w->p.L[2];
     /* expected pairs per unit volume of shell for an ideal gas: n(n-1)/(2V) */
     g->pair_norm += 0.5 * w->n * (w->n - 1.0) / V;
+    g->half_n += 0.5 * w->n;
     g->samples++;
+    if (g->block) {
+        g->cur_norm += 0.5 * w->n * (w->n - 1.0) / V;
+        g->cur_half_n += 0.5 * w->n;
+        if (++g->cur_samples == g->block) hcbd__rdf_close(g);
+    }
     return HCBD_OK;
 }
 
-void hcbd_rdf_result(const hcbd_rdf *g, double *r, double *gr)
+/* Standard error of the mean of nb block values with sums s, s2. */
+static double hcbd__block_err(double s, double s2, int64_t nb)
+{
+    double m;
+    if (nb < 2) return NAN;
+    m = s / (double)nb;
+    return sqrt(fmax(s2 / (double)nb - m * m, 0.0) / (double)(nb - 1));
+}
+
+int64_t hcbd_rdf_result(const hcbd_rdf *g, double *r, double *gr, double *err)
 {
     int b;
-    if (!g) return;
+    if (!g) return 0;
     for (b = 0; b < g->nbins; ++b) {
-        double r0 = b * g->dr, r1 = r0 + g->dr;
-        double shell = 4.0 / 3.0 * HCBD__PI * (r1 * r1 * r1 - r0 * r0 * r0);
-        if (r) r[b] = r0 + 0.5 * g->dr;
-        if (gr) gr[b] = g->pair_norm > 0 ? g->hist[b] / (g->pair_norm * shell) : 0.0;
+        if (r) r[b] = (b + 0.5) * g->dr;
+        if (gr) gr[b] = g->pair_norm > 0 ? g->hist[b] / (g->pair_norm * hcbd__shell(g, b)) : 0.0;
+        if (err) err[b] = g->block ? hcbd__block_err(g->gsum[b], g->gsum2[b], g->blocks) : NAN;
     }
+    return g->blocks;
+}
+
+hcbd_result hcbd_rdf_coordination(const hcbd_rdf *g, double rc, double *nc, double *err)
+{
+    double cum = 0.0, x, f, e0 = 0.0, e1;
+    int b, k;
+    if (!g || !nc) return HCBD_ERR_NULL;
+    if (!(rc >= 0) || rc > g->rmax) return HCBD_ERR_PARAM;
+    if (!(g->half_n > 0)) return HCBD_ERR_STATE;
+    x = rc / g->dr;
+    k = (int)x;
+    if (k >= g->nbins) k = g->nbins - 1; /* rc = rmax: all of the last shell */
+    for (b = 0; b < k; ++b) cum += g->hist[b];
+    /* the part of shell k inside rc, by volume */
+    f = (rc * rc * rc - pow(k * g->dr, 3)) / (pow((k + 1) * g->dr, 3) - pow(k * g->dr, 3));
+    *nc = (cum + f * g->hist[k]) / g->half_n;
+    if (err) {
+        if (!g->block || g->blocks < 2) {
+            *err = NAN;
+        } else {
+            if (k > 0) e0 = hcbd__block_err(g->csum[k - 1], g->csum2[k - 1], g->blocks);
+            e1 = hcbd__block_err(g->csum[k], g->csum2[k], g->blocks);
+            *err = (1 - f) * e0 + f * e1;
+        }
+    }
+    return HCBD_OK;
 }
 
 /* >>multiple-tau correlator */
@@ -4271,95 +4397,204 @@ hcbd_result hcbd_carreau_fit(const double *gdot, const double *eta, const double
 }
 
 /* >>mean-squared displacement, order-n */
-/* B^(levels-1) samples must fit in int64 */
-static int hcbd__msd_ok(int n, int B, int levels)
+/* Level l keeps positions every stride[l] = B^max(0, l - dense) samples in
+   a ring of slots[l] = (B - 1) B^min(l, dense) + 1, the span of its longest
+   lag.  Returns the slots of all levels, 0 when the sizes do not fit. */
+static size_t hcbd__msd_shape(int n, int B, int levels, int dense, int *slots, int *stride)
 {
-    double span = 1.0;
+    double span = 1.0, total = 0.0;
     int l;
-    if (n < 1 || B < 2 || levels < 1 || n > INT32_MAX / 3) return 0;
-    for (l = 1; l < levels; ++l) span *= B;
-    return span < 9e18;
+    if (n < 1 || B < 2 || levels < 1 || dense < 0 || n > INT32_MAX / 3) return 0;
+    for (l = 0; l < levels; ++l) {
+        double s = (B - 1) * pow(B, l < dense ? l : dense) + 1;
+        if (l > 0) span *= B;
+        if (span >= 9e18 || s > INT32_MAX) return 0;
+        total += s;
+        if (slots) {
+            slots[l] = (int)s;
+            stride[l] = (int)pow(B, l > dense ? l - dense : 0);
+        }
+    }
+    return total * 3.0 * n * sizeof(double) < 0.5 * (double)SIZE_MAX ? (size_t)total : 0;
 }
 
-size_t hcbd_msd_bytes(int n, int B, int levels)
+size_t hcbd_msd_bytes(int n, int B, int levels, int dense)
 {
-    size_t off = 0, L = (size_t)levels;
-    if (!hcbd__msd_ok(n, B, levels)) return 0;
-    hcbd__take(NULL, &off, L * B * 3 * (size_t)n * sizeof(double), NULL);
-    hcbd__take(NULL, &off, L * B * sizeof(double), NULL);
-    hcbd__take(NULL, &off, L * B * sizeof(int64_t), NULL);
-    hcbd__take(NULL, &off, 2 * L * sizeof(int), NULL);
+    size_t off = 0, L = (size_t)levels, K, P = hcbd__msd_shape(n, B, levels, dense, NULL, NULL);
+    if (!P) return 0;
+    K = L * (size_t)(B - 1);
+    hcbd__take(NULL, &off, P * 3 * (size_t)n * sizeof(double), NULL);
+    hcbd__take(NULL, &off, L * sizeof(size_t), NULL);
+    hcbd__take(NULL, &off, 4 * L * sizeof(int), NULL);
+    hcbd__take(NULL, &off, (3 + K) * K * sizeof(double), NULL);
+    hcbd__take(NULL, &off, 2 * K * sizeof(int64_t), NULL);
     return off + HCBD__ALIGN;
 }
 
-hcbd_result hcbd_msd_init(hcbd_msd *d, int n, int B, int levels, void *mem,
-                          size_t bytes)
+hcbd_result hcbd_msd_init(hcbd_msd *d, int n, int B, int levels, int dense, int64_t block,
+                          void *mem, size_t bytes)
 {
-    size_t off = 0, L = (size_t)levels;
+    size_t off = 0, L = (size_t)levels, K, P, need = hcbd_msd_bytes(n, B, levels, dense);
     char *base;
     void *q;
+    int l;
     if (!d || !mem) return HCBD_ERR_NULL;
-    if (!hcbd__msd_ok(n, B, levels)) return HCBD_ERR_PARAM;
-    if (bytes < hcbd_msd_bytes(n, B, levels)) return HCBD_ERR_MEMORY;
+    if (!need || block < 0) return HCBD_ERR_PARAM;
+    if (bytes < need) return HCBD_ERR_MEMORY;
     memset(mem, 0, bytes);
+    memset(d, 0, sizeof *d);
+    K = L * (size_t)(B - 1);
     base = (char *)mem;
     base += (HCBD__ALIGN - ((uintptr_t)base & (HCBD__ALIGN - 1))) & (HCBD__ALIGN - 1);
-    hcbd__take(base, &off, L * B * 3 * (size_t)n * sizeof(double), &q); d->pos = (double *)q;
-    hcbd__take(base, &off, L * B * sizeof(double), &q); d->sum = (double *)q;
-    hcbd__take(base, &off, L * B * sizeof(int64_t), &q); d->count = (int64_t *)q;
-    hcbd__take(base, &off, 2 * L * sizeof(int), &q);
-    d->fill = (int *)q;
+    P = hcbd__msd_shape(n, B, levels, dense, NULL, NULL);
+    hcbd__take(base, &off, P * 3 * (size_t)n * sizeof(double), &q); d->pos = (double *)q;
+    hcbd__take(base, &off, L * sizeof(size_t), &q); d->offset = (size_t *)q;
+    hcbd__take(base, &off, 4 * L * sizeof(int), &q);
+    d->slots = (int *)q;
+    d->stride = d->slots + levels;
+    d->fill = d->stride + levels;
     d->head = d->fill + levels;
-    d->n = n; d->B = B; d->levels = levels;
-    d->nsamples = 0;
+    hcbd__take(base, &off, (3 + K) * K * sizeof(double), &q);
+    d->sum = (double *)q;
+    d->cur = d->sum + K;
+    d->bsum = d->cur + K;
+    d->bcross = d->bsum + K;
+    hcbd__take(base, &off, 2 * K * sizeof(int64_t), &q);
+    d->count = (int64_t *)q;
+    d->cur_count = d->count + K;
+    hcbd__msd_shape(n, B, levels, dense, d->slots, d->stride);
+    for (l = 1; l < levels; ++l)
+        d->offset[l] = d->offset[l - 1] + (size_t)d->slots[l - 1] * 3 * (size_t)n;
+    d->n = n; d->B = B; d->levels = levels; d->dense = dense;
+    d->nlag = (int)K;
+    d->block = block;
     return HCBD_OK;
+}
+
+/* The open block's mean at each lag joins the closed blocks' sums; the
+   origins restart. */
+static void hcbd__msd_close(hcbd_msd *d)
+{
+    const int K = d->nlag;
+    int a, b;
+    for (a = 0; a < K; ++a) {
+        double ma = d->cur_count[a] ? d->cur[a] / (double)d->cur_count[a] : 0.0;
+        d->bsum[a] += ma;
+        for (b = 0; b < K; ++b)
+            d->bcross[(size_t)a * K + b] += ma * (d->cur_count[b] ? d->cur[b] / (double)d->cur_count[b] : 0.0);
+    }
+    for (a = 0; a < K; ++a) { d->cur[a] = 0.0; d->cur_count[a] = 0; }
+    for (a = 0; a < d->levels; ++a) d->fill[a] = d->head[a] = 0;
+    d->cur_samples = 0;
+    d->blocks++;
 }
 
 void hcbd_msd_add(hcbd_msd *d, const double *xyz)
 {
     int l, j;
-    int64_t every = 1;
     size_t n3;
     if (!d || !xyz) return;
     n3 = 3 * (size_t)d->n;
     for (l = 0; l < d->levels; ++l) {
-        double *slot;
-        if (l > 0) every *= d->B;
-        if (d->nsamples % every) break;
-        slot = d->pos + ((size_t)l * d->B + d->head[l]) * n3;
-        memcpy(slot, xyz, n3 * sizeof(double));
-        if (d->fill[l] < d->B) d->fill[l]++;
-        for (j = 1; j < d->fill[l]; ++j) {
-            const double *old = d->pos + ((size_t)l * d->B + (d->head[l] - j + d->B) % d->B) * n3;
+        const int S = d->slots[l], back = (S - 1) / (d->B - 1); /* slots per B^l samples */
+        double *ring = d->pos + d->offset[l];
+        if (d->cur_samples % d->stride[l]) break; /* strides grow with l */
+        memcpy(ring + (size_t)d->head[l] * n3, xyz, n3 * sizeof(double));
+        if (d->fill[l] < S) d->fill[l]++;
+        for (j = 1; j < d->B && j * back < d->fill[l]; ++j) {
+            const double *old = ring + (size_t)((d->head[l] - j * back + S) % S) * n3;
+            const int a = l * (d->B - 1) + j - 1;
             double s = 0.0;
             size_t k;
             for (k = 0; k < n3; ++k) s += (xyz[k] - old[k]) * (xyz[k] - old[k]);
-            d->sum[(size_t)l * d->B + j] += s / d->n;
-            d->count[(size_t)l * d->B + j]++;
+            d->sum[a] += s / d->n;
+            d->count[a]++;
+            d->cur[a] += s / d->n;
+            d->cur_count[a]++;
         }
-        d->head[l] = (d->head[l] + 1) % d->B;
+        d->head[l] = (d->head[l] + 1) % S;
     }
     d->nsamples++;
+    if (++d->cur_samples == d->block) hcbd__msd_close(d);
+}
+
+static double hcbd__msd_lag(const hcbd_msd *d, int a)
+{
+    return (a % (d->B - 1) + 1) * pow(d->B, a / (d->B - 1));
 }
 
 int hcbd_msd_result(const hcbd_msd *d, double *lag, double *msd, int64_t *count,
                     int max)
 {
-    int l, j, out = 0;
-    double scale = 1.0;
+    int a, out = 0;
     if (!d || max < 0) return 0;
-    for (l = 0; l < d->levels; ++l, scale *= d->B)
-        for (j = 1; j < d->B; ++j) {
-            int64_t n = d->count[(size_t)l * d->B + j];
-            if (!n) continue;
-            if (out < max) {
-                if (lag) lag[out] = j * scale;
-                if (msd) msd[out] = d->sum[(size_t)l * d->B + j] / (double)n;
-                if (count) count[out] = n;
-            }
-            ++out;
+    for (a = 0; a < d->nlag && out < max; ++a) {
+        if (!d->count[a]) continue;
+        if (lag) lag[out] = hcbd__msd_lag(d, a);
+        if (msd) msd[out] = d->sum[a] / (double)d->count[a];
+        if (count) count[out] = d->count[a];
+        ++out;
+    }
+    return out;
+}
+
+/* Lag a is measured: in every closed block, or at all when unblocked. */
+static int hcbd__msd_has(const hcbd_msd *d, int a)
+{
+    return d->block ? d->blocks > 0 && hcbd__msd_lag(d, a) < (double)d->block : d->count[a] > 0;
+}
+
+int hcbd_msd_stats(const hcbd_msd *d, double *lag, double *msd, double *err, int max)
+{
+    int a, out = 0;
+    if (!d || max < 0) return 0;
+    for (a = 0; a < d->nlag && out < max; ++a) {
+        const double nb = (double)d->blocks;
+        if (!hcbd__msd_has(d, a)) continue;
+        if (lag) lag[out] = hcbd__msd_lag(d, a);
+        if (msd) msd[out] = d->block ? d->bsum[a] / nb : d->sum[a] / (double)d->count[a];
+        if (err) err[out] = d->block ? hcbd__block_err(d->bsum[a], d->bcross[(size_t)a * d->nlag + a], d->blocks) : NAN;
+        ++out;
+    }
+    return out;
+}
+
+hcbd_result hcbd_msd_diffusion(const hcbd_msd *d, double lag_min, double lag_max, double *D,
+                               double *err)
+{
+    const int K = d ? d->nlag : 0;
+    double tm = 0.0, stt = 0.0, slope = 0.0, var = 0.0, nb;
+    int a, b, m = 0;
+    if (!d || !D) return HCBD_ERR_NULL;
+    if (!(lag_min <= lag_max)) return HCBD_ERR_PARAM;
+    /* ordinary least squares: slope = sum_a c_a msd_a, c_a = (t_a - tm) / stt */
+    for (a = 0; a < K; ++a) {
+        double t = hcbd__msd_lag(d, a);
+        if (hcbd__msd_has(d, a) && t >= lag_min && t <= lag_max) { tm += t; ++m; }
+    }
+    if (m < 2) return HCBD_ERR_STATE;
+    tm /= m;
+    for (a = 0; a < K; ++a) {
+        double t = hcbd__msd_lag(d, a);
+        if (hcbd__msd_has(d, a) && t >= lag_min && t <= lag_max) stt += (t - tm) * (t - tm);
+    }
+    nb = (double)d->blocks;
+    for (a = 0; a < K; ++a) {
+        double ta = hcbd__msd_lag(d, a), ca;
+        if (!hcbd__msd_has(d, a) || ta < lag_min || ta > lag_max) continue;
+        ca = (ta - tm) / stt;
+        slope += ca * (d->block ? d->bsum[a] / nb : d->sum[a] / (double)d->count[a]);
+        if (!d->block || d->blocks < 2) continue;
+        for (b = 0; b < K; ++b) {
+            double tb = hcbd__msd_lag(d, b);
+            if (!hcbd__msd_has(d, b) || tb < lag_min || tb > lag_max) continue;
+            var += ca * (tb - tm) / stt *
+                   (d->bcross[(size_t)a * K + b] / nb - d->bsum[a] / nb * d->bsum[b] / nb) / (nb - 1);
         }
-    return out < max ? out : max;
+    }
+    *D = slope / 6;
+    if (err) *err = d->block && d->blocks >= 2 ? sqrt(fmax(var, 0.0)) / 6 : NAN;
+    return HCBD_OK;
 }
 
 /* >>slab profiles */

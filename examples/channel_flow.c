@@ -47,7 +47,10 @@ static void usage(void)
             "                      the background only\n"
             "  density dt kT xi tau Rc f sigma rcut skin Lx Ly Lz potential=star|ideal\n"
             "  density_norm=2014|2016 noise=gauss|uniform pair=shardlow|euler seed steps threads out\n"
-            "  (N follows from the density and the channel volume)\n");
+            "  (N follows from the density and the channel volume)\n"
+            "  xyz=FILE xyz_every=k thermo_every=k checkpoint=FILE  run output, one file per\n"
+            "                      run (FILE.<run>.ext) when there are several\n"
+            "  restart=FILE        continue one run from a checkpoint (its parameters)\n");
 }
 
 static int own_key(config *c, const char *key, const char *v)
@@ -159,6 +162,10 @@ int main(int argc, char **argv)
     p->fext_background_only = bg_only;
     c.N = (int)floor(c.density * p->L[0] * (p->L[1] - 2 * wall_t) * p->L[2] + 0.5);
     c.def.capacity = c.N < 2 ? 2 : c.N;
+    if (c.restart[0] && nxip > 1) {
+        fprintf(stderr, "channel_flow: restart= continues one run: give one xip\n");
+        return 2;
+    }
     mkdirs(c.out);
     printf("channel_flow: GI-BD %s, N = %d real particles, box %.3g x %.3g x %.3g, walls %.3g thick "
            "(%s), n# = %g, dt = %g, tau = %g, g = %g (body force on %s), %d steps per run\n",
@@ -173,6 +180,8 @@ int main(int argc, char **argv)
     clock_gettime(CLOCK_MONOTONIC, &t0);
     for (r = 0; r < nxip; ++r) {
         hcbd_world w;
+        run_out ro;
+        char label[32];
         hcbd_profile prof;
         double *mem, *out, ys[10000], vs[10000], es[10000], q[3] = {0, 0, 0}, C[9] = {0};
         double gv[3], gs[3], vmax_err, slip_err;
@@ -183,24 +192,24 @@ int main(int argc, char **argv)
         p->xip = xips[r];
         p->fext[0] = g_force * p->xip * p->tau; /* F = m g, m = xi' tau */
         print_limits(p);
-        if (hcbd_world_create(&w, &c.def) != HCBD_OK) {
-            fprintf(stderr, "channel_flow: %s\n", w.err.msg);
-            return 2;
-        }
+        if (!world_start(&c, &w)) return 2;
+        if (c.restart[0]) xips[r] = p->xip; /* the checkpoint's parameters, its flow developed */
         hcbd_theory_of(p, &th);
         mem = (double *)malloc(bytes);
         out = (double *)malloc((size_t)nslab * 8 * sizeof(double));
-        if (!mem || !out || hcbd_world_place_lattice(&w, c.N) != HCBD_OK ||
+        if (!mem || !out || (!c.restart[0] && hcbd_world_place_lattice(&w, c.N) != HCBD_OK) ||
             hcbd_profile_init(&prof, &w, nslab, (c.steps - start) / (10 * nblk), mem, bytes) != HCBD_OK) {
             fprintf(stderr, "channel_flow: set-up failed: %s\n", w.err.msg);
             return 2;
         }
-        if (hcbd_step(&w, start) != HCBD_OK) {
+        snprintf(label, sizeof label, "xip%g", xips[r]);
+        if (!run_out_open(&c, &ro, &w, nxip > 1 ? label : NULL)) return 2;
+        if (run_steps(&c, &ro, &w, c.restart[0] ? 0 : start) != HCBD_OK) {
             fprintf(stderr, "channel_flow: xip = %g: %s\n", xips[r], w.err.msg);
             return 1;
         }
         for (k = 0; k < (c.steps - start) / 10; ++k) {
-            if (hcbd_step(&w, 10) != HCBD_OK) {
+            if (run_steps(&c, &ro, &w, 10) != HCBD_OK) {
                 fprintf(stderr, "channel_flow: xip = %g: %s\n", xips[r], w.err.msg);
                 return 1;
             }
@@ -270,6 +279,7 @@ int main(int argc, char **argv)
                    "here, lower g or raise nu\n", th.re_max);
         free(mem);
         free(out);
+        if (!run_out_close(&c, &ro, &w)) return 1;
         hcbd_world_destroy(&w);
     }
     printf("state_checksum=%016llx\n", (unsigned long long)checksum);

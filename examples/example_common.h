@@ -32,7 +32,7 @@ typedef struct {
 /* An example's own key: 1 taken, 0 error (already reported), -1 unknown. */
 typedef int (*own_key_fn)(config *c, const char *key, const char *v);
 
-static int parse_double(const config *c, const char *key, const char *v, double *x)
+static inline int parse_double(const config *c, const char *key, const char *v, double *x)
 {
     char *end;
     errno = 0;
@@ -44,7 +44,7 @@ static int parse_double(const config *c, const char *key, const char *v, double 
     return 1;
 }
 
-static int parse_int(const config *c, const char *key, const char *v, int *x)
+static inline int parse_int(const config *c, const char *key, const char *v, int *x)
 {
     double d;
     if (!parse_double(c, key, v, &d)) return 0;
@@ -56,7 +56,7 @@ static int parse_int(const config *c, const char *key, const char *v, int *x)
     return 1;
 }
 
-static int parse_choice(const config *c, const char *key, const char *v, const char *a,
+static inline int parse_choice(const config *c, const char *key, const char *v, const char *a,
                         const char *b, int *x, int va, int vb)
 {
     if (!strcmp(v, a)) *x = va;
@@ -95,7 +95,7 @@ static inline int parse_list(const config *c, const char *key, const char *v, do
 
 /* preset=quick|paper: read by each example before parse_args (so that
    explicit keys override it); here only checked. */
-static int check_preset(const config *c, const char *v)
+static inline int check_preset(const config *c, const char *v)
 {
     if (!strcmp(v, "quick") || !strcmp(v, "paper")) return 1;
     fprintf(stderr, "%s: unknown preset '%s' (quick or paper)\n", c->name, v);
@@ -106,7 +106,7 @@ static int check_preset(const config *c, const char *v)
    own keys first through own().  threads defaults to the cores online (the
    results are the same bits for any count).  Returns 0 after printing what
    was wrong. */
-static int parse_args(int argc, char **argv, config *c, own_key_fn own, void (*usage)(void))
+static inline int parse_args(int argc, char **argv, config *c, own_key_fn own, void (*usage)(void))
 {
     hcbd_params *p = &c->def.params;
     long cores = sysconf(_SC_NPROCESSORS_ONLN);
@@ -204,7 +204,7 @@ static int parse_args(int argc, char **argv, config *c, own_key_fn own, void (*u
     return 1;
 }
 
-static void mkdirs(const char *path)
+static inline void mkdirs(const char *path)
 {
     char tmp[512];
     size_t k;
@@ -215,7 +215,7 @@ static void mkdirs(const char *path)
     mkdir(tmp, 0755);
 }
 
-static FILE *open_out(const config *c, const char *name)
+static inline FILE *open_out(const config *c, const char *name)
 {
     char path[700];
     FILE *f;
@@ -226,7 +226,7 @@ static FILE *open_out(const config *c, const char *name)
 }
 
 /* Runs gnuplot on plots.gp in the output folder, or says why not. */
-static void make_figures(const config *c)
+static inline void make_figures(const config *c)
 {
     if (strchr(c->out, '\'')) {
         printf("%s: out=%s contains a quote: run gnuplot plots.gp there yourself\n", c->name, c->out);
@@ -255,7 +255,7 @@ static inline int mean_err(const double *x, int n, double *m, double *e)
 }
 
 /* Progress on stderr: a rewritten line on a terminal, else one per call. */
-static void progress(const config *c, int done, int total, const struct timespec *t0)
+static inline void progress(const config *c, int done, int total, const struct timespec *t0)
 {
     struct timespec t1;
     double el;
@@ -267,74 +267,197 @@ static void progress(const config *c, int done, int total, const struct timespec
             tty ? (done == total ? "\n" : "") : "\n");
 }
 
-#if HCBD_MODEL != HCBD_MODEL_HCBD
-/* Run output of the GI-BD examples; call run_out_step after every step
-   (a compare when off). */
+/* Run output of every example (all off by default): extended XYZ frames
+   every xyz_every steps, a thermo line every thermo_every steps, a
+   checkpoint when the run ends.  An example that runs several worlds gives
+   each a label, and its files become stem.label.ext (traj.xyz ->
+   traj.gdot2.xyz); label NULL keeps the names.  Step through run_steps. */
+#if HCBD_MODEL == HCBD_MODEL_HCBD
+typedef hcbd_hc_world ex_world;
+#define EX_STEP hcbd_hc_step
+#define EX_XYZ(w, f) hcbd_hc_xyz_write(w, f)
+#define EX_THERMO_HEADER hcbd_hc_thermo_header
+#define EX_THERMO_LINE hcbd_hc_thermo_line
+#define EX_SAVE hcbd_hc_save
+#define EX_NPART(w) ((w)->nf + (w)->np)
+#else
+typedef hcbd_world ex_world;
+#define EX_STEP hcbd_step
+#define EX_XYZ(w, f) hcbd_xyz_write(w, f, NULL, 0)
+#define EX_THERMO_HEADER hcbd_thermo_header
+#define EX_THERMO_LINE hcbd_thermo_line
+#define EX_SAVE hcbd_save
+#define EX_NPART(w) ((w)->n)
+#endif
+
 typedef struct {
     FILE *xyz;
+    char label[128];
     struct timespec t0;
     int64_t step0;
 } run_out;
 
-static inline int run_out_open(const config *c, run_out *o, const hcbd_world *w)
+/* path with ".label" before its extension (or at its end) */
+static inline void labelled(char *dst, size_t size, const char *path, const char *label)
 {
+    const char *dot = strrchr(path, '.'), *slash = strrchr(path, '/');
+    if (!label || !*label) { snprintf(dst, size, "%s", path); return; }
+    if (!dot || (slash && dot < slash)) dot = path + strlen(path);
+    snprintf(dst, size, "%.*s.%s%s", (int)(dot - path), path, label, dot);
+}
+
+static inline int run_out_open(const config *c, run_out *o, const ex_world *w, const char *label)
+{
+    char path[700];
     memset(o, 0, sizeof *o);
+    if (label) snprintf(o->label, sizeof o->label, "%s", label);
     if (c->xyz[0] && c->xyz_every == 0) {
         fprintf(stderr, "%s: xyz=%s needs xyz_every=k > 0\n", c->name, c->xyz);
         return 0;
     }
-    if (c->xyz[0] && !(o->xyz = fopen(c->xyz, "w"))) {
-        fprintf(stderr, "%s: cannot write %s\n", c->name, c->xyz);
+    labelled(path, sizeof path, c->xyz, o->label);
+    if (c->xyz[0] && !(o->xyz = fopen(path, "w"))) {
+        fprintf(stderr, "%s: cannot write %s\n", c->name, path);
         return 0;
     }
     if (c->thermo_every > 0) {
         char head[256];
-        hcbd_thermo_header(head, sizeof head);
-        printf("%s\n", head);
+        EX_THERMO_HEADER(head, sizeof head);
+        printf("%s%s%s\n", head, o->label[0] ? "  # run " : "", o->label);
     }
     clock_gettime(CLOCK_MONOTONIC, &o->t0);
     o->step0 = w->step;
-    if (o->xyz) hcbd_xyz_write(w, o->xyz, NULL, 0);
+    if (o->xyz) EX_XYZ(w, o->xyz);
     return 1;
 }
 
-static inline void run_out_step(const config *c, run_out *o, const hcbd_world *w)
+/* n steps of w, stopping where a frame or a thermo line is due */
+static inline hcbd_result run_steps(const config *c, run_out *o, ex_world *w, int n)
 {
-    if (o->xyz && w->step % c->xyz_every == 0) hcbd_xyz_write(w, o->xyz, NULL, 0);
-    if (c->thermo_every > 0 && w->step % c->thermo_every == 0) {
-        struct timespec t1;
-        char line[512];
-        double ns;
-        clock_gettime(CLOCK_MONOTONIC, &t1);
-        ns = ((t1.tv_sec - o->t0.tv_sec) * 1e9 + (t1.tv_nsec - o->t0.tv_nsec)) /
-             ((double)(w->step - o->step0) * w->n);
-        hcbd_thermo_line(w, ns, line, sizeof line);
-        printf("%s\n", line);
-        o->t0 = t1;
-        o->step0 = w->step;
+    while (n > 0) {
+        int k = n;
+        hcbd_result r;
+        if (o->xyz && k > c->xyz_every - (int)(w->step % c->xyz_every))
+            k = c->xyz_every - (int)(w->step % c->xyz_every);
+        if (c->thermo_every > 0 && k > c->thermo_every - (int)(w->step % c->thermo_every))
+            k = c->thermo_every - (int)(w->step % c->thermo_every);
+        if ((r = EX_STEP(w, k)) != HCBD_OK) return r;
+        n -= k;
+        if (o->xyz && w->step % c->xyz_every == 0) EX_XYZ(w, o->xyz);
+        if (c->thermo_every > 0 && w->step % c->thermo_every == 0) {
+            struct timespec t1;
+            char line[512];
+            clock_gettime(CLOCK_MONOTONIC, &t1);
+            EX_THERMO_LINE(w, ((t1.tv_sec - o->t0.tv_sec) * 1e9 + (t1.tv_nsec - o->t0.tv_nsec)) /
+                                  ((double)(w->step - o->step0) * EX_NPART(w)), line, sizeof line);
+            printf("%s\n", line);
+            o->t0 = t1;
+            o->step0 = w->step;
+        }
     }
+    return HCBD_OK;
 }
 
-/* Closes the trajectory and writes the checkpoint; 0 after a message. */
-static inline int run_out_close(const config *c, run_out *o, hcbd_world *w)
+#if HCBD_MODEL != HCBD_MODEL_HCBD
+/* The world of a run: loaded from restart= (the checkpoint's parameters
+   and particles replace the command line's; returns 2) or created from
+   c->def (returns 1); 0 after a message. */
+static inline int world_start(config *c, hcbd_world *w)
 {
-    if (o->xyz) fclose(o->xyz);
-    o->xyz = NULL;
-    if (c->checkpoint[0] && hcbd_save(w, c->checkpoint) != HCBD_OK) {
+    if (!c->restart[0]) {
+        if (hcbd_world_create(w, &c->def) == HCBD_OK) return 1;
         fprintf(stderr, "%s: %s\n", c->name, w->err.msg);
         return 0;
     }
-    if (c->checkpoint[0]) printf("checkpoint=%s (step %lld)\n", c->checkpoint, (long long)w->step);
+    if (hcbd_load(w, c->restart) != HCBD_OK) {
+        fprintf(stderr, "%s: %s\n", c->name, w->err.msg);
+        return 0;
+    }
+    c->def.params = w->p;
+    c->N = w->n;
+    c->density = w->n / (w->p.L[0] * w->p.L[1] * w->p.L[2]);
+    printf("restart=%s: step %lld, N = %d\n", c->restart, (long long)w->step, w->n);
+    return 2;
+}
+#endif
+
+#if HCBD_MODEL == HCBD_MODEL_HCBD
+/* The configuration of the checkpoint restart= names, for the runs of an
+   HCBD example to start from (their parameters stay the command line's):
+   fluid positions and velocities (6 nf: xyz, then v) and polymer
+   positions (3 np), interleaved, malloc'd; 0 after a message. */
+typedef struct { int nf, np; double *fluid, *poly; } hc_config;
+
+static inline int hc_restart(const config *c, hc_config *r)
+{
+    hcbd_hc_world w;
+    int i;
+    memset(r, 0, sizeof *r);
+    if (hcbd_hc_load(&w, c->restart) != HCBD_OK) {
+        fprintf(stderr, "%s: restart=%s: %s\n", c->name, c->restart, w.err.msg);
+        return 0;
+    }
+    r->nf = w.nf;
+    r->np = w.np;
+    r->fluid = (double *)malloc((6 * (size_t)w.nf + 1) * sizeof(double));
+    r->poly = (double *)malloc((3 * (size_t)w.np + 1) * sizeof(double));
+    if (!r->fluid || !r->poly) {
+        fprintf(stderr, "%s: out of memory\n", c->name);
+        hcbd_hc_world_destroy(&w);
+        return 0;
+    }
+    for (i = 0; i < w.nf; ++i) {
+        double *x = r->fluid + 3 * i, *v = r->fluid + 3 * ((size_t)w.nf + i);
+        x[0] = w.fx[i]; x[1] = w.fy[i]; x[2] = w.fz[i];
+        v[0] = w.fvx[i]; v[1] = w.fvy[i]; v[2] = w.fvz[i];
+    }
+    for (i = 0; i < w.np; ++i) {
+        r->poly[3 * i] = w.px[i]; r->poly[3 * i + 1] = w.py[i]; r->poly[3 * i + 2] = w.pz[i];
+    }
+    printf("restart=%s: step %lld, %d fluid blobs, %d polymers\n", c->restart, (long long)w.step, w.nf, w.np);
+    hcbd_hc_world_destroy(&w);
+    return 1;
+}
+
+/* w takes the configuration r if its counts are nf and np; 0 after a message. */
+static inline int hc_place(const config *c, const hc_config *r, hcbd_hc_world *w, int nf, int np)
+{
+    if (r->nf != nf || r->np != np) {
+        fprintf(stderr, "%s: restart=%s holds %d fluid blobs and %d polymers, the run %d and %d\n",
+                c->name, c->restart, r->nf, r->np, nf, np);
+        return 0;
+    }
+    if (hcbd_hc_set_fluid(w, nf, r->fluid, r->fluid + 3 * (size_t)nf) != HCBD_OK ||
+        (np && hcbd_hc_set_polymers(w, np, r->poly) != HCBD_OK)) {
+        fprintf(stderr, "%s: restart=%s: %s\n", c->name, c->restart, w->err.msg);
+        return 0;
+    }
     return 1;
 }
 #endif
 
+/* Closes the trajectory and writes the checkpoint; 0 after a message. */
+static inline int run_out_close(const config *c, run_out *o, ex_world *w)
+{
+    char path[700];
+    if (o->xyz) fclose(o->xyz);
+    o->xyz = NULL;
+    if (!c->checkpoint[0]) return 1;
+    labelled(path, sizeof path, c->checkpoint, o->label);
+    if (EX_SAVE(w, path) != HCBD_OK) {
+        fprintf(stderr, "%s: %s\n", c->name, w->err.msg);
+        return 0;
+    }
+    printf("checkpoint=%s (step %lld)\n", path, (long long)w->step);
+    return 1;
+}
+
 /* The scene's stability limits with their margins (hcbd_stability),
    printed at start. */
 #if HCBD_MODEL == HCBD_MODEL_HCBD
-static void print_limits(const hcbd_hc_params *p)
+static inline void print_limits(const hcbd_hc_params *p)
 #else
-static void print_limits(const hcbd_params *p)
+static inline void print_limits(const hcbd_params *p)
 #endif
 {
     hcbd_limit l[HCBD_MAX_LIMITS];

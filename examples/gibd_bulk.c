@@ -105,21 +105,30 @@ static double late_rate(const double *lag, const double *c, int n, double dt)
     return r == r ? r : late_rate_in(lag, c, n, dt, 0.03, 0.8);
 }
 
-/* Long-time diffusion: slope / 6 of the MSD over lags t > 5 tau (where
-   the velocity memory e^(-t/tau) of eq. 32 is below 1 %) with at least 4
-   time origins (each averages all N particles); NaN when the run is too
-   short.  dts is the time between MSD samples. */
-static double long_time_D(const hcbd_msd *msd, double dts, double tau)
+/* Long-time diffusion and its block error: slope / 6 of the MSD over the
+   lags t > 5 tau (where the velocity memory e^(-t/tau) of eq. 32 is below
+   1 %); NaN when the blocks are too short.  dts is the time between MSD
+   samples. */
+static double long_time_D(const hcbd_msd *msd, double dts, double tau, double *err)
 {
-    double lag[128], mm[128], sx = 0, sy = 0, sxx = 0, sxy = 0;
-    int64_t cnt[128];
-    int n = hcbd_msd_result(msd, lag, mm, cnt, 128), k, m = 0;
-    for (k = 0; k < n; ++k) {
-        double t = lag[k] * dts;
-        if (t < 5 * tau || cnt[k] < 4) continue;
-        sx += t; sy += mm[k]; sxx += t * t; sxy += t * mm[k]; ++m;
-    }
-    return m >= 2 ? (m * sxy - sx * sy) / (m * sxx - sx * sx) / 6 : NAN;
+    double D = NAN;
+    *err = NAN;
+    if (hcbd_msd_diffusion(msd, 5 * tau / dts, 1e300, &D, err) != HCBD_OK) return NAN;
+    *err /= dts;
+    return D / dts;
+}
+
+/* The first minimum of g(r) after its main peak (bins of width dr), where
+   the first coordination shell ends; NaN without a peak above 1.05. */
+static double first_minimum(const double *r, const double *g, int n)
+{
+    int k, peak = 0;
+    for (k = 1; k < n; ++k)
+        if (g[k] > g[peak]) peak = k;
+    if (g[peak] < 1.05) return NAN;
+    for (k = peak + 1; k + 1 < n; ++k)
+        if (g[k] <= g[k - 1] && g[k] <= g[k + 1]) return r[k];
+    return NAN;
 }
 
 /* MSD at time t by log-log interpolation between the bracketing lags. */
@@ -137,7 +146,7 @@ static double msd_at(const double *lag, const double *m, int n, double dt, doubl
 
 int main(int argc, char **argv)
 {
-    enum { NB = 10, PC = 32, LEVC = 16, PV = 16, LEVV = 16, NRDF = 100, BMSD = 10, LMSD = 6 };
+    enum { NB = 10, PC = 32, LEVC = 16, PV = 16, LEVV = 16, NRDF = 100, BMSD = 10 };
     config c;
     hcbd_world w;
     hcbd_params *p;
@@ -145,10 +154,10 @@ int main(int argc, char **argv)
     hcbd_msd msd;
     hcbd_rdf rdf;
     run_out ro;
-    double hist[NRDF], *xyz, *vel, V, k1, nu_theory, rdf_max;
+    double rdf_mem[6 * NRDF], *xyz, *vel, V, k1, nu_theory, rdf_max;
     double Tblk[NB], nu_init_b[NB], nu_hydro_b[NB], mf_b[NB], eff_b[NB], ident_b[NB];
-    double mf = 0, eff = 0, sumf = 0, sk = 0;
-    int nmf = 0, b, s, k, gibd, blk_steps;
+    double mf = 0, eff = 0, sumf = 0, sk = 0, rdf_min, coord = NAN, coord_err = NAN;
+    int nmf = 0, b, s, k, gibd, blk_steps, msd_levels = 1;
     size_t bytes_ct = hcbd_mtcorr_bytes(12, PC, 2, LEVC), bytes_gt, bytes_v, bytes_msd;
     void *mem_ct, *mem_gt, *mem_v, *mem_msd;
     struct timespec t0;
@@ -166,20 +175,7 @@ int main(int argc, char **argv)
     if (!parse_args(argc, argv, &c, own_key, usage)) return 2;
     p = &c.def.params;
     gibd = p->dynamics == HCBD_DYN_GIBD;
-    if (c.restart[0]) {
-        /* the checkpoint's world and parameters replace the command line's */
-        if (hcbd_load(&w, c.restart) != HCBD_OK) {
-            fprintf(stderr, "gibd_bulk: %s\n", w.err.msg);
-            return 2;
-        }
-        c.def.params = w.p;
-        c.N = w.n;
-        c.density = c.N / (p->L[0] * p->L[1] * p->L[2]);
-        printf("restart=%s: step %lld, N = %d\n", c.restart, (long long)w.step, w.n);
-    } else if (hcbd_world_create(&w, &c.def) != HCBD_OK) {
-        fprintf(stderr, "gibd_bulk: %s\n", w.err.msg);
-        return 2;
-    }
+    if (!world_start(&c, &w)) return 2;
     print_limits(p);
     mkdirs(c.out);
     V = p->L[0] * p->L[1] * p->L[2];
@@ -199,7 +195,12 @@ int main(int argc, char **argv)
     vel = (double *)malloc(3 * (size_t)c.N * sizeof(double));
     bytes_gt = hcbd_mtcorr_bytes(3, PC, 2, LEVC);
     bytes_v = hcbd_mtcorr_bytes(3 * c.N, PV, 2, LEVV);
-    bytes_msd = hcbd_msd_bytes(c.N, BMSD, LMSD);
+    /* MSD samples every 5 steps, one block of them per NB-th of the run;
+       levels up to the block length, one level denser than the book's
+       order-n scheme */
+    blk_steps = c.steps / NB;
+    while (msd_levels < 6 && pow(BMSD, msd_levels) < blk_steps / 5) ++msd_levels;
+    bytes_msd = hcbd_msd_bytes(c.N, BMSD, msd_levels, 1);
     mem_ct = malloc(NB * 3 * bytes_ct);
     mem_gt = malloc(bytes_gt);
     mem_v = malloc(bytes_v);
@@ -210,9 +211,9 @@ int main(int argc, char **argv)
     }
     hcbd_mtcorr_init(&gt, 3, PC, 2, LEVC, mem_gt, bytes_gt);
     hcbd_mtcorr_init(&vacf, 3 * c.N, PV, 2, LEVV, mem_v, bytes_v);
-    hcbd_msd_init(&msd, c.N, BMSD, LMSD, mem_msd, bytes_msd);
+    hcbd_msd_init(&msd, c.N, BMSD, msd_levels, 1, (blk_steps + 4) / 5, mem_msd, bytes_msd);
     rdf_max = fmin(0.5 * fmin(p->L[0], fmin(p->L[1], p->L[2])), 5.0);
-    hcbd_rdf_init(&rdf, rdf_max, NRDF, hist);
+    hcbd_rdf_init(&rdf, rdf_max, NRDF, (blk_steps + 199) / 200, rdf_mem, sizeof rdf_mem);
 
     /* equilibrate from a lattice: a tenth of the run, at least 5000 steps */
     if (!c.restart[0]) {
@@ -222,8 +223,7 @@ int main(int argc, char **argv)
             return 1;
         }
     }
-    if (!run_out_open(&c, &ro, &w)) return 2;
-    blk_steps = c.steps / NB;
+    if (!run_out_open(&c, &ro, &w, NULL)) return 2;
     if (p->gdot != 0.0 && !w.flux_on) hcbd_flux_enable(&w, 1); /* a restart keeps its sums */
     clock_gettime(CLOCK_MONOTONIC, &t0);
     for (b = 0; b < NB; ++b) {
@@ -278,11 +278,10 @@ int main(int argc, char **argv)
                 hcbd_msd_add(&msd, xyz);
             }
             if (g % 200 == 0) hcbd_rdf_sample(&rdf, &w);
-            if (hcbd_step(&w, 1) != HCBD_OK) {
+            if (run_steps(&c, &ro, &w, 1) != HCBD_OK) {
                 fprintf(stderr, "gibd_bulk: %s\n", w.err.msg);
                 return 1;
             }
-            run_out_step(&c, &ro, &w);
         }
         if (gibd) {
             double lag[512], cc[512];
@@ -314,25 +313,27 @@ int main(int argc, char **argv)
 
     /* ---- CSV output ---- */
     {
-        double r[NRDF], g[NRDF];
-        hcbd_rdf_result(&rdf, r, g);
+        double r[NRDF], g[NRDF], ge[NRDF];
+        hcbd_rdf_result(&rdf, r, g, ge);
         if ((f = open_out(&c, "rdf.csv"))) {
-            fprintf(f, "r,g\n");
-            for (k = 0; k < NRDF; ++k) fprintf(f, "%.6g,%.6g\n", r[k], g[k]);
+            fprintf(f, "r,g,g_err\n");
+            for (k = 0; k < NRDF; ++k) fprintf(f, "%.6g,%.6g,%.3g\n", r[k], g[k], ge[k]);
             fclose(f);
         }
+        rdf_min = first_minimum(r, g, NRDF);
+        if (isfinite(rdf_min)) hcbd_rdf_coordination(&rdf, rdf_min, &coord, &coord_err);
     }
     {
-        double lag[128], m[128], th;
-        int64_t cnt[128];
-        int n = hcbd_msd_result(&msd, lag, m, cnt, 128);
+        double lag[128], m[128], me[128], th;
+        int n = hcbd_msd_stats(&msd, lag, m, me, 128);
         if ((f = open_out(&c, "msd.csv"))) {
-            fprintf(f, "t,msd,eq32,count\n");
+            /* msd: mean of the NB blocks, msd_err its standard error */
+            fprintf(f, "t,msd,eq32,msd_err\n");
             for (k = 0; k < n; ++k) {
                 double t = lag[k] * 5 * p->dt;
                 th = gibd ? 6 * p->kT / p->xip * (t - p->tau * (1 - exp(-t / p->tau))) + 6 * p->kT / p->xi * t
                           : 6 * p->kT / p->xi * t;
-                fprintf(f, "%.6g,%.6g,%.6g,%lld\n", t, m[k], th, (long long)cnt[k]);
+                fprintf(f, "%.6g,%.6g,%.6g,%.3g\n", t, m[k], th, me[k]);
             }
             fclose(f);
         }
@@ -378,7 +379,7 @@ int main(int argc, char **argv)
             nv = hcbd_mtcorr_result(&vacf, 10, lagv, cv, NULL, 512);
             fprintf(f, "t,vacf,tail_eq34\n");
             /* eq. 34 with the measured long-time diffusion of the run */
-            double D = long_time_D(&msd, 5 * p->dt, p->tau);
+            double De, D = long_time_D(&msd, 5 * p->dt, p->tau, &De);
             for (k = 0; k < nv; ++k) {
                 double t = lagv[k] * p->dt, nu_e = eff / nmf;
                 /* 3 cv: the correlator averages over the 3N components */
@@ -408,8 +409,8 @@ int main(int argc, char **argv)
     /* ---- summary ---- */
     printf("# summary (measured next to theory)\n");
     if (gibd) {
-        double m, e, lag[128], mm[128], tau = p->tau;
-        int n = hcbd_msd_result(&msd, lag, mm, NULL, 128);
+        double m, e, lag[128], mm[128], tau = p->tau, D_err;
+        int n = hcbd_msd_stats(&msd, lag, mm, NULL, 128);
         double th_tau = 6 * p->kT / p->xip * tau * exp(-1.0) + 6 * p->kT / p->xi * tau;
         double D_th = p->kT / p->xi + p->kT / p->xip, D_meas = NAN;
         mean_err(Tblk, NB, &m, &e);
@@ -452,11 +453,12 @@ int main(int argc, char **argv)
                 printf("# msd_ratio_at_tau: 2016 eq. 32 is the ideal-particle result\n");
             if (tau < 5 * p->dt) printf("# msd_ratio_at_tau: tau is shorter than the MSD sampling interval\n");
         }
-        D_meas = long_time_D(&msd, 5 * p->dt, tau);
+        D_meas = long_time_D(&msd, 5 * p->dt, tau, &D_err);
         if (!isfinite(D_meas))
-            printf("# D_measured: the run (%g time units) has no MSD lags beyond 5 tau = %g with "
-                   "4 time origins: run longer for the long-time diffusion\n", c.steps * p->dt, 5 * tau);
-        printf("D_theory=%.6g\nD_measured=%.6g\nD_ratio=%.4f\n", D_th, D_meas, D_meas / D_th);
+            printf("# D_measured: the MSD blocks (%g time units) hold fewer than two lags beyond "
+                   "5 tau = %g: run longer for the long-time diffusion\n", blk_steps * p->dt, 5 * tau);
+        printf("D_theory=%.6g\nD_measured=%.6g\nD_measured_err=%.3g\nD_ratio=%.4f\n", D_th, D_meas,
+               D_err, D_meas / D_th);
     } else {
         printf("T_ratio=nan\n# classical BD carries no background velocity\n");
     }
@@ -467,6 +469,10 @@ int main(int argc, char **argv)
         printf("eta_particle_measured=%.6g\neta_background_measured=%.6g\n", fl[0] / p->gdot, fl[1] / p->gdot);
         printf("eta_carrier_measured=%.6g\neta_total_measured=%.6g\n", fl[2] / p->gdot, fl[3] / p->gdot);
         printf("eta_background_theory=%.6g\n", p->Rc * p->Rc * c.density * p->xip / 28);
+    }
+    if (isfinite(coord)) {
+        printf("# coordination: neighbours within the first minimum of g(r), with its block error\n");
+        printf("rdf_first_minimum=%.4g\ncoordination=%.4f\ncoordination_err=%.3g\n", rdf_min, coord, coord_err);
     }
     printf("neighbour_rebuilds=%lld\n", (long long)w.nl.n_rebuilds);
     printf("state_checksum=%016llx\n", (unsigned long long)hcbd_state_checksum(&w));

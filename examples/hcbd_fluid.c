@@ -107,6 +107,11 @@ static void usage(void)
             "  g=20                reverse-Poiseuille body force in m/s^2\n"
             "  rp_gap=1|0          force planes between the rows of blobs (1) or as placed\n"
             "  slabs=20            slabs across y for the profiles\n"
+            "  xyz=FILE xyz_every=k thermo_every=k checkpoint=FILE  run output, one file per\n"
+            "                      run (FILE.<run>.ext: quench, equilibrium, le_*, rp_*)\n"
+            "  restart=FILE        the equilibrium run starts from this checkpoint's fluid (e.g.\n"
+            "                      an earlier run's checkpoint.equilibrium): no quench, no\n"
+            "                      equilibration\n"
             "  seed threads out    (out default out/hcbd_fluid)\n");
 }
 
@@ -153,7 +158,10 @@ static int own_key(config *c, const char *key, const char *v)
     if (!strcmp(key, "slabs")) return int_key(c, key, v, &opt.nslab, 4, NSLAB_MAX);
     if (!strcmp(key, "rp_gap")) return int_key(c, key, v, &opt.rp_gap, 0, 1);
     if (!strcmp(key, "gdot")) return (opt.ngdot = parse_list(c, key, v, opt.gdot_si, MAXG)) > 0;
-    if (!strcmp(key, "seed") || !strcmp(key, "threads") || !strcmp(key, "out")) return -1;
+    if (!strcmp(key, "seed") || !strcmp(key, "threads") || !strcmp(key, "out") || !strcmp(key, "xyz") ||
+        !strcmp(key, "xyz_every") || !strcmp(key, "thermo_every") || !strcmp(key, "checkpoint") ||
+        !strcmp(key, "restart"))
+        return -1;
     fprintf(stderr, "%s: unknown key '%s'\n", c->name, key);
     usage();
     return 0;
@@ -173,6 +181,8 @@ typedef struct {
     int done, total;
     struct timespec t0;
     uint64_t checksum;
+    run_out ro;                  /* the output of the run in progress      */
+    hc_config rst;               /* restart='s fluid, if given             */
 } ctx;
 
 static int fail(const char *what, const hcbd_hc_world *w)
@@ -183,7 +193,7 @@ static int fail(const char *what, const hcbd_hc_world *w)
 
 static int advance(ctx *x, hcbd_hc_world *w, int n, const char *what)
 {
-    if (hcbd_hc_step(w, n) != HCBD_OK) return fail(what, w);
+    if (run_steps(x->c, &x->ro, w, n) != HCBD_OK) return fail(what, w);
     x->done += n;
     return 1;
 }
@@ -226,8 +236,14 @@ static int prepare(ctx *x, hcbd_hc_world *w)
         d.params.fluctuations = 0;
     }
     print_limits(&x->def.params);
+    if (x->rst.fluid) {
+        if (f) fclose(f);
+        if (hcbd_hc_world_create(w, &x->def) != HCBD_OK) return fail("world", w);
+        return hc_place(x->c, &x->rst, w, x->N, 0) && run_out_open(x->c, &x->ro, w, "equilibrium");
+    }
     if (hcbd_hc_world_create(w, &d) != HCBD_OK) return fail("world", w);
     if (hcbd_hc_place_fluid_lattice(w, x->N) != HCBD_OK) return fail("lattice", w);
+    if (!run_out_open(x->c, &x->ro, w, "quench")) return 0;
     for (s = 0; s < opt.relax_steps; s += n) {
         n = opt.relax_steps - s < 100 ? opt.relax_steps - s : 100;
         if (!advance(x, w, n, "quench")) return 0;
@@ -239,10 +255,12 @@ static int prepare(ctx *x, hcbd_hc_world *w)
                opt.relax_steps, opt.relax_stiffness, dr[0], dr[1]);
         save_fluid(w, x->xyz, NULL);
         add_checksum(x, w);
+        if (!run_out_close(x->c, &x->ro, w)) return 0;
         hcbd_hc_world_destroy(w);
         if (hcbd_hc_world_create(w, &x->def) != HCBD_OK) return fail("world", w);
         /* NULL velocities: Maxwellian at kT, total momentum removed */
         if (hcbd_hc_set_fluid(w, x->N, x->xyz, NULL) != HCBD_OK) return fail("restart", w);
+        if (!run_out_open(x->c, &x->ro, w, "equilibrium")) return 0;
     }
     for (s = 0; s < opt.eq_steps; s += n) {
         n = opt.eq_steps - s < 100 ? opt.eq_steps - s : 100;
@@ -469,6 +487,7 @@ static int lees_edwards_run(ctx *x, double gd, int fl, double eta[MAXB][HCBD_HC_
     const double Ly = x->def.params.L[1];
     hcbd_hc_def d = x->def;
     hcbd_hc_world w;
+    char label[64];
     int i, b, k;
     d.params.gdot = gd;
     d.params.fluctuations = fl;
@@ -481,6 +500,8 @@ static int lees_edwards_run(ctx *x, double gd, int fl, double eta[MAXB][HCBD_HC_
         x->v0[3 * i + 2] = fl ? x->vel[3 * i + 2] : 0;
     }
     if (hcbd_hc_set_fluid(&w, x->N, x->xyz, x->v0) != HCBD_OK) return fail("Lees-Edwards set-up", &w);
+    snprintf(label, sizeof label, "le_gdot%g_fl%d", gd / opt.time_unit, fl); /* 1/s */
+    if (!run_out_open(x->c, &x->ro, &w, label)) return 0;
     if (!advance(x, &w, start, "Lees-Edwards start-up")) return 0;
     for (b = 0; b < opt.nblk; ++b) {
         double st[HCBD_HC_NSTRESS];
@@ -491,6 +512,7 @@ static int lees_edwards_run(ctx *x, double gd, int fl, double eta[MAXB][HCBD_HC_
     }
     progress(x->c, x->done, x->total, &x->t0);
     add_checksum(x, &w);
+    if (!run_out_close(x->c, &x->ro, &w)) return 0;
     hcbd_hc_world_destroy(&w);
     return 1;
 }
@@ -569,7 +591,9 @@ static int poiseuille_run(ctx *x, double g, int fl, double shift, rp_result *res
     hcbd_hc_def d = x->def;
     hcbd_hc_world w;
     hcbd_slabs sl;
-    double fs[NSLAB_MAX], vs[NSLAB_MAX], es[NSLAB_MAX], *shifted = x->xyz2;
+    /* zeroed: gcc cannot see that the fit reads only the nfit filled */
+    double fs[NSLAB_MAX] = {0}, vs[NSLAB_MAX] = {0}, es[NSLAB_MAX] = {0}, *shifted = x->xyz2;
+    char label[64];
     int i, s;
     d.params.reverse_poiseuille = 1;
     d.params.g[0] = g;
@@ -583,6 +607,8 @@ static int poiseuille_run(ctx *x, double g, int fl, double shift, rp_result *res
     for (i = 0; i < 3 * x->N; ++i) x->v0[i] = fl ? x->vel[i] : 0;
     if (hcbd_hc_world_create(&w, &d) != HCBD_OK) return fail("Poiseuille world", &w);
     if (hcbd_hc_set_fluid(&w, x->N, shifted, x->v0) != HCBD_OK) return fail("Poiseuille set-up", &w);
+    snprintf(label, sizeof label, "rp_fl%d", fl);
+    if (!run_out_open(x->c, &x->ro, &w, label)) return 0;
     if (!advance(x, &w, start, "Poiseuille start-up")) return 0;
     hcbd_slabs_init(&sl, d.params.L, opt.nslab, NVAL, nsamp / opt.nblk > 0 ? nsamp / opt.nblk : 1,
                     x->slab_mem, x->slab_bytes);
@@ -633,6 +659,7 @@ static int poiseuille_run(ctx *x, double g, int fl, double shift, rp_result *res
             res->prof[s][5] = isfinite(res->prof[s][1]) ? vk[j++] : NAN;
     }
     add_checksum(x, &w);
+    if (!run_out_close(x->c, &x->ro, &w)) return 0;
     hcbd_hc_world_destroy(&w);
     return 1;
 }
@@ -749,6 +776,12 @@ int main(int argc, char **argv)
     u_eta = M / (u_len * u_t);
     V = p->L[0] * p->L[1] * p->L[2];
     x.N = (int)floor(p->nbar * V + 0.5);
+    if (c.restart[0] && !hc_restart(&c, &x.rst)) return 2;
+    if (x.rst.fluid && (x.rst.nf != x.N || x.rst.np)) {
+        fprintf(stderr, "hcbd_fluid: restart=%s holds %d fluid blobs and %d polymers, the scene %d and 0\n",
+                c.restart, x.rst.nf, x.rst.np, x.N);
+        return 2;
+    }
     for (k = 0; k < NK; ++k) {
         kvec[k] = 2 * PI * (k + 1) / p->L[0];
         nu_kern[k] = x.th.nu * kernel_factor(kvec[k], p->h);
@@ -800,6 +833,7 @@ int main(int argc, char **argv)
     if (!prepare(&x, &w) || !equilibrium_run(&x, &w, &eq)) return 1;
     add_checksum(&x, &w);
     save_fluid(&w, x.xyz, x.vel);
+    if (!run_out_close(&c, &x.ro, &w)) return 1;
     hcbd_hc_world_destroy(&w);
     for (k = 0; k < NK; ++k) {
         double full[MAXL], jk[MAXL], est[MAXB], m = 0, v = 0, k2 = kvec[k] * kvec[k];
@@ -948,5 +982,6 @@ int main(int argc, char **argv)
         printf("state_checksum=%016llx\n", (unsigned long long)x.checksum);
     }
     free(x.xyz); free(x.vel); free(x.v0); free(x.xyz2); free(x.slab_mem); free(x.slab_out);
+    free(x.rst.fluid); free(x.rst.poly);
     return 0;
 }

@@ -143,6 +143,8 @@ typedef struct {
     int nts, ts_from;          /* rows, first row of the measured window */
 } conc_run;
 
+static hcbd_hc_si si; /* the physical parameters, SI (Table I by default) */
+
 static void usage(void)
 {
     fprintf(stderr,
@@ -170,6 +172,13 @@ static void usage(void)
             "  eq_steps=N          equilibrium run for the momentum drift\n"
             "  blocks=N slabs=N    blocks for the errors (2..20); slabs across y (4k+2, <= 202)\n"
             "  time_unit=1e-6      reduced time unit in seconds (dt of Table I = 1)\n"
+            "  rho eta nbar T dt sigma h xi chi rc p n_max   Table I parameters in SI (h, rc\n"
+            "                      in sigma; p Kuhn segments per blob; n_max in C*)\n"
+            "  steps=N             le_steps = rp_steps = N\n"
+            "  xyz=FILE xyz_every=k thermo_every=k checkpoint=FILE  run output, one file per\n"
+            "                      run (FILE.<run>.ext)\n"
+            "  restart=FILE        the runs whose counts match this checkpoint's start from its\n"
+            "                      fluid and polymers; the others start fresh\n"
             "  seed threads out    (out default out/hcbd_polymer)\n");
 }
 
@@ -211,6 +220,23 @@ static int own_key(config *c, const char *key, const char *v)
         fprintf(stderr, "%s: %s=%s must be at least 8 (sigma)\n", c->name, key, v);
         return 0;
     }
+    if (!strcmp(key, "rho")) return positive(c, key, v, &si.rho);
+    if (!strcmp(key, "eta")) return positive(c, key, v, &si.eta);
+    if (!strcmp(key, "nbar")) return positive(c, key, v, &si.nbar);
+    if (!strcmp(key, "T")) return positive(c, key, v, &si.T);
+    if (!strcmp(key, "dt")) return positive(c, key, v, &si.dt);
+    if (!strcmp(key, "sigma")) return positive(c, key, v, &si.sigma);
+    if (!strcmp(key, "h")) return positive(c, key, v, &si.h_sigma);
+    if (!strcmp(key, "xi")) return positive(c, key, v, &si.xi);
+    if (!strcmp(key, "chi")) return positive(c, key, v, &si.chi);
+    if (!strcmp(key, "rc")) return positive(c, key, v, &si.rc_sigma);
+    if (!strcmp(key, "p")) return positive(c, key, v, &si.p_kuhn);
+    if (!strcmp(key, "n_max")) return positive(c, key, v, &si.n_max_cstar);
+    if (!strcmp(key, "steps")) {
+        if (!int_range(c, key, v, &opt.le_steps, 30, 1000000000)) return 0;
+        opt.rp_steps = opt.le_steps;
+        return 1;
+    }
     if (!strcmp(key, "le_steps")) return int_range(c, key, v, &opt.le_steps, 30, 1000000000);
     if (!strcmp(key, "rp_steps")) return int_range(c, key, v, &opt.rp_steps, 30, 1000000000);
     if (!strcmp(key, "eq_steps")) return int_range(c, key, v, &opt.eq_steps, 1, 1000000000);
@@ -222,7 +248,10 @@ static int own_key(config *c, const char *key, const char *v)
         fprintf(stderr, "%s: slabs=%s must be 4k+2\n", c->name, v);
         return 0;
     }
-    if (!strcmp(key, "seed") || !strcmp(key, "threads") || !strcmp(key, "out")) return -1;
+    if (!strcmp(key, "seed") || !strcmp(key, "threads") || !strcmp(key, "out") || !strcmp(key, "xyz") ||
+        !strcmp(key, "xyz_every") || !strcmp(key, "thermo_every") || !strcmp(key, "checkpoint") ||
+        !strcmp(key, "restart"))
+        return -1;
     fprintf(stderr, "%s: unknown key '%s'\n", c->name, key);
     usage();
     return 0;
@@ -243,12 +272,16 @@ static void report_progress(int force)
     progress(prog.c, (int)(prog.done / unit), (int)(prog.total / unit), &prog.t0);
 }
 
-/* Steps with progress; on failure prints the library's message. */
+static run_out ro;     /* the output of the run in progress */
+static hc_config rst;  /* restart='s configuration, if given */
+
+/* Steps with progress and run output; on failure prints the library's
+   message. */
 static int advance(hcbd_hc_world *w, int n, const char *what)
 {
     while (n > 0) {
         int k = n < 1000 ? n : 1000;
-        if (hcbd_hc_step(w, k) != HCBD_OK) {
+        if (run_steps(prog.c, &ro, w, k) != HCBD_OK) {
             fprintf(stderr, "\nhcbd_polymer: %s: %s\n", what, w->err.msg);
             return 0;
         }
@@ -259,7 +292,11 @@ static int advance(hcbd_hc_world *w, int n, const char *what)
     return 1;
 }
 
-static int new_world(hcbd_hc_world *w, const hcbd_hc_params *p, int nf, int np, const char *what)
+/* A run's world: Table I at p, the fluid on a lattice and the polymers at
+   random, or restart='s configuration when its counts are the run's; its
+   run output opens under label. */
+static int new_world(hcbd_hc_world *w, const hcbd_hc_params *p, int nf, int np, const char *what,
+                     const char *label)
 {
     hcbd_hc_def def = hcbd_hc_def_default();
     def.params = *p;
@@ -271,12 +308,35 @@ static int new_world(hcbd_hc_world *w, const hcbd_hc_params *p, int nf, int np, 
         fprintf(stderr, "hcbd_polymer: %s: %s\n", what, w->err.msg);
         return 0;
     }
-    if (hcbd_hc_place_fluid_lattice(w, nf) != HCBD_OK || hcbd_hc_place_polymers_random(w, np) != HCBD_OK) {
-        fprintf(stderr, "hcbd_polymer: %s: %s\n", what, w->err.msg);
+    if (rst.fluid && rst.nf == nf && rst.np == np) {
+        if (!hc_place(prog.c, &rst, w, nf, np)) {
+            hcbd_hc_world_destroy(w);
+            return 0;
+        }
+    } else {
+        if (rst.fluid) printf("# restart: %s has %d fluid blobs and %d polymers: started fresh\n", what, nf, np);
+        if (hcbd_hc_place_fluid_lattice(w, nf) != HCBD_OK || hcbd_hc_place_polymers_random(w, np) != HCBD_OK) {
+            fprintf(stderr, "hcbd_polymer: %s: %s\n", what, w->err.msg);
+            hcbd_hc_world_destroy(w);
+            return 0;
+        }
+    }
+    if (!run_out_open(prog.c, &ro, w, label)) {
         hcbd_hc_world_destroy(w);
         return 0;
     }
     return 1;
+}
+
+/* Ends a run: its trajectory closes and, if it went well, its checkpoint
+   is written. */
+static int end_world(hcbd_hc_world *w, int ok)
+{
+    if (ok) ok = run_out_close(prog.c, &ro, w);
+    else if (ro.xyz) fclose(ro.xyz);
+    ro.xyz = NULL;
+    hcbd_hc_world_destroy(w);
+    return ok;
 }
 
 static int blobs_in(const hcbd_hc_params *p)
@@ -304,10 +364,11 @@ static int shear_run(const hcbd_hc_params *base, conc_run *cr, int r, double gd,
     hcbd_hc_world w;
     double blk[NCOMP][MAXB];
     int per = (opt.le_steps - 2 * opt.le_steps / 3) / opt.nblk, b, k;
-    char what[96];
+    char what[96], label[64];
     snprintf(what, sizeof what, "C = %g C*, gdot = %g 1/s", cr->C, opt.gdot_si[r]);
+    snprintf(label, sizeof label, "C%g_gdot%g", cr->C, opt.gdot_si[r]);
     p.gdot = gd;
-    if (!new_world(&w, &p, blobs_in(&p), cr->np, what)) return 0;
+    if (!new_world(&w, &p, blobs_in(&p), cr->np, what, label)) return 0;
     if (!advance(&w, opt.le_steps - per * opt.nblk, what)) goto fail;
     for (b = 0; b < opt.nblk; ++b) {
         double s[HCBD_HC_NSTRESS];
@@ -319,11 +380,9 @@ static int shear_run(const hcbd_hc_params *base, conc_run *cr, int r, double gd,
     for (k = 0; k < NCOMP; ++k) mean_err(blk[k], opt.nblk, &cr->eta[k][r], &cr->err[k][r]);
     cr->rise[r] = (blk[0][opt.nblk - 1] - blk[0][0]) / cr->eta[0][r];
     mix_checksum(checksum, &w);
-    hcbd_hc_world_destroy(&w);
-    return 1;
+    return end_world(&w, 1);
 fail:
-    hcbd_hc_world_destroy(&w);
-    return 0;
+    return end_world(&w, 0);
 }
 
 /* Within Ly/8 of a plane where the reverse-Poiseuille force flips. */
@@ -425,8 +484,9 @@ static int rp_run(const hcbd_hc_params *base, conc_run *cr, uint64_t *checksum)
     int start = 2 * nunit / 3, nsamp = nunit - start, block, k, i, d, nb = 0, ok = 0;
     int nf = blobs_in(&p);
     double sum_nf = 0, sum_np = 0, blk[ND][MAXB];
-    char what[96];
+    char what[96], label[64];
     snprintf(what, sizeof what, "C = %g C*, reverse Poiseuille", cr->C);
+    snprintf(label, sizeof label, "C%g_rp", cr->C);
     p.gdot = 0;
     p.reverse_poiseuille = 1;
     p.g[0] = cr->g;
@@ -435,7 +495,7 @@ static int rp_run(const hcbd_hc_params *base, conc_run *cr, uint64_t *checksum)
         fprintf(stderr, "hcbd_polymer: out of memory\n");
         goto done;
     }
-    if (!new_world(&w, &p, nf, cr->np_rp, what)) goto done;
+    if (!new_world(&w, &p, nf, cr->np_rp, what, label)) goto done;
     hcbd_slabs_init(&sf, p.L, opt.nslab, 2, block, mf, bf);
     hcbd_slabs_init(&sp, p.L, opt.nslab, 3, block, mp, bp);
     hcbd_slabs_init(&s0, p.L, opt.nslab, 1, 1, m0, b0);
@@ -498,7 +558,7 @@ static int rp_run(const hcbd_hc_params *base, conc_run *cr, uint64_t *checksum)
     mix_checksum(checksum, &w);
     ok = 1;
 fail:
-    hcbd_hc_world_destroy(&w);
+    ok = end_world(&w, ok);
 done:
     free(mf);
     free(mp);
@@ -617,56 +677,78 @@ static int momentum_run(const hcbd_hc_params *base, int np, double *dp, double *
     p.gdot = 0;
     p.reverse_poiseuille = 0;
     p.g[0] = p.g[1] = p.g[2] = 0;
-    if (!new_world(&w, &p, blobs_in(&p), np, "momentum run")) return 0;
+    if (!new_world(&w, &p, blobs_in(&p), np, "momentum run", "momentum")) return 0;
     hcbd_hc_momentum(&w, P0);
     *scale = 0;
     for (s = 0; s < opt.eq_steps; ++s) {
         for (a = 0; a < w.np; ++a)
             *scale += p.dt * sqrt((double)w.pFx[a] * w.pFx[a] + (double)w.pFy[a] * w.pFy[a] +
                                   (double)w.pFz[a] * w.pFz[a]);
-        if (!advance(&w, 1, "momentum run")) {
-            hcbd_hc_world_destroy(&w);
-            return 0;
-        }
+        if (!advance(&w, 1, "momentum run")) return end_world(&w, 0);
     }
     hcbd_hc_momentum(&w, P1);
     *dp = sqrt((P1[0] - P0[0]) * (P1[0] - P0[0]) + (P1[1] - P0[1]) * (P1[1] - P0[1]) +
                (P1[2] - P0[2]) * (P1[2] - P0[2]));
     mix_checksum(checksum, &w);
-    hcbd_hc_world_destroy(&w);
-    return 1;
+    return end_world(&w, 1);
 }
 
 /* Conversion of reduced values to SI. */
 typedef struct { double len, t, kT, M, v, eta, P, acc; } units;
 
-static void print_parameters(const units *u, const hcbd_hc_params *p, const hcbd_hc_params *tab)
+/* length sigma, energy kT, time time_unit; mass kT t^2 / sigma^2 */
+static void set_units(units *u, const hcbd_hc_si *s, double time_unit)
 {
-    const double V = u->len * u->len * u->len;
-    struct row { const char *name, *unit; double used, table, to_si; } rows[] = {
-        {"dt", "s", p->dt, tab->dt, u->t},
-        {"rho", "kg/m^3", p->rho, tab->rho, u->M / V},
-        {"nbar", "m^-3", p->nbar, tab->nbar, 1 / V},
-        {"eta", "Pa s", p->eta, tab->eta, u->eta},
-        {"P0", "Pa", p->P0, tab->P0, u->P},
-        {"h", "m", p->h, tab->h, u->len},
-        {"xi", "kg/s", p->xi, tab->xi, u->M / u->t},
-        {"sigma", "m", p->sigma, tab->sigma, u->len},
-        {"rc", "m", p->rc, tab->rc, u->len},
-        {"alpha", "J", p->alpha, tab->alpha, u->kT},
-        {"tau_lambda", "s", p->tau_lambda, tab->tau_lambda, u->t},
-        {"p", "-", p->p_kuhn, tab->p_kuhn, 1},
-        {"n_max", "m^-3", p->n_max, tab->n_max, 1 / V},
-        {"chi", "-", p->chi, tab->chi, 1},
+    u->len = s->sigma;
+    u->t = time_unit;
+    u->kT = KB * s->T;
+    u->M = u->kT * u->t * u->t / (u->len * u->len);
+    u->v = u->len / u->t;
+    u->eta = u->M / (u->len * u->t);
+    u->P = u->M / (u->len * u->t * u->t);
+    u->acc = u->len / (u->t * u->t);
+}
+
+/* Units of a parameter: powers of length, time, energy (kT) and mass. */
+typedef struct { int len, t, kT, M; } dims;
+
+static double to_si(const units *u, dims d)
+{
+    return pow(u->len, d.len) * pow(u->t, d.t) * pow(u->kT, d.kT) * pow(u->M, d.M);
+}
+
+/* The parameters used (in the run's units u) against Table I (in its own
+   units ut: sigma and T may differ), compared in SI. */
+static void print_parameters(const units *u, const hcbd_hc_params *p, const units *ut,
+                             const hcbd_hc_params *tab)
+{
+    static const dims T = {0, 1, 0, 0}, RHO = {-3, 0, 0, 1}, N3 = {-3, 0, 0, 0}, ETA = {-1, -1, 0, 1},
+                      PR = {-1, -2, 0, 1}, L = {1, 0, 0, 0}, XI = {0, -1, 0, 1}, E = {0, 0, 1, 0},
+                      ONE = {0, 0, 0, 0};
+    struct row { const char *name, *unit; double used, table; dims d; } rows[] = {
+        {"dt", "s", p->dt, tab->dt, T},
+        {"rho", "kg/m^3", p->rho, tab->rho, RHO},
+        {"nbar", "m^-3", p->nbar, tab->nbar, N3},
+        {"eta", "Pa s", p->eta, tab->eta, ETA},
+        {"P0", "Pa", p->P0, tab->P0, PR},
+        {"h", "m", p->h, tab->h, L},
+        {"xi", "kg/s", p->xi, tab->xi, XI},
+        {"sigma", "m", p->sigma, tab->sigma, L},
+        {"rc", "m", p->rc, tab->rc, L},
+        {"alpha", "J", p->alpha, tab->alpha, E},
+        {"tau_lambda", "s", p->tau_lambda, tab->tau_lambda, T},
+        {"p", "-", p->p_kuhn, tab->p_kuhn, ONE},
+        {"n_max", "m^-3", p->n_max, tab->n_max, N3},
+        {"chi", "-", p->chi, tab->chi, ONE},
     };
     int k;
-    printf("# %-11s %14s %-8s %14s %14s\n", "parameter", "SI (used)", "unit", "reduced used", "Table I");
+    printf("# %-11s %14s %-8s %14s %14s\n", "parameter", "SI (used)", "unit", "reduced used", "Table I (SI)");
     for (k = 0; k < (int)(sizeof rows / sizeof rows[0]); ++k) {
-        int same = fabs(rows[k].used - rows[k].table) <= 1e-12 * fabs(rows[k].table);
-        printf("# %-11s %14.6g %-8s %14.6g %14.6g", rows[k].name, rows[k].used * rows[k].to_si, rows[k].unit,
-               rows[k].used, rows[k].table);
+        double used = rows[k].used * to_si(u, rows[k].d), table = rows[k].table * to_si(ut, rows[k].d);
+        int same = fabs(used - table) <= 1e-12 * fabs(table);
+        printf("# %-11s %14.6g %-8s %14.6g %14.6g", rows[k].name, used, rows[k].unit, rows[k].used, table);
         if (same) printf("\n");
-        else printf("   <- differs from Table I (x %.4g)\n", rows[k].used / rows[k].table);
+        else printf("   <- differs from Table I (x %.4g)\n", used / table);
     }
 }
 
@@ -833,10 +915,10 @@ int main(int argc, char **argv)
 {
     static conc_run runs[MAXC];
     config c;
-    hcbd_hc_si si = hcbd_hc_si_table1();
+    const hcbd_hc_si si1 = hcbd_hc_si_table1();
     hcbd_hc_params tab, par, prp, *p = &par;
     hcbd_hc_theory th;
-    units u;
+    units u, ut;
     char msg[256];
     uint64_t checksum = 0;
     double gmax = 0, mach, dp = 0, dscale = 0;
@@ -850,6 +932,7 @@ int main(int argc, char **argv)
     c.steps = 1000;
     for (k = 1; k < argc; ++k) /* the preset first: explicit keys override it */
         if (!strcmp(argv[k], "preset=paper")) paper = 1;
+    si = si1;
     opt.time_unit = 1e-6;
     opt.conc[0] = 2.5;
     opt.conc[1] = 5;
@@ -869,7 +952,7 @@ int main(int argc, char **argv)
         memcpy(opt.gdot_si, gq, sizeof gq);
         opt.ngdot = 4;
         opt.tau_si = 2e-4;
-        opt.P0_si = si.rho * 2.0 * 2.0 / 7; /* c_s = 2 m/s */
+        opt.P0_si = 0; /* c_s = 2 m/s, set once rho is known */
         opt.L[0] = opt.L[1] = opt.L[2] = 8;
         opt.le_steps = opt.rp_steps = 600;
         opt.eq_steps = 100;
@@ -885,6 +968,7 @@ int main(int argc, char **argv)
             opt.gdot_si[r] = opt.gdot_si[r - 1];
             opt.gdot_si[r - 1] = t;
         }
+    if (!(opt.P0_si > 0)) opt.P0_si = si.rho * 2.0 * 2.0 / 7;
     if (!opt.alpha_given) opt.alpha = si.alpha_kT * si.tau_lambda / opt.tau_si;
     if ((opt.le_steps - 2 * opt.le_steps / 3) / opt.nblk < 1) {
         fprintf(stderr, "hcbd_polymer: le_steps=%d is too short for %d blocks\n", opt.le_steps, opt.nblk);
@@ -892,20 +976,14 @@ int main(int argc, char **argv)
     }
 
     /* ---- units and parameters ---- */
-    if (hcbd_hc_params_si(&si, opt.time_unit, &tab, msg, sizeof msg) != HCBD_OK) {
+    if (hcbd_hc_params_si(&si, opt.time_unit, &par, msg, sizeof msg) != HCBD_OK ||
+        hcbd_hc_params_si(&si1, opt.time_unit, &tab, msg, sizeof msg) != HCBD_OK) {
         fprintf(stderr, "hcbd_polymer: %s\n", msg);
         return 2;
     }
-    u.len = si.sigma;
-    u.t = opt.time_unit;
-    u.kT = KB * si.T;
-    u.M = u.kT * u.t * u.t / (u.len * u.len);
-    u.v = u.len / u.t;
-    u.eta = u.M / (u.len * u.t);
-    u.P = u.M / (u.len * u.t * u.t);
-    u.acc = u.len / (u.t * u.t);
+    set_units(&u, &si, opt.time_unit);
+    set_units(&ut, &si1, opt.time_unit);
     opt.eta_inf = opt.eta_inf_mpas * 1e-3 / u.eta;
-    par = tab;
     memcpy(p->L, opt.L, sizeof opt.L);
     p->fluctuations = 0; /* the paper's choice with polymers present (sec. IV A 3) */
     p->P0 = opt.P0_si / u.P;
@@ -936,7 +1014,7 @@ int main(int argc, char **argv)
     printf(", threads = %d, seed = %llu\n", p->threads, (unsigned long long)p->seed);
     printf("# reduced units: sigma = %g m, kT = %.6g J (T = %g K), time unit = %g s, mass unit "
            "kT t^2/sigma^2 = %.6g kg\n", u.len, u.kT, si.T, u.t, u.M);
-    print_parameters(&u, p, &tab);
+    print_parameters(&u, p, &ut, &tab);
     printf("# derived: blob mass m = %.6g (%.4g kg), nu = eta/rho = %.6g, c_s = %.6g (%.4g m/s; Table I "
            "%.4g m/s), dt limits: viscous %.4g, sound %.4g (dt = %g)\n", th.m, th.m * u.M, th.nu, th.cs,
            th.cs * u.v, sqrt(7 * si.P0 / si.rho), th.dt_visc, th.dt_sound, p->dt);
@@ -965,6 +1043,7 @@ int main(int argc, char **argv)
 
     /* ---- the runs ---- */
     prog.c = &c;
+    if (c.restart[0] && !hc_restart(&c, &rst)) return 2;
     prog.total = (int64_t)opt.nconc * ((int64_t)opt.ngdot * opt.le_steps + opt.rp_steps) + opt.eq_steps;
     clock_gettime(CLOCK_MONOTONIC, &prog.t0);
     prog.last = prog.t0;
@@ -1008,5 +1087,7 @@ int main(int argc, char **argv)
     printf("state_checksum=%016llx\n", (unsigned long long)checksum);
     fflush(stdout);
     write_plots(&c, runs, &prp, prp.L[1], &u);
+    free(rst.fluid);
+    free(rst.poly);
     return 0;
 }

@@ -41,7 +41,10 @@ static void usage(void)
             "  xip=a,b,...         background frictions xi' (xi = 1): default 1,2,5\n"
             "  N density dt kT xi tau Rc f sigma rcut skin Lx Ly Lz potential=star|ideal\n"
             "  density_norm=2014|2016 lagged=0|1 noise=gauss|uniform pair=shardlow|euler seed steps threads out\n"
-            "  (steps: per shear rate)\n");
+            "  (steps: per shear rate)\n"
+            "  xyz=FILE xyz_every=k thermo_every=k checkpoint=FILE  run output, one file per\n"
+            "                      run (FILE.<run>.ext) when there are several\n"
+            "  restart=FILE        continue one run from a checkpoint (its parameters)\n");
 }
 
 static int own_key(config *c, const char *key, const char *v)
@@ -89,6 +92,10 @@ int main(int argc, char **argv)
     snprintf(c.out, sizeof c.out, "out/shear_flow");
     if (!parse_args(argc, argv, &c, own_key, usage)) return 2;
     p = &c.def.params;
+    if (c.restart[0] && nxip * nrates > 1) {
+        fprintf(stderr, "shear_flow: restart= continues one run: give one gdot and one xip\n");
+        return 2;
+    }
     mkdirs(c.out);
     printf("shear_flow: GI-BD %s, N = %d, box %.3g x %.3g x %.3g, n# = %g, dt = %g, tau = %g, "
            "%d values of xi', %d rates, %d steps each\n",
@@ -100,23 +107,29 @@ int main(int argc, char **argv)
     for (x = 0; x < nxip; ++x)
         for (r = 0; r < nrates; ++r) {
             hcbd_world w;
+            run_out ro;
+            char label[64];
             double blk[4][NB];
             p->xip = xips[x];
             p->gdot = rates[r];
             if (x == 0 && r == nrates - 1) print_limits(p); /* the fastest shear */
-            if (hcbd_world_create(&w, &c.def) != HCBD_OK) {
-                fprintf(stderr, "shear_flow: %s\n", w.err.msg);
-                return 2;
+            if (!world_start(&c, &w)) return 2;
+            if (c.restart[0]) { /* the checkpoint's rate and xi', already sheared */
+                xips[x] = p->xip;
+                rates[r] = p->gdot;
+            } else {
+                hcbd_world_place_lattice(&w, c.N);
             }
-            hcbd_world_place_lattice(&w, c.N);
-            if (hcbd_step(&w, start) != HCBD_OK) {
+            snprintf(label, sizeof label, "xip%g_gdot%g", xips[x], rates[r]);
+            if (!run_out_open(&c, &ro, &w, nxip * nrates > 1 ? label : NULL)) return 2;
+            if (run_steps(&c, &ro, &w, c.restart[0] ? 0 : start) != HCBD_OK) {
                 fprintf(stderr, "shear_flow: xip = %g, gdot = %g: %s\n", xips[x], rates[r], w.err.msg);
                 return 1;
             }
             for (b = 0; b < NB; ++b) {
                 double fl[4];
                 hcbd_flux_enable(&w, 1);
-                if (hcbd_step(&w, (c.steps - start) / NB) != HCBD_OK) {
+                if (run_steps(&c, &ro, &w, (c.steps - start) / NB) != HCBD_OK) {
                     fprintf(stderr, "shear_flow: xip = %g, gdot = %g: %s\n", xips[x], rates[r], w.err.msg);
                     return 1;
                 }
@@ -125,6 +138,7 @@ int main(int argc, char **argv)
             }
             for (k = 0; k < 4; ++k) mean_err(blk[k], NB, &eta[x][k][r], &err[x][k][r]);
             checksum = (checksum ^ hcbd_state_checksum(&w)) * 0x100000001B3ULL;
+            if (!run_out_close(&c, &ro, &w)) return 1;
             hcbd_world_destroy(&w);
             progress(&c, (x * nrates + r + 1) * c.steps, nxip * nrates * c.steps, &t0);
         }

@@ -508,7 +508,7 @@ static hcbd_result bi_rdf(hcbd_world *w, double rmax, int nbins, int null_g, int
 {
     static double hist[64];
     hcbd_rdf g;
-    hcbd_result r = hcbd_rdf_init(null_g ? NULL : &g, rmax, nbins, null_h ? NULL : hist);
+    hcbd_result r = hcbd_rdf_init(null_g ? NULL : &g, rmax, nbins, 0, null_h ? NULL : hist, sizeof hist);
     if (r != HCBD_OK || !w) return r;
     return hcbd_rdf_sample(&g, w);
 }
@@ -523,6 +523,29 @@ WF(c_rdf_nullh) { NOMSG; return bi_rdf(NULL, 2, 10, 0, 1); }
 WF(c_rdf_big) { (void)msg; return bi_rdf(w, 7, 10, 0, 0); } /* > L/2 = 6.45 */
 WF(c_rdf_sample_nullg) { (void)msg; return hcbd_rdf_sample(NULL, w); }
 WF(c_rdf_empty) { (void)msg; return bi_rdf(w, 2, 10, 0, 0); }
+static hcbd_result bi_rdf_blocks(int block, size_t shortby)
+{
+    static double mem[60];
+    hcbd_rdf g;
+    return hcbd_rdf_init(&g, 2, 10, block, mem, hcbd_rdf_bytes(10, 1) - shortby);
+}
+WF(c_rdf_blockm1) { NOMSG; return bi_rdf_blocks(-1, 0); }
+WF(c_rdf_blockshort) { NOMSG; return bi_rdf_blocks(5, 1); }
+/* coordination within rc of a g(r) to rmax = 2, one ideal-gas sample unless empty */
+static hcbd_result bi_coord(hcbd_world *w, double rc, int empty, int nullnc)
+{
+    static double mem[60];
+    hcbd_rdf g;
+    double nc;
+    hcbd_result r = hcbd_rdf_init(&g, 2, 10, 5, mem, sizeof mem);
+    if (r == HCBD_OK && !empty) r = hcbd_rdf_sample(&g, w);
+    return r != HCBD_OK ? r : hcbd_rdf_coordination(&g, rc, nullnc ? NULL : &nc, NULL);
+}
+WF(c_coord_big) { NOMSG; return bi_coord(w, 2.5, 0, 0); }
+WF(c_coord_neg) { NOMSG; return bi_coord(w, -1, 0, 0); }
+WF(c_coord_nan) { NOMSG; return bi_coord(w, NAN, 0, 0); }
+WF(c_coord_empty) { NOMSG; return bi_coord(w, 1, 1, 0); }
+WF(c_coord_null) { NOMSG; return bi_coord(w, 1, 0, 1); }
 static hcbd_result bi_mt(int nch, int p, int m, int levels, int nullc, int nullmem, int shortmem)
 {
     static double mem[4096];
@@ -544,8 +567,8 @@ static hcbd_result bi_msd(int n, int B, int levels, int nulld, int nullmem, int 
     static double mem[8192];
     hcbd_msd d;
     size_t b = sizeof mem;
-    if (shortmem) b = hcbd_msd_bytes(n, B, levels) - 1;
-    return hcbd_msd_init(nulld ? NULL : &d, n, B, levels, nullmem ? NULL : mem, b);
+    if (shortmem) b = hcbd_msd_bytes(n, B, levels, 0) - 1;
+    return hcbd_msd_init(nulld ? NULL : &d, n, B, levels, 0, 0, nullmem ? NULL : mem, b);
 }
 WF(c_msd_n0) { NOMSG; return bi_msd(0, 4, 3, 0, 0, 0); }
 WF(c_msd_B1) { NOMSG; return bi_msd(8, 1, 3, 0, 0, 0); }
@@ -554,6 +577,33 @@ WF(c_msd_span) { NOMSG; return bi_msd(1, 2, 70, 0, 0, 0); } /* 2^69 samples */
 WF(c_msd_nulld) { NOMSG; return bi_msd(8, 4, 3, 1, 0, 0); }
 WF(c_msd_nullmem) { NOMSG; return bi_msd(8, 4, 3, 0, 1, 0); }
 WF(c_msd_short) { NOMSG; return bi_msd(8, 4, 3, 0, 0, 1); }
+static hcbd_result bi_msd2(int dense, int64_t block, double lag_min, double lag_max, int samples)
+{
+    static double mem[16384], xyz[24];
+    hcbd_msd d;
+    double D;
+    int s;
+    hcbd_result r = hcbd_msd_init(&d, 8, 4, 3, dense, block, mem, sizeof mem);
+    if (r != HCBD_OK) return r;
+    for (s = 0; s < samples; ++s) {
+        xyz[0] = s;
+        hcbd_msd_add(&d, xyz);
+    }
+    return hcbd_msd_diffusion(&d, lag_min, lag_max, &D, NULL);
+}
+WF(c_msd_densem1) { NOMSG; return bi_msd2(-1, 0, 1, 3, 0); }
+WF(c_msd_blockm1) { NOMSG; return bi_msd2(0, -1, 1, 3, 0); }
+WF(c_msd_dense_big)
+{
+    static double mem[64];
+    hcbd_msd d;
+    NOMSG;
+    return hcbd_msd_init(&d, 8, 1000, 4, 3, 0, mem, sizeof mem); /* 999 10^9 slots */
+}
+WF(c_msd_window) { NOMSG; return bi_msd2(0, 0, 3, 1, 100); }
+WF(c_msd_window_nan) { NOMSG; return bi_msd2(0, 0, NAN, 3, 100); }
+WF(c_msd_one_lag) { NOMSG; return bi_msd2(0, 0, 2, 2.5, 100); }
+WF(c_msd_no_block) { NOMSG; return bi_msd2(1, 50, 1, 3, 49); } /* no block closed yet */
 static hcbd_result bi_prof(hcbd_world *w, int nslab, int block, int nullpr, int nullmem, int shortmem)
 {
     static double mem[4096];
@@ -693,6 +743,13 @@ static const bi_wentry bi_calls[] = {
     {"rdf_sample rmax = 7 > L/2", WK_GIBD, c_rdf_big, HCBD_ERR_PARAM, "rmax = 7"},
     {"rdf_sample g NULL", WK_GIBD, c_rdf_sample_nullg, HCBD_ERR_NULL, "g is NULL"},
     {"rdf_sample without particles", WK_EMPTY, c_rdf_empty, HCBD_ERR_STATE, "particles"},
+    {"rdf_init block = -1", WK_GIBD, c_rdf_blockm1, HCBD_ERR_PARAM, NULL},
+    {"rdf_init with blocks, bytes too few", WK_GIBD, c_rdf_blockshort, HCBD_ERR_MEMORY, NULL},
+    {"rdf_coordination rc > rmax", WK_GIBD, c_coord_big, HCBD_ERR_PARAM, NULL},
+    {"rdf_coordination rc < 0", WK_GIBD, c_coord_neg, HCBD_ERR_PARAM, NULL},
+    {"rdf_coordination rc = nan", WK_GIBD, c_coord_nan, HCBD_ERR_PARAM, NULL},
+    {"rdf_coordination before a sample", WK_GIBD, c_coord_empty, HCBD_ERR_STATE, NULL},
+    {"rdf_coordination nc NULL", WK_GIBD, c_coord_null, HCBD_ERR_NULL, NULL},
     {"mtcorr_init nch = 0", WK_GIBD, c_mt_nch0, HCBD_ERR_PARAM, NULL},
     {"mtcorr_init p = 1", WK_GIBD, c_mt_p1, HCBD_ERR_PARAM, NULL},
     {"mtcorr_init m = 1", WK_GIBD, c_mt_m1, HCBD_ERR_PARAM, NULL},
@@ -708,6 +765,13 @@ static const bi_wentry bi_calls[] = {
     {"msd_init d NULL", WK_GIBD, c_msd_nulld, HCBD_ERR_NULL, NULL},
     {"msd_init mem NULL", WK_GIBD, c_msd_nullmem, HCBD_ERR_NULL, NULL},
     {"msd_init bytes too few", WK_GIBD, c_msd_short, HCBD_ERR_MEMORY, NULL},
+    {"msd_init dense = -1", WK_GIBD, c_msd_densem1, HCBD_ERR_PARAM, NULL},
+    {"msd_init block = -1", WK_GIBD, c_msd_blockm1, HCBD_ERR_PARAM, NULL},
+    {"msd_init B = 1000, dense = 3 (slots overflow)", WK_GIBD, c_msd_dense_big, HCBD_ERR_PARAM, NULL},
+    {"msd_diffusion lag_min > lag_max", WK_GIBD, c_msd_window, HCBD_ERR_PARAM, NULL},
+    {"msd_diffusion lag_min = nan", WK_GIBD, c_msd_window_nan, HCBD_ERR_PARAM, NULL},
+    {"msd_diffusion one lag in the window", WK_GIBD, c_msd_one_lag, HCBD_ERR_STATE, NULL},
+    {"msd_diffusion before a block closes", WK_GIBD, c_msd_no_block, HCBD_ERR_STATE, NULL},
     {"profile_init nslab = 0", WK_GIBD, c_prof_ns0, HCBD_ERR_PARAM, NULL},
     {"profile_init nslab = 2^20 + 1", WK_GIBD, c_prof_nsbig, HCBD_ERR_PARAM, NULL},
     {"profile_init block = 0", WK_GIBD, c_prof_bl0, HCBD_ERR_PARAM, NULL},

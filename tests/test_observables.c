@@ -87,13 +87,13 @@ void test_msd_order_n(void)
     double *traj = (double *)malloc((size_t)T * 3 * NP * sizeof(double));
     double lag[64], msd[64];
     int64_t cnt[64];
-    size_t bytes = hcbd_msd_bytes(NP, B, LEV);
+    size_t bytes = hcbd_msd_bytes(NP, B, LEV, 0);
     void *mem = malloc(bytes);
     hcbd_msd m;
     hcbd_rng r;
     int t, k, nres;
     hcbd_rng_seed(&r, 9);
-    CHECK(hcbd_msd_init(&m, NP, B, LEV, mem, bytes) == HCBD_OK, "init");
+    CHECK(hcbd_msd_init(&m, NP, B, LEV, 0, 0, mem, bytes) == HCBD_OK, "init");
     for (k = 0; k < 3 * NP; ++k) traj[k] = 0;
     for (t = 1; t < T; ++t)
         for (k = 0; k < 3 * NP; ++k)
@@ -135,16 +135,16 @@ void test_rdf_ideal_gas(void)
     int s, k;
     d.params.potential = HCBD_POT_IDEAL;
     if (!make_world(&w, &d)) return;
-    hcbd_rdf_init(&a, 2.5, 25, h1);
-    hcbd_rdf_init(&b, 5.0, 25, h2);
+    hcbd_rdf_init(&a, 2.5, 25, 0, h1, sizeof h1);
+    hcbd_rdf_init(&b, 5.0, 25, 0, h2, sizeof h2);
     for (s = 0; s < 20; ++s) {
         w.p.seed = 100 + s;
         hcbd_world_place_random(&w, 2000);
         hcbd_rdf_sample(&a, &w);
         hcbd_rdf_sample(&b, &w);
     }
-    hcbd_rdf_result(&a, NULL, g1);
-    hcbd_rdf_result(&b, NULL, g2);
+    hcbd_rdf_result(&a, NULL, g1, NULL);
+    hcbd_rdf_result(&b, NULL, g2, NULL);
     for (k = 2; k < 25; ++k) {
         /* Poisson error of a bin count: 1 / sqrt(expected count) */
         double shell1 = 4.0 / 3 * 3.14159265 * (pow((k + 1) * 0.1, 3) - pow(k * 0.1, 3));
@@ -252,5 +252,180 @@ void test_carreau_fit(void)
     CHECK(hcbd_carreau_fit(g, eta, err, 3, eta_inf, 0, p, pe, NULL) == HCBD_ERR_PARAM, "3 points accepted");
     err[2] = 0;
     CHECK(hcbd_carreau_fit(g, eta, err, NP, eta_inf, 0, p, pe, NULL) == HCBD_ERR_PARAM, "zero error accepted");
+    hcbd_world_destroy(&w);
+}
+
+/* A random walk of np walkers, T samples, uniform steps in (-1/2, 1/2):
+   MSD(s) = s / 4, D = 1/24 per sample. */
+static double *walk(int np, int T, uint64_t seed)
+{
+    double *traj = (double *)malloc((size_t)T * 3 * np * sizeof(double));
+    hcbd_rng r;
+    int t, k;
+    if (!traj) return NULL;
+    hcbd_rng_seed(&r, seed);
+    for (k = 0; k < 3 * np; ++k) traj[k] = 0;
+    for (t = 1; t < T; ++t)
+        for (k = 0; k < 3 * np; ++k)
+            traj[(size_t)t * 3 * np + k] = traj[(size_t)(t - 1) * 3 * np + k] + hcbd_rng_uniform(&r) - 0.5;
+    return traj;
+}
+
+/* Dense origins and blocks: at every lag the block means, their error and
+   the all-sample mean equal a direct computation with origins every
+   B^max(0, l - dense) samples, restarted in each block. */
+void test_msd_dense_blocks(void)
+{
+    enum { NP = 4, T = 3000, B = 4, LEV = 4, DENSE = 1, BLK = 1000, NBK = T / BLK };
+    double *traj = walk(NP, T, 11), lag[64], msd[64], err[64], all[64];
+    size_t bytes = hcbd_msd_bytes(NP, B, LEV, DENSE);
+    void *mem = malloc(bytes);
+    hcbd_msd m;
+    int t, k, nres, nall;
+    if (!traj || !mem) { CHECK(0, "out of memory"); free(traj); free(mem); return; }
+    CHECK(hcbd_msd_init(&m, NP, B, LEV, DENSE, BLK, mem, bytes) == HCBD_OK, "init");
+    for (t = 0; t < T; ++t) hcbd_msd_add(&m, traj + (size_t)t * 3 * NP);
+    nres = hcbd_msd_stats(&m, lag, msd, err, 64);
+    nall = hcbd_msd_result(&m, NULL, all, NULL, 64);
+    CHECK(nres == LEV * (B - 1) && nall == nres, "%d block lags, %d lags", nres, nall);
+    for (k = 0; k < nres; ++k) {
+        int s = (int)lag[k], level = 0, stride = 1, b, t0;
+        double bm[NBK], sum = 0, mean, e;
+        int64_t n = 0;
+        while (s >= B * (int)pow(B, level)) ++level;
+        for (t0 = level - DENSE; t0 > 0; --t0) stride *= B;
+        for (b = 0; b < NBK; ++b) {
+            double bs = 0;
+            int bn = 0;
+            for (t0 = 0; t0 + s < BLK; t0 += stride) {
+                int c;
+                double d2 = 0;
+                for (c = 0; c < 3 * NP; ++c) {
+                    double dd = traj[(size_t)(b * BLK + t0 + s) * 3 * NP + c] - traj[(size_t)(b * BLK + t0) * 3 * NP + c];
+                    d2 += dd * dd;
+                }
+                bs += d2 / NP;
+                ++bn;
+            }
+            bm[b] = bs / bn;
+            sum += bs;
+            n += bn;
+        }
+        block_stats(bm, NBK, NBK, &mean, &e);
+        CHECK(fabs(msd[k] - mean) < 1e-9 * mean && fabs(err[k] - e) < 1e-6 * e &&
+              fabs(all[k] - sum / n) < 1e-9 * mean,
+              "lag %d: blocks %g +- %g vs %g +- %g, all %g vs %g", s, msd[k], err[k], mean, e,
+              all[k], sum / n);
+    }
+    free(mem);
+    free(traj);
+}
+
+/* The diffusion coefficient of random walks, D = 1/24 per sample, and its
+   block error: over R independent walks the z-scores (D - 1/24) / err
+   have the variance of a t-distribution with NBK - 1 degrees of freedom,
+   9/7; the pooled mean is within four of its errors. */
+void test_msd_diffusion_walk(void)
+{
+    enum { NP = 50, T = 20000, B = 10, LEV = 3, BLK = 2000, R = 16 };
+    size_t bytes = hcbd_msd_bytes(NP, B, LEV, 1);
+    void *mem = malloc(bytes);
+    double z2 = 0, Dsum = 0, e2sum = 0;
+    int r;
+    if (!mem) { CHECK(0, "out of memory"); return; }
+    for (r = 0; r < R; ++r) {
+        double *traj = walk(NP, T, 100 + (uint64_t)r), D, e;
+        hcbd_msd m;
+        int t;
+        if (!traj) { CHECK(0, "out of memory"); break; }
+        hcbd_msd_init(&m, NP, B, LEV, 1, BLK, mem, bytes);
+        for (t = 0; t < T; ++t) hcbd_msd_add(&m, traj + (size_t)t * 3 * NP);
+        CHECK(hcbd_msd_diffusion(&m, 10, 90, &D, &e) == HCBD_OK && e > 0, "diffusion");
+        z2 += (D - 1.0 / 24) * (D - 1.0 / 24) / (e * e);
+        Dsum += D;
+        e2sum += e * e;
+        free(traj);
+    }
+    NOTE("D = %.6f +- %.6f (1/24 = %.6f), mean z^2 = %.2f (9/7 expected)", Dsum / R,
+         sqrt(e2sum) / R, 1.0 / 24, z2 / R);
+    /* mean z^2 of R t(9) variables: 9/7 with spread about 0.5 */
+    CHECK(z2 / R > 0.4 && z2 / R < 3.0, "mean z^2 = %g: the block error is not the scatter", z2 / R);
+    CHECK(fabs(Dsum / R - 1.0 / 24) < 4 * sqrt(e2sum) / R, "D = %g vs 1/24", Dsum / R);
+    free(mem);
+}
+
+/* Coordination on a simple cubic lattice (spacing 1) is exact: 6 within
+   1.2, 18 within 1.5, and 6 + 12 f inside the shell that holds sqrt 2,
+   f its volume fraction below rc. */
+void test_rdf_coordination_lattice(void)
+{
+    enum { K = 8, N = K * K * K };
+    hcbd_world_def d = scene(N, 1.0);
+    hcbd_world w;
+    double xyz[3 * N], mem[40], nc[3], f;
+    hcbd_rdf g;
+    int i;
+    d.params.potential = HCBD_POT_IDEAL;
+    if (!make_world(&w, &d)) return;
+    for (i = 0; i < N; ++i) {
+        xyz[3 * i] = i % K + 0.5;
+        xyz[3 * i + 1] = i / K % K + 0.5;
+        xyz[3 * i + 2] = i / (K * K) + 0.5;
+    }
+    CHECK(hcbd_world_set_positions(&w, N, xyz) == HCBD_OK, "lattice");
+    CHECK(hcbd_rdf_init(&g, 4.0, 40, 0, mem, sizeof mem) == HCBD_OK, "init");
+    CHECK(hcbd_rdf_sample(&g, &w) == HCBD_OK, "sample");
+    hcbd_rdf_coordination(&g, 1.2, &nc[0], NULL);
+    hcbd_rdf_coordination(&g, 1.5, &nc[1], NULL);
+    hcbd_rdf_coordination(&g, 1.45, &nc[2], NULL);
+    f = (pow(1.45, 3) - pow(1.4, 3)) / (pow(1.5, 3) - pow(1.4, 3));
+    CHECK(fabs(nc[0] - 6) < 1e-12 && fabs(nc[1] - 18) < 1e-12 && fabs(nc[2] - 6 - 12 * f) < 1e-12,
+          "coordination %g %g %g vs 6 18 %g", nc[0], nc[1], nc[2], 6 + 12 * f);
+    hcbd_world_destroy(&w);
+}
+
+/* Block errors of g(r) and of the coordination number equal the scatter of
+   separate estimators, one per block; the ideal gas's coordination within
+   rc = 2.4 (a shell edge) is 4/3 pi rc^3 (n - 1) / V within four of those errors. */
+void test_rdf_blocks(void)
+{
+    enum { N = 2000, NB = 25, BLK = 4, NBK = 5 };
+    hcbd_world_def d = scene(N, 0.24);
+    hcbd_world w;
+    double mem[6 * NB], sep[NBK][NB], g[NB], err[NB], gb[NBK][NB], cb[NBK], nc, ec, V, th;
+    hcbd_rdf all, one[NBK];
+    int s, k, b;
+    d.params.potential = HCBD_POT_IDEAL;
+    if (!make_world(&w, &d)) return;
+    CHECK(hcbd_rdf_init(&all, 5.0, NB, BLK, mem, sizeof mem) == HCBD_OK, "init");
+    for (b = 0; b < NBK; ++b) hcbd_rdf_init(&one[b], 5.0, NB, 0, sep[b], sizeof sep[b]);
+    for (s = 0; s < BLK * NBK; ++s) {
+        w.p.seed = 300 + s;
+        hcbd_world_place_random(&w, N);
+        hcbd_rdf_sample(&all, &w);
+        hcbd_rdf_sample(&one[s / BLK], &w);
+    }
+    CHECK(hcbd_rdf_result(&all, NULL, g, err) == NBK, "closed blocks");
+    for (b = 0; b < NBK; ++b) {
+        hcbd_rdf_result(&one[b], NULL, gb[b], NULL);
+        hcbd_rdf_coordination(&one[b], 2.4, &cb[b], NULL);
+    }
+    for (k = 1; k < NB; ++k) {
+        double col[NBK], m, e;
+        for (b = 0; b < NBK; ++b) col[b] = gb[b][k];
+        block_stats(col, NBK, NBK, &m, &e);
+        CHECK(fabs(g[k] - m) < 1e-12 && fabs(err[k] - e) < 1e-9, "bin %d: %g +- %g vs %g +- %g", k, g[k],
+              err[k], m, e);
+    }
+    {
+        double m, e;
+        block_stats(cb, NBK, NBK, &m, &e);
+        hcbd_rdf_coordination(&all, 2.4, &nc, &ec);
+        CHECK(fabs(nc - m) < 1e-12 && fabs(ec - e) < 1e-9, "coordination %g +- %g vs %g +- %g", nc, ec, m, e);
+    }
+    V = w.p.L[0] * w.p.L[1] * w.p.L[2];
+    th = 4.0 / 3 * 3.14159265358979 * pow(2.4, 3) * (N - 1) / V;
+    NOTE("ideal gas coordination within 2.4: %.4f +- %.4f, theory %.4f", nc, ec, th);
+    CHECK(fabs(nc - th) < 4 * ec, "coordination %g +- %g vs %g", nc, ec, th);
     hcbd_world_destroy(&w);
 }

@@ -238,12 +238,12 @@ static int msd_blocks(hcbd_world *w, int steps, double vals[MSD_NB][MSD_MAXLAG],
 {
     enum { B = 10, LEV = 3 };
     int n = w->n, b, s, nl = 0;
-    size_t bytes = hcbd_msd_bytes(n, B, LEV);
+    size_t bytes = hcbd_msd_bytes(n, B, LEV, 0);
     void *mem = malloc(bytes);
     double *xyz = (double *)malloc(3 * (size_t)n * sizeof(double));
     hcbd_msd m;
     for (b = 0; b < MSD_NB; ++b) {
-        hcbd_msd_init(&m, n, B, LEV, mem, bytes);
+        hcbd_msd_init(&m, n, B, LEV, 0, 0, mem, bytes);
         for (s = 0; s < steps; ++s) {
             hcbd_get_positions(w, xyz, 1);
             hcbd_msd_add(&m, xyz);
@@ -436,7 +436,7 @@ static gr_result gr_run(int kind, int steps, double *api_vs_test)
     run(&w, 5000);
     for (b = 0; b < NB; ++b) {
         double F2 = 0, lap = 0;
-        hcbd_rdf_init(&rdf, 5.0, 50, hist); /* half the box: all-pairs path */
+        hcbd_rdf_init(&rdf, 5.0, 50, 0, hist, sizeof hist); /* half the box: all-pairs path */
         for (s = 0; s < steps / NB / 100; ++s) {
             double f2, lp;
             if (!run(&w, 100)) return res;
@@ -451,7 +451,7 @@ static gr_result gr_run(int kind, int steps, double *api_vs_test)
                 *api_vs_test = fmax(fabs(out[0] / f2 - 1), fabs(out[1] / lp - 1));
             }
         }
-        hcbd_rdf_result(&rdf, NULL, gb[b]);
+        hcbd_rdf_result(&rdf, NULL, gb[b], NULL);
         tb[b] = F2 / lap;
     }
     for (k = 0; k < 50; ++k) {
