@@ -33,6 +33,28 @@ verdict() {
     exit $run_ok
 }
 
+# below NAME VALUE ERR BOUND: VALUE at least four errors below BOUND; an
+# answer must be within four errors of the run's value
+below() {
+    say "measured $1 = $2 +- $3; expected below $4 by more than 4 errors"
+    if awk -v v="$2" -v e="$3" -v b="$4" 'BEGIN { exit !(v + 4 * e < b) }'; then
+        say "the run is within the expectation"; run_ok=0
+    else
+        say "the run is OUTSIDE the expectation"; run_ok=1
+    fi
+    if [ -n "$answer" ]; then
+        if awk -v a="$answer" -v v="$2" -v e="$3" 'BEGIN { d = a - v; if (d < 0) d = -d; exit !(a + 0 == a && d <= 4 * e) }'; then
+            say "your answer $answer is right (within 4 errors of the run's $2)"
+        else
+            say "your answer $answer is not within 4 errors of the run's $2"; run_ok=1
+        fi
+    fi
+    exit $run_ok
+}
+
+# get FILE KEY: the value of KEY=value in FILE (the first one)
+get() { awk -F= -v k="$2" '$1 == k { print $2; exit }' "$1"; }
+
 # field LABEL COLUMN: a number of first_step's output
 field() { printf '%s\n' "$out" | awk -v l="$1" -v c="$2" '$1 == l { x = $c; gsub(/[(),]/, "", x); print x }'; }
 
@@ -69,5 +91,52 @@ case "$k" in
     v=$(awk -F= '$1 == "initial_decay_identity" { print $2 }' out/exercise4.txt)
     e=$(awk -F= '$1 == "initial_decay_identity_err" { print $2 }' out/exercise4.txt)
     verdict "initial decay rate / friction average" "$v" "$e" 1 "$(awk -v e="$e" 'BEGIN { print 4 * e }')" ;;
-*)  say "usage: make exercise N=k [ANSWER=x], k = 1..4 (docs/exercises.md)"; exit 2 ;;
+5)  say "exercise 5: short- and long-time diffusion of ideal carriers (build/gibd_bulk, ~20 s)"
+    o=out/exercise5.txt
+    "$B/gibd_bulk" potential=ideal N=500 tau=0.1 dt=1e-3 skin=1.2 steps=20000 out=out/exercise5 2>/dev/null > $o || exit 1
+    say "long time: D_measured = $(get $o D_measured) +- $(get $o D_measured_err), eq. 33: $(get $o D_theory)"
+    verdict "MSD(tau) / eq. 32" "$(get $o msd_ratio_at_tau)" "-" 1 0.03 ;;
+6)  say "exercise 6: the viscosity of ideal carriers three ways (build/gibd_bulk, two runs, ~40 s)"
+    a=out/exercise6a.txt; s=out/exercise6b.txt
+    "$B/gibd_bulk" potential=ideal tau=2e-3 xip=1.5 dt=2e-4 N=500 steps=20000 out=out/exercise6a 2>/dev/null > $a || exit 1
+    "$B/gibd_bulk" potential=ideal tau=2e-3 xip=1.5 dt=2e-4 N=500 steps=20000 gdot=4 out=out/exercise6b 2>/dev/null > $s || exit 1
+    say "eq. 35: nu = $(get $a nu_theory); friction average at k: $(get $a nu_meanfield) +- $(get $a nu_meanfield_err);"
+    say "transverse current, late decay: $(get $a nu_hydro) +- $(get $a nu_hydro_err)"
+    r=$(awk -v m="$(get $s eta_background_measured)" -v t="$(get $s eta_background_theory)" 'BEGIN { print m / t }')
+    # MODEL 12: the library's Lees-Edwards, channel and transverse-current
+    # runs read 0.634-0.688 of eq. 35
+    verdict "Lees-Edwards background viscosity / eq. 35" "$r" "-" 0.66 0.05 ;;
+7)  say "exercise 7: walls: slip and no slip (build/channel_flow, two runs, ~40 s)"
+    a=out/exercise7a.txt; s=out/exercise7b.txt
+    "$B/channel_flow" xip=1 out=out/exercise7a 2>/dev/null > $a || exit 1
+    "$B/channel_flow" xip=1 wall=noslip out=out/exercise7b 2>/dev/null > $s || exit 1
+    say "Gaussian walls: slip velocity / v_max = $(get $a slip_velocity_ratio) +- $(get $a slip_velocity_ratio_err)," \
+        "depletion width $(get $a depletion_width) (Boltzmann $(get $a depletion_width_boltzmann))"
+    e=$(get $s slip_velocity_ratio_err)
+    verdict "no-slip walls: slip velocity / v_max" "$(get $s slip_velocity_ratio)" "$e" 0 \
+        "$(awk -v e="$e" 'BEGIN { print 4 * e }')" ;;
+8)  say "exercise 8: the flow curve of the star liquid and its Carreau fit (build/shear_flow, ~40 s)"
+    o=out/exercise8.txt
+    "$B/shear_flow" xip=1 out=out/exercise8 2>/dev/null > $o || exit 1
+    grep -E '^(eta_total_measured|eta_total_err|eta_background_theory|eta0|lambda|n|n_err)=' $o
+    below "Carreau exponent n" "$(get $o n)" "$(get $o n_err)" 1 ;;
+9)  say "exercise 9: the viscosity of the SPH fluid (build/hcbd_fluid, ~25 s)"
+    o=out/exercise9.txt
+    "$B/hcbd_fluid" out=out/exercise9 2>/dev/null > $o || exit 1
+    say "with fluctuations: nu_le = $(get $o nu_le) +- $(get $o nu_le_err); reverse Poiseuille:" \
+        "$(get $o nu_poiseuille) +- $(get $o nu_poiseuille_err), the kernel-smoothed prediction $(get $o nu_kernel_poiseuille)"
+    t=$(get $o nu_theory)
+    # laminar Lees-Edwards: the block error (1e-6) is far below what the
+    # discretisation at h = 2 sigma leaves; 1 % is the tolerance
+    verdict "laminar Lees-Edwards nu" "$(get $o nu_le_nofluct)" "$(get $o nu_le_nofluct_err)" "$t" \
+        "$(awk -v t="$t" 'BEGIN { print 0.01 * t }')" ;;
+10) say "exercise 10: shear thinning with RaPiD transient pairs (build/hcbd_polymer, ~15 s)"
+    o=out/exercise10.txt
+    "$B/hcbd_polymer" out=out/exercise10 2>/dev/null > $o || exit 1
+    s1=$(awk -F= '$1 == "shear_thinning" { print $2; exit }' $o)
+    s2=$(awk -F= '$1 == "shear_thinning" { n++; if (n == 2) print $2 }' $o)
+    e2=$(awk -F= '$1 == "shear_thinning_err" { n++; if (n == 2) print $2 }' $o)
+    say "eta(fastest) / eta(slowest): $s1 at C = 2.5 C*, $s2 +- $e2 at C = 5 C*"
+    below "eta ratio at 5 C*, against the one at 2.5 C*" "$s2" "$e2" "$s1" ;;
+*)  say "usage: make exercise N=k [ANSWER=x], k = 1..10 (docs/exercises.md)"; exit 2 ;;
 esac

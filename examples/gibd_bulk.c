@@ -320,7 +320,8 @@ int main(int argc, char **argv)
             for (k = 0; k < NRDF; ++k) fprintf(f, "%.6g,%.6g,%.3g\n", r[k], g[k], ge[k]);
             fclose(f);
         }
-        rdf_min = first_minimum(r, g, NRDF);
+        /* an ideal gas has no shell (its g(r) is 1 within the noise) */
+        rdf_min = p->potential == HCBD_POT_IDEAL ? NAN : first_minimum(r, g, NRDF);
         if (isfinite(rdf_min)) hcbd_rdf_coordination(&rdf, rdf_min, &coord, &coord_err);
     }
     {
