@@ -103,13 +103,14 @@ static inline int check_preset(const config *c, const char *v)
 }
 
 /* Physical keys of docs/MODEL.md, seed, steps, threads, out; the example's
-   own keys first through own().  threads defaults to the cores online (the
-   results are the same bits for any count).  Returns 0 after printing what
-   was wrong. */
+   own keys first through own().  threads defaults to OMP_NUM_THREADS when
+   it is set, else to the cores online (the results are the same bits for
+   any count).  Returns 0 after printing what was wrong. */
 static inline int parse_args(int argc, char **argv, config *c, own_key_fn own, void (*usage)(void))
 {
     hcbd_params *p = &c->def.params;
-    long cores = sysconf(_SC_NPROCESSORS_ONLN);
+    const char *omp = getenv("OMP_NUM_THREADS");
+    long cores = omp && atoi(omp) > 0 ? atoi(omp) : sysconf(_SC_NPROCESSORS_ONLN);
     int k, e;
     p->threads = cores < 1 ? 1 : cores > 1024 ? 1024 : (int)cores;
     for (k = 1; k < argc; ++k) {
