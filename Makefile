@@ -32,7 +32,7 @@ HC_EXAMPLES := $(B)/hcbd_fluid $(B)/hcbd_polymer
 HEADERS  := hcbd.h
 TEST_SRC := $(wildcard tests/test_*.c) tests/main.c
 
-.PHONY: all run test validate mutants exercise test-main test-walls test-float test-hcbd-float test-examples test-gibd test-hcbd test-sanitize test-sanitize-hcbd test-tsan test-tsan-hcbd test-fuzz-args test-fuzz-ckpt test-install test-build build-check install fuzz bench bench-wp bench-stability bench-peers bench-parts bench-soak clean
+.PHONY: all run test validate mutants exercise lammps test-lammps test-main test-walls test-float test-hcbd-float test-examples test-gibd test-hcbd test-sanitize test-sanitize-hcbd test-tsan test-tsan-hcbd test-fuzz-args test-fuzz-ckpt test-install test-build build-check install fuzz bench bench-wp bench-stability bench-peers bench-parts bench-soak clean
 
 all: $(B)/hcbd_impl.o $(EXAMPLES) $(HC_EXAMPLES)
 
@@ -111,6 +111,17 @@ test:
 	-@$(MAKE) --no-print-directory -j$(JOBS) $(B)/run_tests $(B)/gibd_bulk
 	-@$(MAKE) --no-print-directory -k -j$(JOBS) $(addprefix test-,$(TEST_PARTS))
 	@tests/summary.sh $(B)/logs $(TEST_PARTS)
+
+# make lammps: LAMMPS with the PLUGIN package and MPI, from Debian's source
+# package, into build/lammps (cached), and the GI-BD plugin against it;
+# skipped with a message where the tools are missing (lammps/build.sh).
+# make test-lammps (CI runs it after make test): the plugin on 1, 2 and 4
+# ranks against hcbd's own run (lammps/check.sh).
+lammps:
+	lammps/build.sh
+
+test-lammps: lammps $(B)/gibd_bulk
+	lammps/check.sh
 
 # make mutants (not in CI): every injected single-coefficient error of
 # tests/mutants/mutants.txt must make the suite fail; NAMES="a b" picks.

@@ -667,6 +667,34 @@ void hcbd_pair_normals(const hcbd_world *w, int64_t s, int32_t a, int32_t b,
    it. */
 void hcbd_particle_normals(const hcbd_world *w, int64_t s, int32_t id, double out[3]);
 
+/* The same noise without a world, for codes that run GI-BD on an engine of
+   their own (lammps/): a stream of this seed and noise kind gives the
+   numbers hcbd_pair_normals and hcbd_particle_normals give for a world with
+   that seed, keyed by (seed, step, min id, max id) and (seed, step, id). */
+typedef struct hcbd_noise_stream {
+    uint64_t pair_key, particle_key;
+    hcbd_noise kind;
+    hcbd__zig zig;
+} hcbd_noise_stream;
+void hcbd_noise_stream_init(hcbd_noise_stream *ns, uint64_t seed, hcbd_noise kind);
+void hcbd_noise_pair(const hcbd_noise_stream *ns, int64_t s, int32_t a, int32_t b, double out[3]);
+void hcbd_noise_particle(const hcbd_noise_stream *ns, int64_t s, int32_t id, double out[3]);
+
+/* The GI-BD pair equations (MODEL 2-3) for the same kind of engine, from
+   the one place the library writes them: with c from hcbd_gibd_coef_of
+   (params checked as hcbd_world_create checks them; m = xi' tau),
+   rho_i = hcbd_gibd_density(c, sum_j w(r_ij)) (the sum without the self
+   term; 2014 or 2016 normalisation) and the pair's S_ij dt / tau =
+   hcbd_gibd_sdt(c, r_ij, 1/rho_i, 1/rho_j) (0 beyond Rc).  The Euler pair
+   update is dp_ij = sdt (v_j - v_i) + sqrt(2 kT sdt) zeta_ij. */
+typedef struct hcbd_gibd_coef {
+    double Rc, m, cw, cf, cs, rho_norm;
+} hcbd_gibd_coef;
+hcbd_result hcbd_gibd_coef_of(const hcbd_params *p, hcbd_gibd_coef *c, char *msg, size_t msg_size);
+double hcbd_gibd_weight(const hcbd_gibd_coef *c, double r);
+double hcbd_gibd_density(const hcbd_gibd_coef *c, double wsum);
+double hcbd_gibd_sdt(const hcbd_gibd_coef *c, double r, double inv_rho_i, double inv_rho_j);
+
 /* >>kernels (exported for tests and users) --------------------------------*/
 double hcbd_wendland(double r, double Rc);
 double hcbd_wendland_dr(double r, double Rc);
@@ -1579,6 +1607,29 @@ void hcbd_pair_normals(const hcbd_world *w, int64_t s, int32_t a, int32_t b,
     hcbd__noise3(w, hcbd__pair_key(hcbd__step_key(w, s), a, b), out);
 }
 
+void hcbd_noise_stream_init(hcbd_noise_stream *ns, uint64_t seed, hcbd_noise kind)
+{
+    if (!ns) return;
+    ns->pair_key = hcbd__mix64(seed ^ hcbd__mix64(HCBD__STREAM_PAIR));
+    ns->particle_key = hcbd__mix64(seed ^ hcbd__mix64(HCBD__STREAM_BROWNIAN));
+    ns->kind = kind;
+    hcbd__zig_init(&ns->zig);
+}
+
+void hcbd_noise_pair(const hcbd_noise_stream *ns, int64_t s, int32_t a, int32_t b, double out[3])
+{
+    if (!ns || !out) return;
+    hcbd__deviates3(&ns->zig, ns->kind,
+                    hcbd__pair_key(hcbd__mix64(ns->pair_key ^ hcbd__mix64((uint64_t)s)), a, b), out);
+}
+
+void hcbd_noise_particle(const hcbd_noise_stream *ns, int64_t s, int32_t id, double out[3])
+{
+    if (!ns || !out) return;
+    hcbd__deviates3(&ns->zig, ns->kind,
+                    hcbd__particle_key(hcbd__mix64(ns->particle_key ^ hcbd__mix64((uint64_t)s)), id), out);
+}
+
 /* >>kernels */
 double hcbd_wendland(double r, double Rc)
 {
@@ -1618,6 +1669,37 @@ static inline double hcbd__weight(double cw, double q, double a)
 static inline double hcbd__sdt(double cs, double inv_rho_i, double inv_rho_j, double a)
 {
     return cs * (inv_rho_i + inv_rho_j) * a * a * a;
+}
+
+hcbd_result hcbd_gibd_coef_of(const hcbd_params *p, hcbd_gibd_coef *c, char *msg, size_t msg_size)
+{
+    hcbd_result r;
+    if (!p || !c) return HCBD_ERR_NULL;
+    if ((r = hcbd_params_check(p, msg, msg_size)) != HCBD_OK) return r;
+    c->Rc = p->Rc;
+    c->m = p->xip * p->tau;
+    c->cw = 21.0 / (2.0 * HCBD__PI * p->Rc * p->Rc * p->Rc);
+    c->cf = 15.0 / (2.0 * HCBD__PI * p->Rc * p->Rc * p->Rc);
+    c->cs = c->cf * c->m * c->m * p->dt / p->tau;
+    c->rho_norm = p->density_norm == 2016 ? 1.0 / (1.0 + c->cw / p->density) : 1.0;
+    return HCBD_OK;
+}
+
+double hcbd_gibd_weight(const hcbd_gibd_coef *c, double r)
+{
+    const double q = r / c->Rc;
+    return q < 1.0 ? hcbd__weight(c->cw, q, 1.0 - q) : 0.0;
+}
+
+double hcbd_gibd_density(const hcbd_gibd_coef *c, double wsum)
+{
+    return c->m * c->rho_norm * (c->cw + wsum);
+}
+
+double hcbd_gibd_sdt(const hcbd_gibd_coef *c, double r, double inv_rho_i, double inv_rho_j)
+{
+    const double q = r / c->Rc;
+    return q < 1.0 ? hcbd__sdt(c->cs, inv_rho_i, inv_rho_j, 1.0 - q) : 0.0;
 }
 
 double hcbd_star_potential(double r, double f, double sigma, double eps)

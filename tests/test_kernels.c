@@ -219,3 +219,56 @@ void test_table_potential(void)
         CHECK(fabs(Fa[i] - Ft[i]) < 1e-4 * (1 + fabs(Fa[i])), "particle %d comp %d: %g vs %g", i / 3,
               i % 3, Ft[i], Fa[i]);
 }
+
+/* The exported GI-BD pair equations (what lammps/ calls) against the
+   world's own friction average <sum_j f_ij> = <sum_j sdt tau / (m dt)>, and
+   against the written-out formulas: a 10 % error in the weight, the
+   normalisation or S_ij changes the average by more than the 1e-9 allowed.
+   Both normalisations. */
+void test_gibd_coef_exported(void)
+{
+    enum { N = 300 };
+    int norm;
+    for (norm = 0; norm < 2; ++norm) {
+        hcbd_world_def d = scene(N, 0.24);
+        hcbd_world w;
+        hcbd_gibd_coef c;
+        double xyz[3 * N], rho[N], out[3], sum = 0, pi = 3.14159265358979323846, Rc;
+        int i, j;
+        d.params.potential = HCBD_POT_IDEAL;
+        d.params.density_norm = norm ? 2016 : 2014;
+        d.params.xip = 1.7;
+        if (!make_world(&w, &d)) return;
+        hcbd_world_place_random(&w, N);
+        hcbd_get_positions(&w, xyz, 0);
+        CHECK(hcbd_gibd_coef_of(&d.params, &c, NULL, 0) == HCBD_OK, "coefficients");
+        Rc = d.params.Rc;
+        for (i = 0; i < N; ++i) {
+            double s = 0, s_ref = 0;
+            for (j = 0; j < N; ++j) {
+                double r = sqrt(pair_r2(xyz, i, j, w.p.L)), q = r / Rc;
+                if (j == i || q >= 1) continue;
+                s += hcbd_gibd_weight(&c, r);
+                s_ref += 21 / (2 * pi * Rc * Rc * Rc) * pow(1 - q, 4) * (4 * q + 1);
+            }
+            rho[i] = hcbd_gibd_density(&c, s);
+            {
+                double w0 = 21 / (2 * pi * Rc * Rc * Rc), m = 1.7 * d.params.tau;
+                double ref = m * (w0 + s_ref) / (norm ? 1 + w0 / 0.24 : 1);
+                CHECK(fabs(rho[i] / ref - 1) < 1e-12, "rho %g vs %g", rho[i], ref);
+            }
+        }
+        for (i = 0; i < N; ++i)
+            for (j = 0; j < N; ++j) {
+                double r = sqrt(pair_r2(xyz, i, j, w.p.L)), q = r / Rc, m = 1.7 * d.params.tau;
+                double sdt = j == i ? 0 : hcbd_gibd_sdt(&c, r, 1 / rho[i], 1 / rho[j]);
+                double f = q < 1 && j != i ? 15 / (2 * pi * Rc * Rc * Rc) * m * (1 / rho[i] + 1 / rho[j]) * pow(1 - q, 3) : 0;
+                CHECK(fabs(sdt - m * f * d.params.dt / d.params.tau) <= 1e-12 * (sdt + 1e-300), "S_ij dt/tau");
+                sum += sdt * d.params.tau / (m * d.params.dt) / N;
+            }
+        hcbd_friction_average(&w, 1, out);
+        CHECK(fabs(sum / out[0] - 1) < 1e-9, "norm %d: <sum_j f_ij> %.12g, the world's %.12g", norm ? 2016 : 2014, sum,
+              out[0]);
+        hcbd_world_destroy(&w);
+    }
+}

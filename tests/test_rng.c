@@ -106,3 +106,31 @@ void test_xoshiro_reference(void)
     /* splitmix64 from 0: reference value 0xE220A8397B1DCDAF */
     CHECK(hcbd_splitmix64(&sm) == 0xE220A8397B1DCDAFULL, "splitmix64");
 }
+
+/* The stand-alone noise stream (what lammps/ draws) gives the world's pair
+   and particle noise bit for bit, both kinds, ids in either order. */
+void test_noise_stream(void)
+{
+    int kind, k;
+    for (kind = 0; kind < 2; ++kind) {
+        hcbd_world_def d = scene(64, 0.24);
+        hcbd_world w;
+        hcbd_noise_stream ns;
+        int same = 1;
+        d.params.noise = kind ? HCBD_NOISE_UNIFORM : HCBD_NOISE_GAUSS;
+        d.params.seed = 12345;
+        if (!make_world(&w, &d)) return;
+        hcbd_noise_stream_init(&ns, 12345, d.params.noise);
+        for (k = 0; k < 300; ++k) {
+            double a[3], b[3], c[3], e[3];
+            int64_t s = k * 977LL;
+            hcbd_pair_normals(&w, s, k, 3 * k + 1, a);
+            hcbd_noise_pair(&ns, s, 3 * k + 1, k, b);
+            hcbd_particle_normals(&w, s, k, c);
+            hcbd_noise_particle(&ns, s, k, e);
+            same &= !memcmp(a, b, sizeof a) && !memcmp(c, e, sizeof c);
+        }
+        CHECK(same, "%s noise: the stream differs from the world's", kind ? "uniform" : "Gaussian");
+        hcbd_world_destroy(&w);
+    }
+}

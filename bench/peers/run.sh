@@ -5,8 +5,9 @@
 #
 #   bench/peers/run.sh            (from anywhere; about 8 minutes on 2 cores)
 #
-# lmp is taken from $LMP, else PATH, else /tmp/peer/build/lmp (build it as
-# ../shared/PEERS.md describes).  Environment knobs (defaults in brackets):
+# lmp is the first of $LMP, lmp on the PATH, build/lammps/lmp (make lammps)
+# and /tmp/peer/build/lmp (../shared/PEERS.md) that has the styles the
+# inputs use: Debian's own lmp lacks fix brownian and the SPH pair styles.  Environment knobs (defaults in brackets):
 #   REPS [3]  STAR_N [32768]  FLUID_N [64000]
 #   STAR_STEPS [1500]  GAUSS_STEPS [800]  DPD_STEPS [800]
 #   SPH_STEPS [250]  SDPD_STEPS [40]  PEERS_OUT [out/peers]
@@ -19,16 +20,22 @@ set -u
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
 
+# has_styles BIN: lmp -h lists every style the inputs need
+has_styles() {
+    local h s
+    h=$("$1" -h 2>/dev/null) || return 1
+    for s in brownian table sph/taitwater/morris sdpd/taitwater/isothermal dpd/tstat; do
+        printf '%s\n' "$h" | grep -qw -- "$s" || return 1
+    done
+}
 LMP_BIN=""
-if [ -n "${LMP:-}" ] && command -v "$LMP" >/dev/null 2>&1; then
-    LMP_BIN=$(command -v "$LMP")
-elif command -v lmp >/dev/null 2>&1; then
-    LMP_BIN=$(command -v lmp)
-elif [ -x /tmp/peer/build/lmp ]; then
-    LMP_BIN=/tmp/peer/build/lmp
-fi
+for cand in "${LMP:-}" "$(command -v lmp 2>/dev/null)" "$root/build/lammps/lmp" /tmp/peer/build/lmp; do
+    [ -n "$cand" ] && command -v "$cand" >/dev/null 2>&1 || continue
+    if has_styles "$cand"; then LMP_BIN=$(command -v "$cand"); break; fi
+    echo "bench/peers: $cand lacks fix brownian or an SPH/DPD style; not used"
+done
 if [ -z "$LMP_BIN" ]; then
-    echo "bench/peers: lmp not found (see ../shared/PEERS.md to build it); skipped"
+    echo "bench/peers: no lmp with the styles needed (make lammps, or ../shared/PEERS.md); skipped"
     exit 0
 fi
 

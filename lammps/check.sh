@@ -1,0 +1,103 @@
+#!/usr/bin/env bash
+# make test-lammps: fix gibd on 1, 2 and 4 MPI ranks (oversubscribed on two
+# cores) against hcbd's own run of the same scene (ideal carriers, n# =
+# 0.24, tau = 3.6e-3, the papers' Euler pair step): the background
+# temperature and the MSD at t = 0.15 within four combined block errors,
+# the total momentum conserved to round-off; bad fix arguments stop LAMMPS
+# with an error naming them.  Whether 1 and 2 ranks give the same bits is
+# reported, not required.  Ends with "N passed, N failed".
+set -u
+root=$(cd "$(dirname "$0")/.." && pwd)
+B=$root/build/lammps
+lmp=$B/lmp
+plug=$B/plugin/gibdplugin.so
+if [ ! -x "$lmp" ] || [ ! -f "$plug" ]; then
+    echo "test-lammps: skipped: no LAMMPS with the plugin (make lammps builds it)"
+    exit 0
+fi
+MPI="mpirun --allow-run-as-root --oversubscribe"
+t=$(mktemp -d)
+trap 'rm -rf "$t"' EXIT
+pass=0
+fail=0
+ok() { pass=$((pass + 1)); echo "  ok   $1"; }
+bad() { fail=$((fail + 1)); echo "  FAIL $1"; }
+in=$root/lammps/in.gibd_ideal
+
+# bad arguments: the fix line of the input with ARGS, or the input with a
+# line removed; LAMMPS must stop with an error naming NAME
+expect() {
+    name=$1 edit=$2
+    sed "$edit" "$in" > "$t/bad.in"
+    out=$("$lmp" -in "$t/bad.in" -var plugin "$plug" -var segments 1 -var steps 10 -log none 2>&1)
+    if printf '%s' "$out" | grep -q "ERROR.*$name"; then ok "bad input -> error names $name"
+    else bad "bad input ($edit): $(printf '%s' "$out" | grep ERROR | head -n 1)"; fi
+}
+fixline='s/^fix  *g all gibd .*/fix g all gibd'
+expect "tau = -1" "$fixline tau -1/"
+expect "tau = abc is not a number" "$fixline tau abc/"
+expect "unknown keyword bogus" "$fixline bogus 1/"
+expect "keyword seed has no value" "$fixline seed/"
+expect "norm = 2015" "$fixline norm 2015/"
+expect "noise = pink" "$fixline noise pink/"
+expect "Rc = 3" "$fixline Rc 3 tau \${tau}/"
+expect "xip tau" "$fixline xip 2 tau \${tau}/"
+expect "comm_modify vel yes" "/^comm_modify/d"
+expect "group must be all" "s/^fix  *g all gibd/group half id 1:10\nfix g half gibd/"
+
+# hcbd's run of the scene: T and the MSD at t = 0.15 with block errors
+"$root/build/gibd_bulk" potential=ideal pair=euler N=500 steps=40000 threads=1 out="$t/hcbd" > "$t/hcbd.txt" 2>/dev/null
+hT=$(awk -F= '$1 == "T_ratio" { print $2 }' "$t/hcbd.txt")
+heT=$(awk -F= '$1 == "T_ratio_err" { print $2 }' "$t/hcbd.txt")
+read -r hM heM < <(awk -F, '$1 + 0 > 0.1499 && $1 + 0 < 0.1501 { print $2, $4 }' "$t/hcbd/msd.csv")
+echo "    hcbd: T/kT = $hT +- $heT, MSD(0.15) = $hM +- $heM"
+
+# stats LOG: T mean and error (10 blocks), MSD at the end of each segment
+# (mean, error), the largest |total momentum| over the run
+stats() {
+    awk '
+        /^ *Step / { in_run = 1; msd = ($NF == "c_msd[4]"); next }
+        /^Loop time/ { if (msd && last != "") m[++nm] = last; in_run = 0; last = ""; next }
+        in_run && $1 ~ /^[0-9]+$/ {
+            for (c = 3; c <= 5; ++c) { p = $c < 0 ? -$c : $c; if (p > pmax) pmax = p }
+            if (msd) { T[++nT] = $2; last = $6 }
+        }
+        END {
+            b = int(nT / 10)
+            for (k = 0; k < 10; ++k) { s = 0; for (j = 1; j <= b; ++j) s += T[k * b + j]; tb[k] = s / b; st += tb[k] }
+            st /= 10; for (k = 0; k < 10; ++k) vt += (tb[k] - st) ^ 2
+            for (k = 1; k <= nm; ++k) sm += m[k]; sm /= nm; for (k = 1; k <= nm; ++k) vm += (m[k] - sm) ^ 2
+            printf "%.6g %.3g %.6g %.3g %.3g\n", st, sqrt(vt / 90), sm, sqrt(vm / (nm * (nm - 1))), pmax
+        }' "$1"
+}
+
+within() { awk -v a="$1" -v ea="$2" -v b="$3" -v eb="$4" 'BEGIN { d = a - b; if (d < 0) d = -d; exit !(d <= 4 * sqrt(ea * ea + eb * eb)) }'; }
+
+for np in 1 2 4; do
+    seed=$((10 + np))
+    if ! $MPI -np $np "$lmp" -in "$in" -var plugin "$plug" -var seed $seed -log "$t/np$np.log" \
+        -screen none > /dev/null 2>&1; then
+        bad "$np ranks: LAMMPS failed: $(grep ERROR "$t/np$np.log" | head -n 1)"
+        continue
+    fi
+    read -r T eT M eM P < <(stats "$t/np$np.log")
+    echo "    $np ranks: T/kT = $T +- $eT, MSD(0.15) = $M +- $eM, max |P| = $P"
+    if within "$T" "$eT" "$hT" "$heT"; then ok "$np ranks: temperature agrees with hcbd's"
+    else bad "$np ranks: temperature $T +- $eT, hcbd's $hT +- $heT"; fi
+    if within "$M" "$eM" "$hM" "$heM"; then ok "$np ranks: MSD(0.15) agrees with hcbd's"
+    else bad "$np ranks: MSD(0.15) $M +- $eM, hcbd's $hM +- $heM"; fi
+    # N m sqrt(kT/m) ~ 30: round-off over the run is far below 1e-9
+    if awk -v p="$P" 'BEGIN { exit !(p < 1e-9) }'; then ok "$np ranks: total momentum stays zero (max $P)"
+    else bad "$np ranks: total momentum drifts to $P"; fi
+done
+
+# the same seed on 1 and 2 ranks: same bits? (reported only)
+for np in 1 2; do
+    $MPI -np $np "$lmp" -in "$in" -var plugin "$plug" -var seed 5 -var segments 1 -var steps 200 \
+        -var dump "$t/d$np.txt" -log none -screen none > /dev/null 2>&1
+done
+if cmp -s "$t/d1.txt" "$t/d2.txt"; then echo "    1 and 2 ranks: bit-identical after 2200 steps"
+else echo "    1 and 2 ranks: not bit-identical after 2200 steps (the ghost images round differently)"; fi
+
+echo "$pass passed, $fail failed"
+[ $fail -eq 0 ]

@@ -1,0 +1,200 @@
+// fix gibd: one GI-BD step per LAMMPS step, in final_integrate (after the
+// pair forces of the positions x(t)).  The background velocity of MODEL 2
+// is LAMMPS's own v: it travels with the atoms, to ghosts (comm_modify vel
+// yes) and into restart files.  Per step, with all right-hand sides at t
+// (the papers' Euler scheme, hcbd's HCBD_PAIR_EULER):
+//   rho_i  = hcbd_gibd_density(sum_j w(r_ij))            full list, owned i
+//   dp_ij  = sdt (v_j - v_i) + sqrt(2 kT sdt) zeta_ij     sdt = S_ij dt / tau
+//   x_i   += v_i dt + F_i dt / xi + sqrt(2 kT dt / xi) zeta_i
+//   v_i   += F_i dt / m + sum_j dp_ij / m,                m = xi' tau
+// Each pair is evaluated by the owner of each of its atoms, with the same
+// noise (key: seed, step, lower tag - 1, higher tag - 1; +zeta on the atom of
+// the lower tag); the sums are 64-bit fixed point, so they do not depend on
+// the order of the neighbours, and dp_ji = -dp_ij conserves momentum.
+#include "fix_gibd.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "force.h"
+#include "memory.h"
+#include "neigh_list.h"
+#include "neigh_request.h"
+#include "neighbor.h"
+#include "pair.h"
+#include "update.h"
+
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+
+static double number(Error *error, const char *key, const char *v)
+{
+  char *end;
+  double x = strtod(v, &end);
+  if (end == v || *end || !std::isfinite(x))
+    error->all(FLERR, "fix gibd: {} = {} is not a number", key, v);
+  return x;
+}
+
+FixGIBD::FixGIBD(LAMMPS *lmp, int narg, char **arg) :
+    Fix(lmp, narg, arg), list(nullptr), inv_rho(nullptr), dv(nullptr), nmax(0), wscale(0), vscale(0)
+{
+  p = hcbd_params_default();
+  p.potential = HCBD_POT_IDEAL; // the conservative forces are LAMMPS's pair style
+  p.pair_integrator = HCBD_PAIR_EULER; // what final_integrate does (the papers' scheme)
+  if (narg % 2 == 0) error->all(FLERR, "fix gibd: keyword {} has no value", arg[narg - 1]);
+  for (int k = 3; k + 1 < narg; k += 2) {
+    const char *key = arg[k], *v = arg[k + 1];
+    if (!strcmp(key, "tau")) p.tau = number(error, key, v);
+    else if (!strcmp(key, "xi")) p.xi = number(error, key, v);
+    else if (!strcmp(key, "xip")) p.xip = number(error, key, v);
+    else if (!strcmp(key, "kT")) p.kT = number(error, key, v);
+    else if (!strcmp(key, "Rc")) p.Rc = number(error, key, v);
+    else if (!strcmp(key, "density")) p.density = number(error, key, v);
+    else if (!strcmp(key, "norm")) {
+      if (strcmp(v, "2014") && strcmp(v, "2016"))
+        error->all(FLERR, "fix gibd: norm = {} is not 2014 or 2016", v);
+      p.density_norm = atoi(v);
+    } else if (!strcmp(key, "seed")) {
+      char *end;
+      unsigned long long s = strtoull(v, &end, 10);
+      if (end == v || *end || *v < '0' || *v > '9')
+        error->all(FLERR, "fix gibd: seed = {} is not an unsigned integer", v);
+      p.seed = s;
+    } else if (!strcmp(key, "noise")) {
+      if (!strcmp(v, "gauss")) p.noise = HCBD_NOISE_GAUSS;
+      else if (!strcmp(v, "uniform")) p.noise = HCBD_NOISE_UNIFORM;
+      else error->all(FLERR, "fix gibd: noise = {} is not gauss or uniform", v);
+    } else {
+      error->all(FLERR, "fix gibd: unknown keyword {}", key);
+    }
+  }
+  if (igroup != 0) error->all(FLERR, "fix gibd: the group must be all (densities sum over every atom)");
+  time_integrate = 1;
+  comm_forward = 1;
+}
+
+FixGIBD::~FixGIBD()
+{
+  memory->destroy(inv_rho);
+  memory->destroy(dv);
+}
+
+int FixGIBD::setmask()
+{
+  return FINAL_INTEGRATE;
+}
+
+void FixGIBD::init()
+{
+  char msg[256];
+  p.dt = update->dt;
+  for (int d = 0; d < 3; ++d) p.L[d] = domain->prd[d];
+  p.rcut = p.Rc; // no hcbd pair potential: its cut-off only has to be valid
+  if (hcbd_gibd_coef_of(&p, &c, msg, sizeof msg) != HCBD_OK) error->all(FLERR, "fix gibd: {}", msg);
+  if (!comm->ghost_velocity) error->all(FLERR, "fix gibd: needs ghost velocities (comm_modify vel yes)");
+  if (!force->pair || force->pair->cutforce < p.Rc)
+    error->all(FLERR, "fix gibd: the pair cut-off must reach Rc = {} (pair_style zero {} for ideal carriers)",
+               p.Rc, p.Rc);
+  if (atom->rmass_flag) error->all(FLERR, "fix gibd: per-atom masses are not supported");
+  for (int t = 1; t <= atom->ntypes; ++t)
+    if (std::fabs(atom->mass[t] / c.m - 1) > 1e-12)
+      error->all(FLERR, "fix gibd: atom type {} has mass {}, GI-BD needs xip tau = {}", t, atom->mass[t], c.m);
+  hcbd_noise_stream_init(&ns, p.seed, p.noise);
+  // fixed point: weights below w(0) ~ 1/Rc^3 each; a velocity change below
+  // the thermal speed sqrt(kT/m) per pair: 2^20 of either still fits
+  wscale = std::ldexp(1.0, 40 - std::ilogb(c.cw + 1e-300));
+  vscale = std::ldexp(1.0, 40 - std::ilogb(std::sqrt(p.kT / c.m) + 1e-300));
+  int irequest = neighbor->request(this, instance_me);
+  neighbor->requests[irequest]->pair = 0;
+  neighbor->requests[irequest]->fix = 1;
+  neighbor->requests[irequest]->half = 0;
+  neighbor->requests[irequest]->full = 1;
+}
+
+void FixGIBD::init_list(int, NeighList *ptr)
+{
+  list = ptr;
+}
+
+void FixGIBD::final_integrate()
+{
+  const int nlocal = atom->nlocal;
+  const double Rc2 = p.Rc * p.Rc, dt = p.dt, m = c.m;
+  const double bd = std::sqrt(2.0 * p.kT * dt / p.xi), two_kT = 2.0 * p.kT;
+  const int64_t step = update->ntimestep - 1; // hcbd's step counter: the step being made
+  double **x = atom->x, **v = atom->v, **f = atom->f;
+  tagint *tag = atom->tag;
+  const int inum = list->inum, *ilist = list->ilist, *numneigh = list->numneigh;
+  int **firstneigh = list->firstneigh;
+
+  if (atom->nmax > nmax) {
+    memory->destroy(inv_rho);
+    memory->destroy(dv);
+    nmax = atom->nmax;
+    memory->create(inv_rho, nmax, "gibd:inv_rho");
+    memory->create(dv, 3 * nmax, "gibd:dv");
+  }
+  for (int ii = 0; ii < inum; ++ii) {
+    const int i = ilist[ii];
+    int64_t s = 0;
+    for (int jj = 0; jj < numneigh[i]; ++jj) {
+      const int j = firstneigh[i][jj] & NEIGHMASK;
+      const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
+      const double r2 = dx * dx + dy * dy + dz * dz;
+      if (r2 < Rc2) s += llrint(hcbd_gibd_weight(&c, std::sqrt(r2)) * wscale);
+    }
+    inv_rho[i] = 1.0 / hcbd_gibd_density(&c, (double) s / wscale);
+  }
+  comm->forward_comm_fix(this);
+
+  // every velocity change from the velocities of t, then the updates
+  for (int ii = 0; ii < inum; ++ii) {
+    const int i = ilist[ii];
+    const int32_t ti = (int32_t) (tag[i] - 1);
+    int64_t acc[3] = {0, 0, 0};
+    double z[3];
+    for (int jj = 0; jj < numneigh[i]; ++jj) {
+      const int j = firstneigh[i][jj] & NEIGHMASK;
+      const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
+      const double r2 = dx * dx + dy * dy + dz * dz;
+      if (r2 >= Rc2) continue;
+      const int32_t tj = (int32_t) (tag[j] - 1);
+      const double sdt = hcbd_gibd_sdt(&c, std::sqrt(r2), inv_rho[i], inv_rho[j]);
+      const double amp = (ti < tj ? 1.0 : -1.0) * std::sqrt(two_kT * sdt);
+      hcbd_noise_pair(&ns, step, ti, tj, z);
+      for (int d = 0; d < 3; ++d) acc[d] += llrint((sdt * (v[j][d] - v[i][d]) + amp * z[d]) / m * vscale);
+    }
+    for (int d = 0; d < 3; ++d) dv[3 * i + d] = (double) acc[d] / vscale;
+  }
+  for (int i = 0; i < nlocal; ++i) {
+    double z[3];
+    hcbd_noise_particle(&ns, step, (int32_t) (tag[i] - 1), z);
+    for (int d = 0; d < 3; ++d) {
+      x[i][d] += v[i][d] * dt + f[i][d] * dt / p.xi + bd * z[d];
+      v[i][d] += f[i][d] * dt / m + dv[3 * i + d];
+    }
+  }
+}
+
+int FixGIBD::pack_forward_comm(int n, int *slist, double *buf, int, int *)
+{
+  for (int k = 0; k < n; ++k) buf[k] = inv_rho[slist[k]];
+  return n;
+}
+
+void FixGIBD::unpack_forward_comm(int n, int first, double *buf)
+{
+  for (int k = 0; k < n; ++k) inv_rho[first + k] = buf[k];
+}
+
+double FixGIBD::memory_usage()
+{
+  return 4.0 * nmax * sizeof(double);
+}

@@ -1,0 +1,44 @@
+// fix gibd: GI-BD (Padding & Briels 2014; Ahuja et al. 2016) on LAMMPS's
+// engine, with the pair equations and the noise of hcbd.h.  See
+// lammps/README.md.
+#ifdef FIX_CLASS
+// clang-format off
+FixStyle(gibd,FixGIBD);
+// clang-format on
+#else
+
+#ifndef LMP_FIX_GIBD_H
+#define LMP_FIX_GIBD_H
+
+#include "fix.h"
+#include "hcbd.h"
+
+namespace LAMMPS_NS {
+
+class FixGIBD : public Fix {
+ public:
+  FixGIBD(class LAMMPS *, int, char **);
+  ~FixGIBD() override;
+  int setmask() override;
+  void init() override;
+  void init_list(int, class NeighList *) override;
+  void final_integrate() override;
+  int pack_forward_comm(int, int *, double *, int, int *) override;
+  void unpack_forward_comm(int, int, double *) override;
+  double memory_usage() override;
+
+ private:
+  hcbd_params p;            // the model's parameters (dt and box from LAMMPS)
+  hcbd_gibd_coef c;         // its pair coefficients (hcbd_gibd_coef_of)
+  hcbd_noise_stream ns;     // pair and Brownian noise keyed by (seed, step, ids)
+  class NeighList *list;
+  double *inv_rho;          // 1 / rho of owned and ghost atoms
+  double *dv;               // 3 per owned atom: the pair velocity changes
+  int nmax;
+  double wscale, vscale;    // fixed-point scales of the density and velocity sums
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif

@@ -1,0 +1,26 @@
+// Registers fix gibd with LAMMPS (plugin load build/lammps/plugin/gibdplugin.so).
+#include "lammpsplugin.h"
+#include "version.h"
+
+#include "fix_gibd.h"
+
+using namespace LAMMPS_NS;
+
+static Fix *gibd_creator(LAMMPS *lmp, int argc, char **argv)
+{
+  return new FixGIBD(lmp, argc, argv);
+}
+
+extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
+{
+  lammpsplugin_t plugin;
+  lammpsplugin_regfunc register_plugin = (lammpsplugin_regfunc) regfunc;
+  plugin.version = LAMMPS_VERSION;
+  plugin.style = "fix";
+  plugin.name = "gibd";
+  plugin.info = "GI-BD (Padding & Briels 2014, Ahuja et al. 2016) from hcbd.h";
+  plugin.author = "hcbd";
+  plugin.creator.v2 = (lammpsplugin_factory2 *) &gibd_creator;
+  plugin.handle = handle;
+  (*register_plugin)(&plugin, lmp);
+}

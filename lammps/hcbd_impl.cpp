@@ -1,0 +1,3 @@
+// hcbd's implementation, compiled as C++ inside the plugin.
+#define HCBD_IMPLEMENTATION
+#include "hcbd.h"
