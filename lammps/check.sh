@@ -8,7 +8,7 @@
 # reported, not required.  Ends with "N passed, N failed".
 set -u
 root=$(cd "$(dirname "$0")/.." && pwd)
-B=$root/build/lammps
+B=${HCBD_LAMMPS_DIR:-$root/build/lammps}
 lmp=$B/lmp
 plug=$B/plugin/gibdplugin.so
 if [ ! -x "$lmp" ] || [ ! -f "$plug" ]; then
@@ -45,12 +45,45 @@ expect "xip tau" "$fixline xip 2 tau \${tau}/"
 expect "comm_modify vel yes" "/^comm_modify/d"
 expect "group must be all" "s/^fix  *g all gibd/group half id 1:10\nfix g half gibd/"
 
-# hcbd's run of the scene: T and the MSD at t = 0.15 with block errors
+# nu_initial of a transverse-current series (t and 12 channels per line):
+# the initial decay rate of C_t(k, t) in 10 blocks, fitted as
+# examples/gibd_bulk.c fits it (1 - C(s)/C(0) = a s + b s (s - 1) over the
+# lags below 64 with C/C(0) > 0.75), minus the Brownian k^2 kT/xi; mean and
+# error of the blocks.  k = 2 pi / L, dt = 1e-4, kT = xi = 1.
+nu_initial() {
+    awk -v L="$2" '
+        !/^#/ { ++n; for (c = 1; c <= 12; ++c) x[n, c] = $(c + 1) }
+        END {
+            k = 2 * 3.14159265358979 / L; nb = 10; len = int(n / nb)
+            for (b = 0; b < nb; ++b) {
+                for (s = 0; s < 64; ++s) {
+                    C[s] = 0
+                    for (t = 1; t + s <= len; ++t)
+                        for (c = 1; c <= 12; ++c) C[s] += x[b * len + t, c] * x[b * len + t + s, c]
+                    C[s] /= len - s
+                }
+                a11 = a12 = a22 = b1 = b2 = 0
+                for (s = 1; s < 64 && C[s] / C[0] > 0.75; ++s) {
+                    u = s * (s - 1); y = 1 - C[s] / C[0]
+                    a11 += s * s; a12 += s * u; a22 += u * u; b1 += s * y; b2 += u * y
+                }
+                nu[b] = (b1 * a22 - b2 * a12) / (a11 * a22 - a12 * a12) / 1e-4 / (k * k) - 1
+                m += nu[b] / nb
+            }
+            for (b = 0; b < nb; ++b) v += (nu[b] - m) ^ 2
+            printf "%.6g %.3g\n", m, sqrt(v / (nb * (nb - 1)))
+        }' "$1"
+}
+
+# hcbd's run of the scene: T, nu_initial and the MSD at t = 0.15 with block errors
 "$root/build/gibd_bulk" potential=ideal pair=euler N=500 steps=40000 threads=1 out="$t/hcbd" > "$t/hcbd.txt" 2>/dev/null
 hT=$(awk -F= '$1 == "T_ratio" { print $2 }' "$t/hcbd.txt")
 heT=$(awk -F= '$1 == "T_ratio_err" { print $2 }' "$t/hcbd.txt")
+hN=$(awk -F= '$1 == "nu_initial" { print $2 }' "$t/hcbd.txt")
+heN=$(awk -F= '$1 == "nu_initial_err" { print $2 }' "$t/hcbd.txt")
 read -r hM heM < <(awk -F, '$1 + 0 > 0.1499 && $1 + 0 < 0.1501 { print $2, $4 }' "$t/hcbd/msd.csv")
-echo "    hcbd: T/kT = $hT +- $heT, MSD(0.15) = $hM +- $heM"
+echo "    hcbd: T/kT = $hT +- $heT, nu_initial = $hN +- $heN, MSD(0.15) = $hM +- $heM"
+Lbox=$(awk 'BEGIN { print (500 / 0.24) ^ (1 / 3) }')
 
 # stats LOG: T mean and error (10 blocks), MSD at the end of each segment
 # (mean, error), the largest |total momentum| over the run
@@ -75,13 +108,16 @@ within() { awk -v a="$1" -v ea="$2" -v b="$3" -v eb="$4" 'BEGIN { d = a - b; if 
 
 for np in 1 2 4; do
     seed=$((10 + np))
-    if ! $MPI -np $np "$lmp" -in "$in" -var plugin "$plug" -var seed $seed -log "$t/np$np.log" \
-        -screen none > /dev/null 2>&1; then
+    if ! $MPI -np $np "$lmp" -in "$in" -var plugin "$plug" -var seed $seed -var segments 30 -log "$t/np$np.log" \
+        -var ct "$t/ct$np.txt" -screen none > /dev/null 2>&1; then
         bad "$np ranks: LAMMPS failed: $(grep ERROR "$t/np$np.log" | head -n 1)"
         continue
     fi
     read -r T eT M eM P < <(stats "$t/np$np.log")
-    echo "    $np ranks: T/kT = $T +- $eT, MSD(0.15) = $M +- $eM, max |P| = $P"
+    read -r N eN < <(nu_initial "$t/ct$np.txt" "$Lbox")
+    echo "    $np ranks: T/kT = $T +- $eT, nu_initial = $N +- $eN, MSD(0.15) = $M +- $eM, max |P| = $P"
+    if within "$N" "$eN" "$hN" "$heN"; then ok "$np ranks: initial decay of the transverse current agrees with hcbd's"
+    else bad "$np ranks: nu_initial $N +- $eN, hcbd's $hN +- $heN"; fi
     if within "$T" "$eT" "$hT" "$heT"; then ok "$np ranks: temperature agrees with hcbd's"
     else bad "$np ranks: temperature $T +- $eT, hcbd's $hT +- $heT"; fi
     if within "$M" "$eM" "$hM" "$heM"; then ok "$np ranks: MSD(0.15) agrees with hcbd's"
