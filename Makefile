@@ -28,7 +28,7 @@ LDLIBS  := -lm
 B       := build
 
 EXAMPLES := $(B)/first_step $(B)/gibd_bulk $(B)/shear_flow $(B)/channel_flow
-HC_EXAMPLES := $(B)/hcbd_fluid $(B)/hcbd_polymer
+HC_EXAMPLES := $(B)/hcbd_fluid $(B)/hcbd_polymer $(B)/hcbd_sound
 HEADERS  := hcbd.h
 TEST_SRC := $(wildcard tests/test_*.c) tests/main.c
 

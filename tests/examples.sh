@@ -23,7 +23,7 @@ expect() {
     else bad "$* -> rc $rc, message: $(printf '%s' "$msg" | head -n 1)"; fi
 }
 
-for e in first_step gibd_bulk shear_flow channel_flow hcbd_fluid hcbd_polymer; do
+for e in first_step gibd_bulk shear_flow channel_flow hcbd_fluid hcbd_polymer hcbd_sound; do
     expect bogus "$B/$e" bogus=1
     expect seed "$B/$e" seed=-3
     expect threads "$B/$e" threads=x
@@ -34,7 +34,7 @@ for e in first_step gibd_bulk shear_flow channel_flow hcbd_fluid hcbd_polymer; d
 done
 # restart= of a missing file: named by the GI-BD examples as they load it,
 # by the HCBD ones once their runs start
-for e in first_step gibd_bulk hcbd_fluid hcbd_polymer; do expect /nonexistent/ck "$B/$e" restart=/nonexistent/ck; done
+for e in first_step gibd_bulk hcbd_fluid hcbd_polymer hcbd_sound; do expect /nonexistent/ck "$B/$e" restart=/nonexistent/ck; done
 expect N "$B/first_step" N=abc
 expect tau "$B/first_step" tau=0
 for e in first_step gibd_bulk shear_flow channel_flow; do
@@ -46,6 +46,8 @@ expect restart "$B/channel_flow" restart=x.ck
 for key in rho eta nbar P0 T dt sigma h; do expect $key "$B/hcbd_fluid" $key=-1; done
 for key in rho eta nbar T dt sigma h xi chi rc p n_max P0 tau_lambda; do expect $key "$B/hcbd_polymer" $key=-1; done
 expect steps "$B/hcbd_polymer" steps=5
+for key in rho eta nbar P0 T dt sigma h amp; do expect $key "$B/hcbd_sound" $key=0; done
+expect relax_steps "$B/hcbd_sound" relax_steps=-1
 
 # run output: a checkpoint and a restart continue the run bit for bit (the
 # checkpoint after 2000 + 2000 steps equals the one after one run of 4000),
