@@ -42,7 +42,7 @@ $(B):
 $(B)/hcbd_impl.o: hcbd_impl.c $(HEADERS) Makefile | $(B)
 	$(CC) $(ALL_CFLAGS) -c $< -o $@
 
-$(B)/%: examples/%.c $(B)/hcbd_impl.o $(HEADERS)
+$(B)/%: examples/%.c $(B)/hcbd_impl.o $(HEADERS) examples/example_common.h
 	$(CC) $(ALL_CFLAGS) $< $(B)/hcbd_impl.o -o $@ $(LDLIBS)
 
 # The 2018 model: fluid and polymer blobs (its own build of the library).

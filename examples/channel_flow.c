@@ -134,6 +134,7 @@ int main(int argc, char **argv)
     hcbd_theory th;
     uint64_t checksum = 0;
     int k, r, paper = 0, start, nblk = 20;
+    double fig_q[MAXX][3], fig_vmax[MAXX][3]; /* for the figure: the fit, v_max +- err, Newtonian v_max */
     struct timespec t0;
     FILE *f;
 
@@ -251,6 +252,8 @@ int main(int argc, char **argv)
         gs[0] = 1; gs[1] = 0.5 * (lo + hi); gs[2] = 0.5 * (lo * lo + hi * hi);
         vmax_err = fit_err(C, gv);
         slip_err = fit_err(C, gs);
+        memcpy(fig_q[r], q, sizeof q);
+        fig_vmax[r][0] = vmax; fig_vmax[r][1] = vmax_err; fig_vmax[r][2] = th.v_max;
         pen = hcbd_wall_penetrations(&w, NULL, NULL);
         checksum = (checksum ^ hcbd_state_checksum(&w)) * 0x100000001B3ULL;
         {
@@ -284,14 +287,60 @@ int main(int argc, char **argv)
     }
     printf("state_checksum=%016llx\n", (unsigned long long)checksum);
     if ((f = open_out(&c, "plots.gp"))) {
-        fprintf(f, "set datafile separator ','\nset terminal pngcairo size 1500,450\n"
-                   "set output 'profiles.png'\nset multiplot layout 1,3\nset xlabel 'y / sigma'\n");
+        /* reduced units of the star scene (docs/MODEL.md 9): sigma, kT,
+           time xi sigma^2 / kT, so velocity in kT / (xi sigma).  The walls
+           are shaded; the channel is lo < y < hi.  g is the same for every
+           xi' and so is the Newtonian profile (nu does not depend on xi') */
+        const double lo = p->wall_thickness, hi = p->L[1] - p->wall_thickness;
+        static const char *lab[3] = {"number density  n " GP_SIGMA "^3", "v_x / (kT/" GP_XI GP_SIGMA ")", "T / kT"};
+        static const char *sub[3] = {"(a) density", "(b) mean background velocity; lines: parabola fits to the "
+                                     "slabs > 1 " GP_SIGMA " from the walls", "(c) temperature (velocity variance)"};
+        static const double org[3] = {0, 0.29, 0.71}, wid[3] = {0.29, 0.42, 0.29};
+        gp_preamble(f, 1700, 600);
+        fprintf(f, "set output 'profiles.png'\n"
+                   "set multiplot title \"Gravity-driven channel flow between walls (%s)\\n{/*0.85 GI-BD, "
+                   "%s, N = %d, n_# = %g, " GP_TAU " = %g, R_c = %g, g = %g (body force on %s), %d slabs, %d steps "
+                   "per run}\"\n"
+                   "set xlabel 'y / " GP_SIGMA "'\nset xrange [0:%.6g]\n"
+                   "set object 1 rect from graph 0, graph 0 to first %.6g, graph 1 fc rgb '#d8d8d8' fs solid noborder "
+                   "behind\n"
+                   "set object 2 rect from first %.6g, graph 0 to graph 1, graph 1 fc rgb '#d8d8d8' fs solid noborder "
+                   "behind\n"
+                   "set label 1 'wall' at first %.6g, graph 0.5 center rotate by 90 tc 'gray30'\n"
+                   "set label 2 'wall' at first %.6g, graph 0.5 center rotate by 90 tc 'gray30'\n",
+                wall_mode == HCBD_WALL_GAUSS ? "Gaussian repulsion" :
+                wall_mode == HCBD_WALL_REFLECT ? "reflecting" : "no-slip at the interface",
+                p->potential == HCBD_POT_STAR ? "star polymers" : "ideal particles", c.N, c.density, p->tau, p->Rc,
+                g_force, bg_only ? "the background only" : "particles and background", nslab, c.steps, p->L[1], lo,
+                hi, 0.5 * lo, 0.5 * (hi + p->L[1]));
         for (k = 0; k < 3; ++k) {
-            static const char *lab[3] = {"number density", "v_x", "T / kT"};
-            fprintf(f, "set ylabel '%s'\nplot ", lab[k]);
+            fprintf(f, "set origin %g, 0\nset size %g, 0.89\nset title '%s' font ',12'\nset ylabel '%s'\n", org[k],
+                    wid[k], sub[k], lab[k]);
+            fprintf(f, "set key top center\nset offsets 0, 0, graph %g, graph 0.05\nset yrange [%s:*]\n",
+                    k == 1 ? 0.55 : 0.45, k == 1 ? "0" : "*");
+            fprintf(f, "plot ");
             for (r = 0; r < nxip; ++r)
-                fprintf(f, "%s'profile_xip%g.csv' u 1:($8>0?$%d:1/0):%d w yerr t \"xi'/xi = %g\"",
-                        r ? ", " : "", xips[r], 2 + 2 * k, 3 + 2 * k, xips[r] / p->xi);
+                fprintf(f, "%s'profile_xip%g.csv' u 1:($8>0?$%d:1/0):%d w %s pt 7 ps 0.7 lc %d "
+                           "t \"" GP_XIP "/" GP_XI " = %g: measured\"", r ? ", \\\n     " : "", xips[r], 2 + 2 * k,
+                        3 + 2 * k, k == 1 ? "yerrorbars" : "yerrorlines", r + 1, xips[r] / p->xi);
+            if (k == 0)
+                fprintf(f, ", %.17g w l dt 2 lc 'black' t 'n_# = %g (nominal bulk density)'", c.density, c.density);
+            else if (k == 2)
+                fprintf(f, ", 1 w l dt 2 lc 'black' t 'T = kT'");
+            else {
+                /* the fitted parabola over the channel, and the Newtonian
+                   profile of the background viscosity alone with no slip
+                   at the interfaces */
+                for (r = 0; r < nxip; ++r)
+                    fprintf(f, ", \\\n     (x > %.17g && x < %.17g ? %.17g + %.17g * x + %.17g * x**2 : 1/0) w l "
+                               "lc %d t 'fit: v_{max} = %.4g " GP_PM " %.2g'", lo, hi, fig_q[r][0], fig_q[r][1],
+                            fig_q[r][2], r + 1, fig_vmax[r][0], fig_vmax[r][1]);
+                fprintf(f, ", \\\n     (x > %.17g && x < %.17g ? %.17g * (x - %.17g) * (%.17g - x) : 1/0) "
+                           "w l dt 2 lw 2 "
+                           "lc 'black' t \"Newtonian, no slip, %s" GP_NU " = R_c^2/(28" GP_TAU "): v_{max} = %.4g\"",
+                        lo, hi, 4 * fig_vmax[nxip - 1][2] / ((hi - lo) * (hi - lo)), lo, hi,
+                        p->potential == HCBD_POT_STAR ? "background " : "", fig_vmax[nxip - 1][2]);
+            }
             fprintf(f, "\n");
         }
         fprintf(f, "unset multiplot\n");

@@ -359,6 +359,48 @@ static inline hcbd_result run_steps(const config *c, run_out *o, ex_world *w, in
     return HCBD_OK;
 }
 
+/* Figures: every plots.gp starts with gp_preamble, so that all PNGs share
+   one readable look.  Greek letters and signs are UTF-8 written as octal
+   escapes, which keeps the sources ASCII; the terminal is enhanced, so _
+   and ^ in a label make sub- and superscripts (a literal one needs \\_). */
+#define GP_PRIME "\342\200\262"
+#define GP_XI "\316\276"
+#define GP_XIP GP_XI GP_PRIME
+#define GP_ALPHA "\316\261"
+#define GP_SIGMA "\317\203"
+#define GP_TAU "\317\204"
+#define GP_NU "\316\275"
+#define GP_ETA "\316\267"
+#define GP_GDOT "\316\263\314\207"    /* gamma with a dot above */
+#define GP_LAMBDA "\316\273"
+#define GP_RHO "\317\201"
+#define GP_MU "\316\274"
+#define GP_PI "\317\200"
+#define GP_SUM "\316\243"
+#define GP_PM "\302\261"
+#define GP_GEQ "\342\211\245"
+#define GP_INF "\342\210\236"
+#define GP_TIMES "\303\227"
+#define GP_CDOT "\302\267"
+#define GP_LANGLE "\342\237\250"
+#define GP_RANGLE "\342\237\251"
+
+/* The terminal again for a figure of another size (a bare "set terminal
+   pngcairo size" would drop the font and the enhanced mode). */
+static inline void gp_terminal(FILE *f, int width, int height)
+{
+    fprintf(f, "set terminal pngcairo enhanced size %d,%d font 'Sans,13' linewidth 1.5\n", width, height);
+}
+
+static inline void gp_preamble(FILE *f, int width, int height)
+{
+    fprintf(f, "set encoding utf8\nset datafile separator ','\n");
+    gp_terminal(f, width, height);
+    fprintf(f, "set key box opaque samplen 4 spacing 1.2 font ',11'\n"
+               "set grid lc rgb '#e0e0e0'\nset bars small\nset pointsize 1.1\n"
+               "set title font ',13'\n");
+}
+
 #if HCBD_MODEL != HCBD_MODEL_HCBD
 /* The world of a run: loaded from restart= (the checkpoint's parameters
    and particles replace the command line's; returns 2) or created from

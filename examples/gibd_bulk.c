@@ -349,26 +349,38 @@ int main(int argc, char **argv)
         fclose(f);
     }
     if (gibd) {
-        double lag[3][512], cc[3][512], acc[3][512] = {{0}};
+        double lag[3][512], cc[3][512], acc[3][512] = {{0}}, rs[3][512] = {{0}}, rs2[3][512] = {{0}};
         int n[3], kk;
         for (kk = 0; kk < 3; ++kk) {
             for (b = 0; b < NB; ++b) {
                 n[kk] = hcbd_mtcorr_result(&ct[b][kk], 1, lag[kk], cc[kk], NULL, 512);
-                for (k = 0; k < n[kk]; ++k) acc[kk][k] += cc[kk][k] / NB;
+                for (k = 0; k < n[kk]; ++k) {
+                    acc[kk][k] += cc[kk][k] / NB;
+                    /* each block's own C_t/C_t(0): their spread is the
+                       block error of the figure */
+                    rs[kk][k] += cc[kk][k] / cc[kk][0];
+                    rs2[kk][k] += cc[kk][k] / cc[kk][0] * (cc[kk][k] / cc[kk][0]);
+                }
             }
         }
         if ((f = open_out(&c, "ct.csv"))) {
             /* eq13: the paper's exp(-nu k^2 t), nu = Rc^2/(28 tau), for ideal
                particles; eff: nu_eff = <sum f r^2>/(6 tau) of this run plus the
-               Brownian kT/xi, the small-k rate for interacting particles */
+               Brownian kT/xi, the small-k rate for interacting particles;
+               ct_k*_err: standard error of the NB block values */
             double nu_e = nmf ? eff / nmf + p->kT / p->xi : NAN;
-            fprintf(f, "t,ct_k1,ct_k2,ct_k3,eq13_k1,eq13_k2,eq13_k3,eff_k1,eff_k2,eff_k3\n");
+            fprintf(f, "t,ct_k1,ct_k2,ct_k3,eq13_k1,eq13_k2,eq13_k3,eff_k1,eff_k2,eff_k3,"
+                       "ct_k1_err,ct_k2_err,ct_k3_err\n");
             for (k = 0; k < n[0] && k < n[1] && k < n[2]; ++k) {
                 double t = lag[0][k] * p->dt;
                 fprintf(f, "%.6g", t);
                 for (kk = 0; kk < 3; ++kk) fprintf(f, ",%.6g", acc[kk][k] / acc[kk][0]);
                 for (kk = 0; kk < 3; ++kk) fprintf(f, ",%.6g", exp(-nu_theory * pow((kk + 1) * k1, 2) * t));
                 for (kk = 0; kk < 3; ++kk) fprintf(f, ",%.6g", exp(-nu_e * pow((kk + 1) * k1, 2) * t));
+                for (kk = 0; kk < 3; ++kk) {
+                    double m = rs[kk][k] / NB;
+                    fprintf(f, ",%.3g", sqrt(fmax(rs2[kk][k] / NB - m * m, 0) / (NB - 1)));
+                }
                 fprintf(f, "\n");
             }
             fclose(f);
@@ -391,18 +403,123 @@ int main(int argc, char **argv)
         }
     }
     if ((f = open_out(&c, "plots.gp"))) {
-        fprintf(f, "set datafile separator ','\nset terminal pngcairo size 800,600\nset key autotitle columnhead\n"
-                   "set output 'rdf.png'\nset xlabel 'r / sigma'\nset ylabel 'g(r)'\nplot 'rdf.csv' u 1:2 w l\n"
-                   "set output 'msd.png'\nset logscale xy\nset xlabel 't'\nset ylabel 'MSD'\n"
-                   "plot 'msd.csv' u 1:2 w lp, '' u 1:3 w l\n");
-        if (p->potential != HCBD_POT_IDEAL)
-            fprintf(f, "set output 'gt.png'\nset ylabel 'G(t)'\nplot 'gt.csv' u 1:($2>0?$2:1/0) w lp\n");
+        /* reduced units of the 2014/2016 scene (docs/MODEL.md 9): length
+           sigma, energy kT, time xi sigma^2 / kT */
+        const int ideal = p->potential == HCBD_POT_IDEAL;
+        const char *tu = "t / (" GP_XI GP_SIGMA "^2/kT)";
+        char scene[320], pot[64];
+        double Dl_err, Dl = long_time_D(&msd, 5 * p->dt, p->tau, &Dl_err);
+        double nu_eff = nmf ? eff / nmf : NAN;
+        if (ideal) snprintf(pot, sizeof pot, "ideal particles");
+        else if (p->potential == HCBD_POT_STAR) snprintf(pot, sizeof pot, "star polymers (f = %g)", p->f);
+        else snprintf(pot, sizeof pot, "tabulated potential");
         if (gibd)
-            fprintf(f, "unset logscale y\nset output 'ct.png'\nset ylabel 'C_t(k,t)/C_t(k,0)'\nset logscale x\n"
-                       "plot for [i=2:4] 'ct.csv' u 1:i w lp, for [i=5:7] '' u 1:i w l dt 2, "
-                       "for [i=8:10] '' u 1:i w l dt 3\n"
-                       "set logscale xy\nset output 'vacf.png'\nset ylabel '<v(t).v(0)>'\n"
-                       "plot 'vacf.csv' u 1:($2>0?$2:1/0) w lp, '' u 1:3 w l\n");
+            snprintf(scene, sizeof scene, "GI-BD, %s, N = %d, n_# = %g, " GP_TAU " = %g, " GP_XIP "/" GP_XI
+                     " = %g, R_c = %g", pot, c.N, c.density, p->tau, p->xip / p->xi, p->Rc);
+        else
+            snprintf(scene, sizeof scene, "classical BD, %s, N = %d, n_# = %g", pot, c.N, c.density);
+        gp_preamble(f, 900, 650);
+        fprintf(f, "scene = \"%s\"\ntau = %.17g\n", scene, p->tau);
+        fprintf(f, "set output 'rdf.png'\n"
+                   "set title \"Radial distribution function of the particle centres\\n{/*0.85 \".scene.\"}\"\n"
+                   "set xlabel 'r / " GP_SIGMA "'\nset ylabel 'g(r)'\nset key top right\n"
+                   "set offsets 0, 0, graph 0.3, 0\n");
+        if (isfinite(rdf_min))
+            fprintf(f, "set arrow 1 from %.6g, graph 0 to %.6g, graph 1 nohead dt 3 lc 'gray40'\n", rdf_min, rdf_min);
+        fprintf(f, "plot [0:%.6g] 'rdf.csv' u 1:2:3 w yerrorlines pt 7 ps 0.5 lc 1 t 'measured (block errors)', "
+                   "1 w l dt 2 lc 'black' t '%s'",
+                rdf_max, ideal ? "ideal gas, g = 1 (exact)" : "g = 1 (no correlation)");
+        if (isfinite(rdf_min))
+            fprintf(f, ", NaN w l dt 3 lc 'gray40' t 'first minimum r = %.4g " GP_SIGMA ": %.3f " GP_PM
+                       " %.2g neighbours'", rdf_min, coord, coord_err);
+        fprintf(f, "\nunset arrow 1\nset offsets 0, 0, 0, 0\n");
+        /* MSD: 2016 eq. 32 is the ideal-particle result (and 6 kT t / xi
+           exact for ideal classical BD); with interactions only the
+           short-time limit (free Brownian steps) and the fitted long-time
+           line are drawn */
+        fprintf(f, "set output 'msd.png'\nset logscale xy\nset format xy '10^{%%L}'\n"
+                   "set title \"Mean-squared displacement\\n{/*0.85 \".scene.\"}\"\n"
+                   "set xlabel '%s'\nset ylabel 'MSD / " GP_SIGMA "^2'\nset key top left\nset autoscale xfix\n", tu);
+        if (gibd)
+            fprintf(f, "set arrow 2 from tau, graph 0 to tau, graph 1 nohead dt 3 lc 'gray40'\n"
+                       "set label 2 ' t = " GP_TAU "' at tau, graph 0.06 tc 'gray40'\n");
+        fprintf(f, "plot 'msd.csv' u 1:2:4 w yerrorlines pt 7 ps 0.8 lc 1 t 'measured (block errors)'");
+        if (ideal && gibd)
+            fprintf(f, ", '' u 1:3 w l dt 2 lw 2 lc 'black' t '2016 eq. 32: 6kT/" GP_XIP " [t - " GP_TAU
+                       "(1 - e^{-t/" GP_TAU "})] + 6kT t/" GP_XI "'");
+        else if (ideal)
+            fprintf(f, ", '' u 1:3 w l dt 2 lw 2 lc 'black' t 'free diffusion 6kT t/" GP_XI " (exact)'");
+        else
+            fprintf(f, ", 6 * %.17g * x w l dt 2 lc 'black' t 'short-time limit 6kT t/" GP_XI
+                       " (asymptote)'", p->kT / p->xi);
+        if (isfinite(Dl)) {
+            /* the intercept of the same least-squares line (hcbd_msd_diffusion
+               returns the slope only): the mean MSD less 6 D times the mean t
+               over the fitted lags */
+            double lg[128], ms[128], st = 0, sm = 0;
+            int nl = hcbd_msd_stats(&msd, lg, ms, NULL, 128), nf = 0;
+            for (k = 0; k < nl; ++k)
+                if (lg[k] >= p->tau / p->dt) { st += lg[k] * 5 * p->dt; sm += ms[k]; ++nf; }
+            fprintf(f, ", (x >= %.17g ? 6 * %.17g * x + %.17g : 1/0) w l dt 4 lw 2 lc 2 "
+                       "t 'long-time fit 6Dt + c, D = %.4g " GP_PM " %.2g (t " GP_GEQ " %g)'",
+                    5 * p->tau, Dl, (sm - 6 * Dl * st) / nf, Dl, Dl_err, 5 * p->tau);
+        }
+        fprintf(f, "\nunset arrow 2\nunset label 2\n");
+        if (!ideal)
+            fprintf(f, "set output 'gt.png'\n"
+                       "set title \"Stress relaxation modulus G(t) = (V/kT)" GP_LANGLE "S_{xy}(t) S_{xy}(0)"
+                       GP_RANGLE " (2014 eq. 30)\\n{/*0.85 \".scene.\"}\"\n"
+                       "set ylabel 'G(t) / (kT/" GP_SIGMA "^3)'\nset key top right\n"
+                       "plot 'gt.csv' u 1:($2>0?$2:1/0) w lp pt 7 ps 0.6 lc 1 t 'measured, G > 0', "
+                       "'' u 1:($2<0?-$2:1/0) w p pt 6 ps 0.6 lc 1 t '|G| where G < 0 (noise floor)'\n");
+        if (gibd) {
+            /* the mean-field decay of 2014 eq. 33 holds for ideal carriers;
+               interacting ones decay at the friction network's nu_eff */
+            char th[160], def[200];
+            int pan;
+            if (ideal) {
+                snprintf(th, sizeof th, "exp(-" GP_NU "k^2t), " GP_NU " = %.4g", nu_theory);
+                snprintf(def, sizeof def, GP_NU " = R_c^2/(28" GP_TAU "): mean field, 2014 eq. 33");
+            } else {
+                snprintf(th, sizeof th, "exp(-(" GP_NU "_{eff} + kT/" GP_XI ")k^2t), " GP_NU "_{eff} = %.4g", nu_eff);
+                snprintf(def, sizeof def, GP_NU "_{eff} = " GP_LANGLE GP_SUM "_j f_{ij} r_{ij}^2" GP_RANGLE "/(6" GP_TAU
+                         ") of this run: the friction network only");
+            }
+            /* (a) semilog, where an exponential is a straight line; (b)
+               linear, where a negative undershoot shows */
+            gp_terminal(f, 1500, 620);
+            fprintf(f, "set output 'ct.png'\nunset logscale\nset format x '%%g'\nset format y '%%g'\n"
+                       "set multiplot layout 1,2 title \"Transverse current at k = n 2" GP_PI "/L\\n"
+                       "{/*0.85 \".scene.\"}\"\n"
+                       "set xlabel '%s'\nset ylabel 'C_t(k,t) / C_t(k,0)'\n", tu);
+            for (pan = 0; pan < 2; ++pan) {
+                if (pan)
+                    fprintf(f, "set title \"(b) linear scale; %s\" font ',11'\nunset logscale y\n"
+                               "set yrange [-0.3:1.05]\nset key top right\n", def);
+                else
+                    fprintf(f, "set title '(a) log scale; error bars: block errors' font ',11'\nset logscale y\n"
+                               "set yrange [0.01:1.05]\nunset key\n");
+                fprintf(f, "plot for [i=1:3] 'ct.csv' u 1:(column(1+i)):(column(10+i)) w yerrorlines pt 7 ps 0.5 "
+                           "lc i t sprintf('measured, n = %%d', i), \\\n"
+                           "     for [i=1:3] '' u 1:(column(%d+i)) w l dt 2 lw 2 lc i notitle, "
+                           "NaN w l dt 2 lw 2 lc 'black' t '%s'%s\n",
+                        ideal ? 4 : 7, th, pan ? ", 0 w l lc 'gray40' notitle" : "");
+            }
+            fprintf(f, "unset multiplot\nunset yrange\nset title font ',13'\n");
+            gp_terminal(f, 900, 650);
+            fprintf(f, "set output 'vacf.png'\nset logscale xy\nset autoscale y\nset format xy '10^{%%L}'\n"
+                       "set title \"Background-velocity autocorrelation\\n{/*0.85 \".scene.\"}\\n"
+                       "{/*0.85 tail (2014 eq. 34): 2kT/(n_# m [4" GP_PI "(" GP_NU "_{eff} + D)t]^{3/2}), "
+                       GP_NU "_{eff} = %.4g, D = %.4g (this run)}\" font ',13'\n"
+                       "set ylabel '" GP_LANGLE "v(t)" GP_CDOT "v(0)" GP_RANGLE " / (kT/" GP_XI GP_SIGMA ")^2'\n"
+                       "set key bottom left\n"
+                       "plot 'vacf.csv' u 1:($2>0?$2:1/0) w lp pt 7 ps 0.6 lc 1 t 'measured, > 0', "
+                       "'' u 1:($2<0?-$2:1/0) w p pt 6 ps 0.8 lc 1 t '|measured| where < 0', \\\n"
+                       "     (x < tau ? %.17g : 1/0) w l dt 3 lw 2 lc 'black' t '3kT/m (equipartition)', \\\n"
+                       "     '' u 1:($1 >= tau ? $3 : 1/0) w l dt 2 lw 2 lc 2 "
+                       "t 'long-time tail, t " GP_GEQ " " GP_TAU "'\n",
+                    nu_eff, Dl, 3 * p->kT / w.m);
+        }
         fclose(f);
         make_figures(&c);
     }

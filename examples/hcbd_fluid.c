@@ -666,41 +666,137 @@ static int poiseuille_run(ctx *x, double g, int fl, double shift, rp_result *res
 
 /* ---- output ------------------------------------------------------------ */
 
-static void write_plots(const config *c, double L, double A, double u_v, double u_len)
+/* What the figures need beyond the CSV files, known when plots.gp is
+   written. */
+typedef struct {
+    char scene[400];             /* the fluid, for the titles              */
+    double L, h, g, nu, A;       /* box height, h, body force, eta/rho, g / (2 nu) */
+    double g_si;                 /* the body force in m/s^2                */
+    double k1;                   /* 2 pi / Lx                              */
+    double gdot_lo, gdot_hi;     /* the shear rates' range, 1/s            */
+    double gdot[MAXG];           /* the shear rates, 1/s (tics)            */
+    int ngdot;
+    double u_v, u_len;           /* velocity and length units in SI        */
+    double dt_us;                /* the step in microseconds               */
+    double eta_mpas;             /* the input viscosity                    */
+    double ct_ratio[NK], ct_ratio_err[NK], kfac[NK]; /* C_t fits over eta/rho, K(k) */
+    double rp_A[2], rp_A_err[2], rp_B[2];            /* Poiseuille fits, by fluctuations */
+    double euler_bias;
+    int relax_steps, restarted;  /* restarted: no preparation was logged  */
+} fig_values;
+
+static void write_plots(const config *c, const fig_values *v)
 {
+    const int nk = 201;
     FILE *f = open_out(c, "plots.gp");
+    int j, fl;
     if (!f) return;
-    fprintf(f,
-            "set datafile separator ','\nset terminal pngcairo size 800,600\n"
-            "set output 'fig1_ct.png'\nset xlabel 't (s)'\nset ylabel 'C_t(k,t) / C_t(k,0)'\n"
-            "set logscale y\nset yrange [0.01:1.2]\n"
-            "plot for [i=1:3] 'fig1_ct.csv' u 2:(column(2+i)) w p pt 6 lc i t sprintf('k = %%d 2 pi/L_x', i), \\\n"
-            "     for [i=1:3] '' u 2:(column(5+i)) w l lc i dt 2 t sprintf('exp(-nu k^2 t), nu = eta/rho, k%%d', i), \\\n"
-            "     for [i=1:3] '' u 2:(column(11+i)) w l lc i dt 3 t sprintf('kernel-smoothed nu, k%%d', i)\n"
-            "unset logscale y\nset autoscale y\n"
-            "set output 'fig2_flow_curve.png'\nset logscale x\nset xlabel 'shear rate (1/s)'\n"
-            "set ylabel 'viscosity (mPa s)'\nset yrange [0:1.3]\n"
-            "plot 'fig2_flow_curve.csv' u ($3==1?$1:1/0):8:9 w yerr pt 7 t 'with fluctuations', \\\n"
-            "     '' u ($3==0?$1:1/0):8:9 w yerr pt 6 t 'without fluctuations', \\\n"
-            "     '' u 1:10 w l dt 2 t 'eta (Table I)'\n"
-            "unset logscale x\nset autoscale y\n"
-            "set output 'fig3_poiseuille.png'\nset xlabel 'y (m)'\nset ylabel 'v_x (m/s)'\n"
-            "L = %.17g\nA = %.17g\nu = %.17g\nsig = %.17g\n"
-            "v(y) = (y >= L/2 ? (y - L/2)*(L - y) : -y*(L/2 - y)) * A * u\n"
-            "set samples 400\n"
-            "plot [0:L*sig] 'fig3_poiseuille.csv' u ($1==1?$8:1/0):9:10 w yerr pt 7 t 'with fluctuations', \\\n"
-            "     '' u ($1==0?$8:1/0):9:10 w yerr pt 6 t 'without fluctuations', \\\n"
-            "     v(x/sig) w l t 'Newtonian, nu = eta/rho', \\\n"
-            "     '' u ($1==1?$8:1/0):13 w lp dt 2 pt 1 t 'kernel-smoothed viscosity'\n"
-            "set output 'density_profile.png'\nset xlabel 'y / sigma'\nset ylabel 'density / mean'\n"
-            "set yrange [0:*]\n"
-            "plot 'density_profile.csv' u 1:2:3 w yerr pt 7 t 'kernel density n_i, slab mean', \\\n"
-            "     '' u 1:4 w lp t 'blobs per slab / nbar'\n"
-            "set autoscale y\nset output 'equilibration.png'\nset xlabel 'step (each phase)'\n"
-            "set ylabel 'T / kT'\nset logscale y\n"
-            "plot 'equilibration.csv' u ($2+(strcol(1) eq 'quench'?0:1/0)):3 w l t 'quench (stiff P0, no noise)', \\\n"
-            "     '' u ($2+(strcol(1) eq 'quench'?1/0:0)):3 w l t 'Table I'\n",
-            L, A, u_v, u_len);
+    gp_preamble(f, 1100, 680);
+    fprintf(f, "scene = \"%s\"\n", v->scene);
+    /* Fig. 1: C_t against eta/rho (2018 eq. 35) and the kernel-smoothed
+       nu K(k) of this example; the fitted rates in the key.  Each mode is
+       drawn over three of its decay times: its tail is noise */
+    fprintf(f, "set output 'fig1_ct.png'\n"
+               "set title \"Transverse current at k = n 2" GP_PI "/L_x (equilibrium run, with fluctuations)\\n"
+               "{/*0.85 \".scene.\"}\"\n"
+               "set xlabel 't (" GP_MU "s)'\nset ylabel 'C_t(k,t) / C_t(k,0)'\nset logscale y\n"
+               "set yrange [0.01:1.1]\nset key bottom right\ntmax = %.17g\n"
+               "plot NaN w l dt 2 lw 2 lc 'black' t 'exp(-" GP_NU "k^2t), " GP_NU " = " GP_ETA "/" GP_RHO
+               " (2018 eq. 35)', NaN w l dt 3 lw 2 lc 'black' t 'exp(-" GP_NU "K(k)k^2t), SPH kernel smoothing'",
+            3 / (v->nu * v->k1 * v->k1));
+    for (j = 0; j < NK; ++j)
+        fprintf(f, ", \\\n     'fig1_ct.csv' u ($1 <= tmax/%d ? $2*1e6 : 1/0):%d:%d w yerrorbars pt 7 ps 0.6 lc %d "
+                   "t \"n = %d: fit " GP_NU
+                   " = (%.3f " GP_PM " %.3f) " GP_ETA "/" GP_RHO ", K(k) = %.3f\", "
+                   "'' u ($2*1e6):%d w l dt 2 lw 2 lc %d "
+                   "notitle, '' u ($2*1e6):%d w l dt 3 lw 2 lc %d notitle",
+                (j + 1) * (j + 1), 3 + j, 15 + j, j + 1, j + 1, v->ct_ratio[j], v->ct_ratio_err[j], v->kfac[j],
+                6 + j, j + 1, 12 + j,
+                j + 1);
+    /* Fig. 2: the flow curve is flat at the input eta */
+    fprintf(f, "\nset xtics (");
+    for (j = 0; j < v->ngdot; ++j) fprintf(f, "%s%g", j ? ", " : "", v->gdot[j]);
+    fprintf(f, ")");
+    fprintf(f, "\nunset logscale y\nset yrange [*:*]\nset offsets 0, 0, graph 0.5, graph 0.1\n"
+               "set output 'fig2_flow_curve.png'\nset logscale x\nset xrange [%.6g:%.6g]\nset key top right\n"
+               "set title \"Lees-Edwards flow curve of the SPH fluid\\n{/*0.85 \".scene.\"}\"\n"
+               "set xlabel 'shear rate " GP_GDOT " (1/s)'\nset ylabel 'viscosity " GP_ETA " (mPa s)'\n"
+               "plot 'fig2_flow_curve.csv' u ($3==0?$1:1/0):8:9 w yerrorbars pt 7 ps 2.4 lc rgb '#80c0a0' "
+               "t 'without fluctuations (block errors)', \\\n"
+               "     '' u ($3==1?$1:1/0):8:9 w yerrorbars pt 7 ps 1.1 lc 1 t 'with thermal fluctuations', \\\n"
+               "     %.17g w l dt 2 lw 2 lc 'black' t 'input " GP_ETA " = %g mPa s (Newtonian)'\n"
+               "set offsets 0, 0, 0, 0\nunset logscale x\nset xtics autofreq\n", v->gdot_lo / 2, v->gdot_hi * 2,
+            v->eta_mpas, v->eta_mpas);
+    /* Fig. 3: SI axes in micrometres and mm/s; the kernel prediction on a
+       fine grid (the CSV has it only where there are blobs) */
+    fprintf(f, "$kernel << EOD\n");
+    {
+        double ys[201], vk[201];
+        for (j = 0; j < nk; ++j) ys[j] = v->L * j / (nk - 1);
+        kernel_profile(v->g, v->nu, v->h, v->L, ys, nk, vk);
+        for (j = 0; j < nk; ++j) fprintf(f, "%.6g,%.6g\n", ys[j] * v->u_len * 1e6, vk[j] * v->u_v * 1e3);
+    }
+    fprintf(f, "EOD\n"
+               "L = %.17g\nA = %.17g\nu = %.17g\nsig = %.17g\n"
+               "shape(y) = y >= L/2 ? (y - L/2)*(L - y) : -y*(L/2 - y)\n"
+               "set output 'fig3_poiseuille.png'\nset samples 400\n"
+               "set title \"Reverse Poiseuille flow, body force " GP_PM "g (g = %g m/s^2) above / below L_y/2\\n"
+               "{/*0.85 \".scene.\"}\"\n"
+               "set xlabel 'y (" GP_MU "m)'\nset ylabel 'v_x (mm/s)'\nset key top left\nset yrange [*:*]\n"
+               "set xrange [0:L*sig*1e6]\nset offsets 0, 0, graph 0.35, graph 0.05\n"
+               "plot 'fig3_poiseuille.csv' u ($1==0?$8*1e6:1/0):($9*1e3):($10*1e3) w yerrorbars pt 7 ps 2.4 "
+               "lc rgb '#80c0a0' t 'without fluctuations (block errors)', \\\n"
+               "     '' u ($1==1?$8*1e6:1/0):($9*1e3):($10*1e3) w yerrorbars pt 7 ps 1.1 lc 1 t 'with fluctuations', "
+               "\\\n     shape(x*1e-6/sig) * A * u * 1e3 w l dt 2 lw 2 lc 'black' "
+               "t \"Newtonian, " GP_NU " = " GP_ETA "/" GP_RHO ": (g/2" GP_NU ") y" GP_PRIME "(L_y/2 - y" GP_PRIME
+               "), each half\", \\\n"
+               "     $kernel u 1:2 w l dt 3 lw 2 lc 3 t 'Newtonian with the SPH kernel smoothing K(k)'",
+            v->L, v->A, v->u_v, v->u_len, v->g_si);
+    for (fl = 1; fl >= 0; --fl)
+        fprintf(f, ", \\\n     (%.17g * shape(x*1e-6/sig) + %.17g) * u * 1e3 w l lw 1 lc %s "
+                   "t 'fit%s: " GP_NU " = (%.4f " GP_PM " %.4f) " GP_ETA "/" GP_RHO "'",
+                v->rp_A[fl], v->rp_B[fl], fl ? "1" : "rgb '#80c0a0'", fl ? "" : ", no fluctuations", v->A / v->rp_A[fl],
+                v->A / v->rp_A[fl] * v->rp_A_err[fl] / fabs(v->rp_A[fl]));
+    /* Fig. 6's fluid curve: the kernel density (left axis) is flat while
+       the blobs stay in the rows of the start lattice (right axis) */
+    fprintf(f, "\nset offsets 0, 0, 0, 0\nset xrange [*:*]\nset output 'density_profile.png'\n"
+               "set title \"Density across y (equilibrium run)\\n{/*0.85 \".scene.\"}\"\n"
+               "set xlabel 'y / " GP_SIGMA "'\nset ylabel 'kernel density n_i / slab mean' tc lt 1\n"
+               "set y2label 'blobs per slab / (n_{bar} " GP_CDOT " slab volume)' tc lt 2\n"
+               "set yrange [*:*]\nset offsets 0, 0, graph 1.2, graph 0.4\nset y2range [0:*]\n"
+               "set ytics nomirror tc lt 1\nset y2tics tc lt 2\n"
+               "set key top left\n"
+               "plot 'density_profile.csv' u 1:2:3 w yerrorbars pt 7 lc 1 "
+               "t 'kernel density n_i, slab mean (block errors)', "
+               "\\\n     '' u 1:4:5 axes x1y2 w yerrorbars pt 5 lc 2 t 'blob count (lattice rows)', \\\n"
+               "     1 w l dt 2 lc 'black' t 'uniform fluid'\n"
+               "unset y2label\nunset y2tics\nset ytics mirror tc default\nset ylabel tc default\n"
+               "set offsets 0, 0, 0, 0\n");
+    if (v->restarted) {
+        fclose(f);
+        make_figures(c);
+        return;
+    }
+    /* the quench (stiff P0, no noise) and then Table I on one time axis */
+    fprintf(f, "set output 'equilibration.png'\nrelax = %d\ndt_us = %.17g\n"
+               "tq(p, s) = (strcol(p) eq 'quench' ? s : s + relax) * dt_us\n"
+               "set multiplot layout 1,2 title \"Preparation: noise-free quench at stiff P_0, then Table I with "
+               "fluctuations\\n{/*0.85 \".scene.\"}\"\n"
+               "set xlabel 't (" GP_MU "s)'\nset yrange [*:*]\nset logscale y\nset key top right\n"
+               "set offsets 0, 0, graph 0.6, 0\n"
+               "set arrow 1 from relax * dt_us, graph 0 to relax * dt_us, graph 1 nohead dt 3 lc 'gray40'\n"
+               "set title '(a) kinetic temperature' font ',12'\nset ylabel 'T / kT'\n"
+               "plot 'equilibration.csv' u (tq(1, $2)):(strcol(1) eq 'quench' ? $3 : 1/0) w lp pt 7 ps 0.6 lc 1 "
+               "t 'quench', '' u (tq(1, $2)):(strcol(1) eq 'quench' ? 1/0 : $3) w lp pt 7 ps 0.6 lc 2 "
+               "t 'Table I (one sample each)', \\\n"
+               "     1 w l dt 2 lc 'black' t 'T = kT', %.17g w l dt 3 lc 'black' "
+               "t '1 + Euler bias (dt/2)" GP_LANGLE GP_SUM "_j f_{ij}" GP_RANGLE "/m = %.4f'\n"
+               "unset logscale y\nset offsets 0, 0, 0, 0\nset title '(b) range of the blob densities' font ',12'\n"
+               "set ylabel 'n_i / n_{bar}'\nset key bottom right\n"
+               "plot 'equilibration.csv' u (tq(1, $2)):4 w lp pt 7 ps 0.6 lc 3 t 'min n_i/n_{bar}', "
+               "'' u (tq(1, $2)):5 w lp pt 5 ps 0.6 lc 4 t 'max n_i/n_{bar}', 1 w l dt 2 lc 'black' notitle\n"
+               "unset multiplot\nunset arrow 1\n",
+            v->relax_steps, v->dt_us, 1 + v->euler_bias, 1 + v->euler_bias);
     fclose(f);
     make_figures(c);
 }
@@ -860,8 +956,9 @@ int main(int argc, char **argv)
             ct_pool(&eq.cb[k], opt.nblk, -1, full[k]);
             if (eq.cb[k].n < n) n = eq.cb[k].n;
         }
+        /* ct_k*_err: standard error of the blocks' own C_t/C_t(0) */
         fprintf(f, "t,t_s,ct_k1,ct_k2,ct_k3,theory_k1,theory_k2,theory_k3,fit_k1,fit_k2,fit_k3,"
-                   "kernel_k1,kernel_k2,kernel_k3\n");
+                   "kernel_k1,kernel_k2,kernel_k3,ct_k1_err,ct_k2_err,ct_k3_err\n");
         for (s = 0; s < n; ++s) {
             double t = eq.cb[0].lag[s] * p->dt;
             if (t > 3.0 / (x.th.nu * kvec[0] * kvec[0])) break;
@@ -870,6 +967,12 @@ int main(int argc, char **argv)
             for (k = 0; k < NK; ++k) fprintf(f, ",%.6g", exp(-x.th.nu * kvec[k] * kvec[k] * t));
             for (k = 0; k < NK; ++k) fprintf(f, ",%.6g", exp(-gam[k] * t));
             for (k = 0; k < NK; ++k) fprintf(f, ",%.6g", exp(-nu_kern[k] * kvec[k] * kvec[k] * t));
+            for (k = 0; k < NK; ++k) {
+                double blk[MAXB], m, e;
+                for (b = 0; b < opt.nblk; ++b) blk[b] = eq.cb[k].c[b][s] / eq.cb[k].c[b][0];
+                mean_err(blk, opt.nblk, &m, &e);
+                fprintf(f, ",%.3g", e);
+            }
             fprintf(f, "\n");
         }
         fclose(f);
@@ -928,7 +1031,45 @@ int main(int argc, char **argv)
             }
         fclose(f);
     }
-    write_plots(&c, p->L[1], g_red / (2 * x.th.nu), u_v, u_len);
+    {
+        static fig_values fv;
+        snprintf(fv.scene, sizeof fv.scene, "SPH fluid, %d blobs, box %.4g " GP_TIMES " %.4g " GP_TIMES " %.4g "
+                 GP_SIGMA ", " GP_SIGMA " = %g " GP_MU "m, h = %g " GP_SIGMA ", " GP_RHO " = %g kg/m^3, " GP_ETA
+                 " = %g mPa s, P_0 = %g Pa, T = %g K, dt = %g " GP_MU "s", x.N, p->L[0], p->L[1], p->L[2],
+                 si.sigma * 1e6, si.h_sigma, si.rho, si.eta * 1e3, si.P0, si.T, si.dt * 1e6);
+        fv.L = p->L[1];
+        fv.h = p->h;
+        fv.g = g_red;
+        fv.nu = x.th.nu;
+        fv.A = g_red / (2 * x.th.nu);
+        fv.u_v = u_v;
+        fv.u_len = u_len;
+        fv.dt_us = p->dt * u_t * 1e6;
+        fv.eta_mpas = p->eta * u_eta * 1e3;
+        for (k = 0; k < NK; ++k) {
+            fv.ct_ratio[k] = nu_k[k] / x.th.nu;
+            fv.ct_ratio_err[k] = nu_k_err[k] / x.th.nu;
+            fv.kfac[k] = nu_kern[k] / x.th.nu;
+        }
+        for (fl = 0; fl < 2; ++fl) {
+            fv.rp_A[fl] = rp[fl].A;
+            fv.rp_A_err[fl] = rp[fl].A_err;
+            fv.rp_B[fl] = rp[fl].B;
+        }
+        fv.euler_bias = eq.euler_bias;
+        fv.relax_steps = opt.relax_steps;
+        fv.restarted = x.rst.fluid != NULL;
+        fv.g_si = opt.g_si;
+        fv.k1 = kvec[0];
+        fv.gdot_lo = fv.gdot_hi = opt.gdot_si[0];
+        fv.ngdot = opt.ngdot;
+        memcpy(fv.gdot, opt.gdot_si, sizeof fv.gdot);
+        for (r = 1; r < opt.ngdot; ++r) {
+            fv.gdot_lo = fmin(fv.gdot_lo, opt.gdot_si[r]);
+            fv.gdot_hi = fmax(fv.gdot_hi, opt.gdot_si[r]);
+        }
+        write_plots(&c, &fv);
+    }
 
     /* ---- summary ---- */
     {

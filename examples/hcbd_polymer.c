@@ -859,54 +859,172 @@ static void print_summary(const conc_run *cr, const hcbd_hc_params *p, const rp_
     printf("rp_center_change=%.3g\n", m->change);
 }
 
+/* The figures in SI (micrometres, mm/s, microseconds, mPa s); the values
+   they need beyond the CSV files (fit parameters, the Carreau fluid's
+   profile on a fine grid) are printed into plots.gp. */
 static void write_plots(const config *c, const conc_run *runs, const hcbd_hc_params *p, double Ly,
                         const units *u)
 {
-    const double ei = opt.eta_inf * u->eta * 1e3;
+    const double ei = opt.eta_inf * u->eta * 1e3, W = 0.5 * Ly, um = u->len * 1e6, mm = u->v * 1e3;
+    const double us = u->t * 1e6, tau_s = p->tau_lambda * u->t, eta_f = p->eta * u->eta * 1e3;
+    const hcbd_hc_si t1 = hcbd_hc_si_table1();
+    const int ny = 121;
+    char scene[400], tl[64] = "";
+    double ylo = HUGE_VAL, yhi = 0;
     FILE *f = open_out(c, "plots.gp");
-    int ci, k;
+    int ci, k, j;
     if (!f) return;
-    fprintf(f, "set datafile separator ','\nset terminal pngcairo size %d,450\n", 500 * opt.nconc);
-    fprintf(f, "set output 'flowcurve.png'\nset multiplot layout 1,%d\nset logscale xy\n"
-               "set xlabel 'shear rate [1/s]'\nset ylabel 'viscosity [mPa s]'\nset key top right\n", opt.nconc);
+    if (fabs(tau_s - t1.tau_lambda) > 1e-9 * t1.tau_lambda) snprintf(tl, sizeof tl, " (Table I: %g s)", t1.tau_lambda);
+    snprintf(scene, sizeof scene, "RaPiD polymer blobs in the SPH fluid: " GP_TAU "_" GP_LAMBDA " = %g s%s, "
+             GP_ALPHA " = %g kT, P_0 = %.4g Pa, solvent " GP_ETA " = %g mPa s, " GP_SIGMA " = %g " GP_MU "m, "
+             "no fluid fluctuations", tau_s, tl, p->alpha, p->P0 * u->P, eta_f, um);
+    /* log axes: explicit ranges (graph offsets would span decades), with
+       the upper decades left to the key */
+    for (ci = 0; ci < opt.nconc; ++ci)
+        for (j = 0; j < opt.ngdot; ++j)
+            for (k = 0; k < NCOMP; ++k) {
+                double e = runs[ci].eta[k][j] * u->eta * 1e3;
+                if (e > 0) { ylo = fmin(ylo, e); yhi = fmax(yhi, e); }
+            }
+    gp_preamble(f, opt.nconc > 1 ? 820 * opt.nconc : 1250, 680);
+    fprintf(f, "scene = \"%s\"\ntau = %.17g\n", scene, tau_s);
+    if (!(yhi > 0)) ylo = yhi = eta_f;
+    /* ---- flow curve: the four parts, the Carreau fit with eta_inf fixed,
+       and the Carreau law of 2018 Table II with lambda scaled by this
+       run's tau_lambda (the quick preset shortens tau_lambda) */
+    fprintf(f, "set output 'flowcurve.png'\n"
+               "set multiplot layout 1,%d title \"Lees-Edwards flow curves, stress split (block errors)\\n"
+               "{/*0.85 \".scene.\"}\"\n"
+               "set logscale xy\nset format y '%%g'\nset xlabel 'shear rate " GP_GDOT " (1/s)'\n"
+               "set ylabel 'viscosity " GP_ETA " (mPa s)'\nset key top right\n"
+               "set yrange [%.6g:%.6g]\n"
+               "set logscale x2\nset x2label 'Wi = " GP_GDOT GP_TAU "_" GP_LAMBDA "'\nset xtics nomirror\n"
+               "set xrange [%.6g:%.6g]\nset x2range [%.6g:%.6g]\n", opt.nconc, ylo / 2, yhi * 300,
+            opt.gdot_si[0] / 1.5, opt.gdot_si[opt.ngdot - 1] * 1.5, opt.gdot_si[0] / 1.5 * tau_s,
+            opt.gdot_si[opt.ngdot - 1] * 1.5 * tau_s);
+    fprintf(f, "set xtics (");
+    for (j = 0; j < opt.ngdot; ++j) fprintf(f, "%s%g", j ? ", " : "", opt.gdot_si[j]);
+    fprintf(f, ")\nset x2tics (");
+    for (j = 0; j < opt.ngdot; ++j) fprintf(f, "%s%.3g", j ? ", " : "", opt.gdot_si[j] * tau_s);
+    fprintf(f, ")\n");
     for (ci = 0; ci < opt.nconc; ++ci) {
         const conc_run *cr = &runs[ci];
-        fprintf(f, "set title 'C = %g C*'\nplot ", cr->C);
-        for (k = 0; k < NCOMP; ++k)
-            fprintf(f, "%s'flowcurve.csv' u ($1==%g&&$%d>0?$2:1/0):%d:%d w yerr pt %d t '%s'", k ? ", " : "",
-                    cr->C, 13 + 2 * k, 13 + 2 * k, 14 + 2 * k, 7 - k, comp_name[k]);
+        static const int pt[NCOMP] = {7, 5, 9, 11};
         if (cr->fitted)
-            fprintf(f, ", %.17g + (%.17g - %.17g) * (1 + (%.17g * x)**2)**((%.17g - 1) / 2) t 'Carreau'", ei,
-                    cr->pc[0] * u->eta * 1e3, ei, cr->pc[1] * u->t, cr->pc[2]);
-        fprintf(f, "\n");
+            fprintf(f, "set title \"C = %g C*\\n{/*0.8 Carreau fit: " GP_ETA "_0 = %.3g " GP_PM " %.2g mPa s, "
+                       GP_LAMBDA " = %.3g " GP_PM " %.2g s, n = %.3g " GP_PM " %.2g}\" font ',12'\n",
+                    cr->C, cr->pc[0] * u->eta * 1e3, cr->pe[0] * u->eta * 1e3, cr->pc[1] * u->t, cr->pe[1] * u->t,
+                    cr->pc[2], cr->pe[2]);
+        else
+            fprintf(f, "set title \"C = %g C*\\n{/*0.8 no Carreau fit (fewer than 4 rates, or no thinning)}\" "
+                       "font ',12'\n", cr->C);
+        fprintf(f, "plot ");
+        for (k = 0; k < NCOMP; ++k)
+            fprintf(f, "%s'flowcurve.csv' u ($1==%g&&$%d>0?$2:1/0):%d:%d w yerrorbars pt %d ps 1.3 lc %d t '%s'",
+                    k ? ", " : "", cr->C, 13 + 2 * k, 13 + 2 * k, 14 + 2 * k, pt[k], k + 1, comp_name[k]);
+        if (cr->fitted)
+            fprintf(f, ", \\\n     %.17g + (%.17g - %.17g) * (1 + (%.17g * x)**2)**((%.17g - 1) / 2) w l lw 2 lc 1 "
+                       "t 'Carreau fit of the total'", ei, cr->pc[0] * u->eta * 1e3, ei, cr->pc[1] * u->t, cr->pc[2]);
+        if (cr->C == 2.5 || cr->C == 5) {
+            /* Table II with eta = 1 mPa s, scaled by this run's solvent */
+            double e0 = (cr->C == 2.5 ? 2.526 : 6.669) * eta_f, l = (cr->C == 2.5 ? 3.0504 : 2.1408) * tau_s;
+            double n = cr->C == 2.5 ? 0.3441 : 0.0008, einf = 0.9 * eta_f;
+            fprintf(f, ", \\\n     %.17g + (%.17g - %.17g) * (1 + (%.17g * x)**2)**((%.17g - 1) / 2) w l dt 4 lw 2 "
+                       "lc 'gray30' t '2018 Table II Carreau, " GP_LAMBDA " scaled to this " GP_TAU "_" GP_LAMBDA "'",
+                    einf, e0, einf, l, n);
+        }
+        fprintf(f, ", \\\n     %.17g w l dt 2 lc 1 t '" GP_ETA "_" GP_INF " = %g mPa s (held fixed)', "
+                   "%.17g w l dt 3 lc 2 t 'solvent " GP_ETA " = %g mPa s'\n", ei, ei, eta_f, eta_f);
     }
-    fprintf(f, "unset multiplot\nunset logscale\nset output 'velocity.png'\nset multiplot layout 1,%d\n"
-               "set xlabel 'y / sigma'\nset ylabel 'v_x [sigma / time unit]'\nset key top left\n", opt.nconc);
+    fprintf(f, "unset multiplot\nunset logscale\nunset x2tics\nunset x2label\nset xtics mirror autofreq\n"
+               "set offsets 0, 0, 0, 0\nset xrange [*:*]\nset yrange [*:*]\n");
+    /* ---- reverse-Poiseuille velocity: fluid and polymers against the
+       Newtonian eta0 profile and the Carreau fluid of the fit */
+    for (ci = 0; ci < opt.nconc; ++ci) {
+        const conc_run *cr = &runs[ci];
+        if (!cr->fitted) continue;
+        fprintf(f, "$carreau%d << EOD\n", ci);
+        for (j = 0; j < ny; ++j) {
+            double y = Ly * j / (ny - 1), yh = y >= W ? y - W : y;
+            fprintf(f, "%.6g,%.6g\n", y * um,
+                    (y >= W ? 1 : -1) * carreau_speed(cr->pc, opt.eta_inf, p->rho * cr->g, W, yh) * mm);
+        }
+        fprintf(f, "EOD\n");
+    }
+    fprintf(f, "set output 'velocity.png'\n"
+               "set multiplot layout 1,%d title \"Reverse Poiseuille flow (+g above L_y/2, -g below), last third "
+               "of the run, block errors\\n{/*0.85 \".scene.\"}\"\n"
+               "set xlabel 'y (" GP_MU "m)'\nset ylabel 'v_x (mm/s)'\nset key top left\nset xrange [0:%.6g]\n"
+               "set offsets 0, 0, graph 0.1, graph 0.1\n", opt.nconc, Ly * um);
     for (ci = 0; ci < opt.nconc; ++ci) {
         const conc_run *cr = &runs[ci];
         double A = cr->g / (2 * cr->eta0 / p->rho);
-        fprintf(f, "set title 'C = %g C*'\nplot [0:%g] 'profile_C%g.csv' u 1:($20>0?$12:1/0):13 w yerr pt 7 "
-                   "t 'fluid', '' u 1:14:15 w yerr pt 6 t 'polymer', ", cr->C, Ly, cr->C);
-        fprintf(f, "(x < %.17g ? -%.17g * x * (%.17g - x) : %.17g * (x - %.17g) * (%.17g - x)) "
-                   "t 'Newtonian, eta0' dt 2", 0.5 * Ly, A, 0.5 * Ly, A, 0.5 * Ly, Ly);
-        if (cr->fitted) fprintf(f, ", '' u 1:19 w l t 'Carreau fit'");
+        fprintf(f, "set title 'C = %g C*, g = %.4g m/s^2, box %g " GP_TIMES " %g " GP_TIMES " %g " GP_SIGMA "' "
+                   "font ',12'\n"
+                   "plot 'profile_C%g.csv' u ($20>0?$1*%.17g:1/0):($12*%.17g):($13*%.17g) w yerrorbars pt 7 ps 1.2 "
+                   "lc 1 t 'fluid v_x (slabs holding blob rows)', \\\n"
+                   "     '' u ($1*%.17g):($14*%.17g):($15*%.17g) w yerrorbars pt 6 ps 1.2 lc 2 "
+                   "t 'polymer drift u_x', \\\n"
+                   "     (x < %.17g ? -1 : 1) * %.17g * (x < %.17g ? x : x - %.17g) * (%.17g - (x < %.17g ? x : x - "
+                   "%.17g)) w l dt 2 lw 2 lc 'black' t \"Newtonian, %s = %.3g mPa s: (g/2" GP_NU "_0) y"
+                   GP_PRIME "(L_y/2 - y" GP_PRIME ")\"",
+                cr->C, cr->g * u->acc, p->L[0], Ly, p->L[2], cr->C, um, mm, mm, um, mm, mm, W * um, A * mm / (um * um),
+                W * um, W * um, W * um, W * um, W * um,
+                cr->fitted ? GP_ETA "_0" : GP_ETA "_0 (lowest rate, no fit)", cr->eta0 * u->eta * 1e3);
+        if (cr->fitted) fprintf(f, ", \\\n     $carreau%d u 1:2 w l lw 2 lc 3 t 'Carreau fluid of the fit'", ci);
+        fprintf(f, ", 0 w l lc 'gray40' notitle\n");
+    }
+    /* ---- densities: the high-shear zones (within Ly/8 of the planes
+       where g flips) shaded */
+    fprintf(f, "unset multiplot\nset output 'density.png'\n"
+               "set multiplot layout 1,%d title \"Densities across y over their mean, reverse Poiseuille "
+               "(last third of the run)\\n{/*0.85 \".scene.\"}\"\n"
+               "set ylabel 'density / mean'\nset key top center maxrows 3 font ',10'\n"
+               "set offsets 0, 0, graph 0.45, graph 0.05\n"
+               "set object 1 rect from first 0, graph 0 to first %.6g, graph 1 fc rgb '#fbe5cf' fs solid noborder "
+               "behind\n"
+               "set object 2 rect from first %.6g, graph 0 to first %.6g, graph 1 fc rgb '#fbe5cf' fs solid noborder "
+               "behind\n"
+               "set object 3 rect from first %.6g, graph 0 to first %.6g, graph 1 fc rgb '#fbe5cf' fs solid noborder "
+               "behind\n",
+            opt.nconc, Ly / 8 * um, 3 * Ly / 8 * um, 5 * Ly / 8 * um, 7 * Ly / 8 * um, Ly * um);
+    for (ci = 0; ci < opt.nconc; ++ci)
+        fprintf(f, "set title 'C = %g C*' font ',12'\n"
+                   "plot 'profile_C%g.csv' u ($20>0?$1*%.17g:1/0):2:3 w yerrorbars pt 7 lc 1 t 'fluid n_i (kernel)', "
+                   "\\\n     '' u ($1*%.17g):4:5 w yerrorlines pt 6 lc 2 t 'polymer n_a (kernel)', "
+                   "'' u ($1*%.17g):6 w l dt 3 lw 2 lc 2 t 'polymer n_a, t = 0', \\\n"
+                   "     '' u ($1*%.17g):9:10 w yerrorlines pt 1 lc 4 t 'polymer counts', "
+                   "'' u ($1*%.17g):11 w l dt 3 lw 2 lc 4 t 'polymer counts, t = 0', \\\n"
+                   "     NaN w filledcurves fc rgb '#fbe5cf' t 'high shear (< L_y/8 from a plane)', "
+                   "1 w l dt 2 lc 'black' notitle\n",
+                runs[ci].C, runs[ci].C, um, um, um, um, um);
+    fprintf(f, "unset multiplot\nunset object 1\nunset object 2\nunset object 3\nset offsets 0, 0, 0, 0\n");
+    /* ---- start-up of the reverse-Poiseuille flow; the profiles are
+       averaged over the shaded window */
+    fprintf(f, "set output 'rp_start.png'\nset xrange [*:*]\n"
+               "set multiplot layout 1,%d title \"Start-up of the reverse Poiseuille flow: centre velocity (mean "
+               "within L_y/8 of y = L_y/4, 3L_y/4)\\n{/*0.85 \".scene.\"}\"\n"
+               "set xlabel 't (" GP_MU "s)'\nset ylabel 'centre velocity (mm/s)'\n"
+               "set key bottom right maxrows auto font ',11'\n"
+               "set offsets 0, 0, graph 0.1, 0\nset yrange [0:*]\n", opt.nconc);
+    for (ci = 0; ci < opt.nconc; ++ci) {
+        const conc_run *cr = &runs[ci];
+        double t0 = cr->ts_from < cr->nts ? cr->ts[cr->ts_from][0] * us : 0;
+        fprintf(f, "set title 'C = %g C*' font ',12'\n"
+                   "set object 1 rect from first %.6g, graph 0 to graph 1, graph 1 fc rgb '#e4ecf7' fs solid noborder "
+                   "behind\n"
+                   "plot NaN w filledcurves fc rgb '#e4ecf7' t 'measured window (profiles)', "
+                   "'rp_start_C%g.csv' u ($1*%.17g):($3*%.17g) w l lw 2 lc 1 t 'fluid', "
+                   "'' u ($1*%.17g):($4*%.17g) w l lw 2 lc 2 t 'polymer', \\\n"
+                   "     %.17g w l dt 2 lw 2 lc 'black' t 'Newtonian, " GP_ETA "_0 (steady)'",
+                cr->C, t0, cr->C, us, mm, us, mm,
+                newton_speed(cr->g, cr->eta0 / p->rho, W, 0.5 * W) * mm);
+        if (cr->fitted)
+            fprintf(f, ", %.17g w l lw 2 lc 3 t 'Carreau fluid of the fit (steady)'",
+                    carreau_speed(cr->pc, opt.eta_inf, p->rho * cr->g, W, 0.5 * W) * mm);
         fprintf(f, "\n");
     }
-    fprintf(f, "unset multiplot\nset output 'density.png'\nset multiplot layout 1,%d\n"
-               "set ylabel 'density / mean'\nset arrow from %g, graph 0 to %g, graph 1 nohead dt 3\n",
-            opt.nconc, 0.5 * Ly, 0.5 * Ly);
-    for (ci = 0; ci < opt.nconc; ++ci)
-        fprintf(f, "set title 'C = %g C*'\nplot [0:%g] 'profile_C%g.csv' u 1:($20>0?$2:1/0):3 w yerr pt 7 "
-                   "t 'fluid (kernel)', '' u 1:4:5 w yerr pt 6 t 'polymer (kernel)', '' u 1:6 w l dt 3 "
-                   "t 'polymer (kernel), t = 0', '' u 1:9:10 w yerr pt 1 t 'polymer (counts)', 1 t '' dt 2\n",
-                runs[ci].C, Ly, runs[ci].C);
-    fprintf(f, "unset multiplot\nunset arrow\nset output 'rp_start.png'\nset multiplot layout 1,%d\n"
-               "set xlabel 't [time units]'\nset ylabel 'centre velocity'\n", opt.nconc);
-    for (ci = 0; ci < opt.nconc; ++ci)
-        fprintf(f, "set title 'C = %g C*'\nplot 'rp_start_C%g.csv' u 1:3 w l t 'fluid', '' u 1:4 w l "
-                   "t 'polymer', %.17g t 'Newtonian, eta0' dt 2\n", runs[ci].C, runs[ci].C,
-                newton_speed(runs[ci].g, runs[ci].eta0 / p->rho, 0.5 * Ly, 0.25 * Ly));
-    fprintf(f, "unset multiplot\n");
+    fprintf(f, "unset multiplot\nunset object 1\n");
     fclose(f);
     make_figures(c);
 }
