@@ -1671,17 +1671,23 @@ static inline double hcbd__sdt(double cs, double inv_rho_i, double inv_rho_j, do
     return cs * (inv_rho_i + inv_rho_j) * a * a * a;
 }
 
-hcbd_result hcbd_gibd_coef_of(const hcbd_params *p, hcbd_gibd_coef *c, char *msg, size_t msg_size)
+/* the coefficients of p, unchecked: the world's and hcbd_gibd_coef_of's */
+static void hcbd__gibd_coef(const hcbd_params *p, hcbd_gibd_coef *c)
 {
-    hcbd_result r;
-    if (!p || !c) return HCBD_ERR_NULL;
-    if ((r = hcbd_params_check(p, msg, msg_size)) != HCBD_OK) return r;
     c->Rc = p->Rc;
     c->m = p->xip * p->tau;
     c->cw = 21.0 / (2.0 * HCBD__PI * p->Rc * p->Rc * p->Rc);
     c->cf = 15.0 / (2.0 * HCBD__PI * p->Rc * p->Rc * p->Rc);
     c->cs = c->cf * c->m * c->m * p->dt / p->tau;
     c->rho_norm = p->density_norm == 2016 ? 1.0 / (1.0 + c->cw / p->density) : 1.0;
+}
+
+hcbd_result hcbd_gibd_coef_of(const hcbd_params *p, hcbd_gibd_coef *c, char *msg, size_t msg_size)
+{
+    hcbd_result r;
+    if (!p || !c) return HCBD_ERR_NULL;
+    if ((r = hcbd_params_check(p, msg, msg_size)) != HCBD_OK) return r;
+    hcbd__gibd_coef(p, c);
     return HCBD_OK;
 }
 
@@ -2255,6 +2261,7 @@ hcbd_result hcbd_world_init(hcbd_world *w, const hcbd_world_def *def, void *mem,
     hcbd_result r;
     char *base;
     const hcbd_params *p;
+    hcbd_gibd_coef gc;
     if (!w) return HCBD_ERR_NULL;
     memset(w, 0, sizeof *w);
     hcbd__clear(&w->err);
@@ -2267,12 +2274,12 @@ hcbd_result hcbd_world_init(hcbd_world *w, const hcbd_world_def *def, void *mem,
     p = &w->p;
     w->capacity = def->capacity;
     w->gibd = p->dynamics == HCBD_DYN_GIBD;
-    w->m = w->gibd ? p->xip * p->tau : 0.0;
+    hcbd__gibd_coef(p, &gc);
+    w->m = w->gibd ? gc.m : 0.0;
     w->inv_m = w->gibd ? 1.0 / w->m : 0.0;
-    w->cw = 21.0 / (2.0 * HCBD__PI * p->Rc * p->Rc * p->Rc);
-    w->w0 = w->cw;
-    w->cf = 15.0 / (2.0 * HCBD__PI * p->Rc * p->Rc * p->Rc);
-    w->rho_norm = p->density_norm == 2016 ? 1.0 / (1.0 + w->w0 / p->density) : 1.0;
+    w->cw = w->w0 = gc.cw;
+    w->cf = gc.cf;
+    w->rho_norm = gc.rho_norm;
     w->cutmax = hcbd__cutmax(p);
     w->skin = hcbd__skin(p);
     w->nl.rlist = w->cutmax + w->skin;

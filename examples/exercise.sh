@@ -74,10 +74,8 @@ case "$k" in
         "$B/gibd_bulk" potential=ideal pair=euler N=500 tau=1e-3 dt=$dt steps=$steps \
             threads=2 out=out/exercise3/dt$dt 2>/dev/null | grep '^T_ratio' > out/exercise3.$dt || exit 1
     done
-    r1=$(awk -F= '$1 == "T_ratio" { print $2 }' out/exercise3.1e-4)
-    e1=$(awk -F= '$1 == "T_ratio_err" { print $2 }' out/exercise3.1e-4)
-    r2=$(awk -F= '$1 == "T_ratio" { print $2 }' out/exercise3.5e-5)
-    e2=$(awk -F= '$1 == "T_ratio_err" { print $2 }' out/exercise3.5e-5)
+    r1=$(get out/exercise3.1e-4 T_ratio); e1=$(get out/exercise3.1e-4 T_ratio_err)
+    r2=$(get out/exercise3.5e-5 T_ratio); e2=$(get out/exercise3.5e-5 T_ratio_err)
     say "T/kT = $r1 +- $e1 at dt = 1e-4, $r2 +- $e2 at dt = 5e-5"
     q=$(awk -v a="$r1" -v b="$r2" 'BEGIN { print (a - 1) / (b - 1) }')
     eq=$(awk -v a="$r1" -v b="$r2" -v ea="$e1" -v eb="$e2" \
@@ -88,8 +86,7 @@ case "$k" in
 4)  say "exercise 4: the initial-decay identity in the star liquid (build/gibd_bulk, ~30 s)"
     "$B/gibd_bulk" N=500 steps=40000 out=out/exercise4 2>/dev/null > out/exercise4.txt || exit 1
     grep -E '^(nu_meanfield|nu_initial|initial_decay_identity)' out/exercise4.txt
-    v=$(awk -F= '$1 == "initial_decay_identity" { print $2 }' out/exercise4.txt)
-    e=$(awk -F= '$1 == "initial_decay_identity_err" { print $2 }' out/exercise4.txt)
+    v=$(get out/exercise4.txt initial_decay_identity); e=$(get out/exercise4.txt initial_decay_identity_err)
     verdict "initial decay rate / friction average" "$v" "$e" 1 "$(awk -v e="$e" 'BEGIN { print 4 * e }')" ;;
 5)  say "exercise 5: short- and long-time diffusion of ideal carriers (build/gibd_bulk, ~20 s)"
     o=out/exercise5.txt
