@@ -32,7 +32,7 @@ HC_EXAMPLES := $(B)/hcbd_fluid $(B)/hcbd_polymer $(B)/hcbd_sound
 HEADERS  := hcbd.h
 TEST_SRC := $(wildcard tests/test_*.c) tests/main.c
 
-.PHONY: all run test validate mutants exercise lammps test-lammps test-main test-walls test-float test-hcbd-float test-examples test-gibd test-hcbd test-sanitize test-sanitize-hcbd test-tsan test-tsan-hcbd test-fuzz-args test-fuzz-ckpt test-install test-build build-check install fuzz bench bench-wp bench-stability bench-peers bench-parts bench-soak clean
+.PHONY: all run test validate mutants exercise lammps test-lammps mutants-lammps test-main test-walls test-float test-hcbd-float test-examples test-gibd test-hcbd test-sanitize test-sanitize-hcbd test-tsan test-tsan-hcbd test-fuzz-args test-fuzz-ckpt test-install test-build build-check install fuzz bench bench-wp bench-stability bench-peers bench-parts bench-soak clean
 
 all: $(B)/hcbd_impl.o $(EXAMPLES) $(HC_EXAMPLES)
 
@@ -122,6 +122,11 @@ lammps:
 
 test-lammps: lammps $(B)/gibd_bulk
 	lammps/check.sh
+
+# make mutants-lammps: every injected error of the plugin is caught by the
+# atom-by-atom part of test-lammps (lammps/mutants.sh, ~3 min)
+mutants-lammps: lammps
+	lammps/mutants.sh
 
 # make mutants (not in CI): every injected single-coefficient error of
 # tests/mutants/mutants.txt must make the suite fail; NAMES="a b" picks.

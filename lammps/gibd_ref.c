@@ -1,0 +1,90 @@
+/* gibd_ref: hcbd's own GI-BD world (the papers' Euler pair step) advanced
+   from the atoms of a LAMMPS dump, for make test-lammps to compare fix gibd
+   with, atom by atom.  Usage:
+     gibd_ref IN OUT steps dt tau xi xip kT Rc density norm seed noise f sigma eps rcut
+   IN: write_dump custom id x y z vx vy vz, sorted by id (tags 1..n); OUT:
+   "id x y z vx vy vz" after `steps` steps, wrapped into the box; stdout:
+   the pair energy of IN.  f = 0:
+   ideal carriers; otherwise the star potential (2014 eq. 28, from the
+   formula, not the force table).  noise: gauss or uniform. */
+#define HCBD_IMPLEMENTATION
+#include "hcbd.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+int main(int argc, char **argv)
+{
+    hcbd_world_def def = hcbd_world_def_default();
+    hcbd_params *p = &def.params;
+    hcbd_world w;
+    char line[512];
+    double lo[3], hi[3], *x, *v;
+    int n = 0, i, d, steps;
+    FILE *in, *out;
+    if (argc != 18) {
+        fprintf(stderr, "usage: gibd_ref IN OUT steps dt tau xi xip kT Rc density norm seed noise f sigma eps rcut\n");
+        return 2;
+    }
+    in = fopen(argv[1], "r");
+    if (!in) { fprintf(stderr, "gibd_ref: cannot read %s\n", argv[1]); return 1; }
+    for (i = 0; i < 9 && fgets(line, sizeof line, in); ++i) {
+        if (i == 3) n = atoi(line);
+        if (i >= 5 && i <= 7 && sscanf(line, "%lf %lf", &lo[i - 5], &hi[i - 5]) != 2) n = 0;
+    }
+    if (n < 2) { fprintf(stderr, "gibd_ref: %s is not a dump of atoms and box\n", argv[1]); return 1; }
+    x = (double *)malloc(6 * (size_t)n * sizeof(double));
+    v = x + 3 * (size_t)n;
+    for (i = 0; i < n; ++i) {
+        int id;
+        if (fscanf(in, "%d %lf %lf %lf %lf %lf %lf", &id, &x[3 * i], &x[3 * i + 1], &x[3 * i + 2],
+                   &v[3 * i], &v[3 * i + 1], &v[3 * i + 2]) != 7 || id != i + 1) {
+            fprintf(stderr, "gibd_ref: atom line %d of %s (ids must run 1..n in order)\n", i + 1, argv[1]);
+            return 1;
+        }
+        for (d = 0; d < 3; ++d) x[3 * i + d] -= lo[d];
+    }
+    fclose(in);
+    steps = atoi(argv[3]);
+    p->dt = atof(argv[4]);
+    def.capacity = n;
+    for (d = 0; d < 3; ++d) p->L[d] = hi[d] - lo[d];
+    p->tau = atof(argv[5]);
+    p->xi = atof(argv[6]);
+    p->xip = atof(argv[7]);
+    p->kT = atof(argv[8]);
+    p->Rc = atof(argv[9]);
+    p->density = atof(argv[10]);
+    p->density_norm = atoi(argv[11]);
+    p->seed = strtoull(argv[12], NULL, 10);
+    p->noise = strcmp(argv[13], "uniform") ? HCBD_NOISE_GAUSS : HCBD_NOISE_UNIFORM;
+    p->f = atof(argv[14]);
+    p->potential = p->f > 0 ? HCBD_POT_STAR : HCBD_POT_IDEAL;
+    p->sigma = atof(argv[15]);
+    p->star_eps = atof(argv[16]);
+    p->rcut = atof(argv[17]);
+    p->force_table = 0;
+    p->pair_integrator = HCBD_PAIR_EULER;
+    if (hcbd_world_create(&w, &def) != HCBD_OK || hcbd_world_set_positions(&w, n, x) != HCBD_OK ||
+        hcbd_world_set_velocities(&w, v) != HCBD_OK) {
+        fprintf(stderr, "gibd_ref: %s\n", w.err.msg);
+        return 1;
+    }
+    printf("%.17g\n", hcbd_potential_energy(&w));
+    if (hcbd_step(&w, steps) != HCBD_OK) {
+        fprintf(stderr, "gibd_ref: %s\n", w.err.msg);
+        return 1;
+    }
+    hcbd_get_positions(&w, x, 0);
+    hcbd_get_velocities(&w, v);
+    out = fopen(argv[2], "w");
+    if (!out) { fprintf(stderr, "gibd_ref: cannot write %s\n", argv[2]); return 1; }
+    for (i = 0; i < n; ++i)
+        fprintf(out, "%d %.17g %.17g %.17g %.17g %.17g %.17g\n", i + 1, x[3 * i] + lo[0], x[3 * i + 1] + lo[1],
+                x[3 * i + 2] + lo[2], v[3 * i], v[3 * i + 1], v[3 * i + 2]);
+    fclose(out);
+    hcbd_world_destroy(&w);
+    free(x);
+    return 0;
+}

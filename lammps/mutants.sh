@@ -1,0 +1,51 @@
+#!/usr/bin/env bash
+# make mutants-lammps: each injected error of the plugin (a single
+# coefficient 10 % off in fix_gibd.cpp or pair_star.cpp) must make the
+# quick part of make test-lammps fail (lammps/check.sh with
+# HCBD_LAMMPS_QUICK=1: the atom-by-atom comparison with hcbd's world).
+# Builds the plugin once per mutant against build/lammps (make lammps).
+# Prints one line per mutant: caught (by the first failing check) or MISSED.
+set -u
+root=$(cd "$(dirname "$0")/.." && pwd)
+B=$root/build/lammps
+[ -x "$B/lmp" ] || { echo "mutants-lammps: skipped: no LAMMPS (make lammps builds it)"; exit 0; }
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+missed=0
+# NAME|FILE|OLD|NEW, OLD once in FILE
+while IFS='|' read -r -u 3 name file old new; do
+    [ -n "$name" ] || continue
+    rm -rf "$work/src" "$work/plugin"
+    cp -r "$root/lammps" "$work/src"
+    if ! python3 - "$work/src/$file" "$old" "$new" <<'PY'
+import sys
+path, old, new = sys.argv[1:4]
+s = open(path).read()
+if s.count(old) != 1:
+    sys.exit("pattern found %d times" % s.count(old))
+open(path, 'w').write(s.replace(old, new))
+PY
+    then echo "$name: BAD PATTERN"; missed=$((missed + 1)); continue; fi
+    if ! { cmake -S "$work/src" -B "$work/plugin" -D CMAKE_BUILD_TYPE=Release -D LAMMPS_HEADER_DIR="$B/src/src" \
+        -D HCBD_DIR="$root" && cmake --build "$work/plugin" -j2; } > "$work/build.log" 2>&1; then
+        echo "$name: does not build"; missed=$((missed + 1)); continue
+    fi
+    ln -sf "$B/lmp" "$work/lmp"
+    first=$(HCBD_LAMMPS_DIR=$work HCBD_LAMMPS_QUICK=1 "$root/lammps/check.sh" 2>&1 | grep -m 1 '^  FAIL' | sed 's/^  FAIL //')
+    if [ -n "$first" ]; then echo "$name: caught by: ${first%%:*}"
+    else echo "$name: MISSED"; missed=$((missed + 1)); fi
+done 3<<'LIST'
+brownian_amplitude|fix_gibd.cpp|std::sqrt(2.0 * p.kT * dt / p.xi)|std::sqrt(2.2 * p.kT * dt / p.xi)
+mobility|fix_gibd.cpp|f[i][d] * dt / p.xi|1.1 * f[i][d] * dt / p.xi
+force_on_background|fix_gibd.cpp|v[i][d] += f[i][d] * dt / m|v[i][d] += 1.1 * f[i][d] * dt / m
+advection|fix_gibd.cpp|x[i][d] += v[i][d] * dt|x[i][d] += 1.1 * v[i][d] * dt
+pair_friction|fix_gibd.cpp|(sdt * (v[j][d] - v[i][d])|(1.1 * sdt * (v[j][d] - v[i][d])
+pair_noise|fix_gibd.cpp|std::sqrt(two_kT * sdt)|std::sqrt(2.2 * p.kT * sdt)
+pair_mass|fix_gibd.cpp|+ amp * z[d]) / m * vscale|+ amp * z[d]) / (1.1 * m) * vscale
+density|fix_gibd.cpp|inv_rho[i] = 1.0 / hcbd_gibd_density|inv_rho[i] = 1.1 / hcbd_gibd_density
+noise_step|fix_gibd.cpp|update->ntimestep - 1;|update->ntimestep;
+star_force|pair_star.cpp|const double fpair = hcbd_star_force(|const double fpair = 1.1 * hcbd_star_force(
+star_energy|pair_star.cpp|const double e = eflag ? hcbd_star_potential(|const double e = eflag ? 1.1 * hcbd_star_potential(
+LIST
+echo "mutants-lammps: $missed missed"
+[ $missed -eq 0 ]
