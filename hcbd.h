@@ -341,6 +341,13 @@ typedef struct hcbd__nlist {
     int list_valid;
 } hcbd__nlist;
 
+/* The constants of the star potential (2014 eq. 28) for f arms, core size
+   sigma and energy eps: a = eps (5/18) f^(3/2), b = 1 / (1 + sqrt(f) / 2),
+   s = sqrt(f) / 2, ab = a b, s_sigma = s / sigma (hcbd_star_coef_of). */
+typedef struct hcbd_star_coef {
+    double sigma, a, b, s, ab, s_sigma;
+} hcbd_star_coef;
+
 typedef struct hcbd_world {
     hcbd_params p;
     hcbd_error err;
@@ -348,7 +355,7 @@ typedef struct hcbd_world {
     int64_t step;
     /* derived constants */
     double m, inv_m, w0, cw, cf, rho_norm, cutmax, skin;
-    double star_a, star_b, star_s, star_ab, star_s_sigma;
+    hcbd_star_coef star;
     int has_pairs, has_fext, has_noise, gibd, shardlow;
     /* per-particle arrays (struct of arrays), storage order */
     hcbd_real *x, *y, *z;        /* positions in [0, L)                       */
@@ -701,6 +708,10 @@ double hcbd_wendland_dr(double r, double Rc);
 /* Star potential V(r) and force -dV/dr for f arms, core sigma, energy eps. */
 double hcbd_star_potential(double r, double f, double sigma, double eps);
 double hcbd_star_force(double r, double f, double sigma, double eps);
+/* The same force divided by r, at r^2 = r2, from precomputed constants, as
+   the world's pair pass evaluates it (for a pair style: no pow per pair). */
+hcbd_result hcbd_star_coef_of(double f, double sigma, double eps, hcbd_star_coef *c);
+double hcbd_star_force_over_r(const hcbd_star_coef *c, double r2);
 
 #if HCBD_MODEL == HCBD_MODEL_HCBD
 /* >>HCBD (2018): fluid blobs (SPH) coupled two-way to polymer blobs (RaPiD)
@@ -1753,8 +1764,8 @@ static void hcbd__star_fu(const hcbd_world *w, double u, double *f, double *df)
 {
     /* F(r) = ab e^{-s(q-1)} (1/q^2 + s/q)/sigma, q = r/sigma; F/r and
        d(F/r)/du = (r F'(r) - F)/(2 r^3) */
-    const double sg = w->p.sigma, s = w->star_s, r = sqrt(u), q = r / sg;
-    const double e = w->star_ab * exp(-s * (q - 1.0)) / sg;
+    const double sg = w->p.sigma, s = w->star.s, r = sqrt(u), q = r / sg;
+    const double e = w->star.ab * exp(-s * (q - 1.0)) / sg;
     const double F = e * (1.0 / (q * q) + s / q);
     const double dF = e / sg * (-s * (1.0 / (q * q) + s / q) - 2.0 / (q * q * q) - s / (q * q));
     *f = F / r;
@@ -1790,7 +1801,7 @@ static inline double hcbd__star_table(const hcbd_world *w, double r2)
     double t;
     int k;
     const double *c;
-    if (r2 <= w->star_u0) return w->star_a / r2;
+    if (r2 <= w->star_u0) return w->star.a / r2;
     t = (r2 - w->star_u0) * w->star_ih;
     k = (int)t;
     if (k > w->star_kmax) k = w->star_kmax;
@@ -1799,18 +1810,44 @@ static inline double hcbd__star_table(const hcbd_world *w, double r2)
     return c[0] + t * (c[1] + t * (c[2] + t * c[3]));
 }
 
+static void hcbd__star_coef(double f, double sigma, double eps, hcbd_star_coef *c)
+{
+    c->sigma = sigma;
+    c->a = eps * (5.0 / 18.0) * pow(f, 1.5);
+    c->b = 1.0 / (1.0 + 0.5 * sqrt(f));
+    c->s = 0.5 * sqrt(f);
+    c->ab = c->a * c->b;
+    c->s_sigma = c->s / sigma;
+}
+
+/* Star force over r; the outer branch a b e^{-s(q-1)} (1/q^2 + s/q) /
+   (sigma r) written with one division. */
+static inline double hcbd__star_force_over_r(const hcbd_star_coef *c, double r, double r2)
+{
+    double ir;
+    if (r <= c->sigma) return c->a / r2;
+    ir = 1.0 / r;
+    return c->ab * exp(c->s - c->s_sigma * r) * (c->sigma * ir + c->s) * ir * ir;
+}
+
+hcbd_result hcbd_star_coef_of(double f, double sigma, double eps, hcbd_star_coef *c)
+{
+    if (!c) return HCBD_ERR_NULL;
+    if (!(isfinite(f) && f > 0 && isfinite(sigma) && sigma > 0 && isfinite(eps) && eps > 0))
+        return HCBD_ERR_PARAM;
+    hcbd__star_coef(f, sigma, eps, c);
+    return HCBD_OK;
+}
+
+double hcbd_star_force_over_r(const hcbd_star_coef *c, double r2)
+{
+    return hcbd__star_force_over_r(c, sqrt(r2), r2);
+}
+
 /* Pair force divided by r, for r < rcut, from the formula. */
 static inline double hcbd__force_over_r(const hcbd_world *w, double r, double r2)
 {
-    if (w->p.potential == HCBD_POT_STAR) {
-        /* outer branch: a b e^{-s(q-1)} (1/q^2 + s/q) / (sigma r), written
-           with one division */
-        double ir;
-        if (r <= w->p.sigma) return w->star_a / r2;
-        ir = 1.0 / r;
-        return w->star_ab * exp(w->star_s - w->star_s_sigma * r) *
-               (w->p.sigma * ir + w->star_s) * ir * ir;
-    }
+    if (w->p.potential == HCBD_POT_STAR) return hcbd__star_force_over_r(&w->star, r, r2);
     return hcbd__table(w, w->tab_F, r) / r;
 }
 
@@ -2289,11 +2326,7 @@ hcbd_result hcbd_world_init(hcbd_world *w, const hcbd_world_def *def, void *mem,
     w->step_limit = 0.5 * w->cutmax;
     if (!hcbd__needs_pairs(p)) w->step_limit = HUGE_VAL;
     hcbd__fixed_scales(w);
-    w->star_a = p->star_eps * (5.0 / 18.0) * pow(p->f, 1.5);
-    w->star_b = 1.0 / (1.0 + 0.5 * sqrt(p->f));
-    w->star_s = 0.5 * sqrt(p->f);
-    w->star_ab = w->star_a * w->star_b;
-    w->star_s_sigma = w->star_s / p->sigma;
+    hcbd__star_coef(p->f, p->sigma, p->star_eps, &w->star);
     w->has_pairs = hcbd__needs_pairs(p);
     w->has_fext = p->fext[0] != 0.0 || p->fext[1] != 0.0 || p->fext[2] != 0.0;
     w->has_noise = p->kT > 0.0;
@@ -3887,8 +3920,8 @@ double hcbd_potential_energy(hcbd_world *w)
 static double hcbd__pair_lap(const hcbd_world *w, double r)
 {
     if (w->p.potential == HCBD_POT_STAR) {
-        if (r <= w->p.sigma) return -w->star_a / (r * r);
-        return w->star_s_sigma * w->star_s_sigma * hcbd__pair_energy(w, r);
+        if (r <= w->p.sigma) return -w->star.a / (r * r);
+        return w->star.s_sigma * w->star.s_sigma * hcbd__pair_energy(w, r);
     } else {
         double u = (r - w->p.table_r0) * w->tab_inv_dr;
         int k;

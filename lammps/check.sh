@@ -48,6 +48,7 @@ expect "noise = pink" "$fixline noise pink/"
 expect "Rc = 3" "$fixline Rc 3 tau \${tau}/"
 expect "xip tau" "$fixline xip 2 tau \${tau}/"
 expect "comm_modify vel yes" "/^comm_modify/d"
+expect "needs newton on" "s/^units/newton off\nunits/"
 expect "group must be all" "s/^fix  *g all gibd/group half id 1:10\nfix g half gibd/"
 expect "sigma = -1 is not a positive number" 's/${sigma} ${eps}/-1/' star
 expect "pair_style star takes one value" 's/pair_style star ${Rc}/pair_style star/' star

@@ -7,10 +7,12 @@
 //   dp_ij  = sdt (v_j - v_i) + sqrt(2 kT sdt) zeta_ij     sdt = S_ij dt / tau
 //   x_i   += v_i dt + F_i dt / xi + sqrt(2 kT dt / xi) zeta_i
 //   v_i   += F_i dt / m + sum_j dp_ij / m,                m = xi' tau
-// Each pair is evaluated by the owner of each of its atoms, with the same
-// noise (key: seed, step, lower tag - 1, higher tag - 1; +zeta on the atom of
-// the lower tag); the sums are 64-bit fixed point, so they do not depend on
-// the order of the neighbours, and dp_ji = -dp_ij conserves momentum.
+// Each pair is evaluated once (a half list, newton on), its noise keyed by
+// (seed, step, lower tag - 1, higher tag - 1; +zeta on the atom of the lower
+// tag) and added to both atoms, ghosts included, in 64-bit fixed point; the
+// ghosts' sums go back to their owners (reverse communication).  Integer
+// sums do not depend on the order of the pairs or on which rank holds
+// them, and dp_ji = -dp_ij exactly conserves momentum.
 #include "fix_gibd.h"
 
 #include "atom.h"
@@ -43,7 +45,8 @@ static double number(Error *error, const char *key, const char *v)
 }
 
 FixGIBD::FixGIBD(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), list(nullptr), inv_rho(nullptr), dv(nullptr), nmax(0), wscale(0), vscale(0)
+    Fix(lmp, narg, arg), list(nullptr), inv_rho(nullptr), acc(nullptr), nmax(0), nacc(1), wscale(0),
+    vscale(0)
 {
   p = hcbd_params_default();
   p.potential = HCBD_POT_IDEAL; // the conservative forces are LAMMPS's pair style
@@ -78,12 +81,13 @@ FixGIBD::FixGIBD(LAMMPS *lmp, int narg, char **arg) :
   if (igroup != 0) error->all(FLERR, "fix gibd: the group must be all (densities sum over every atom)");
   time_integrate = 1;
   comm_forward = 1;
+  comm_reverse = 3;
 }
 
 FixGIBD::~FixGIBD()
 {
   memory->destroy(inv_rho);
-  memory->destroy(dv);
+  memory->destroy(acc);
 }
 
 int FixGIBD::setmask()
@@ -99,6 +103,7 @@ void FixGIBD::init()
   p.rcut = p.Rc; // no hcbd pair potential: its cut-off only has to be valid
   if (hcbd_gibd_coef_of(&p, &c, msg, sizeof msg) != HCBD_OK) error->all(FLERR, "fix gibd: {}", msg);
   if (!comm->ghost_velocity) error->all(FLERR, "fix gibd: needs ghost velocities (comm_modify vel yes)");
+  if (!force->newton_pair) error->all(FLERR, "fix gibd: needs newton on (each pair once, sums to the owners)");
   if (!force->pair || force->pair->cutforce < p.Rc)
     error->all(FLERR, "fix gibd: the pair cut-off must reach Rc = {} (pair_style zero {} for ideal carriers)",
                p.Rc, p.Rc);
@@ -114,8 +119,6 @@ void FixGIBD::init()
   int irequest = neighbor->request(this, instance_me);
   neighbor->requests[irequest]->pair = 0;
   neighbor->requests[irequest]->fix = 1;
-  neighbor->requests[irequest]->half = 0;
-  neighbor->requests[irequest]->full = 1;
 }
 
 void FixGIBD::init_list(int, NeighList *ptr)
@@ -125,7 +128,7 @@ void FixGIBD::init_list(int, NeighList *ptr)
 
 void FixGIBD::final_integrate()
 {
-  const int nlocal = atom->nlocal;
+  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
   const double Rc2 = p.Rc * p.Rc, dt = p.dt, m = c.m;
   const double bd = std::sqrt(2.0 * p.kT * dt / p.xi), two_kT = 2.0 * p.kT;
   const int64_t step = update->ntimestep - 1; // hcbd's step counter: the step being made
@@ -136,30 +139,34 @@ void FixGIBD::final_integrate()
 
   if (atom->nmax > nmax) {
     memory->destroy(inv_rho);
-    memory->destroy(dv);
+    memory->destroy(acc);
     nmax = atom->nmax;
     memory->create(inv_rho, nmax, "gibd:inv_rho");
-    memory->create(dv, 3 * nmax, "gibd:dv");
+    memory->create(acc, 3 * nmax, "gibd:acc");
   }
+  std::memset(acc, 0, sizeof(int64_t) * nall);
   for (int ii = 0; ii < inum; ++ii) {
     const int i = ilist[ii];
-    int64_t s = 0;
     for (int jj = 0; jj < numneigh[i]; ++jj) {
       const int j = firstneigh[i][jj] & NEIGHMASK;
       const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
       const double r2 = dx * dx + dy * dy + dz * dz;
-      if (r2 < Rc2) s += llrint(hcbd_gibd_weight(&c, std::sqrt(r2)) * wscale);
+      if (r2 >= Rc2) continue;
+      const int64_t w = llrint(hcbd_gibd_weight(&c, std::sqrt(r2)) * wscale);
+      acc[i] += w;
+      acc[j] += w;
     }
-    inv_rho[i] = 1.0 / hcbd_gibd_density(&c, (double) s / wscale);
   }
+  nacc = 1;
+  comm->reverse_comm_fix(this, 1);
+  for (int i = 0; i < nlocal; ++i) inv_rho[i] = 1.0 / hcbd_gibd_density(&c, (double) acc[i] / wscale);
   comm->forward_comm_fix(this);
 
   // every velocity change from the velocities of t, then the updates
+  std::memset(acc, 0, sizeof(int64_t) * 3 * nall);
   for (int ii = 0; ii < inum; ++ii) {
     const int i = ilist[ii];
     const int32_t ti = (int32_t) (tag[i] - 1);
-    int64_t acc[3] = {0, 0, 0};
-    double z[3];
     for (int jj = 0; jj < numneigh[i]; ++jj) {
       const int j = firstneigh[i][jj] & NEIGHMASK;
       const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
@@ -168,17 +175,23 @@ void FixGIBD::final_integrate()
       const int32_t tj = (int32_t) (tag[j] - 1);
       const double sdt = hcbd_gibd_sdt(&c, std::sqrt(r2), inv_rho[i], inv_rho[j]);
       const double amp = (ti < tj ? 1.0 : -1.0) * std::sqrt(two_kT * sdt);
+      double z[3];
       hcbd_noise_pair(&ns, step, ti, tj, z);
-      for (int d = 0; d < 3; ++d) acc[d] += llrint((sdt * (v[j][d] - v[i][d]) + amp * z[d]) / m * vscale);
+      for (int d = 0; d < 3; ++d) {
+        const int64_t q = llrint((sdt * (v[j][d] - v[i][d]) + amp * z[d]) / m * vscale);
+        acc[3 * i + d] += q;
+        acc[3 * j + d] -= q;
+      }
     }
-    for (int d = 0; d < 3; ++d) dv[3 * i + d] = (double) acc[d] / vscale;
   }
+  nacc = 3;
+  comm->reverse_comm_fix(this, 3);
   for (int i = 0; i < nlocal; ++i) {
     double z[3];
     hcbd_noise_particle(&ns, step, (int32_t) (tag[i] - 1), z);
     for (int d = 0; d < 3; ++d) {
       x[i][d] += v[i][d] * dt + f[i][d] * dt / p.xi + bd * z[d];
-      v[i][d] += f[i][d] * dt / m + dv[3 * i + d];
+      v[i][d] += f[i][d] * dt / m + (double) acc[3 * i + d] / vscale;
     }
   }
 }
@@ -194,7 +207,24 @@ void FixGIBD::unpack_forward_comm(int n, int first, double *buf)
   for (int k = 0; k < n; ++k) inv_rho[first + k] = buf[k];
 }
 
+// the ghosts' fixed-point sums travel as the bits of doubles
+int FixGIBD::pack_reverse_comm(int n, int first, double *buf)
+{
+  std::memcpy(buf, acc + (size_t) nacc * first, sizeof(int64_t) * nacc * n);
+  return nacc * n;
+}
+
+void FixGIBD::unpack_reverse_comm(int n, int *slist, double *buf)
+{
+  for (int k = 0; k < n; ++k)
+    for (int d = 0; d < nacc; ++d) {
+      int64_t q;
+      std::memcpy(&q, buf + nacc * k + d, sizeof q);
+      acc[(size_t) nacc * slist[k] + d] += q;
+    }
+}
+
 double FixGIBD::memory_usage()
 {
-  return 4.0 * nmax * sizeof(double);
+  return nmax * (sizeof(double) + 3.0 * sizeof(int64_t));
 }

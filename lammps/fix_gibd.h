@@ -25,6 +25,8 @@ class FixGIBD : public Fix {
   void final_integrate() override;
   int pack_forward_comm(int, int *, double *, int, int *) override;
   void unpack_forward_comm(int, int, double *) override;
+  int pack_reverse_comm(int, int, double *) override;
+  void unpack_reverse_comm(int, int *, double *) override;
   double memory_usage() override;
 
  private:
@@ -33,8 +35,9 @@ class FixGIBD : public Fix {
   hcbd_noise_stream ns;     // pair and Brownian noise keyed by (seed, step, ids)
   class NeighList *list;
   double *inv_rho;          // 1 / rho of owned and ghost atoms
-  double *dv;               // 3 per owned atom: the pair velocity changes
-  int nmax;
+  int64_t *acc;             // fixed-point pair sums of owned and ghost atoms:
+                            // nacc per atom (1: weights, 3: velocity changes)
+  int nmax, nacc;
   double wscale, vscale;    // fixed-point scales of the density and velocity sums
 };
 

@@ -42,9 +42,11 @@ advection|fix_gibd.cpp|x[i][d] += v[i][d] * dt|x[i][d] += 1.1 * v[i][d] * dt
 pair_friction|fix_gibd.cpp|(sdt * (v[j][d] - v[i][d])|(1.1 * sdt * (v[j][d] - v[i][d])
 pair_noise|fix_gibd.cpp|std::sqrt(two_kT * sdt)|std::sqrt(2.2 * p.kT * sdt)
 pair_mass|fix_gibd.cpp|+ amp * z[d]) / m * vscale|+ amp * z[d]) / (1.1 * m) * vscale
+weight_of_partner|fix_gibd.cpp|acc[j] += w;|acc[j] += w + w / 10;
+reaction_on_partner|fix_gibd.cpp|acc[3 * j + d] -= q;|acc[3 * j + d] -= q + q / 10;
 density|fix_gibd.cpp|inv_rho[i] = 1.0 / hcbd_gibd_density|inv_rho[i] = 1.1 / hcbd_gibd_density
 noise_step|fix_gibd.cpp|update->ntimestep - 1;|update->ntimestep;
-star_force|pair_star.cpp|const double fpair = hcbd_star_force(|const double fpair = 1.1 * hcbd_star_force(
+star_force|pair_star.cpp|const double fpair = hcbd_star_force_over_r(|const double fpair = 1.1 * hcbd_star_force_over_r(
 star_energy|pair_star.cpp|const double e = eflag ? hcbd_star_potential(|const double e = eflag ? 1.1 * hcbd_star_potential(
 LIST
 echo "mutants-lammps: $missed missed"

@@ -8,7 +8,6 @@
 #include "memory.h"
 #include "neigh_list.h"
 
-#include "hcbd.h"
 
 #include <cmath>
 #include <cstdlib>
@@ -27,7 +26,7 @@ static double positive(Error *error, const char *key, const char *v)
 
 PairStar::PairStar(LAMMPS *lmp) :
     Pair(lmp), cut_global(0), f_arms(nullptr), sigma(nullptr), eps(nullptr), cut(nullptr),
-    offset(nullptr)
+    offset(nullptr), coef(nullptr)
 {
   restartinfo = 1;
 }
@@ -42,6 +41,7 @@ PairStar::~PairStar()
   memory->destroy(eps);
   memory->destroy(cut);
   memory->destroy(offset);
+  memory->destroy(coef);
 }
 
 void PairStar::allocate()
@@ -57,6 +57,7 @@ void PairStar::allocate()
   memory->create(eps, n + 1, n + 1, "pair:eps");
   memory->create(cut, n + 1, n + 1, "pair:cut");
   memory->create(offset, n + 1, n + 1, "pair:offset");
+  memory->create(coef, n + 1, n + 1, "pair:coef");
 }
 
 void PairStar::compute(int eflag, int vflag)
@@ -73,8 +74,7 @@ void PairStar::compute(int eflag, int vflag)
       const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
       const double r2 = dx * dx + dy * dy + dz * dz;
       if (r2 >= cutsq[it][jt]) continue;
-      const double r = std::sqrt(r2);
-      const double fpair = hcbd_star_force(r, f_arms[it][jt], sigma[it][jt], eps[it][jt]) / r;
+      const double fpair = hcbd_star_force_over_r(&coef[it][jt], r2);
       f[i][0] += dx * fpair;
       f[i][1] += dy * fpair;
       f[i][2] += dz * fpair;
@@ -84,8 +84,8 @@ void PairStar::compute(int eflag, int vflag)
         f[j][2] -= dz * fpair;
       }
       if (evflag) {
-        const double e = eflag ? hcbd_star_potential(r, f_arms[it][jt], sigma[it][jt], eps[it][jt]) -
-                                     offset[it][jt] : 0.0;
+        const double e = eflag ? hcbd_star_potential(std::sqrt(r2), f_arms[it][jt], sigma[it][jt],
+                                                     eps[it][jt]) - offset[it][jt] : 0.0;
         ev_tally(i, j, nlocal, newton_pair, e, 0.0, fpair, dx, dy, dz);
       }
     }
@@ -129,6 +129,8 @@ double PairStar::init_one(int i, int j)
 {
   // the potential has no mixing rule: every type pair is given
   if (!setflag[i][j]) error->all(FLERR, "pair star: pair_coeff {} {} is not set", i, j);
+  hcbd_star_coef_of(f_arms[i][j], sigma[i][j], eps[i][j], &coef[i][j]); // checked by coeff()
+  coef[j][i] = coef[i][j];
   offset[i][j] = offset_flag ? hcbd_star_potential(cut[i][j], f_arms[i][j], sigma[i][j], eps[i][j]) : 0.0;
   f_arms[j][i] = f_arms[i][j];
   sigma[j][i] = sigma[i][j];
@@ -187,7 +189,6 @@ void PairStar::read_restart_settings(FILE *fp)
 
 double PairStar::single(int, int, int it, int jt, double r2, double, double, double &fforce)
 {
-  const double r = std::sqrt(r2);
-  fforce = hcbd_star_force(r, f_arms[it][jt], sigma[it][jt], eps[it][jt]) / r;
-  return hcbd_star_potential(r, f_arms[it][jt], sigma[it][jt], eps[it][jt]) - offset[it][jt];
+  fforce = hcbd_star_force_over_r(&coef[it][jt], r2);
+  return hcbd_star_potential(std::sqrt(r2), f_arms[it][jt], sigma[it][jt], eps[it][jt]) - offset[it][jt];
 }

@@ -1,6 +1,7 @@
 // pair_style star: the Likos star-polymer potential (2014 eq. 28) of
-// hcbd.h's hcbd_star_potential and hcbd_star_force, so that fix gibd runs
-// the papers' star scene with the same pair physics as hcbd.
+// hcbd.h (forces by hcbd_star_force_over_r, the world's own evaluation;
+// energies by hcbd_star_potential), so that fix gibd runs the papers' star
+// scene with the same pair physics as hcbd.
 //   pair_style star Rcut
 //   pair_coeff I J f sigma [eps [Rcut]]     (eps defaults to 1)
 // Unshifted, as hcbd's energy (pair_modify shift yes subtracts V(Rcut)).
@@ -13,6 +14,7 @@ PairStyle(star,PairStar);
 #ifndef LMP_PAIR_STAR_H
 #define LMP_PAIR_STAR_H
 
+#include "hcbd.h"
 #include "pair.h"
 
 namespace LAMMPS_NS {
@@ -34,6 +36,7 @@ class PairStar : public Pair {
  private:
   double cut_global;
   double **f_arms, **sigma, **eps, **cut, **offset;
+  hcbd_star_coef **coef;    // hcbd_star_coef_of of each type pair
   void allocate();
 };
 

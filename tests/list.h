@@ -2,6 +2,7 @@
 T(test_wendland_normalisation)
 T(test_wendland_derivative)
 T(test_star_force_is_minus_gradient)
+T(test_star_force_over_r)
 T(test_pair_forces_vs_energy)
 T(test_forces_observable)
 T(test_gibd_coef_exported)

@@ -64,6 +64,30 @@ void test_star_force_is_minus_gradient(void)
           "V(r; sigma, eps) = eps V(r/sigma; 1, 1)");
 }
 
+/* hcbd_star_force_over_r (the world's evaluation, exported for pair styles)
+   against hcbd_star_force(r)/r on both branches, at several f, sigma and
+   eps; bad constants are refused. */
+void test_star_force_over_r(void)
+{
+    const double f[3] = {128, 32, 7}, sg[3] = {1, 0.7, 2.2}, eps[3] = {1, 2.5, 0.4};
+    double worst = 0, r;
+    hcbd_star_coef c;
+    int k;
+    for (k = 0; k < 3; ++k) {
+        CHECK(hcbd_star_coef_of(f[k], sg[k], eps[k], &c) == HCBD_OK, "coef_of(%g, %g, %g)", f[k], sg[k], eps[k]);
+        for (r = 0.05 * sg[k]; r < 3 * sg[k]; r += 0.0173 * sg[k]) {
+            double ref = hcbd_star_force(r, f[k], sg[k], eps[k]) / r;
+            worst = fmax(worst, fabs(hcbd_star_force_over_r(&c, r * r) / ref - 1));
+        }
+    }
+    NOTE("largest relative difference %.2g", worst);
+    CHECK(worst < 1e-13, "hcbd_star_force_over_r off hcbd_star_force / r by %g", worst);
+    CHECK(hcbd_star_coef_of(0, 1, 1, &c) == HCBD_ERR_PARAM, "f = 0 accepted");
+    CHECK(hcbd_star_coef_of(128, -1, 1, &c) == HCBD_ERR_PARAM, "sigma = -1 accepted");
+    CHECK(hcbd_star_coef_of(128, 1, NAN, &c) == HCBD_ERR_PARAM, "eps = nan accepted");
+    CHECK(hcbd_star_coef_of(128, 1, 1, NULL) == HCBD_ERR_NULL, "NULL accepted");
+}
+
 /* Total force on each particle, from one BD step with kT = 0 (dR = F dt /
    xi exactly, so dt need only keep the round-off of x + dR and the
    fixed-point grid of the force sums, 8 cutmax xi/dt 2^-50, small), on a
