@@ -43,6 +43,7 @@ expect "tau = -1" "$fixline tau -1/"
 expect "tau = abc is not a number" "$fixline tau abc/"
 expect "unknown keyword bogus" "$fixline bogus 1/"
 expect "keyword seed has no value" "$fixline seed/"
+expect "fric = 0 is not a positive integer" "$fixline fric 0/"
 expect "norm = 2015" "$fixline norm 2015/"
 expect "noise = pink" "$fixline noise pink/"
 expect "Rc = 3" "$fixline Rc 3 tau \${tau}/"
@@ -58,16 +59,24 @@ expect "pair_coeff I J f sigma" 's/${f} ${sigma} ${eps}/${f}/' star
 # same atoms, 20 steps, every coefficient away from 1 (a 10 % error in any
 # term moves the atoms by 1e-4 or more; the two codes' fixed-point sums
 # differ by 1e-11 per pair); pair_style star's energy against
-# hcbd_potential_energy
+# hcbd_potential_energy and the fix's friction averages (fric) against
+# hcbd_friction_average
 cc -O2 -std=c99 -I"$root" -o "$t/gibd_ref" "$root/lammps/gibd_ref.c" -lm
 compare() {
     name=$1 np=$2 tau=$3 xi=$4 xip=$5 kT=$6 dt=$7 norm=$8 noise=$9 f=${10} seed=11
     if ! $MPI -np "$np" "$lmp" -in "$root/lammps/in.gibd_compare" -var plugin "$plug" -var tau "$tau" -var xi "$xi" \
         -var xip "$xip" -var kT "$kT" -var dt "$dt" -var norm "$norm" -var noise "$noise" -var f "$f" \
-        -var seed $seed -var start "$t/c0.txt" -var end "$t/c1.txt" -var pe "$t/pe.txt" -log none -screen none \
+        -var seed $seed -var start "$t/c0.txt" -var end "$t/c1.txt" -var pe "$t/pe.txt" -var fric "$t/fr.txt" \
+        -log none -screen none \
         > /dev/null 2>&1; then bad "$name: LAMMPS failed"; return; fi
-    if ! pe=$("$t/gibd_ref" "$t/c0.txt" "$t/cr.txt" 20 "$dt" "$tau" "$xi" "$xip" "$kT" 2.5 0.24 "$norm" $seed \
-        "$noise" "$f" 1 1 2.5); then bad "$name: gibd_ref failed"; return; fi
+    if ! "$t/gibd_ref" "$t/c0.txt" "$t/cr.txt" 20 "$dt" "$tau" "$xi" "$xip" "$kT" 2.5 0.24 "$norm" $seed \
+        "$noise" "$f" 1 1 2.5 > "$t/ref.txt"; then bad "$name: gibd_ref failed"; return; fi
+    pe=$(sed -n 1p "$t/ref.txt")
+    if awk 'NR == FNR { for (c = 1; c <= 3; ++c) a[c] = $c; next }
+        FNR == 2 { seen = 1; for (c = 1; c <= 3; ++c) { d = $c - a[c]; if (d < 0) d = -d; if (!(a[c] > 0 && d < 1e-10 * a[c])) bad = 1 } }
+        END { exit bad || !seen }' "$t/fr.txt" "$t/ref.txt"; then
+        ok "$name: fric's friction averages = hcbd_friction_average ($(cat "$t/fr.txt"))"
+    else bad "$name: fric's friction averages $(cat "$t/fr.txt"), hcbd's $(sed -n 2p "$t/ref.txt")"; fi
     Lc=$(awk 'NR == 6 { printf "%.17g", $2 - $1 }' "$t/c0.txt")
     vth=$(awk -v kT="$kT" -v m="$(awk -v a="$xip" -v b="$tau" 'BEGIN { print a * b }')" 'BEGIN { print sqrt(kT / m) }')
     read -r dx dv n < <(awk -v L="$Lc" -f "$root/lammps/maxdiff.awk" "$t/c1.txt" "$t/cr.txt")

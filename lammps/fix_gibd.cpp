@@ -7,6 +7,10 @@
 //   dp_ij  = sdt (v_j - v_i) + sqrt(2 kT sdt) zeta_ij     sdt = S_ij dt / tau
 //   x_i   += v_i dt + F_i dt / xi + sqrt(2 kT dt / xi) zeta_i
 //   v_i   += F_i dt / m + sum_j dp_ij / m,                m = xi' tau
+// With fric N, on every N-th step, the fix's global vector holds
+// hcbd_friction_average (nk = 1) of the configuration the step starts from:
+// <sum_j f_ij>, <sum_j f_ij r_ij^2>, <sum_j f_ij (1 - cos k.x_ij)>, f_ij =
+// S_ij / m, k = 2 pi / L_d averaged over d; nu_meanfield = [3] / (tau k^2).
 // Each pair is evaluated once (a half list, newton on), its noise keyed by
 // (seed, step, lower tag - 1, higher tag - 1; +zeta on the atom of the lower
 // tag) and added to both atoms, ghosts included, in 64-bit fixed point; the
@@ -20,6 +24,7 @@
 #include "domain.h"
 #include "error.h"
 #include "force.h"
+#include "math_const.h"
 #include "memory.h"
 #include "neigh_list.h"
 #include "neigh_request.h"
@@ -46,7 +51,7 @@ static double number(Error *error, const char *key, const char *v)
 
 FixGIBD::FixGIBD(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), list(nullptr), inv_rho(nullptr), acc(nullptr), nmax(0), nacc(1), wscale(0),
-    vscale(0)
+    vscale(0), fric_every(0), fric{0, 0, 0}
 {
   p = hcbd_params_default();
   p.potential = HCBD_POT_IDEAL; // the conservative forces are LAMMPS's pair style
@@ -74,6 +79,12 @@ FixGIBD::FixGIBD(LAMMPS *lmp, int narg, char **arg) :
       if (!strcmp(v, "gauss")) p.noise = HCBD_NOISE_GAUSS;
       else if (!strcmp(v, "uniform")) p.noise = HCBD_NOISE_UNIFORM;
       else error->all(FLERR, "fix gibd: noise = {} is not gauss or uniform", v);
+    } else if (!strcmp(key, "fric")) {
+      char *end;
+      long e = strtol(v, &end, 10);
+      if (end == v || *end || e < 1 || e > 1000000000)
+        error->all(FLERR, "fix gibd: fric = {} is not a positive integer", v);
+      fric_every = (int) e;
     } else {
       error->all(FLERR, "fix gibd: unknown keyword {}", key);
     }
@@ -82,6 +93,12 @@ FixGIBD::FixGIBD(LAMMPS *lmp, int narg, char **arg) :
   time_integrate = 1;
   comm_forward = 1;
   comm_reverse = 3;
+  if (fric_every) {
+    vector_flag = 1;
+    size_vector = 3;
+    global_freq = fric_every;
+    extvector = 0;
+  }
 }
 
 FixGIBD::~FixGIBD()
@@ -164,6 +181,10 @@ void FixGIBD::final_integrate()
 
   // every velocity change from the velocities of t, then the updates
   std::memset(acc, 0, sizeof(int64_t) * 3 * nall);
+  const bool fr = fric_every && update->ntimestep % fric_every == 0;
+  const double fscale = p.tau / (dt * m); // f_ij = S_ij / m = sdt tau / (m dt)
+  double k[3], fs[3] = {0, 0, 0};
+  for (int d = 0; d < 3; ++d) k[d] = 2.0 * MathConst::MY_PI / domain->prd[d];
   for (int ii = 0; ii < inum; ++ii) {
     const int i = ilist[ii];
     const int32_t ti = (int32_t) (tag[i] - 1);
@@ -177,12 +198,23 @@ void FixGIBD::final_integrate()
       const double amp = (ti < tj ? 1.0 : -1.0) * std::sqrt(two_kT * sdt);
       double z[3];
       hcbd_noise_pair(&ns, step, ti, tj, z);
+      if (fr) { // hcbd_friction_average, nk = 1
+        const double fij = sdt * fscale;
+        fs[0] += 2.0 * fij;
+        fs[1] += 2.0 * fij * r2;
+        fs[2] += 2.0 * fij * ((1.0 - std::cos(k[0] * dx)) + (1.0 - std::cos(k[1] * dy)) +
+                              (1.0 - std::cos(k[2] * dz))) / 3.0;
+      }
       for (int d = 0; d < 3; ++d) {
         const int64_t q = llrint((sdt * (v[j][d] - v[i][d]) + amp * z[d]) / m * vscale);
         acc[3 * i + d] += q;
         acc[3 * j + d] -= q;
       }
     }
+  }
+  if (fr) {
+    MPI_Allreduce(fs, fric, 3, MPI_DOUBLE, MPI_SUM, world);
+    for (int d = 0; d < 3; ++d) fric[d] /= (double) atom->natoms;
   }
   nacc = 3;
   comm->reverse_comm_fix(this, 3);
@@ -222,6 +254,11 @@ void FixGIBD::unpack_reverse_comm(int n, int *slist, double *buf)
       std::memcpy(&q, buf + nacc * k + d, sizeof q);
       acc[(size_t) nacc * slist[k] + d] += q;
     }
+}
+
+double FixGIBD::compute_vector(int n)
+{
+  return fric[n];
 }
 
 double FixGIBD::memory_usage()

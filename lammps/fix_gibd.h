@@ -27,6 +27,7 @@ class FixGIBD : public Fix {
   void unpack_forward_comm(int, int, double *) override;
   int pack_reverse_comm(int, int, double *) override;
   void unpack_reverse_comm(int, int *, double *) override;
+  double compute_vector(int) override;
   double memory_usage() override;
 
  private:
@@ -39,6 +40,8 @@ class FixGIBD : public Fix {
                             // nacc per atom (1: weights, 3: velocity changes)
   int nmax, nacc;
   double wscale, vscale;    // fixed-point scales of the density and velocity sums
+  int fric_every;           // keyword fric: friction averages every this many steps
+  double fric[3];           // the last ones (compute_vector)
 };
 
 }    // namespace LAMMPS_NS

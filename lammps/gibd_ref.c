@@ -4,7 +4,8 @@
      gibd_ref IN OUT steps dt tau xi xip kT Rc density norm seed noise f sigma eps rcut
    IN: write_dump custom id x y z vx vy vz, sorted by id (tags 1..n); OUT:
    "id x y z vx vy vz" after `steps` steps, wrapped into the box; stdout:
-   the pair energy of IN.  f = 0:
+   the pair energy of IN, then hcbd_friction_average (nk = 1) of the
+   configuration the last step starts from (fix gibd's vector with fric).  f = 0:
    ideal carriers; otherwise the star potential (2014 eq. 28, from the
    formula, not the force table).  noise: gauss or uniform. */
 #define HCBD_IMPLEMENTATION
@@ -20,7 +21,7 @@ int main(int argc, char **argv)
     hcbd_params *p = &def.params;
     hcbd_world w;
     char line[512];
-    double lo[3], hi[3], *x, *v;
+    double lo[3], hi[3], fr[3], *x, *v;
     int n = 0, i, d, steps;
     FILE *in, *out;
     if (argc != 18) {
@@ -72,10 +73,12 @@ int main(int argc, char **argv)
         return 1;
     }
     printf("%.17g\n", hcbd_potential_energy(&w));
-    if (hcbd_step(&w, steps) != HCBD_OK) {
+    if (steps < 1 || hcbd_step(&w, steps - 1) != HCBD_OK || hcbd_friction_average(&w, 1, fr) != HCBD_OK ||
+        hcbd_step(&w, 1) != HCBD_OK) {
         fprintf(stderr, "gibd_ref: %s\n", w.err.msg);
         return 1;
     }
+    printf("%.17g %.17g %.17g\n", fr[0], fr[1], fr[2]);
     hcbd_get_positions(&w, x, 0);
     hcbd_get_velocities(&w, v);
     out = fopen(argv[2], "w");
