@@ -709,8 +709,10 @@ double hcbd_wendland_dr(double r, double Rc);
 double hcbd_star_potential(double r, double f, double sigma, double eps);
 double hcbd_star_force(double r, double f, double sigma, double eps);
 /* The same force divided by r, at r^2 = r2, from precomputed constants, as
-   the world's pair pass evaluates it (for a pair style: no pow per pair). */
-hcbd_result hcbd_star_coef_of(double f, double sigma, double eps, hcbd_star_coef *c);
+   the world's pair pass evaluates it (for a pair style: no pow per pair).
+   hcbd_star_coef_of names a bad f, sigma or eps in msg (may be NULL). */
+hcbd_result hcbd_star_coef_of(double f, double sigma, double eps, hcbd_star_coef *c,
+                              char *msg, size_t msg_size);
 double hcbd_star_force_over_r(const hcbd_star_coef *c, double r2);
 
 #if HCBD_MODEL == HCBD_MODEL_HCBD
@@ -1830,11 +1832,16 @@ static inline double hcbd__star_force_over_r(const hcbd_star_coef *c, double r, 
     return c->ab * exp(c->s - c->s_sigma * r) * (c->sigma * ir + c->s) * ir * ir;
 }
 
-hcbd_result hcbd_star_coef_of(double f, double sigma, double eps, hcbd_star_coef *c)
+hcbd_result hcbd_star_coef_of(double f, double sigma, double eps, hcbd_star_coef *c,
+                              char *msg, size_t msg_size)
 {
-    if (!c) return HCBD_ERR_NULL;
-    if (!(isfinite(f) && f > 0 && isfinite(sigma) && sigma > 0 && isfinite(eps) && eps > 0))
-        return HCBD_ERR_PARAM;
+    if (!c) {
+        if (msg && msg_size) snprintf(msg, msg_size, "c is NULL");
+        return HCBD_ERR_NULL;
+    }
+    HCBD__CHECK(isfinite(f) && f > 0, "f", f);
+    HCBD__CHECK(isfinite(sigma) && sigma > 0, "sigma", sigma);
+    HCBD__CHECK(isfinite(eps) && eps > 0, "eps", eps);
     hcbd__star_coef(f, sigma, eps, c);
     return HCBD_OK;
 }

@@ -41,6 +41,7 @@ expect() {
 fixline='s/^fix  *g all gibd .*/fix g all gibd'
 expect "tau = -1" "$fixline tau -1/"
 expect "tau = abc is not a number" "$fixline tau abc/"
+expect "kT = 0 must be positive" "$fixline kT 0/"
 expect "unknown keyword bogus" "$fixline bogus 1/"
 expect "keyword seed has no value" "$fixline seed/"
 expect "fric = 0 is not a positive integer" "$fixline fric 0/"
@@ -62,21 +63,23 @@ expect "pair_coeff I J f sigma" 's/${f} ${sigma} ${eps}/${f}/' star
 # hcbd_potential_energy and the fix's friction averages (fric) against
 # hcbd_friction_average
 cc -O2 -std=c99 -I"$root" -o "$t/gibd_ref" "$root/lammps/gibd_ref.c" -lm
+# agree A B TOL: the numbers of the strings A and B, one by one, within TOL
+# relative (and as many, and positive)
+agree() {
+    awk -v a="$1" -v b="$2" -v tol="$3" 'BEGIN {
+        n = split(a, x); if (n == 0 || n != split(b, y)) exit 1
+        for (k = 1; k <= n; ++k) { d = x[k] - y[k]; if (d < 0) d = -d; if (!(y[k] > 0 && d <= tol * y[k])) exit 1 } }'
+}
 compare() {
-    name=$1 np=$2 tau=$3 xi=$4 xip=$5 kT=$6 dt=$7 norm=$8 noise=$9 f=${10} seed=11
+    name=$1 np=$2 tau=$3 xi=$4 xip=$5 kT=$6 dt=$7 norm=$8 noise=$9 f=${10} sigma=${11} eps=${12} seed=11
     if ! $MPI -np "$np" "$lmp" -in "$root/lammps/in.gibd_compare" -var plugin "$plug" -var tau "$tau" -var xi "$xi" \
         -var xip "$xip" -var kT "$kT" -var dt "$dt" -var norm "$norm" -var noise "$noise" -var f "$f" \
-        -var seed $seed -var start "$t/c0.txt" -var end "$t/c1.txt" -var pe "$t/pe.txt" -var fric "$t/fr.txt" \
-        -log none -screen none \
-        > /dev/null 2>&1; then bad "$name: LAMMPS failed"; return; fi
+        -var sigma "$sigma" -var eps "$eps" -var seed $seed -var start "$t/c0.txt" -var end "$t/c1.txt" \
+        -var pe "$t/pe.txt" -var fric "$t/fr.txt" -log none -screen none > /dev/null 2>&1; then
+        bad "$name: LAMMPS failed"; return
+    fi
     if ! "$t/gibd_ref" "$t/c0.txt" "$t/cr.txt" 20 "$dt" "$tau" "$xi" "$xip" "$kT" 2.5 0.24 "$norm" $seed \
-        "$noise" "$f" 1 1 2.5 > "$t/ref.txt"; then bad "$name: gibd_ref failed"; return; fi
-    pe=$(sed -n 1p "$t/ref.txt")
-    if awk 'NR == FNR { for (c = 1; c <= 3; ++c) a[c] = $c; next }
-        FNR == 2 { seen = 1; for (c = 1; c <= 3; ++c) { d = $c - a[c]; if (d < 0) d = -d; if (!(a[c] > 0 && d < 1e-10 * a[c])) bad = 1 } }
-        END { exit bad || !seen }' "$t/fr.txt" "$t/ref.txt"; then
-        ok "$name: fric's friction averages = hcbd_friction_average ($(cat "$t/fr.txt"))"
-    else bad "$name: fric's friction averages $(cat "$t/fr.txt"), hcbd's $(sed -n 2p "$t/ref.txt")"; fi
+        "$noise" "$f" "$sigma" "$eps" 2.5 > "$t/ref.txt"; then bad "$name: gibd_ref failed"; return; fi
     Lc=$(awk 'NR == 6 { printf "%.17g", $2 - $1 }' "$t/c0.txt")
     vth=$(awk -v kT="$kT" -v m="$(awk -v a="$xip" -v b="$tau" 'BEGIN { print a * b }')" 'BEGIN { print sqrt(kT / m) }')
     read -r dx dv n < <(awk -v L="$Lc" -f "$root/lammps/maxdiff.awk" "$t/c1.txt" "$t/cr.txt")
@@ -86,14 +89,20 @@ compare() {
         'BEGIN { exit !(n == 512 && dx < 1e-9 && dv < 1e-8 * u && mx > 0.01 && mv > 0.5 * u) }'; then
         ok "$name: 20 steps of fix gibd = hcbd's world, atom by atom"
     else bad "$name: fix gibd and hcbd's world part: |dx| $dx, |dv| $dv"; fi
+    # pe.txt: the pair energy and fric's vector of the start (setup); fr.txt:
+    # fric's vector of the last step; ref.txt: hcbd's, in the same order
+    read -r pe0 fr0 < "$t/pe.txt"; read -r rpe rfr0 < <(sed -n 1p "$t/ref.txt")
+    fr1=$(cat "$t/fr.txt"); rfr1=$(sed -n 2p "$t/ref.txt")
+    if agree "$fr0" "$rfr0" 1e-10 && agree "$fr1" "$rfr1" 1e-10; then
+        ok "$name: fric's friction averages at the start and the end = hcbd_friction_average ($fr1)"
+    else bad "$name: fric's friction averages $fr0 / $fr1, hcbd's $rfr0 / $rfr1"; fi
     if [ "$f" != 0 ]; then
-        if awk -v a="$(cat "$t/pe.txt")" -v b="$pe" 'BEGIN { d = a - b; if (d < 0) d = -d; exit !(b > 0 && d < 1e-12 * b) }'
-        then ok "$name: pair_style star energy = hcbd_potential_energy ($pe)"
-        else bad "$name: pair_style star energy $(cat "$t/pe.txt"), hcbd's $pe"; fi
+        if agree "$pe0" "$rpe" 1e-12; then ok "$name: pair_style star energy = hcbd_potential_energy ($rpe)"
+        else bad "$name: pair_style star energy $pe0, hcbd's $rpe"; fi
     fi
 }
-compare "ideal, 2016 density, Gaussian" 1 3e-3 1.3 0.8 0.9 2e-4 2016 gauss 0
-compare "stars, 2014 density, uniform, 2 ranks" 2 5e-3 0.7 1.6 1.3 1e-4 2014 uniform 128
+compare "ideal, 2016 density, Gaussian" 1 3e-3 1.3 0.8 0.9 2e-4 2016 gauss 0 1 1
+compare "stars (sigma 0.9, eps 1.2), 2014 density, uniform, 2 ranks" 2 5e-3 0.7 1.6 1.3 1e-4 2014 uniform 128 0.9 1.2
 if [ -n "${HCBD_LAMMPS_QUICK:-}" ]; then # lammps/mutants.sh: the checks up to here
     echo "$pass passed, $fail failed"
     [ $fail -eq 0 ]; exit
@@ -177,7 +186,7 @@ for np in 1 2 4; do
     if within "$M" "$eM" "$hM" "$heM"; then ok "$np ranks: MSD(0.15) agrees with hcbd's"
     else bad "$np ranks: MSD(0.15) $M +- $eM, hcbd's $hM +- $heM"; fi
     # N m sqrt(kT/m) ~ 30: round-off over the run is far below 1e-9
-    if awk -v p="$P" 'BEGIN { exit !(p < 1e-9) }'; then ok "$np ranks: total momentum stays zero (max $P)"
+    if awk -v p="$P" 'BEGIN { exit !(p != "" && p < 1e-9) }'; then ok "$np ranks: total momentum stays zero (max $P)"
     else bad "$np ranks: total momentum drifts to $P"; fi
 done
 

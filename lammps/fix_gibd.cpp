@@ -8,7 +8,8 @@
 //   x_i   += v_i dt + F_i dt / xi + sqrt(2 kT dt / xi) zeta_i
 //   v_i   += F_i dt / m + sum_j dp_ij / m,                m = xi' tau
 // With fric N, on every N-th step, the fix's global vector holds
-// hcbd_friction_average (nk = 1) of the configuration the step starts from:
+// hcbd_friction_average (nk = 1) of the configuration the step starts from
+// (at a run's first step, by setup(), of that step's configuration):
 // <sum_j f_ij>, <sum_j f_ij r_ij^2>, <sum_j f_ij (1 - cos k.x_ij)>, f_ij =
 // S_ij / m, k = 2 pi / L_d averaged over d; nu_meanfield = [3] / (tau k^2).
 // Each pair is evaluated once (a half list, newton on), its noise keyed by
@@ -90,6 +91,8 @@ FixGIBD::FixGIBD(LAMMPS *lmp, int narg, char **arg) :
     }
   }
   if (igroup != 0) error->all(FLERR, "fix gibd: the group must be all (densities sum over every atom)");
+  // the fixed-point grid of the pair sums is scaled by the thermal speed
+  if (!(p.kT > 0)) error->all(FLERR, "fix gibd: kT = {} must be positive (no deterministic GI-BD here)", p.kT);
   time_integrate = 1;
   comm_forward = 1;
   comm_reverse = 3;
@@ -143,14 +146,12 @@ void FixGIBD::init_list(int, NeighList *ptr)
   list = ptr;
 }
 
-void FixGIBD::final_integrate()
+// 1 / rho of owned and ghost atoms from the positions of now
+void FixGIBD::densities()
 {
-  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
-  const double Rc2 = p.Rc * p.Rc, dt = p.dt, m = c.m;
-  const double bd = std::sqrt(2.0 * p.kT * dt / p.xi), two_kT = 2.0 * p.kT;
-  const int64_t step = update->ntimestep - 1; // hcbd's step counter: the step being made
-  double **x = atom->x, **v = atom->v, **f = atom->f;
-  tagint *tag = atom->tag;
+  const int nall = atom->nlocal + atom->nghost;
+  const double Rc2 = p.Rc * p.Rc;
+  double **x = atom->x;
   const int inum = list->inum, *ilist = list->ilist, *numneigh = list->numneigh;
   int **firstneigh = list->firstneigh;
 
@@ -176,15 +177,60 @@ void FixGIBD::final_integrate()
   }
   nacc = 1;
   comm->reverse_comm_fix(this, 1);
-  for (int i = 0; i < nlocal; ++i) inv_rho[i] = 1.0 / hcbd_gibd_density(&c, (double) acc[i] / wscale);
+  for (int i = 0; i < atom->nlocal; ++i) inv_rho[i] = 1.0 / hcbd_gibd_density(&c, (double) acc[i] / wscale);
   comm->forward_comm_fix(this);
+}
 
-  // every velocity change from the velocities of t, then the updates
-  std::memset(acc, 0, sizeof(int64_t) * 3 * nall);
-  const bool fr = fric_every && update->ntimestep % fric_every == 0;
-  const double fscale = p.tau / (dt * m); // f_ij = S_ij / m = sdt tau / (m dt)
+// fric: hcbd_friction_average (nk = 1) of the positions and densities of now
+void FixGIBD::friction_averages()
+{
+  const double Rc2 = p.Rc * p.Rc, fscale = p.tau / (p.dt * c.m); // f_ij = S_ij / m = sdt tau / (m dt)
+  double **x = atom->x;
+  const int inum = list->inum, *ilist = list->ilist, *numneigh = list->numneigh;
+  int **firstneigh = list->firstneigh;
   double k[3], fs[3] = {0, 0, 0};
   for (int d = 0; d < 3; ++d) k[d] = 2.0 * MathConst::MY_PI / domain->prd[d];
+  for (int ii = 0; ii < inum; ++ii) {
+    const int i = ilist[ii];
+    for (int jj = 0; jj < numneigh[i]; ++jj) {
+      const int j = firstneigh[i][jj] & NEIGHMASK;
+      const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
+      const double r2 = dx * dx + dy * dy + dz * dz;
+      if (r2 >= Rc2) continue;
+      const double fij = hcbd_gibd_sdt(&c, std::sqrt(r2), inv_rho[i], inv_rho[j]) * fscale;
+      fs[0] += 2.0 * fij;
+      fs[1] += 2.0 * fij * r2;
+      fs[2] += 2.0 * fij * ((1.0 - std::cos(k[0] * dx)) + (1.0 - std::cos(k[1] * dy)) +
+                            (1.0 - std::cos(k[2] * dz))) / 3.0;
+    }
+  }
+  MPI_Allreduce(fs, fric, 3, MPI_DOUBLE, MPI_SUM, world);
+  for (int d = 0; d < 3; ++d) fric[d] /= (double) atom->natoms;
+}
+
+// the vector at the run's first step, when that is one of its steps
+void FixGIBD::setup(int)
+{
+  if (!fric_every || update->ntimestep % fric_every) return;
+  densities();
+  friction_averages();
+}
+
+void FixGIBD::final_integrate()
+{
+  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
+  const double Rc2 = p.Rc * p.Rc, dt = p.dt, m = c.m;
+  const double bd = std::sqrt(2.0 * p.kT * dt / p.xi), two_kT = 2.0 * p.kT;
+  const int64_t step = update->ntimestep - 1; // hcbd's step counter: the step being made
+  double **x = atom->x, **v = atom->v, **f = atom->f;
+  tagint *tag = atom->tag;
+  const int inum = list->inum, *ilist = list->ilist, *numneigh = list->numneigh;
+  int **firstneigh = list->firstneigh;
+
+  densities();
+  if (fric_every && update->ntimestep % fric_every == 0) friction_averages();
+  // every velocity change from the velocities of t, then the updates
+  std::memset(acc, 0, sizeof(int64_t) * 3 * nall);
   for (int ii = 0; ii < inum; ++ii) {
     const int i = ilist[ii];
     const int32_t ti = (int32_t) (tag[i] - 1);
@@ -198,23 +244,12 @@ void FixGIBD::final_integrate()
       const double amp = (ti < tj ? 1.0 : -1.0) * std::sqrt(two_kT * sdt);
       double z[3];
       hcbd_noise_pair(&ns, step, ti, tj, z);
-      if (fr) { // hcbd_friction_average, nk = 1
-        const double fij = sdt * fscale;
-        fs[0] += 2.0 * fij;
-        fs[1] += 2.0 * fij * r2;
-        fs[2] += 2.0 * fij * ((1.0 - std::cos(k[0] * dx)) + (1.0 - std::cos(k[1] * dy)) +
-                              (1.0 - std::cos(k[2] * dz))) / 3.0;
-      }
       for (int d = 0; d < 3; ++d) {
         const int64_t q = llrint((sdt * (v[j][d] - v[i][d]) + amp * z[d]) / m * vscale);
         acc[3 * i + d] += q;
         acc[3 * j + d] -= q;
       }
     }
-  }
-  if (fr) {
-    MPI_Allreduce(fs, fric, 3, MPI_DOUBLE, MPI_SUM, world);
-    for (int d = 0; d < 3; ++d) fric[d] /= (double) atom->natoms;
   }
   nacc = 3;
   comm->reverse_comm_fix(this, 3);

@@ -22,6 +22,7 @@ class FixGIBD : public Fix {
   int setmask() override;
   void init() override;
   void init_list(int, class NeighList *) override;
+  void setup(int) override;
   void final_integrate() override;
   int pack_forward_comm(int, int *, double *, int, int *) override;
   void unpack_forward_comm(int, int, double *) override;
@@ -31,6 +32,8 @@ class FixGIBD : public Fix {
   double memory_usage() override;
 
  private:
+  void densities();
+  void friction_averages();
   hcbd_params p;            // the model's parameters (dt and box from LAMMPS)
   hcbd_gibd_coef c;         // its pair coefficients (hcbd_gibd_coef_of)
   hcbd_noise_stream ns;     // pair and Brownian noise keyed by (seed, step, ids)

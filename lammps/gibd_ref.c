@@ -4,8 +4,8 @@
      gibd_ref IN OUT steps dt tau xi xip kT Rc density norm seed noise f sigma eps rcut
    IN: write_dump custom id x y z vx vy vz, sorted by id (tags 1..n); OUT:
    "id x y z vx vy vz" after `steps` steps, wrapped into the box; stdout:
-   the pair energy of IN, then hcbd_friction_average (nk = 1) of the
-   configuration the last step starts from (fix gibd's vector with fric).  f = 0:
+   the pair energy and hcbd_friction_average (nk = 1) of IN, then that of
+   the configuration the last step starts from (fix gibd's vector, fric).  f = 0:
    ideal carriers; otherwise the star potential (2014 eq. 28, from the
    formula, not the force table).  noise: gauss or uniform. */
 #define HCBD_IMPLEMENTATION
@@ -72,7 +72,11 @@ int main(int argc, char **argv)
         fprintf(stderr, "gibd_ref: %s\n", w.err.msg);
         return 1;
     }
-    printf("%.17g\n", hcbd_potential_energy(&w));
+    if (hcbd_friction_average(&w, 1, fr) != HCBD_OK) {
+        fprintf(stderr, "gibd_ref: %s\n", w.err.msg);
+        return 1;
+    }
+    printf("%.17g %.17g %.17g %.17g\n", hcbd_potential_energy(&w), fr[0], fr[1], fr[2]);
     if (steps < 1 || hcbd_step(&w, steps - 1) != HCBD_OK || hcbd_friction_average(&w, 1, fr) != HCBD_OK ||
         hcbd_step(&w, 1) != HCBD_OK) {
         fprintf(stderr, "gibd_ref: %s\n", w.err.msg);

@@ -44,11 +44,13 @@ pair_noise|fix_gibd.cpp|std::sqrt(two_kT * sdt)|std::sqrt(2.2 * p.kT * sdt)
 pair_mass|fix_gibd.cpp|+ amp * z[d]) / m * vscale|+ amp * z[d]) / (1.1 * m) * vscale
 weight_of_partner|fix_gibd.cpp|acc[j] += w;|acc[j] += w + w / 10;
 reaction_on_partner|fix_gibd.cpp|acc[3 * j + d] -= q;|acc[3 * j + d] -= q + q / 10;
-fric_scale|fix_gibd.cpp|const double fscale = p.tau / (dt * m);|const double fscale = 1.1 * p.tau / (dt * m);
+fric_scale|fix_gibd.cpp|fscale = p.tau / (p.dt * c.m);|fscale = 1.1 * p.tau / (p.dt * c.m);
 fric_wave|fix_gibd.cpp|fs[2] += 2.0 * fij|fs[2] += 2.2 * fij
 density|fix_gibd.cpp|inv_rho[i] = 1.0 / hcbd_gibd_density|inv_rho[i] = 1.1 / hcbd_gibd_density
 noise_step|fix_gibd.cpp|update->ntimestep - 1;|update->ntimestep;
 star_force|pair_star.cpp|const double fpair = hcbd_star_force_over_r(|const double fpair = 1.1 * hcbd_star_force_over_r(
+star_sigma|pair_star.cpp|sigma[i][j] = s1;|sigma[i][j] = 1.1 * s1;
+star_eps|pair_star.cpp|eps[i][j] = e1;|eps[i][j] = 1.1 * e1;
 star_energy|pair_star.cpp|const double e = eflag ? hcbd_star_potential(|const double e = eflag ? 1.1 * hcbd_star_potential(
 LIST
 echo "mutants-lammps: $missed missed"

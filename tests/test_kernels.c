@@ -74,7 +74,8 @@ void test_star_force_over_r(void)
     hcbd_star_coef c;
     int k;
     for (k = 0; k < 3; ++k) {
-        CHECK(hcbd_star_coef_of(f[k], sg[k], eps[k], &c) == HCBD_OK, "coef_of(%g, %g, %g)", f[k], sg[k], eps[k]);
+        CHECK(hcbd_star_coef_of(f[k], sg[k], eps[k], &c, NULL, 0) == HCBD_OK, "coef_of(%g, %g, %g)", f[k], sg[k],
+              eps[k]);
         for (r = 0.05 * sg[k]; r < 3 * sg[k]; r += 0.0173 * sg[k]) {
             double ref = hcbd_star_force(r, f[k], sg[k], eps[k]) / r;
             worst = fmax(worst, fabs(hcbd_star_force_over_r(&c, r * r) / ref - 1));
@@ -82,10 +83,17 @@ void test_star_force_over_r(void)
     }
     NOTE("largest relative difference %.2g", worst);
     CHECK(worst < 1e-13, "hcbd_star_force_over_r off hcbd_star_force / r by %g", worst);
-    CHECK(hcbd_star_coef_of(0, 1, 1, &c) == HCBD_ERR_PARAM, "f = 0 accepted");
-    CHECK(hcbd_star_coef_of(128, -1, 1, &c) == HCBD_ERR_PARAM, "sigma = -1 accepted");
-    CHECK(hcbd_star_coef_of(128, 1, NAN, &c) == HCBD_ERR_PARAM, "eps = nan accepted");
-    CHECK(hcbd_star_coef_of(128, 1, 1, NULL) == HCBD_ERR_NULL, "NULL accepted");
+    {
+        char msg[128];
+        CHECK(hcbd_star_coef_of(0, 1, 1, &c, msg, sizeof msg) == HCBD_ERR_PARAM && strstr(msg, "f = 0"),
+              "f = 0: %s", msg);
+        CHECK(hcbd_star_coef_of(128, -1, 1, &c, msg, sizeof msg) == HCBD_ERR_PARAM && strstr(msg, "sigma = -1"),
+              "sigma = -1: %s", msg);
+        CHECK(hcbd_star_coef_of(128, 1, NAN, &c, msg, sizeof msg) == HCBD_ERR_PARAM && strstr(msg, "eps = nan"),
+              "eps = nan: %s", msg);
+        CHECK(hcbd_star_coef_of(128, 1, 1, NULL, msg, sizeof msg) == HCBD_ERR_NULL && strstr(msg, "NULL"),
+              "c = NULL: %s", msg);
+    }
 }
 
 /* Total force on each particle, from one BD step with kT = 0 (dR = F dt /
