@@ -124,7 +124,7 @@ test-lammps: lammps $(B)/gibd_bulk
 	lammps/check.sh
 
 # make mutants-lammps: every injected error of the plugin is caught by the
-# atom-by-atom part of test-lammps (lammps/mutants.sh, ~3 min)
+# atom-by-atom part of test-lammps (lammps/mutants.sh, ~4 min)
 mutants-lammps: lammps
 	lammps/mutants.sh
 
