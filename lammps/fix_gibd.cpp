@@ -146,14 +146,26 @@ void FixGIBD::init_list(int, NeighList *ptr)
   list = ptr;
 }
 
+// every pair of the half list within Rc, once: fn(i, j, dx, dy, dz, r2)
+template <class F> static void each_pair(NeighList *list, double **x, double Rc, F fn)
+{
+  const double Rc2 = Rc * Rc;
+  for (int ii = 0; ii < list->inum; ++ii) {
+    const int i = list->ilist[ii];
+    const int *jlist = list->firstneigh[i];
+    for (int jj = 0; jj < list->numneigh[i]; ++jj) {
+      const int j = jlist[jj] & NEIGHMASK;
+      const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
+      const double r2 = dx * dx + dy * dy + dz * dz;
+      if (r2 < Rc2) fn(i, j, dx, dy, dz, r2);
+    }
+  }
+}
+
 // 1 / rho of owned and ghost atoms from the positions of now
 void FixGIBD::densities()
 {
   const int nall = atom->nlocal + atom->nghost;
-  const double Rc2 = p.Rc * p.Rc;
-  double **x = atom->x;
-  const int inum = list->inum, *ilist = list->ilist, *numneigh = list->numneigh;
-  int **firstneigh = list->firstneigh;
 
   if (atom->nmax > nmax) {
     memory->destroy(inv_rho);
@@ -163,18 +175,11 @@ void FixGIBD::densities()
     memory->create(acc, 3 * nmax, "gibd:acc");
   }
   std::memset(acc, 0, sizeof(int64_t) * nall);
-  for (int ii = 0; ii < inum; ++ii) {
-    const int i = ilist[ii];
-    for (int jj = 0; jj < numneigh[i]; ++jj) {
-      const int j = firstneigh[i][jj] & NEIGHMASK;
-      const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
-      const double r2 = dx * dx + dy * dy + dz * dz;
-      if (r2 >= Rc2) continue;
-      const int64_t w = llrint(hcbd_gibd_weight(&c, std::sqrt(r2)) * wscale);
-      acc[i] += w;
-      acc[j] += w;
-    }
-  }
+  each_pair(list, atom->x, p.Rc, [this](int i, int j, double, double, double, double r2) {
+    const int64_t w = llrint(hcbd_gibd_weight(&c, std::sqrt(r2)) * wscale);
+    acc[i] += w;
+    acc[j] += w;
+  });
   nacc = 1;
   comm->reverse_comm_fix(this, 1);
   for (int i = 0; i < atom->nlocal; ++i) inv_rho[i] = 1.0 / hcbd_gibd_density(&c, (double) acc[i] / wscale);
@@ -184,26 +189,16 @@ void FixGIBD::densities()
 // fric: hcbd_friction_average (nk = 1) of the positions and densities of now
 void FixGIBD::friction_averages()
 {
-  const double Rc2 = p.Rc * p.Rc, fscale = p.tau / (p.dt * c.m); // f_ij = S_ij / m = sdt tau / (m dt)
-  double **x = atom->x;
-  const int inum = list->inum, *ilist = list->ilist, *numneigh = list->numneigh;
-  int **firstneigh = list->firstneigh;
+  const double fscale = p.tau / (p.dt * c.m); // f_ij = S_ij / m = sdt tau / (m dt)
   double k[3], fs[3] = {0, 0, 0};
   for (int d = 0; d < 3; ++d) k[d] = 2.0 * MathConst::MY_PI / domain->prd[d];
-  for (int ii = 0; ii < inum; ++ii) {
-    const int i = ilist[ii];
-    for (int jj = 0; jj < numneigh[i]; ++jj) {
-      const int j = firstneigh[i][jj] & NEIGHMASK;
-      const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
-      const double r2 = dx * dx + dy * dy + dz * dz;
-      if (r2 >= Rc2) continue;
-      const double fij = hcbd_gibd_sdt(&c, std::sqrt(r2), inv_rho[i], inv_rho[j]) * fscale;
-      fs[0] += 2.0 * fij;
-      fs[1] += 2.0 * fij * r2;
-      fs[2] += 2.0 * fij * ((1.0 - std::cos(k[0] * dx)) + (1.0 - std::cos(k[1] * dy)) +
-                            (1.0 - std::cos(k[2] * dz))) / 3.0;
-    }
-  }
+  each_pair(list, atom->x, p.Rc, [&](int i, int j, double dx, double dy, double dz, double r2) {
+    const double fij = hcbd_gibd_sdt(&c, std::sqrt(r2), inv_rho[i], inv_rho[j]) * fscale;
+    fs[0] += 2.0 * fij;
+    fs[1] += 2.0 * fij * r2;
+    fs[2] += 2.0 * fij * ((1.0 - std::cos(k[0] * dx)) + (1.0 - std::cos(k[1] * dy)) +
+                          (1.0 - std::cos(k[2] * dz))) / 3.0;
+  });
   MPI_Allreduce(fs, fric, 3, MPI_DOUBLE, MPI_SUM, world);
   for (int d = 0; d < 3; ++d) fric[d] /= (double) atom->natoms;
 }
@@ -219,38 +214,28 @@ void FixGIBD::setup(int)
 void FixGIBD::final_integrate()
 {
   const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
-  const double Rc2 = p.Rc * p.Rc, dt = p.dt, m = c.m;
+  const double dt = p.dt, m = c.m;
   const double bd = std::sqrt(2.0 * p.kT * dt / p.xi), two_kT = 2.0 * p.kT;
   const int64_t step = update->ntimestep - 1; // hcbd's step counter: the step being made
   double **x = atom->x, **v = atom->v, **f = atom->f;
-  tagint *tag = atom->tag;
-  const int inum = list->inum, *ilist = list->ilist, *numneigh = list->numneigh;
-  int **firstneigh = list->firstneigh;
+  const tagint *tag = atom->tag;
 
   densities();
   if (fric_every && update->ntimestep % fric_every == 0) friction_averages();
   // every velocity change from the velocities of t, then the updates
   std::memset(acc, 0, sizeof(int64_t) * 3 * nall);
-  for (int ii = 0; ii < inum; ++ii) {
-    const int i = ilist[ii];
-    const int32_t ti = (int32_t) (tag[i] - 1);
-    for (int jj = 0; jj < numneigh[i]; ++jj) {
-      const int j = firstneigh[i][jj] & NEIGHMASK;
-      const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
-      const double r2 = dx * dx + dy * dy + dz * dz;
-      if (r2 >= Rc2) continue;
-      const int32_t tj = (int32_t) (tag[j] - 1);
-      const double sdt = hcbd_gibd_sdt(&c, std::sqrt(r2), inv_rho[i], inv_rho[j]);
-      const double amp = (ti < tj ? 1.0 : -1.0) * std::sqrt(two_kT * sdt);
-      double z[3];
-      hcbd_noise_pair(&ns, step, ti, tj, z);
-      for (int d = 0; d < 3; ++d) {
-        const int64_t q = llrint((sdt * (v[j][d] - v[i][d]) + amp * z[d]) / m * vscale);
-        acc[3 * i + d] += q;
-        acc[3 * j + d] -= q;
-      }
+  each_pair(list, x, p.Rc, [&](int i, int j, double, double, double, double r2) {
+    const int32_t ti = (int32_t) (tag[i] - 1), tj = (int32_t) (tag[j] - 1);
+    const double sdt = hcbd_gibd_sdt(&c, std::sqrt(r2), inv_rho[i], inv_rho[j]);
+    const double amp = (ti < tj ? 1.0 : -1.0) * std::sqrt(two_kT * sdt);
+    double z[3];
+    hcbd_noise_pair(&ns, step, ti, tj, z);
+    for (int d = 0; d < 3; ++d) {
+      const int64_t q = llrint((sdt * (v[j][d] - v[i][d]) + amp * z[d]) / m * vscale);
+      acc[3 * i + d] += q;
+      acc[3 * j + d] -= q;
     }
-  }
+  });
   nacc = 3;
   comm->reverse_comm_fix(this, 3);
   for (int i = 0; i < nlocal; ++i) {
