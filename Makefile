@@ -201,7 +201,7 @@ test-tsan: $(B)/run_tests_tsan | $(B)/logs
 	$(TSAN_ENV) ./$(B)/run_tests_tsan --quick test_determinism test_checkpoint_restart $(call LOG,tsan)
 
 test-tsan-hcbd: $(B)/run_tests_hcbd_tsan | $(B)/logs
-	$(TSAN_ENV) ./$(B)/run_tests_hcbd_tsan --quick test_hc_determinism test_hc_checkpoint $(call LOG,tsan-hcbd)
+	$(TSAN_ENV) ./$(B)/run_tests_hcbd_tsan --quick test_hc_determinism test_hc_sweep_blocks test_hc_checkpoint $(call LOG,tsan-hcbd)
 
 # Fuzzing (not part of make test): libFuzzer on the examples' argument
 # parser and on the checkpoint loaders, FUZZ_TIME seconds each; new

@@ -752,9 +752,13 @@ typedef struct hcbd_hc_params {
     double chi;           /* Flory-Huggins parameter                        */
     hcbd_coupling coupling;
     /* Integration (not in the paper).  pair_integrator: HCBD_PAIR_SHARDLOW
-       solves each fluid pair's viscous friction and noise exactly in a
-       serial sweep (no O(dt) temperature excess); the pressure stays
-       explicit.  substeps: fluid steps of dt/substeps per polymer step of
+       (the default) solves each fluid pair's viscous friction and noise
+       exactly, in a sweep whose order the positions and ids set (threaded
+       over blocks of one colour; no O(dt) temperature excess, stable at
+       any viscous dt); the pressure stays explicit.  HCBD_PAIR_EULER is
+       the paper's explicit pair step (2018 eq. 18-19): its temperature
+       runs hot by about 0.33 dt/dt_visc (hcbd_hc_stability), and it is
+       unstable beyond about 2.8 dt_visc.  substeps: fluid steps of dt/substeps per polymer step of
        dt (multiple time stepping); the polymer forces on the fluid are
        held over the step and the polymers move with the fluid velocity
        interpolated at its start, as with substeps = 1. */
@@ -867,6 +871,9 @@ typedef struct hcbd_hc_world {
        sits at slot fslot[i]; the lists lf and lx index these slots */
     int32_t *fid, *fslot;
     hcbd_real *sx, *sy, *sz, *svx, *svy, *svz, *sn, *sP, *sIn; /* sIn = 1/n */
+    /* the exact fluid sweep's blocks (hcbd__hc_fluid_shardlow): each
+       slot's block, the slots block by block, and the blocks' starts */
+    int32_t *sw_blk, *sw_list, *sw_start;
     double skin;
     /* the fluid's pair sums of one step in 64-bit fixed point (see
        hcbd__fix): weights and pair forces */
@@ -3421,13 +3428,16 @@ static hcbd_result hcbd__forces(hcbd_world *w, int dens)
 
 /* 1 - e^{-x} for x >= 0: the series for small x (the usual case, 2 f dt/tau
    ~ 0.05), which is exact to a few ulp and far cheaper than expm1 */
+static inline double hcbd__one_minus_exp_series(double x)
+{
+    return x * (1 - x * (1.0 / 2) * (1 - x * (1.0 / 3) * (1 - x * (1.0 / 4) * (1 - x * (1.0 / 5) *
+           (1 - x * (1.0 / 6) * (1 - x * (1.0 / 7) * (1 - x * (1.0 / 8) * (1 - x * (1.0 / 9) *
+           (1 - x * (1.0 / 10))))))))));
+}
+
 static inline double hcbd__one_minus_exp(double x)
 {
-    if (x < 0.125)
-        return x * (1 - x * (1.0 / 2) * (1 - x * (1.0 / 3) * (1 - x * (1.0 / 4) * (1 - x * (1.0 / 5) *
-               (1 - x * (1.0 / 6) * (1 - x * (1.0 / 7) * (1 - x * (1.0 / 8) * (1 - x * (1.0 / 9) *
-               (1 - x * (1.0 / 10))))))))));
-    return -expm1(-x);
+    return x < 0.125 ? hcbd__one_minus_exp_series(x) : -expm1(-x);
 }
 
 static void hcbd__shardlow_owner(hcbd_world *w, int i, uint64_t skey, uint64_t wkey)
@@ -4970,7 +4980,7 @@ hcbd_result hcbd_hc_params_si(const hcbd_hc_si *si, double time_unit,
     p->P0 = si->P0 * len * time_unit * time_unit / M;
     p->h = si->h_sigma;
     p->fluctuations = 1;
-    p->pair_integrator = HCBD_PAIR_EULER;
+    p->pair_integrator = HCBD_PAIR_SHARDLOW;
     p->substeps = 1;
     p->xi = si->xi * time_unit / M;
     p->sigma = 1.0;
@@ -5148,6 +5158,25 @@ static void hcbd__hc_dims(const hcbd_hc_params *p, double cut, int nc[3])
     }
 }
 
+/* Blocks of the exact fluid sweep along one axis (hcbd__hc_fluid_shardlow):
+   at least reach wide (and a hair more, so that round-off in the block of
+   a blob cannot put a pair two blocks apart), a multiple of 3, or one. */
+static int hcbd__hc_sweep_count(double L, double reach)
+{
+    const double k = floor(L / (reach * (1.0 + 1e-9)));
+    return k >= 3.0 ? 3 * (int)((k > 96.0 ? 96.0 : k) / 3.0) : 1;
+}
+
+/* Blocks along x, y, z at offset tilt t (t = 0: the most along x). */
+static int hcbd__hc_sweep_blocks(const hcbd_hc_params *p, double t, int nb[3])
+{
+    const double cut = 2.0 * p->h;
+    nb[0] = hcbd__hc_sweep_count(p->L[0], cut * sqrt(1.0 + t * t));
+    nb[1] = hcbd__hc_sweep_count(p->L[1], cut);
+    nb[2] = hcbd__hc_sweep_count(p->L[2], cut);
+    return nb[0] * nb[1] * nb[2];
+}
+
 /* Fixed-point bounds of the fluid sums (see hcbd__fixed_scales): a weight
    w(0) = 1/(pi h^3) (exact), and a pair force that alone moves a blob 16 h
    in one fluid step, 16 h m/dt_f^2 (at Table I the resolution is then 1e-7
@@ -5241,6 +5270,11 @@ static size_t hcbd__hc_layout(const hcbd_hc_def *def, hcbd_hc_world *t, char *ba
     HCBD__HA(sx, nf * R); HCBD__HA(sy, nf * R); HCBD__HA(sz, nf * R);
     HCBD__HA(svx, nf * R); HCBD__HA(svy, nf * R); HCBD__HA(svz, nf * R);
     HCBD__HA(sn, nf * R); HCBD__HA(sP, nf * R); HCBD__HA(sIn, nf * R);
+    HCBD__HA(sw_blk, nf * I); HCBD__HA(sw_list, nf * I);
+    {
+        int nb[3];
+        HCBD__HA(sw_start, ((size_t)hcbd__hc_sweep_blocks(p, 0.0, nb) + 1) * I);
+    }
 #undef HCBD__HA
     return off + HCBD__ALIGN;
 }
@@ -6075,65 +6109,176 @@ static inline double hcbd__m4_wdr(double q, double c1h)
 /* HCBD_PAIR_SHARDLOW for the fluid: each pair's Morris friction and noise
    solved exactly in turn (the pair's relative velocity is an Ornstein-
    Uhlenbeck process with rate 2 f/m and variance 2 kT/m, as in
-   hcbd__shardlow), owners i by increasing id, partners j > i by increasing
-   id; serial, so the bits depend neither on threads nor on list builds.
-   The viscous and noise stresses go together into the viscous column. */
-static void hcbd__hc_fluid_shardlow(hcbd_hc_world *w, double dt, uint64_t skey)
+   hcbd__shardlow).  The viscous and noise stresses go together into the
+   viscous column.
+
+   The order of the sweep: each blob, by its present position relative to
+   blob 0, lies in a block of a grid at least 2h wide along each axis (a
+   multiple of 3 blocks, or a single one), and a pair belongs to the block
+   of its owner (the lower id).  A pair reaches at most one block along
+   each axis, so blocks of one colour (each index mod 3) never touch the
+   same blob: the 27 colours run in turn, the blocks of a colour side by
+   side; inside a block, owners by increasing id, partners by increasing
+   id.  Under Lees-Edwards the blocks are cut along u = x - t y, t = s/Ly
+   with the offset s taken in [-Lx/2, Lx/2): an image across the sheared
+   boundary has the same u, so the grid is periodic there too, and a pair
+   within 2h spans at most 2h sqrt(1 + t^2) in u, which the blocks along x
+   are made wide enough for (their count may change as the offset moves).
+   The order is set by positions and ids alone: the bits depend neither on
+   the thread count, nor on the storage, nor on when the lists were built.
+   A box too small for three blocks along every axis sweeps in the same
+   order on one thread. */
+/* One owner's pairs of the sweep, fused with their pressure forces (which
+   need no velocity, so they join the fixed-point sums in any order).  Per
+   chunk of partners the velocity-free part (kernel, rate, 1 - e, pressure)
+   comes first, in a loop without dependences; the chain of velocity
+   updates follows.  Returns the owner's id if a pressure term leaves the
+   fixed-point range, else INT_MAX. */
+static int hcbd__hc_sweep_owner(hcbd_hc_world *w, int i, double dt, uint64_t skey,
+                                const hcbd__box *box)
 {
-    const int n = w->nf, noise = w->noise_f, stress = w->stress_on;
+    const int noise = w->noise_f, stress = w->stress_on;
     const double h = w->p.h, cut2 = 4.0 * h * h, ih = 1.0 / h;
     const double c1h = 1.0 / (4.0 * HCBD__PI * h * h * h * h * h);
-    const double two_eta = 2.0 * w->p.eta, m = w->m, inv_m = w->inv_m, kT = w->p.kT;
-    const double vj = w->le_vjump;
-    const hcbd__box box = hcbd__hc_box(w);
+    const double m = w->m, inv_m = w->inv_m, kT = w->p.kT, vj = w->le_vjump;
+    const double rate = 2.0 * dt * inv_m * 2.0 * w->p.eta * w->sIn[i]; /* 2 f dt/m over wdr/n_j */
+    const double qF = w->qF, lim = w->limF, Pi = w->sP[i];
     hcbd_real *HCBD__RESTRICT vx = w->svx, *HCBD__RESTRICT vy = w->svy, *HCBD__RESTRICT vz = w->svz;
-    const hcbd_real *HCBD__RESTRICT x = w->sx, *HCBD__RESTRICT y = w->sy, *HCBD__RESTRICT z = w->sz;
-    int id, s;
-    for (id = 0; id < n; ++id) {
-        const int i = w->fslot[id]; /* slots: i owner, j partner */
-        const double xi = x[i], yi = y[i], zi = z[i], ini = w->sIn[i];
-        double sv = 0;
-        int32_t p;
-        for (p = w->lf.nb_start[i]; p < w->lf.nb_start[i + 1]; ++p) {
-            const int j = w->lf.nb_j[p];
-            double d[3], r2, om, c, P[3];
-            int k = hcbd__delta_box(&box, xi - x[j], yi - y[j], zi - z[j], d);
-            r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-            if (r2 >= cut2) continue;
-            om = -expm1(-2.0 * dt * inv_m * two_eta * hcbd__m4_wdr(sqrt(r2) * ih, c1h) * ini * w->sIn[j]);
-            c = 0.5 * m * om;
-            P[0] = -c * (vx[i] - vx[j] - k * vj);
-            P[1] = -c * (vy[i] - vy[j]);
-            P[2] = -c * (vz[i] - vz[j]);
+    const hcbd_real *HCBD__RESTRICT In = w->sIn, *HCBD__RESTRICT Pn2 = w->sP;
+    const int32_t *HCBD__RESTRICT fid = w->fid;
+    int64_t *HCBD__RESTRICT aFx = w->aF[0], *HCBD__RESTRICT aFy = w->aF[1];
+    int64_t *HCBD__RESTRICT aFz = w->aF[2];
+    const int32_t pend = w->lf.nb_start[i + 1], idi = fid[i];
+    /* i's velocity stays in registers: no partner is i itself */
+    double vxi = vx[i], vyi = vy[i], vzi = vz[i], sv = 0, sp = 0;
+    int64_t fx = 0, fy = 0, fz = 0;
+    int bad = 0;
+    int32_t p = w->lf.nb_start[i];
+    while (p < pend) {
+        hcbd__near c;
+        double x[HCBD__CHUNK], om[HCBD__CHUNK], fp[HCBD__CHUNK];
+        const int mm = hcbd__gather_at(w->sx, w->sy, w->sz, w->lf.nb_j, box, w->sx[i], w->sy[i],
+                                       w->sz[i], &p, pend, cut2, &c);
+        int t;
+        HCBD__OMP(omp simd)
+        for (t = 0; t < mm; ++t) {
+            const int j = c.j[t];
+            const double wdr = hcbd__m4_wdr(sqrt(c.r2[t]) * ih, c1h);
+            x[t] = rate * wdr * In[j];
+            om[t] = hcbd__one_minus_exp_series(x[t]);
+            fp[t] = (Pi + Pn2[j]) * wdr; /* -(P_i/n_i^2 + P_j/n_j^2) w' e_ij */
+        }
+        for (t = 0; t < mm; ++t)
+            if (!(x[t] < 0.125)) om[t] = -expm1(-x[t]);
+        for (t = 0; t < mm; ++t) {
+            const int j = c.j[t];
+            const double cc = 0.5 * m * om[t];
+            double P[3], F[3];
+            int64_t u;
+            P[0] = -cc * (vxi - vx[j] - c.k[t] * vj);
+            P[1] = -cc * (vyi - vy[j]);
+            P[2] = -cc * (vzi - vz[j]);
             if (noise) {
-                const double b = sqrt(0.5 * kT * m * om * (2.0 - om));
+                const double b = sqrt(0.5 * kT * m * om[t] * (2.0 - om[t]));
                 double z3[3];
-                hcbd__deviates3(w->zig, HCBD_NOISE_GAUSS, hcbd__pair_key(skey, id, w->fid[j]), z3);
+                hcbd__deviates3(w->zig, HCBD_NOISE_GAUSS, hcbd__pair_key(skey, idi, fid[j]), z3);
                 P[0] += b * z3[0];
                 P[1] += b * z3[1];
                 P[2] += b * z3[2];
             }
-            vx[i] = (hcbd_real)(vx[i] + P[0] * inv_m); vx[j] = (hcbd_real)(vx[j] - P[0] * inv_m);
-            vy[i] = (hcbd_real)(vy[i] + P[1] * inv_m); vy[j] = (hcbd_real)(vy[j] - P[1] * inv_m);
-            vz[i] = (hcbd_real)(vz[i] + P[2] * inv_m); vz[j] = (hcbd_real)(vz[j] - P[2] * inv_m);
-            sv += d[1] * P[0] / dt;
-        }
-        if (stress) {
-            w->fs[3 * id + 1] = sv;
-            w->fs[3 * id + 2] = 0;
+            vxi = (hcbd_real)(vxi + P[0] * inv_m); vx[j] = (hcbd_real)(vx[j] - P[0] * inv_m);
+            vyi = (hcbd_real)(vyi + P[1] * inv_m); vy[j] = (hcbd_real)(vy[j] - P[1] * inv_m);
+            vzi = (hcbd_real)(vzi + P[2] * inv_m); vz[j] = (hcbd_real)(vz[j] - P[2] * inv_m);
+            F[0] = fp[t] * c.x[t]; F[1] = fp[t] * c.y[t]; F[2] = fp[t] * c.z[t];
+            bad |= !(fabs(F[0]) <= lim && fabs(F[1]) <= lim && fabs(F[2]) <= lim);
+            u = hcbd__fix(F[0] * qF); fx += u; aFx[j] -= u;
+            u = hcbd__fix(F[1] * qF); fy += u; aFy[j] -= u;
+            u = hcbd__fix(F[2] * qF); fz += u; aFz[j] -= u;
+            sv += c.y[t] * P[0];
+            sp += c.y[t] * F[0];
         }
     }
-    for (s = 0; s < n; ++s) {
-        const int i = w->fid[s];
-        w->fvx[i] = vx[s]; w->fvy[i] = vy[s]; w->fvz[i] = vz[s];
+    vx[i] = (hcbd_real)vxi; vy[i] = (hcbd_real)vyi; vz[i] = (hcbd_real)vzi;
+    aFx[i] += fx; aFy[i] += fy; aFz[i] += fz;
+    if (stress) {
+        w->fs[3 * idi] = sp;
+        w->fs[3 * idi + 1] = sv / dt;
+        w->fs[3 * idi + 2] = 0;
     }
+    return bad ? idi : INT_MAX;
 }
 
-/* The fluid pair forces of the owners: pressure, and with Euler pairs the
-   Morris friction and the pair noise, dp = sqrt(2 kT f_ij dt) zeta_ij on
-   the owner i (the lower id) and minus on j (2018 eq. 18-19). */
-HCBD__INLINE int hcbd__hc_kick_body(hcbd_hc_world *w, int q0, int q1, const int visc,
-                                    const int noise, const int stress)
+static int hcbd__hc_fluid_shardlow(hcbd_hc_world *w, double dt, uint64_t skey)
+{
+    const int n = w->nf, nt = w->p.threads;
+    const double *L = w->p.L;
+    const double s = w->le_on ? w->le_offset - L[0] * floor(w->le_offset / L[0] + 0.5) : 0.0;
+    const double t = s / L[1];
+    const hcbd__box box = hcbd__hc_box(w);
+    /* blocks move with blob 0, so that a boosted copy of the world sweeps
+       in the same order (Galilean invariance of the trajectory) */
+    const int o = w->fslot[0];
+    const double x0 = w->sx[o], y0 = w->sy[o], z0 = w->sz[o];
+    int32_t *HCBD__RESTRICT blk = w->sw_blk, *HCBD__RESTRICT start = w->sw_start;
+    int32_t *HCBD__RESTRICT list = w->sw_list;
+    int nb[3], nblk, q, id, b, worst = INT_MAX;
+    double f[3];
+    (void)nt;
+    nblk = hcbd__hc_sweep_blocks(&w->p, t, nb);
+    f[0] = nb[0] / L[0]; f[1] = nb[1] / L[1]; f[2] = nb[2] / L[2];
+    HCBD__OMP(omp parallel for num_threads(nt) schedule(static))
+    for (q = 0; q < n; ++q) {
+        double r[3];
+        int c[3], d;
+        r[1] = w->sy[q] - y0;
+        r[0] = w->sx[q] - x0 - t * r[1];
+        r[2] = w->sz[q] - z0;
+        for (d = 0; d < 3; ++d) {
+            r[d] -= L[d] * floor(r[d] / L[d]);
+            c[d] = (int)(r[d] * f[d]);
+            if (c[d] > nb[d] - 1) c[d] = nb[d] - 1;
+            if (c[d] < 0) c[d] = 0;
+        }
+        blk[q] = (c[2] * nb[1] + c[1]) * nb[0] + c[0];
+    }
+    /* blocks by counting sort, filled in id order */
+    for (b = 0; b <= nblk; ++b) start[b] = 0;
+    for (q = 0; q < n; ++q) start[blk[q] + 1]++;
+    for (b = 0; b < nblk; ++b) start[b + 1] += start[b];
+    for (id = 0; id < n; ++id) {
+        const int i = w->fslot[id];
+        list[start[blk[i]]++] = i;
+    }
+    for (b = nblk; b > 0; --b) start[b] = start[b - 1];
+    start[0] = 0;
+    HCBD__OMP(omp parallel num_threads(nt) reduction(min:worst))
+    {
+        int col, bb, k;
+        for (col = 0; col < 27; ++col) {
+            HCBD__OMP(omp for schedule(dynamic, 1))
+            for (bb = 0; bb < nblk; ++bb) {
+                const int cx = bb % nb[0], cy = bb / nb[0] % nb[1], cz = bb / (nb[0] * nb[1]);
+                if (cx % 3 + 3 * (cy % 3) + 9 * (cz % 3) != col) continue;
+                for (k = start[bb]; k < start[bb + 1]; ++k) {
+                    const int bad = hcbd__hc_sweep_owner(w, list[k], dt, skey, &box);
+                    if (bad < worst) worst = bad;
+                }
+            }
+        }
+        HCBD__OMP(omp for schedule(static))
+        for (k = 0; k < n; ++k) {
+            const int i = w->fid[k];
+            w->fvx[i] = w->svx[k]; w->fvy[i] = w->svy[k]; w->fvz[i] = w->svz[k];
+        }
+    }
+    return worst;
+}
+
+/* HCBD_PAIR_EULER: the fluid pair forces of the owners, pressure, Morris
+   friction and the pair noise, dp = sqrt(2 kT f_ij dt) zeta_ij on the
+   owner i (the lower id) and minus on j (2018 eq. 18-19). */
+HCBD__INLINE int hcbd__hc_kick_body(hcbd_hc_world *w, int q0, int q1, const int noise,
+                                    const int stress)
 {
     const double h = w->p.h, cut2 = 4.0 * h * h, ih = 1.0 / h;
     const double c1h = 1.0 / (4.0 * HCBD__PI * h * h * h * h * h);
@@ -6172,7 +6317,7 @@ HCBD__INLINE int hcbd__hc_kick_body(hcbd_hc_world *w, int q0, int q1, const int 
                 fp = (Pi + Pn2[j]) * wdr;
                 F[0] = fp * d[0]; F[1] = fp * d[1]; F[2] = fp * d[2];
                 if (stress) sp += d[1] * F[0];
-                if (visc) {
+                {
                     const double f = two_eta * wdr * ini * In[j]; /* Morris */
                     const double Fv0 = -f * (vxi - (vx[j] + k * vj));
                     F[0] += Fv0;
@@ -6197,46 +6342,38 @@ HCBD__INLINE int hcbd__hc_kick_body(hcbd_hc_world *w, int q0, int q1, const int 
         aFx[i] += fx; aFy[i] += fy; aFz[i] += fz;
         if (stress) { /* by id: the sum over blobs in a fixed order */
             w->fs[3 * fid[i]] = sp;
-            if (visc) {
-                w->fs[3 * fid[i] + 1] = sv;
-                w->fs[3 * fid[i] + 2] = sz;
-            }
+            w->fs[3 * fid[i] + 1] = sv;
+            w->fs[3 * fid[i] + 2] = sz;
         }
         if (bad && fid[i] < worst) worst = fid[i];
     }
     return worst;
 }
 
-static int hcbd__hc_kick_p(void *c, int q0, int q1)
-{
-    return hcbd__hc_kick_body((hcbd_hc_world *)c, q0, q1, 0, 0, 0);
-}
-
 static int hcbd__hc_kick_v(void *c, int q0, int q1)
 {
-    return hcbd__hc_kick_body((hcbd_hc_world *)c, q0, q1, 1, 0, 0);
+    return hcbd__hc_kick_body((hcbd_hc_world *)c, q0, q1, 0, 0);
 }
 
 static int hcbd__hc_kick_vn(void *c, int q0, int q1)
 {
-    return hcbd__hc_kick_body((hcbd_hc_world *)c, q0, q1, 1, 1, 0);
+    return hcbd__hc_kick_body((hcbd_hc_world *)c, q0, q1, 1, 0);
 }
 
 static int hcbd__hc_kick_any(void *c, int q0, int q1)
 {
     hcbd_hc_world *w = (hcbd_hc_world *)c;
-    const int visc = w->p.pair_integrator == HCBD_PAIR_EULER;
-    return hcbd__hc_kick_body(w, q0, q1, visc, visc && w->noise_f, w->stress_on);
+    return hcbd__hc_kick_body(w, q0, q1, w->noise_f, w->stress_on);
 }
 
-/* Fluid velocities of t + dt (MODEL 6) into the scratch velocities.  With
-   the Shardlow sweep the viscous pairs are done and only pressure, body and
-   polymer forces remain.  Returns the first blob with a pair force beyond
-   the fixed-point range, or -1. */
+/* Fluid velocities of t + dt (MODEL 6) into the scratch velocities: the
+   pair forces (Euler pairs, or the exact sweep with the pressure fused
+   into it), then body and polymer forces.  Returns the first blob with a
+   pair force beyond the fixed-point range, or -1. */
 static int hcbd__hc_fluid_kick(hcbd_hc_world *w, double dt, uint64_t skey)
 {
     const int n = w->nf, nt = w->p.threads, rp = w->p.reverse_poiseuille;
-    const int visc = w->p.pair_integrator == HCBD_PAIR_EULER, noise = visc && w->noise_f;
+    const int exact = w->p.pair_integrator == HCBD_PAIR_SHARDLOW;
     const double dt_m = dt * w->inv_m, inv_q = 1.0 / w->qF;
     const double gx = w->p.g[0], gy = w->p.g[1], gz = w->p.g[2], half = 0.5 * w->p.L[1];
     double gmean = 0;
@@ -6250,11 +6387,11 @@ static int hcbd__hc_fluid_kick(hcbd_hc_world *w, double dt, uint64_t skey)
     }
     for (d = 0; d < 3; ++d) hcbd__zero64(w->aF[d], n);
     w->kick_key = skey;
-    bad = hcbd__nl_owners(&w->lf, n, nt, w,
-                          w->stress_on ? hcbd__hc_kick_any
-                          : !visc      ? hcbd__hc_kick_p
-                          : noise      ? hcbd__hc_kick_vn
-                                       : hcbd__hc_kick_v);
+    bad = exact ? hcbd__hc_fluid_shardlow(w, dt, skey)
+                : hcbd__nl_owners(&w->lf, n, nt, w,
+                                  w->stress_on ? hcbd__hc_kick_any
+                                  : w->noise_f ? hcbd__hc_kick_vn
+                                               : hcbd__hc_kick_v);
     HCBD__OMP(omp parallel for num_threads(nt) schedule(static))
     for (i = 0; i < n; ++i) {
         const double sgn = rp ? (w->fy[i] >= half ? 1.0 : -1.0) - gmean : 1.0;
@@ -6494,7 +6631,6 @@ hcbd_result hcbd_hc_step(hcbd_hc_world *w, int nsteps)
                                       "dt too long for the sound speed or the flow", i, x);
             }
             hcbd__hc_sync(w); /* velocities may have been set between steps */
-            if (w->p.pair_integrator == HCBD_PAIR_SHARDLOW) hcbd__hc_fluid_shardlow(w, dt_f, skey);
             if ((bad = hcbd__hc_fluid_kick(w, dt_f, skey)) >= 0)
                 return hcbd__fail(&w->err, HCBD_ERR_UNSTABLE, w->step, bad,
                                   "fluid blob %d has a pair force beyond %g (the fixed-point "

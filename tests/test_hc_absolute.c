@@ -424,6 +424,7 @@ void test_hc_abs_one_step(void)
         p->fluctuations = 0;
         p->n_max = 3.0;
         p->g[0] = 0.3; p->g[1] = -0.2; p->g[2] = 0.1;
+        p->pair_integrator = HCBD_PAIR_EULER;
         if (var == 1) p->kT = 0;
         if (var == 2) {
             p->pair_integrator = HCBD_PAIR_SHARDLOW;

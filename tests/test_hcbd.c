@@ -436,6 +436,56 @@ void test_hc_determinism(void)
     }
 }
 
+/* The exact fluid sweep in blocks (6 x 3 x 3 at h = 1.3) under a shear
+   fast enough that the Lees-Edwards offset crosses the box, so that the
+   blocks along x go from 6 to 3 and back: 1, 2 and 3 threads, and lists
+   rebuilt at other steps, give the same bits; and the momentum along y
+   and z (the shear boundary changes only x) is kept to round-off. */
+void test_hc_sweep_blocks_determinism(void)
+{
+    const int steps = 140; /* a multiple of 7 */
+    uint64_t sum[4];
+    double p0[3], p1[3], drift = 0, scale = 1;
+    int t, d;
+    for (t = 0; t < 4; ++t) {
+        hcbd_hc_def dd = hc_scene(12, 5, 5, 60);
+        hcbd_hc_world w;
+        dd.params.h = 1.3;
+        dd.params.gdot = 1.0;
+        dd.params.p_kuhn = 0; /* polymers that exert no force: the fluid's momentum is the sweep's */
+        dd.params.alpha = 0;
+        dd.params.n_max = 3.0;
+        dd.params.threads = t == 1 ? 2 : (t == 2 ? 3 : 1);
+        if (!hc_make(&w, &dd, 60)) return;
+        hcbd_hc_momentum(&w, p0);
+        if (t < 3) {
+            hc_run(&w, steps);
+        } else {
+            int s;
+            for (s = 0; s < steps; s += 7) {
+                hc_run(&w, 7);
+                CHECK(hcbd_hc_refresh(&w) == HCBD_OK, "refresh: %s", w.err.msg);
+            }
+        }
+        if (t == 0) {
+            /* the offset's range: t = s/Ly in [-0.5, 0.5) Lx/Ly reached
+               both sides of the switch from 6 to 3 blocks along x */
+            const double travel = dd.params.gdot * dd.params.L[1] * dd.params.dt * steps;
+            CHECK(travel > dd.params.L[0], "the offset moved %.2f, less than Lx", travel);
+        }
+        hcbd_hc_momentum(&w, p1);
+        for (d = 1; d < 3; ++d) drift += fabs(p1[d] - p0[d]);
+        scale = sqrt(w.nf * w.m * dd.params.kT);
+        sum[t] = hcbd_hc_state_checksum(&w);
+        hcbd_hc_world_destroy(&w);
+    }
+    NOTE("checksums %llx %llx %llx %llx; y, z momentum change %.1e of sqrt(N m kT)", (unsigned long long)sum[0],
+         (unsigned long long)sum[1], (unsigned long long)sum[2], (unsigned long long)sum[3], drift / scale);
+    CHECK(sum[0] == sum[1] && sum[0] == sum[2], "threads 1, 2, 3 differ");
+    CHECK(sum[0] == sum[3], "lists rebuilt at other steps differ");
+    CHECK(drift < 1e-11 * scale, "momentum drift %g", drift / scale);
+}
+
 static void expect_param(const hcbd_hc_def *d, hcbd_result code, const char *name)
 {
     hcbd_hc_world w;
@@ -881,21 +931,31 @@ void test_hc_stability_limits(void)
     d.params.substeps = 4;
     hcbd_hc_stability(&d.params, l, &n);
     CHECK(fabs(l[visc].margin / (4 * b / d.params.dt) - 1) < 1e-12, "sub-steps: margin %g", l[visc].margin);
-    for (f = 0.5; f < 5; f *= 8) {
+    /* the paper's explicit pairs (the last pass: the exact sweep, stable
+       where Euler is not) */
+    for (f = 0.5; f < 40; f *= 8) {
         hcbd_hc_world w;
         hcbd_result r;
+        const int exact = f > 5;
         d = hcbd_hc_def_default();
         d.fluid_capacity = 806;
-        d.params.dt = f * b;
+        d.params.pair_integrator = exact ? HCBD_PAIR_SHARDLOW : HCBD_PAIR_EULER;
+        d.params.dt = (exact ? 4 : f) * b;
         if (hcbd_hc_world_create(&w, &d) != HCBD_OK || hcbd_hc_place_fluid_lattice(&w, 806) != HCBD_OK) {
             CHECK(0, "%s", w.err.msg);
             return;
         }
         r = hcbd_hc_step(&w, t_quick ? 100 : 300);
-        NOTE("dt = %.2f x viscous limit: %s at step %lld, T/kT %.3g", f, hcbd_result_name(r),
+        NOTE("%s, dt = %.2f x viscous limit: %s at step %lld, T/kT %.3g", exact ? "exact sweep" : "Euler",
+             exact ? 4.0 : f, hcbd_result_name(r),
              (long long)w.err.step, hcbd_hc_temperature(&w));
         if (f < 1) CHECK(r == HCBD_OK, "half the viscous limit: %s", w.err.msg);
-        else CHECK(r == HCBD_ERR_UNSTABLE || r == HCBD_ERR_NONFINITE, "4x the limit: %s", hcbd_result_name(r));
+        else if (!exact) CHECK(r == HCBD_ERR_UNSTABLE || r == HCBD_ERR_NONFINITE, "4x the limit: %s", hcbd_result_name(r));
+        else { /* one sample of T: relative error sqrt(2 / (3 N)) */
+            const double T = hcbd_hc_temperature(&w), e = sqrt(2.0 / (3.0 * 806));
+            CHECK(r == HCBD_OK, "the exact sweep at 4x the limit: %s", w.err.msg);
+            CHECK(fabs(T - 1) < 4 * e, "the exact sweep at 4x the limit: T/kT %.3f (+- %.3f)", T, e);
+        }
         hcbd_hc_world_destroy(&w);
     }
 }
