@@ -834,6 +834,109 @@ static void a_fluct_wave(hcbd_pair_integrator pi)
     hcbd_hc_world_destroy(&w);
 }
 
+/* The defaults at Table I and at nearby parameters (viscosity, density,
+   mass density and temperature changed in SI, in a 10^3 sigma^3 box): the
+   kinetic temperature of an equilibrium run is kT within 1 % and the run's
+   error, and the Lees-Edwards viscosity without fluctuations is the one
+   the blobs' positions give a linear profile within 0.5 % (and that is
+   eta within the few per cent the arrangement of ~250 blobs allows: the
+   continuum limit K(0) = 1 has no kernel factor).  The fluid is quenched
+   from the lattice first (no noise, 25 P0), as examples/hcbd_fluid does. */
+void test_hc_abs_default_statics(void)
+{
+    static const struct { double eta, nbar, rho, T; } var[3] = {
+        {1.0, 1.0, 1.0, 1.0}, {0.5, 1.3, 1.0, 1.0}, {1.7, 0.85, 0.8, 1.15}};
+    int v;
+    for (v = 0; v < 3; ++v) {
+        hcbd_hc_si si = hcbd_hc_si_table1();
+        hcbd_hc_def d = hcbd_hc_def_default(), q;
+        hcbd_hc_params *p = &d.params;
+        hcbd_hc_world w;
+        const int nb = 10, every = 10, ns = t_quick ? 300 : 800;
+        double *xyz, *Ts, *dens, Tm, Te, st[HCBD_HC_NSTRESS], eta, gd, eta_pos;
+        int n, i, k, ok;
+        si.eta *= var[v].eta; si.nbar *= var[v].nbar; si.rho *= var[v].rho; si.T *= var[v].T;
+        CHECK(hcbd_hc_params_si(&si, 1e-6, p, NULL, 0) == HCBD_OK, "variant %d: parameters", v);
+        CHECK(p->pair_integrator == HCBD_PAIR_SHARDLOW && p->fluctuations == 1, "the defaults");
+        p->L[0] = p->L[1] = p->L[2] = 10.0;
+        n = (int)(p->nbar * 1000.0 + 0.5);
+        d.fluid_capacity = n;
+        q = d;
+        q.params.P0 *= 25.0;
+        q.params.fluctuations = 0;
+        if (!hc_create(&w, &q)) return;
+        ok = hcbd_hc_place_fluid_lattice(&w, n) == HCBD_OK && hc_run(&w, 1500);
+        xyz = (double *)malloc(sizeof(double) * 3 * (size_t)n);
+        Ts = (double *)malloc(sizeof(double) * (size_t)ns);
+        dens = (double *)malloc(sizeof(double) * (size_t)n);
+        for (i = 0; i < n; ++i) {
+            xyz[3 * i] = w.fx[i]; xyz[3 * i + 1] = w.fy[i]; xyz[3 * i + 2] = w.fz[i];
+        }
+        hcbd_hc_world_destroy(&w);
+        /* equilibrium at the defaults: Maxwellian start, 1000 steps, then T */
+        if (ok && hc_create(&w, &d)) {
+            ok = hcbd_hc_set_fluid(&w, n, xyz, NULL) == HCBD_OK && hc_run(&w, 1000);
+            for (k = 0; k < ns && ok; ++k) {
+                ok = hc_run(&w, every);
+                Ts[k] = hcbd_hc_temperature(&w);
+            }
+            hcbd_hc_world_destroy(&w);
+        } else ok = 0;
+        block_stats(Ts, ns, nb, &Tm, &Te);
+        /* Lees-Edwards without noise from the same positions (the set-up
+           gives the linear profile): 300 steps to settle, 500 measured */
+        q = d;
+        q.params.fluctuations = 0;
+        gd = q.params.gdot = 2e-5;
+        eta = NAN;
+        if (ok && hc_create(&w, &q)) {
+            ok = hcbd_hc_set_fluid(&w, n, xyz, NULL) == HCBD_OK && hc_run(&w, 300);
+            hcbd_hc_stress_enable(&w, 1);
+            ok = ok && hc_run(&w, 500);
+            hcbd_hc_stress_read(&w, st, NULL);
+            eta = st[HCBD_HC_S_TOTAL] / gd;
+            hcbd_hc_world_destroy(&w);
+        } else ok = 0;
+        /* the viscosity these positions give a linear profile v_x = gdot y
+           (MODEL 6): (1/V) sum_{i<j} f_ij y_ij^2, f_ij = -2 eta w'(r) /
+           (n_i n_j r); the continuum integral is eta (K(0) = 1), the blobs'
+           arrangement moves it by a few per cent */
+        for (i = 0, eta_pos = 0; i < n && ok; ++i) {
+            double ni = 0, dd[3];
+            int l;
+            for (l = 0; l < n; ++l)
+                ni += a_m4(a_sep(p->L, xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2], xyz[3 * l],
+                                 xyz[3 * l + 1], xyz[3 * l + 2], dd), p->h);
+            dens[i] = ni;
+        }
+        for (i = 0; i < n && ok; ++i) {
+            int j;
+            for (j = i + 1; j < n; ++j) {
+                double dd[3], r = a_sep(p->L, xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2], xyz[3 * j],
+                                        xyz[3 * j + 1], xyz[3 * j + 2], dd);
+                if (r > 0 && r < 2 * p->h)
+                    eta_pos += -2 * p->eta * a_m4d(r, p->h) / (dens[i] * dens[j] * r) * dd[1] * dd[1];
+            }
+        }
+        eta_pos /= p->L[0] * p->L[1] * p->L[2];
+        NOTE("variant %d (eta x%.2g, nbar x%.2g, rho x%.2g, T x%.2g; %d blobs, dt/dt_visc = %.3f): "
+             "T/kT = %.4f +- %.4f; Lees-Edwards eta = %.4f of the positions' %.5g, which is %.4f of eta",
+             v, var[v].eta, var[v].nbar, var[v].rho, var[v].T, n,
+             p->dt * p->eta / p->rho / (0.125 * p->h * p->h), Tm, Te, eta / eta_pos, eta_pos,
+             eta_pos / p->eta);
+        CHECK(ok, "variant %d: the runs failed", v);
+        CHECK(fabs(Tm - 1) < 3 * Te + 0.002, "variant %d: T/kT %.4f +- %.4f", v, Tm, Te);
+        CHECK(Te < (t_quick ? 0.01 : 0.004), "variant %d: T error %.4f cannot resolve 1 %%", v, Te);
+        CHECK(fabs(eta / eta_pos - 1) < 0.005, "variant %d: eta %.4f of the positions' prediction", v,
+              eta / eta_pos);
+        CHECK(fabs(eta_pos / p->eta - 1) < 0.05, "variant %d: the positions' viscosity %.4f of eta", v,
+              eta_pos / p->eta);
+        free(xyz);
+        free(Ts);
+        free(dens);
+    }
+}
+
 void test_hc_abs_viscosity_fluct_euler(void) { a_fluct_wave(HCBD_PAIR_EULER); }
 void test_hc_abs_viscosity_fluct_shardlow(void) { a_fluct_wave(HCBD_PAIR_SHARDLOW); }
 #endif
