@@ -96,15 +96,20 @@
      equations as implemented, the papers' equation numbers, the decisions
      taken where the papers are ambiguous, and what was measured.
 
-   CONTENTS (implementation, in the order data flows through a step)
+   CONTENTS (implementation; each ">>" banner below opens one of these)
      errors; parameters and their checks; random numbers; kernels (Wendland,
-     star potential and its force table); fixed-point pair sums; world and
-     storage; walls (artificial particles, Morris pairs); box, Lees-Edwards
-     and cells; neighbour search (cell lists, half Verlet list); pair
-     passes (density, forces and Euler exchanges, exact pair sweep);
-     integrator; step; observables (g(r), correlators, MSD, Carreau fit,
-     profiles); the HCBD world (its kernels, parameters, storage, set-up,
-     pair passes, step, observables); guard; checkpoints; XYZ and thermo.
+     star potential and its force table); GI-BD equations; fixed-point pair
+     sums; walls (repulsion, depletion); theory and stability limits; world
+     and storage; wall passes (artificial particles, Morris pairs); box and
+     minimum image (Lees-Edwards); neighbour search (cells, half and cross
+     Verlet lists); pair passes (density, forces and Euler exchanges, exact
+     pair sweep); integrator and step; observables (g(r), correlators,
+     Carreau fit, MSD, profiles, slabs); guard; checkpoints; world kinds
+     (lifecycle); XYZ and thermo.  Then the HCBD world, in one section on
+     top of that engine: its kernels; parameters and units; storage;
+     set-up; lists and pair passes (fluid density, exact sweep or Euler
+     pairs, polymer density, transient pairs, forces, coupling); the step
+     and its guard; observables; checkpoints, lifecycle, XYZ and thermo.
 
    ERRORS
      Every public function returns hcbd_result (HCBD_OK = 0).  On failure
@@ -1920,10 +1925,9 @@ static void hcbd__zero64(int64_t *a, int n)
     if (a) memset(a, 0, (size_t)n * sizeof *a);
 }
 
-/* >>world and storage */
 #define HCBD__ALIGN 64
 
-/* >>walls (MODEL 4) */
+/* >>walls (MODEL 4): the repulsion and the depletion width */
 double hcbd_wall_potential(const hcbd_params *p, double y, double *fy)
 {
     double e = 0.0, f = 0.0, Ly, planes[2];
@@ -1959,6 +1963,7 @@ static double hcbd__depletion(const hcbd_params *p)
     return s * h / (3.0 * n);
 }
 
+/* >>theory and stability limits (hcbd_theory_of, hcbd_stability) */
 hcbd_result hcbd_theory_of(const hcbd_params *p, hcbd_theory *t)
 {
     char msg[8];
@@ -2110,6 +2115,7 @@ hcbd_result hcbd_stability(const hcbd_params *p, hcbd_limit *out, int *n)
     return HCBD_OK;
 }
 
+/* >>world and storage: the block layout, init and particle set-up */
 static void hcbd__take(char *base, size_t *off, size_t bytes, void **out)
 {
     size_t o = (*off + HCBD__ALIGN - 1) & ~(size_t)(HCBD__ALIGN - 1);
@@ -2606,8 +2612,6 @@ hcbd_result hcbd_world_set_velocities(hcbd_world *w, const double *v)
     return HCBD_OK;
 }
 
-/* >>neighbour search */
-
 /* >>wall passes: artificial particles are redrawn every step from a
    counter-based stream keyed by (seed, step), uniform in the wall slab
    [-t, t) of the periodic y axis, and sorted into x-z columns. */
@@ -2755,9 +2759,9 @@ int64_t hcbd_wall_penetrations(const hcbd_world *w, int64_t *last_step, int *las
     return w ? w->wall_pen : 0;
 }
 
-/* >>Lees-Edwards.  The one routine every pair pass uses: the minimum-image
-   displacement d = x_i - x_j of a pair from its raw coordinate differences,
-   and the returned image index k of j: k = +1 when the nearest image of j
+/* >>box and minimum image (Lees-Edwards).  The one routine every pair
+   pass uses: the minimum-image displacement d = x_i - x_j of a pair from
+   its raw coordinate differences, and the returned image index k of j: k = +1 when the nearest image of j
    is in the box above (shifted by +offset in x, its velocity variable by
    +gdot Ly), -1 below, 0 inside.  Without shear k is always 0. */
 typedef struct hcbd__box {
@@ -2811,6 +2815,7 @@ static inline int hcbd__delta(const hcbd_world *w, double dx, double dy, double 
     return hcbd__delta_box(&b, dx, dy, dz, d);
 }
 
+/* >>neighbour search: cells, half and cross Verlet lists, their rebuild */
 /* One set of particles as the list machinery sees it: positions by slot
    and the id of each slot (NULL: slot = id). */
 typedef struct hcbd__pset {
@@ -4836,7 +4841,888 @@ int64_t hcbd_profile_result(const hcbd_profile *pr, double *out)
     return pr->nblocks;
 }
 
+/* >>slabs */
+size_t hcbd_slabs_bytes(int nslab, int nval)
+{
+    if (nslab < 1 || nslab > (1 << 20) || nval < 0 || nval > 64) return 0;
+    return (size_t)nslab * (5 + 3 * (size_t)nval) * sizeof(double);
+}
+
+hcbd_result hcbd_slabs_init(hcbd_slabs *s, const double L[3], int nslab, int nval,
+                            int block, void *mem, size_t bytes)
+{
+    if (!s || !L || !mem) return HCBD_ERR_NULL;
+    memset(s, 0, sizeof *s);
+    if (!hcbd_slabs_bytes(nslab, nval) || block < 1) return HCBD_ERR_PARAM;
+    if (!(L[0] > 0 && L[1] > 0 && L[2] > 0 && isfinite(L[0]) && isfinite(L[1]) && isfinite(L[2])))
+        return HCBD_ERR_PARAM;
+    if (bytes < hcbd_slabs_bytes(nslab, nval)) return HCBD_ERR_MEMORY;
+    s->nslab = nslab;
+    s->nval = nval;
+    s->block = block;
+    s->L[0] = L[0]; s->L[1] = L[1]; s->L[2] = L[2];
+    s->acc = (double *)mem;
+    s->stat = s->acc + (size_t)nslab * (1 + nval);
+    memset(mem, 0, hcbd_slabs_bytes(nslab, nval));
+    return HCBD_OK;
+}
+
+void hcbd_slabs_add(hcbd_slabs *s, double y, const double *vals)
+{
+    int k, c;
+    double *a;
+    if (!s || !s->acc || !isfinite(y)) return;
+    k = (int)floor(y / s->L[1] * s->nslab);
+    k = ((k % s->nslab) + s->nslab) % s->nslab;
+    a = s->acc + (size_t)k * (1 + s->nval);
+    a[0] += 1.0;
+    for (c = 0; c < s->nval && vals; ++c) a[1 + c] += vals[c];
+}
+
+/* stat per slab: [0] blocks with particles, [1] count sum, then sums and
+   squares of the block density and of each block mean */
+void hcbd_slabs_end_sample(hcbd_slabs *s)
+{
+    const int nv = s ? s->nval : 0, ns = 2 + 2 * (1 + nv);
+    int k, c;
+    if (!s || !s->acc || ++s->nsamp < s->block) return;
+    for (k = 0; k < s->nslab; ++k) {
+        double *a = s->acc + (size_t)k * (1 + nv), *t = s->stat + (size_t)k * ns;
+        double cnt = a[0], dens = cnt / (s->block * s->L[0] * s->L[1] * s->L[2] / s->nslab);
+        t[1] += cnt;
+        t[2] += dens;
+        t[3] += dens * dens;
+        if (cnt > 0) {
+            t[0] += 1.0;
+            for (c = 0; c < nv; ++c) {
+                double m = a[1 + c] / cnt;
+                t[4 + 2 * c] += m;
+                t[5 + 2 * c] += m * m;
+            }
+        }
+        for (c = 0; c <= nv; ++c) a[c] = 0.0;
+    }
+    s->nblocks++;
+    s->nsamp = 0;
+}
+
+int64_t hcbd_slabs_result(const hcbd_slabs *s, double *out)
+{
+    const int nv = s ? s->nval : 0, ns = 2 + 2 * (1 + nv), no = 3 + 2 * nv;
+    int k, c;
+    if (!s || !out || !s->stat) return 0;
+    for (k = 0; k < s->nslab; ++k) {
+        const double *t = s->stat + (size_t)k * ns;
+        double *o = out + (size_t)k * no;
+        o[0] = (k + 0.5) * s->L[1] / s->nslab;
+        hcbd__block_stat((double)s->nblocks, t[2], t[3], &o[1], &o[2]);
+        for (c = 0; c < nv; ++c) hcbd__block_stat(t[0], t[4 + 2 * c], t[5 + 2 * c], &o[3 + 2 * c], &o[4 + 2 * c]);
+    }
+    return s->nblocks;
+}
+
+/* >>run-time guard: the whole state, in id order so the particle reported
+   is the lowest offending id whatever the storage. */
+static hcbd_result hcbd__guard(hcbd_world *w)
+{
+    const double L0 = w->p.L[0], L1 = w->p.L[1], L2 = w->p.L[2];
+    int k;
+    for (k = 0; k < w->n; ++k) {
+        const int i = w->slot[k];
+        const double x = w->x[i], y = w->y[i], z = w->z[i];
+        if (!(isfinite(x) && isfinite(y) && isfinite(z)))
+            return hcbd__fail(&w->err, HCBD_ERR_NONFINITE, w->step, k,
+                              "guard at step %lld: particle %d has position (%g, %g, %g)",
+                              (long long)w->step, k, x, y, z);
+        if (w->gibd && !(isfinite(w->vx[i]) && isfinite(w->vy[i]) && isfinite(w->vz[i])))
+            return hcbd__fail(&w->err, HCBD_ERR_NONFINITE, w->step, k,
+                              "guard at step %lld: particle %d has velocity (%g, %g, %g)",
+                              (long long)w->step, k, (double)w->vx[i], (double)w->vy[i],
+                              (double)w->vz[i]);
+        /* images within int32 with room for another box per step */
+        if (!(x >= 0 && x < L0 && y >= 0 && y < L1 && z >= 0 && z < L2) ||
+            w->ix[i] < -0x3FFFFFFF || w->ix[i] > 0x3FFFFFFF || w->iy[i] < -0x3FFFFFFF ||
+            w->iy[i] > 0x3FFFFFFF || w->iz[i] < -0x3FFFFFFF || w->iz[i] > 0x3FFFFFFF ||
+            !isfinite(w->lx[i]))
+            return hcbd__fail(&w->err, HCBD_ERR_OUTSIDE, w->step, k,
+                              "guard at step %lld: particle %d at (%.17g, %.17g, %.17g), "
+                              "images (%d, %d, %d), is outside the box [0, %g) x [0, %g) "
+                              "x [0, %g) or its image count is near overflow",
+                              (long long)w->step, k, x, y, z, (int)w->ix[i], (int)w->iy[i],
+                              (int)w->iz[i], L0, L1, L2);
+        if (w->walls && w->p.guard_walls && (y < w->wall_lo || y > w->wall_hi))
+            return hcbd__fail(&w->err, HCBD_ERR_WALL, w->step, k,
+                              "guard at step %lld: particle %d at y = %.17g is inside a "
+                              "wall (the channel is %g <= y <= %g)",
+                              (long long)w->step, k, y, w->wall_lo, w->wall_hi);
+        if (w->gibd && w->rho_valid && !(w->rho[i] > 0 && isfinite(w->rho[i])))
+            return hcbd__fail(&w->err, HCBD_ERR_NONFINITE, w->step, k,
+                              "guard at step %lld: particle %d has density %g",
+                              (long long)w->step, k, (double)w->rho[i]);
+    }
+    return HCBD_OK;
+}
+
+/* >>checkpoint: a header of seven little-endian 64-bit words (magic,
+   version, model, sizeof(hcbd_real), world kind, payload bytes, FNV-1a of
+   the payload), then the payload as 64-bit words.  One walker per world
+   both writes (out != NULL), measures (out == in == NULL) and reads, so
+   the two directions cannot disagree. */
+#ifndef HCBD_LOAD_MAX_BYTES
+/* a forged header of a few bytes must not make the loader ask for
+   terabytes; 8 GiB (1 GiB where size_t has 32 bits) holds some 10^7
+   particles */
+#define HCBD_LOAD_MAX_BYTES ((size_t)1 << (sizeof(size_t) >= 8 ? 33 : 30))
+#endif
+#define HCBD__CK_HEAD 56
+#define HCBD__CK_WORLD 1
+#define HCBD__CK_HC 2
+static const char hcbd__ck_magic[8] = {'H', 'C', 'B', 'D', 'C', 'K', 'P', 'T'};
+
+typedef struct hcbd__ck {
+    unsigned char *out;
+    const unsigned char *in;
+    size_t size, off;
+    int bad; /* a read past the end or an out-of-range integer */
+} hcbd__ck;
+
+static void hcbd__ck_u64(hcbd__ck *c, uint64_t *v)
+{
+    int k;
+    if (c->in) {
+        uint64_t x = 0;
+        if (c->bad || c->off > c->size || c->size - c->off < 8) {
+            c->bad = 1; /* off stays where the data ran out */
+            *v = 0;
+            return;
+        }
+        for (k = 0; k < 8; ++k) x |= (uint64_t)c->in[c->off + k] << (8 * k);
+        *v = x;
+    } else if (c->out) {
+        for (k = 0; k < 8; ++k) c->out[c->off + k] = (unsigned char)(*v >> (8 * k));
+    }
+    c->off += 8;
+}
+
+static void hcbd__ck_f64(hcbd__ck *c, double *v)
+{
+    uint64_t u = 0;
+    if (!c->in) memcpy(&u, v, 8);
+    hcbd__ck_u64(c, &u);
+    if (c->in) memcpy(v, &u, 8);
+}
+
+static void hcbd__ck_i64(hcbd__ck *c, int64_t *v)
+{
+    uint64_t u = c->in ? 0 : (uint64_t)*v;
+    hcbd__ck_u64(c, &u);
+    if (c->in) *v = (int64_t)u;
+}
+
+static void hcbd__ck_int(hcbd__ck *c, int *v)
+{
+    int64_t x = c->in ? 0 : *v;
+    hcbd__ck_i64(c, &x);
+    if (c->in) {
+        if (x < INT_MIN || x > INT_MAX) c->bad = 1;
+        *v = c->bad ? 0 : (int)x;
+    }
+}
+
+#define HCBD__CK_ENUM(c, field, type)                                         \
+    do {                                                                       \
+        int e_ = (int)(field);                                                 \
+        hcbd__ck_int((c), &e_);                                                \
+        if ((c)->in) (field) = (type)e_;                                       \
+    } while (0)
+
+/* n reals, or int32s, or u64s, at a[map[k]] (map NULL: a[k]); stored as
+   doubles, so a float world's values are exact too */
+static void hcbd__ck_reals(hcbd__ck *c, hcbd_real *a, const int32_t *map, int n)
+{
+    int k;
+    for (k = 0; k < n; ++k) {
+        double v = c->in ? 0.0 : (double)a[map ? map[k] : k];
+        hcbd__ck_f64(c, &v);
+        if (c->in) a[k] = (hcbd_real)v;
+    }
+}
+
+static void hcbd__ck_i32s(hcbd__ck *c, int32_t *a, const int32_t *map, int n)
+{
+    int k;
+    for (k = 0; k < n; ++k) {
+        int64_t v = c->in ? 0 : a[map ? map[k] : k];
+        hcbd__ck_i64(c, &v);
+        if (c->in) {
+            if (v < INT32_MIN || v > INT32_MAX) c->bad = 1;
+            a[k] = c->bad ? 0 : (int32_t)v;
+        }
+    }
+}
+
+
+static void hcbd__ck_f64s(hcbd__ck *c, double *a, const int32_t *map, int n)
+{
+    int k;
+    for (k = 0; k < n; ++k) {
+        double v = c->in ? 0.0 : a[map ? map[k] : k];
+        hcbd__ck_f64(c, &v);
+        if (c->in) a[k] = v;
+    }
+}
+
+static const char *hcbd__model_name(uint64_t m)
+{
+    return m == HCBD_MODEL_GIBD ? "GI-BD" : m == HCBD_MODEL_WALLED ? "walled"
+                                          : m == HCBD_MODEL_HCBD ? "HCBD" : "unknown";
+}
+
+static void hcbd__ck_head(unsigned char *b, uint64_t kind, size_t payload)
+{
+    hcbd__ck c;
+    uint64_t v[6];
+    int k;
+    memcpy(b, hcbd__ck_magic, 8);
+    v[0] = HCBD_CHECKPOINT_VERSION;
+    v[1] = HCBD_MODEL;
+    v[2] = sizeof(hcbd_real);
+    v[3] = kind;
+    v[4] = payload;
+    v[5] = hcbd__hash(0xCBF29CE484222325ULL, b + HCBD__CK_HEAD, payload);
+    memset(&c, 0, sizeof c);
+    c.out = b;
+    c.off = 8;
+    for (k = 0; k < 6; ++k) hcbd__ck_u64(&c, &v[k]);
+}
+
+/* Checks the header; on success c reads the payload. */
+static hcbd_result hcbd__ck_open(hcbd_error *e, const void *buf, size_t size, uint64_t kind,
+                                 hcbd__ck *c)
+{
+    static const char *kinds[3] = {"unknown", "hcbd_world (GI-BD/walled)", "hcbd_hc_world (HCBD)"};
+    uint64_t v[6];
+    int k;
+    memset(c, 0, sizeof *c);
+    if (!buf) return hcbd__fail(e, HCBD_ERR_NULL, -1, -1, "checkpoint buffer is NULL");
+    if (size < HCBD__CK_HEAD)
+        return hcbd__fail(e, HCBD_ERR_FORMAT, -1, -1,
+                          "checkpoint of %zu bytes is shorter than its %d-byte header "
+                          "(truncated)", size, HCBD__CK_HEAD);
+    if (memcmp(buf, hcbd__ck_magic, 8))
+        return hcbd__fail(e, HCBD_ERR_FORMAT, -1, -1,
+                          "not an hcbd checkpoint: the first 8 bytes are not \"HCBDCKPT\"");
+    c->in = (const unsigned char *)buf;
+    c->size = HCBD__CK_HEAD;
+    c->off = 8;
+    for (k = 0; k < 6; ++k) hcbd__ck_u64(c, &v[k]);
+    if (v[0] != HCBD_CHECKPOINT_VERSION)
+        return hcbd__fail(e, HCBD_ERR_VERSION, -1, -1,
+                          "checkpoint format version %llu; this build reads version %d",
+                          (unsigned long long)v[0], HCBD_CHECKPOINT_VERSION);
+    if (v[1] != HCBD_MODEL)
+        return hcbd__fail(e, HCBD_ERR_MODEL, -1, -1,
+                          "checkpoint model %llu (%s); this is the %s build",
+                          (unsigned long long)v[1], hcbd__model_name(v[1]),
+                          hcbd__model_name(HCBD_MODEL));
+    if (v[2] != sizeof(hcbd_real))
+        return hcbd__fail(e, HCBD_ERR_MODEL, -1, -1,
+                          "checkpoint precision: hcbd_real of %llu bytes; this build's is %d",
+                          (unsigned long long)v[2], (int)sizeof(hcbd_real));
+    if (v[3] != kind)
+        return hcbd__fail(e, HCBD_ERR_MODEL, -1, -1,
+                          "checkpoint world kind %llu (%s); expected %s",
+                          (unsigned long long)v[3], kinds[v[3] < 3 ? v[3] : 0], kinds[kind]);
+    if (v[4] != size - HCBD__CK_HEAD)
+        return hcbd__fail(e, HCBD_ERR_FORMAT, -1, -1,
+                          "checkpoint payload should be %llu bytes but %zu follow the "
+                          "header (truncated or padded)", (unsigned long long)v[4],
+                          size - HCBD__CK_HEAD);
+    if (v[5] != hcbd__hash(0xCBF29CE484222325ULL, c->in + HCBD__CK_HEAD, size - HCBD__CK_HEAD))
+        return hcbd__fail(e, HCBD_ERR_FORMAT, -1, -1,
+                          "checkpoint checksum mismatch: the payload is corrupted");
+    c->in += HCBD__CK_HEAD;
+    c->size = size - HCBD__CK_HEAD;
+    c->off = 0;
+    return HCBD_OK;
+}
+
+/* e->msg = a b e->msg, cut to fit */
+static void hcbd__prefix(hcbd_error *e, const char *a, const char *b)
+{
+    char m[sizeof e->msg];
+    const char *part[3];
+    size_t k = 0, j;
+    int q;
+    part[0] = a; part[1] = b; part[2] = e->msg;
+    for (q = 0; q < 3; ++q)
+        for (j = 0; part[q][j] && k + 1 < sizeof m; ++j) m[k++] = part[q][j];
+    m[k] = 0;
+    memcpy(e->msg, m, k + 1);
+}
+
+static hcbd_result hcbd__ck_bad(hcbd_error *e, const hcbd__ck *c, const char *where)
+{
+    return hcbd__fail(e, HCBD_ERR_FORMAT, -1, -1,
+                      "checkpoint %s at byte %zu of the %zu-byte payload", where, c->off,
+                      c->size);
+}
+
+static hcbd_result hcbd__save_file(hcbd_error *e, const unsigned char *b, size_t n,
+                                   const char *path)
+{
+    char tmp[4096];
+    FILE *f;
+    size_t len = strlen(path);
+    if (len == 0 || len + 5 > sizeof tmp)
+        return hcbd__fail(e, HCBD_ERR_PARAM, -1, -1,
+                          "path of %zu characters (need 1..%d)", len, (int)sizeof tmp - 5);
+    snprintf(tmp, sizeof tmp, "%s.tmp", path);
+    f = fopen(tmp, "wb");
+    if (!f) return hcbd__fail(e, HCBD_ERR_IO, -1, -1, "cannot open %s for writing", tmp);
+    if (fwrite(b, 1, n, f) != n) {
+        fclose(f);
+        remove(tmp);
+        return hcbd__fail(e, HCBD_ERR_IO, -1, -1, "writing %zu bytes to %s failed", n, tmp);
+    }
+    if (fclose(f) != 0) {
+        remove(tmp);
+        return hcbd__fail(e, HCBD_ERR_IO, -1, -1, "closing %s failed (disk full?)", tmp);
+    }
+    if (rename(tmp, path) != 0) {
+        remove(tmp);
+        return hcbd__fail(e, HCBD_ERR_IO, -1, -1, "renaming %s to %s failed", tmp, path);
+    }
+    return HCBD_OK;
+}
+
+/* Whole file into a fresh block (caller frees). */
+static hcbd_result hcbd__read_file(hcbd_error *e, const char *path, unsigned char **b, size_t *n)
+{
+    FILE *f;
+    long len;
+    *b = NULL;
+    *n = 0;
+    f = fopen(path, "rb");
+    if (!f) return hcbd__fail(e, HCBD_ERR_IO, -1, -1, "cannot open %s for reading", path);
+    if (fseek(f, 0, SEEK_END) != 0 || (len = ftell(f)) < 0 || fseek(f, 0, SEEK_SET) != 0) {
+        fclose(f);
+        return hcbd__fail(e, HCBD_ERR_IO, -1, -1, "cannot find the size of %s", path);
+    }
+    *b = (unsigned char *)HCBD_MALLOC(len > 0 ? (size_t)len : 1);
+    if (!*b) {
+        fclose(f);
+        return hcbd__fail(e, HCBD_ERR_MEMORY, -1, -1, "malloc of %ld bytes for %s failed",
+                          len, path);
+    }
+    if (fread(*b, 1, (size_t)len, f) != (size_t)len) {
+        fclose(f);
+        HCBD_FREE(*b);
+        *b = NULL;
+        return hcbd__fail(e, HCBD_ERR_IO, -1, -1, "reading %ld bytes of %s failed", len, path);
+    }
+    fclose(f);
+    *n = (size_t)len;
+    return HCBD_OK;
+}
+
+static void hcbd__ck_params(hcbd__ck *c, hcbd_params *p)
+{
+    int d;
+    for (d = 0; d < 3; ++d) hcbd__ck_f64(c, &p->L[d]);
+    hcbd__ck_f64(c, &p->dt); hcbd__ck_f64(c, &p->kT); hcbd__ck_f64(c, &p->xi);
+    hcbd__ck_f64(c, &p->xip); hcbd__ck_f64(c, &p->tau); hcbd__ck_f64(c, &p->Rc);
+    hcbd__ck_f64(c, &p->density);
+    hcbd__ck_int(c, &p->density_norm); hcbd__ck_int(c, &p->lagged_density);
+    HCBD__CK_ENUM(c, p->dynamics, hcbd_dynamics);
+    HCBD__CK_ENUM(c, p->potential, hcbd_potential);
+    HCBD__CK_ENUM(c, p->noise, hcbd_noise);
+    HCBD__CK_ENUM(c, p->pair_integrator, hcbd_pair_integrator);
+    hcbd__ck_f64(c, &p->f); hcbd__ck_f64(c, &p->sigma); hcbd__ck_f64(c, &p->star_eps);
+    hcbd__ck_f64(c, &p->rcut);
+    hcbd__ck_int(c, &p->table_n); hcbd__ck_f64(c, &p->table_r0);
+    for (d = 0; d < 3; ++d) hcbd__ck_f64(c, &p->fext[d]);
+    hcbd__ck_int(c, &p->fext_background_only);
+    hcbd__ck_f64(c, &p->gdot);
+    hcbd__ck_f64(c, &p->wall_thickness);
+    hcbd__ck_f64(c, &p->wall_vx[0]); hcbd__ck_f64(c, &p->wall_vx[1]);
+    hcbd__ck_f64(c, &p->wall_beta_max);
+    HCBD__CK_ENUM(c, p->wall_mode, hcbd_wall_mode);
+    hcbd__ck_f64(c, &p->wall_a); hcbd__ck_f64(c, &p->wall_b);
+    hcbd__ck_f64(c, &p->wall_plane); hcbd__ck_f64(c, &p->wall_shift);
+    hcbd__ck_int(c, &p->wall_noise_beta);
+    hcbd__ck_f64(c, &p->skin);
+    hcbd__ck_int(c, &p->sort);
+    hcbd__ck_int(c, &p->force_table);
+    hcbd__ck_u64(c, &p->seed);
+    hcbd__ck_int(c, &p->threads);
+    hcbd__ck_f64(c, &p->min_distance);
+    hcbd__ck_int(c, &p->guard_every); hcbd__ck_int(c, &p->guard_walls);
+    hcbd__ck_f64(c, &p->guard_step);
+}
+
+/* Everything after the definition, per particle in id order (map = slot
+   when writing; a loaded world is stored in id order). */
+static void hcbd__ck_state(hcbd__ck *c, hcbd_world *w)
+{
+    const int32_t *map = c->in ? NULL : w->slot;
+    const int n = w->n;
+    int d;
+    hcbd__ck_i64(c, &w->step);
+    hcbd__ck_f64(c, &w->le_offset);
+    hcbd__ck_int(c, &w->flux_on);
+    hcbd__ck_i64(c, &w->flux_steps);
+    for (d = 0; d < 3; ++d) hcbd__ck_f64(c, &w->flux_sum[d]);
+    hcbd__ck_i64(c, &w->wall_pen);
+    hcbd__ck_i64(c, &w->wall_pen_step);
+    hcbd__ck_int(c, &w->wall_pen_id);
+    hcbd__ck_int(c, &w->rho_valid);
+    hcbd__ck_int(c, &w->rho_current);
+    hcbd__ck_i64(c, &w->nl.n_rebuilds);
+    hcbd__ck_i64(c, &w->nl.n_rescans);
+    hcbd__ck_reals(c, w->x, map, n); hcbd__ck_reals(c, w->y, map, n); hcbd__ck_reals(c, w->z, map, n);
+    hcbd__ck_i32s(c, w->ix, map, n); hcbd__ck_i32s(c, w->iy, map, n); hcbd__ck_i32s(c, w->iz, map, n);
+    hcbd__ck_f64s(c, w->lx, map, n);
+    if (w->gibd) {
+        hcbd__ck_reals(c, w->vx, map, n); hcbd__ck_reals(c, w->vy, map, n);
+        hcbd__ck_reals(c, w->vz, map, n);
+        hcbd__ck_reals(c, w->rho, map, n); hcbd__ck_reals(c, w->inv_rho, map, n);
+    }
+}
+
+/* capacity, max_pairs, n, parameters, table; the state follows */
+static void hcbd__ck_world(hcbd__ck *c, hcbd_world *w)
+{
+    int64_t cap = w->capacity, mp = w->nl.max_pairs;
+    hcbd__ck_i64(c, &cap);
+    hcbd__ck_i64(c, &mp);
+    hcbd__ck_int(c, &w->n);
+    hcbd__ck_params(c, &w->p);
+    if (w->p.potential == HCBD_POT_TABLE) {
+        hcbd__ck_f64s(c, w->tab_F, NULL, w->p.table_n);
+        hcbd__ck_f64s(c, w->tab_V, NULL, w->p.table_n);
+    }
+    hcbd__ck_state(c, w);
+}
+
+static void hcbd__ck_walk(hcbd__ck *c, void *w)
+{
+    hcbd__ck_world(c, (hcbd_world *)w);
+}
+
+/* Loads into a fresh world w (its old contents are not looked at): the
+   definition first, then the world created from it and its state.  A
+   failure after the creation leaves w live, for hcbd__adopt to free. */
+static hcbd_result hcbd__ck_load(hcbd_world *w, const void *buf, size_t size)
+{
+    hcbd__ck c;
+    hcbd_world_def def;
+    int64_t cap = 0, mp = 0;
+    int n = 0, k;
+    double *tab = NULL;
+    hcbd_result r;
+    size_t bytes;
+    if (!w) return HCBD_ERR_NULL;
+    memset(w, 0, sizeof *w);
+    hcbd__clear(&w->err);
+    if ((r = hcbd__ck_open(&w->err, buf, size, HCBD__CK_WORLD, &c)) != HCBD_OK) return r;
+    memset(&def, 0, sizeof def);
+    hcbd__ck_i64(&c, &cap);
+    hcbd__ck_i64(&c, &mp);
+    hcbd__ck_int(&c, &n);
+    hcbd__ck_params(&c, &def.params);
+    if (c.bad) return hcbd__ck_bad(&w->err, &c, "ends inside the parameters");
+    if (cap < 1 || cap > INT32_MAX || n < 0 || n > cap)
+        return hcbd__fail(&w->err, HCBD_ERR_FORMAT, -1, -1,
+                          "checkpoint holds n = %d particles for capacity %lld", n,
+                          (long long)cap);
+    def.capacity = (int)cap;
+    def.max_pairs = mp;
+    def.params.table_F = def.params.table_V = NULL;
+    if (def.params.potential == HCBD_POT_TABLE) {
+        const int tn = def.params.table_n;
+        if (tn < 2 || (size_t)tn > (c.size - c.off) / 16)
+            return hcbd__ck_bad(&w->err, &c, "table_n does not fit the rest");
+        tab = (double *)HCBD_MALLOC(2 * (size_t)tn * sizeof(double));
+        if (!tab) return hcbd__fail(&w->err, HCBD_ERR_MEMORY, -1, -1, "malloc of the table failed");
+        hcbd__ck_f64s(&c, tab, NULL, tn);
+        hcbd__ck_f64s(&c, tab + tn, NULL, tn);
+        def.params.table_F = tab;
+        def.params.table_V = tab + tn;
+    }
+    /* every particle takes at least 7 words (position, images, Lees-Edwards
+       shift): a short file is refused before its capacity is allocated */
+    if ((size_t)n > (c.size - c.off) / (7 * 8)) {
+        HCBD_FREE(tab);
+        return hcbd__ck_bad(&w->err, &c, "is shorter than its particles");
+    }
+    bytes = hcbd_world_bytes(&def);
+    if (bytes > HCBD_LOAD_MAX_BYTES) {
+        HCBD_FREE(tab);
+        return hcbd__fail(&w->err, HCBD_ERR_MEMORY, -1, -1,
+                          "checkpoint world needs %zu bytes, more than HCBD_LOAD_MAX_BYTES",
+                          bytes);
+    }
+    r = hcbd_world_create(w, &def);
+    HCBD_FREE(tab);
+    if (r != HCBD_OK) return r; /* w->err names the parameter */
+    w->n = n;
+    hcbd__ck_state(&c, w);
+    if (c.bad || c.off != c.size)
+        return hcbd__ck_bad(&w->err, &c,
+                            c.bad ? "ends inside the particle state" : "has trailing bytes");
+    for (k = 0; k < n; ++k) {
+        w->id[k] = k;
+        w->slot[k] = k;
+    }
+    w->nl.list_valid = 0;
+    w->nl.le_drift = 0.0;
+    /* a checksum-valid file from elsewhere may still hold nonsense */
+    r = hcbd__guard(w);
+    if (r == HCBD_OK && ((w->flux_on & ~1) || !(w->le_offset >= 0 && w->le_offset < w->p.L[0])))
+        r = hcbd__fail(&w->err, HCBD_ERR_FORMAT, -1, -1, "flux_on = %d, le_offset = %g",
+                       w->flux_on, w->le_offset);
+    /* the artificial wall particles of the saved step, for observables
+       called before the next step draws its own */
+    if (r == HCBD_OK && HCBD__WALLS && w->n_art > 0) {
+        w->step--;
+        hcbd__wall_draw(w);
+        w->step++;
+    }
+    if (r != HCBD_OK) {
+        hcbd__prefix(&w->err, "checkpoint state refused: ", "");
+        return r;
+    }
+    hcbd__clear(&w->err);
+    return HCBD_OK;
+}
+
+/* >>world kinds: the lifecycle, the thread setting and the checkpoint
+   wrappers of both worlds, written once over a description of each world
+   type (its size, where its shared fields sit, its model's functions). */
+typedef void (*hcbd__walk_fn)(hcbd__ck *c, void *w);
+typedef struct hcbd__kind {
+    size_t size, o_err, o_step, o_live, o_owned, o_threads; /* sizeof, offsetof */
+    uint64_t tag;            /* checkpoint world kind (HCBD__CK_*)             */
+    const char *size_fn;     /* the checkpoint size function a message names  */
+    hcbd_result (*check)(const void *def, char *msg, size_t n);
+    size_t (*bytes)(const void *def);
+    hcbd_result (*init)(void *w, const void *def, void *mem, size_t bytes);
+    hcbd__walk_fn walk;      /* writes, or with c->out NULL measures, fields  */
+    hcbd_result (*load)(void *w, const void *buf, size_t size); /* into a
+                                zeroed world; may fail leaving it live      */
+} hcbd__kind;
+
+#define HCBD__AT(T, k, w, o) ((T *)(void *)((char *)(w) + (k)->o))
+
+/* scratch room for a world of either kind while a load builds it aside */
+typedef union hcbd__any_world {
+    hcbd_world bd;
 #if HCBD_MODEL == HCBD_MODEL_HCBD
+    hcbd_hc_world hc;
+#endif
+} hcbd__any_world;
+
+static hcbd_result hcbd__create(const hcbd__kind *k, void *w, const void *def)
+{
+    hcbd_error *e;
+    size_t need;
+    void *mem;
+    hcbd_result r;
+    if (!w) return HCBD_ERR_NULL;
+    memset(w, 0, k->size);
+    e = HCBD__AT(hcbd_error, k, w, o_err);
+    hcbd__clear(e);
+    r = k->check(def, e->msg, sizeof e->msg);
+    if (r != HCBD_OK) {
+        e->code = r;
+        return r;
+    }
+    need = k->bytes(def);
+    if (!(mem = HCBD_MALLOC(need)))
+        return hcbd__fail(e, HCBD_ERR_MEMORY, -1, -1, "malloc of %zu bytes failed", need);
+    r = k->init(w, def, mem, need);
+    if (r != HCBD_OK) {
+        HCBD_FREE(mem);
+        return r;
+    }
+    *HCBD__AT(void *, k, w, o_owned) = mem;
+    return HCBD_OK;
+}
+
+static void hcbd__destroy(const hcbd__kind *k, void *w)
+{
+    void *mem;
+    if (!w) return;
+    mem = *HCBD__AT(void *, k, w, o_owned);
+    if (mem) HCBD_FREE(mem);
+    /* a destroyed world has no particles and no arrays to touch */
+    memset(w, 0, k->size);
+}
+
+static hcbd_result hcbd__set_threads(const hcbd__kind *k, void *w, int threads)
+{
+    hcbd_error *e;
+    if (!w) return HCBD_ERR_NULL;
+    e = HCBD__AT(hcbd_error, k, w, o_err);
+    hcbd__clear(e);
+    if (threads < 1 || threads > 1024)
+        return hcbd__fail(e, HCBD_ERR_PARAM, *HCBD__AT(int64_t, k, w, o_step), -1,
+                          "threads = %d is invalid (need 1..1024)", threads);
+    *HCBD__AT(int, k, w, o_threads) = threads;
+    return HCBD_OK;
+}
+
+static size_t hcbd__ck_size(const hcbd__kind *k, const void *w)
+{
+    hcbd__ck c;
+    if (!w) return 0;
+    memset(&c, 0, sizeof c);
+    k->walk(&c, (void *)w); /* measures only: nothing is written */
+    return HCBD__CK_HEAD + c.off;
+}
+
+static hcbd_result hcbd__ck_put(const hcbd__kind *k, void *w, void *buf, size_t size)
+{
+    hcbd__ck c;
+    hcbd_error *e;
+    int64_t step;
+    size_t need;
+    if (!w) return HCBD_ERR_NULL;
+    e = HCBD__AT(hcbd_error, k, w, o_err);
+    step = *HCBD__AT(int64_t, k, w, o_step);
+    need = hcbd__ck_size(k, w);
+    hcbd__clear(e);
+    if (!buf) return hcbd__fail(e, HCBD_ERR_NULL, step, -1, "checkpoint buffer is NULL");
+    if (size < need)
+        return hcbd__fail(e, HCBD_ERR_MEMORY, step, -1,
+                          "checkpoint buffer of %zu bytes is smaller than the %zu bytes "
+                          "%s asks for", size, need, k->size_fn);
+    memset(&c, 0, sizeof c);
+    c.out = (unsigned char *)buf + HCBD__CK_HEAD;
+    c.size = need - HCBD__CK_HEAD;
+    k->walk(&c, w);
+    hcbd__ck_head((unsigned char *)buf, k->tag, c.off);
+    return HCBD_OK;
+}
+
+/* The loaders build the new world aside in t: on success it replaces w (a
+   live w is destroyed first); on failure t is freed, a live w keeps its
+   state and only its error changes, and a w that is not live (never
+   initialised, or destroyed) is zeroed and carries the error. */
+static hcbd_result hcbd__adopt(const hcbd__kind *k, void *w, void *t, hcbd_result r)
+{
+    const hcbd_error e = *HCBD__AT(hcbd_error, k, t, o_err);
+    const int live = *HCBD__AT(uint64_t, k, w, o_live) == HCBD__LIVE;
+    if (r == HCBD_OK) {
+        if (live) hcbd__destroy(k, w);
+        memcpy(w, t, k->size);
+        return r;
+    }
+    if (*HCBD__AT(uint64_t, k, t, o_live) == HCBD__LIVE) hcbd__destroy(k, t);
+    if (!live) memset(w, 0, k->size);
+    *HCBD__AT(hcbd_error, k, w, o_err) = e;
+    return r;
+}
+
+static hcbd_result hcbd__ck_get(const hcbd__kind *k, void *w, const void *buf, size_t size)
+{
+    hcbd__any_world t;
+    if (!w) return HCBD_ERR_NULL;
+    return hcbd__adopt(k, w, &t, k->load(&t, buf, size));
+}
+
+static hcbd_result hcbd__save(const hcbd__kind *k, void *w, const char *path)
+{
+    hcbd_error *e;
+    int64_t step;
+    unsigned char *b;
+    size_t n;
+    hcbd_result r;
+    if (!w) return HCBD_ERR_NULL;
+    e = HCBD__AT(hcbd_error, k, w, o_err);
+    step = *HCBD__AT(int64_t, k, w, o_step);
+    hcbd__clear(e);
+    if (!path) return hcbd__fail(e, HCBD_ERR_NULL, step, -1, "path is NULL");
+    n = hcbd__ck_size(k, w);
+    if (!(b = (unsigned char *)HCBD_MALLOC(n)))
+        return hcbd__fail(e, HCBD_ERR_MEMORY, step, -1, "malloc of %zu bytes failed", n);
+    r = hcbd__ck_put(k, w, b, n);
+    if (r == HCBD_OK) r = hcbd__save_file(e, b, n, path);
+    HCBD_FREE(b);
+    return r;
+}
+
+static hcbd_result hcbd__load(const hcbd__kind *k, void *w, const char *path)
+{
+    hcbd__any_world t;
+    hcbd_error *e = HCBD__AT(hcbd_error, k, &t, o_err);
+    unsigned char *b;
+    size_t n;
+    hcbd_result r;
+    if (!w) return HCBD_ERR_NULL;
+    memset(&t, 0, sizeof t);
+    if (!path) {
+        r = hcbd__fail(e, HCBD_ERR_NULL, -1, -1, "path is NULL");
+    } else if ((r = hcbd__read_file(e, path, &b, &n)) == HCBD_OK) {
+        r = k->load(&t, b, n);
+        HCBD_FREE(b);
+        if (r != HCBD_OK) hcbd__prefix(e, path, ": ");
+    }
+    return hcbd__adopt(k, w, &t, r);
+}
+
+/* The GI-BD world's kind and its public lifecycle, thread and checkpoint
+   functions. */
+static hcbd_result hcbd__bd_check(const void *def, char *msg, size_t n)
+{
+    return hcbd__check_def((const hcbd_world_def *)def, msg, n);
+}
+
+static size_t hcbd__bd_bytes(const void *def)
+{
+    return hcbd_world_bytes((const hcbd_world_def *)def);
+}
+
+static hcbd_result hcbd__bd_init(void *w, const void *def, void *mem, size_t bytes)
+{
+    return hcbd_world_init((hcbd_world *)w, (const hcbd_world_def *)def, mem, bytes);
+}
+
+static hcbd_result hcbd__bd_load(void *w, const void *buf, size_t size)
+{
+    return hcbd__ck_load((hcbd_world *)w, buf, size);
+}
+
+static const hcbd__kind hcbd__kind_bd = {
+    sizeof(hcbd_world), offsetof(hcbd_world, err), offsetof(hcbd_world, step),
+    offsetof(hcbd_world, live), offsetof(hcbd_world, owned_mem),
+    offsetof(hcbd_world, p) + offsetof(hcbd_params, threads), HCBD__CK_WORLD,
+    "hcbd_checkpoint_size", hcbd__bd_check, hcbd__bd_bytes, hcbd__bd_init, hcbd__ck_walk,
+    hcbd__bd_load};
+
+hcbd_result hcbd_world_create(hcbd_world *w, const hcbd_world_def *def)
+{
+    return hcbd__create(&hcbd__kind_bd, w, def);
+}
+
+void hcbd_world_destroy(hcbd_world *w) { hcbd__destroy(&hcbd__kind_bd, w); }
+
+hcbd_result hcbd_set_threads(hcbd_world *w, int threads)
+{
+    return hcbd__set_threads(&hcbd__kind_bd, w, threads);
+}
+
+size_t hcbd_checkpoint_size(const hcbd_world *w) { return hcbd__ck_size(&hcbd__kind_bd, w); }
+
+hcbd_result hcbd_checkpoint_save(hcbd_world *w, void *buf, size_t size)
+{
+    return hcbd__ck_put(&hcbd__kind_bd, w, buf, size);
+}
+
+hcbd_result hcbd_checkpoint_load(hcbd_world *w, const void *buf, size_t size)
+{
+    return hcbd__ck_get(&hcbd__kind_bd, w, buf, size);
+}
+
+hcbd_result hcbd_save(hcbd_world *w, const char *path)
+{
+    return hcbd__save(&hcbd__kind_bd, w, path);
+}
+
+hcbd_result hcbd_load(hcbd_world *w, const char *path)
+{
+    return hcbd__load(&hcbd__kind_bd, w, path);
+}
+
+/* >>extended XYZ and thermo lines */
+static void hcbd__xyz_head(FILE *f, int n, const double L[3], double time, int64_t step,
+                           double le_offset, const char *extra)
+{
+    fprintf(f, "%d\nLattice=\"%.17g 0 0 0 %.17g 0 0 0 %.17g\" Origin=\"0 0 0\" "
+               "Properties=species:S:1:pos:R:3:velo:R:3:id:I:1 pbc=\"T T T\" "
+               "Time=%.17g Step=%lld le_offset=%.17g%s\n",
+            n, L[0], L[1], L[2], time, (long long)step, le_offset, extra);
+}
+
+static void hcbd__xyz_atom(FILE *f, const char *sp, double x, double y, double z, double vx,
+                           double vy, double vz, int id)
+{
+    fprintf(f, "%s %.17g %.17g %.17g %.17g %.17g %.17g %d\n", sp, x, y, z, vx, vy, vz, id);
+}
+
+static hcbd_result hcbd__xyz(const hcbd_world *w, FILE *f, const int *ids, int nids,
+                             const char *extra)
+{
+    int k;
+    if (!w || !f) return HCBD_ERR_NULL;
+    if (!ids) nids = w->n;
+    if (nids < 0 || nids > w->n) return HCBD_ERR_PARAM;
+    for (k = 0; ids && k < nids; ++k)
+        if (ids[k] < 0 || ids[k] >= w->n) return HCBD_ERR_PARAM;
+    hcbd__xyz_head(f, nids, w->p.L, (double)w->step * w->p.dt, w->step, w->le_offset, extra);
+    for (k = 0; k < nids; ++k) {
+        const int id = ids ? ids[k] : k, i = w->slot[id];
+        hcbd__xyz_atom(f, "S", w->x[i], w->y[i], w->z[i], w->gibd ? (double)w->vx[i] : 0.0,
+                       w->gibd ? (double)w->vy[i] : 0.0, w->gibd ? (double)w->vz[i] : 0.0, id);
+    }
+    return ferror(f) ? HCBD_ERR_IO : HCBD_OK;
+}
+
+hcbd_result hcbd_xyz_write(const hcbd_world *w, FILE *f, const int *ids, int nids)
+{
+    return hcbd__xyz(w, f, ids, nids, "");
+}
+
+hcbd_result hcbd_xyz_offenders(const hcbd_world *w, FILE *f)
+{
+    char extra[96];
+    int k, m = 0, *ids;
+    const int bad = w ? (int)w->err.id : -1;
+    hcbd_result r;
+    if (!w || !f) return HCBD_ERR_NULL;
+    if (bad < 0 || bad >= w->n) return HCBD_ERR_STATE;
+    /* the scratch area holds n ints; the frame needs no allocation */
+    ids = (int *)w->scratch;
+    {
+        const double rr = w->nl.rlist > 0 ? w->nl.rlist : 0.0;
+        const int i = w->slot[bad];
+        for (k = 0; k < w->n; ++k) {
+            const int j = w->slot[k];
+            double e[3];
+            e[0] = hcbd__mi((double)w->x[i] - w->x[j], w->p.L[0]);
+            e[1] = hcbd__mi((double)w->y[i] - w->y[j], w->p.L[1]);
+            e[2] = hcbd__mi((double)w->z[i] - w->z[j], w->p.L[2]);
+            if (k == bad || !(e[0] * e[0] + e[1] * e[1] + e[2] * e[2] > rr * rr)) ids[m++] = k;
+        }
+    }
+    snprintf(extra, sizeof extra, " error=%s offender=%d", hcbd_result_name(w->err.code), bad);
+    r = hcbd__xyz(w, f, ids, m, extra);
+    return r;
+}
+
+int hcbd_thermo_header(char *buf, size_t size)
+{
+    return snprintf(buf, size, "# step time T px py pz list_pairs wall_pen ns_pstep");
+}
+
+int hcbd_thermo_line(const hcbd_world *w, double ns_pstep, char *buf, size_t size)
+{
+    double p[3];
+    char ns[32];
+    if (!w) return snprintf(buf, size, "# no world");
+    hcbd_momentum(w, p);
+    if (isfinite(ns_pstep)) snprintf(ns, sizeof ns, "%.4g", ns_pstep);
+    else snprintf(ns, sizeof ns, "-");
+    return snprintf(buf, size, "%lld %.9g %.9g %.6e %.6e %.6e %lld %lld %s",
+                    (long long)w->step, (double)w->step * w->p.dt, hcbd_temperature(w), p[0],
+                    p[1], p[2], (long long)w->nl.npairs, (long long)w->wall_pen, ns);
+}
+
+#if HCBD_MODEL == HCBD_MODEL_HCBD
+/* ========================================================================= */
+/* >>HCBD (2018): the fluid and polymer world, after the shared engine       */
+/* ========================================================================= */
 /* >>HCBD: kernels (MODEL 1, 8) */
 double hcbd_m4(double r, double h)
 {
@@ -6597,7 +7483,40 @@ static void hcbd__hc_stress_add(hcbd_hc_world *w)
     w->stress_steps++;
 }
 
-static hcbd_result hcbd__hc_guard(hcbd_hc_world *w);
+/* >>HCBD: the step and its guard */
+/* The run-time guard (guard_every): positions inside the box, finite
+   velocities and pair variables. */
+static hcbd_result hcbd__hc_guard(hcbd_hc_world *w)
+{
+    const double *L = w->p.L;
+    int i, k;
+    for (i = 0; i < w->nf; ++i) {
+        const double x = w->fx[i], y = w->fy[i], z = w->fz[i];
+        if (!(isfinite(w->fvx[i]) && isfinite(w->fvy[i]) && isfinite(w->fvz[i])))
+            return hcbd__fail(&w->err, HCBD_ERR_NONFINITE, w->step, i,
+                              "guard at step %lld: fluid blob %d has velocity (%g, %g, %g)",
+                              (long long)w->step, i, (double)w->fvx[i], (double)w->fvy[i],
+                              (double)w->fvz[i]);
+        if (!(x >= 0 && x < L[0] && y >= 0 && y < L[1] && z >= 0 && z < L[2]))
+            return hcbd__fail(&w->err, HCBD_ERR_OUTSIDE, w->step, i,
+                              "guard at step %lld: fluid blob %d at (%.17g, %.17g, %.17g) is "
+                              "outside the box", (long long)w->step, i, x, y, z);
+    }
+    for (i = 0; i < w->np; ++i) {
+        const double x = w->px[i], y = w->py[i], z = w->pz[i];
+        if (!(x >= 0 && x < L[0] && y >= 0 && y < L[1] && z >= 0 && z < L[2]))
+            return hcbd__fail(&w->err, HCBD_ERR_OUTSIDE, w->step, w->nf + i,
+                              "guard at step %lld: polymer %d at (%.17g, %.17g, %.17g) is "
+                              "outside the box", (long long)w->step, i, x, y, z);
+        for (k = 0; w->transient && k < w->pair_n[i]; ++k)
+            if (!isfinite(w->pair_l[(size_t)i * w->pair_cap + k]))
+                return hcbd__fail(&w->err, HCBD_ERR_NONFINITE, w->step, w->nf + i,
+                                  "guard at step %lld: polymer %d's pair variable with %d "
+                                  "is not finite", (long long)w->step, i,
+                                  (int)w->pair_b[(size_t)i * w->pair_cap + k]);
+    }
+    return HCBD_OK;
+}
 
 hcbd_result hcbd_hc_step(hcbd_hc_world *w, int nsteps)
 {
@@ -6814,920 +7733,7 @@ uint64_t hcbd_hc_state_checksum(const hcbd_hc_world *w)
     }
     return h;
 }
-#endif /* HCBD_MODEL_HCBD */
-
-/* >>slabs */
-size_t hcbd_slabs_bytes(int nslab, int nval)
-{
-    if (nslab < 1 || nslab > (1 << 20) || nval < 0 || nval > 64) return 0;
-    return (size_t)nslab * (5 + 3 * (size_t)nval) * sizeof(double);
-}
-
-hcbd_result hcbd_slabs_init(hcbd_slabs *s, const double L[3], int nslab, int nval,
-                            int block, void *mem, size_t bytes)
-{
-    if (!s || !L || !mem) return HCBD_ERR_NULL;
-    memset(s, 0, sizeof *s);
-    if (!hcbd_slabs_bytes(nslab, nval) || block < 1) return HCBD_ERR_PARAM;
-    if (!(L[0] > 0 && L[1] > 0 && L[2] > 0 && isfinite(L[0]) && isfinite(L[1]) && isfinite(L[2])))
-        return HCBD_ERR_PARAM;
-    if (bytes < hcbd_slabs_bytes(nslab, nval)) return HCBD_ERR_MEMORY;
-    s->nslab = nslab;
-    s->nval = nval;
-    s->block = block;
-    s->L[0] = L[0]; s->L[1] = L[1]; s->L[2] = L[2];
-    s->acc = (double *)mem;
-    s->stat = s->acc + (size_t)nslab * (1 + nval);
-    memset(mem, 0, hcbd_slabs_bytes(nslab, nval));
-    return HCBD_OK;
-}
-
-void hcbd_slabs_add(hcbd_slabs *s, double y, const double *vals)
-{
-    int k, c;
-    double *a;
-    if (!s || !s->acc || !isfinite(y)) return;
-    k = (int)floor(y / s->L[1] * s->nslab);
-    k = ((k % s->nslab) + s->nslab) % s->nslab;
-    a = s->acc + (size_t)k * (1 + s->nval);
-    a[0] += 1.0;
-    for (c = 0; c < s->nval && vals; ++c) a[1 + c] += vals[c];
-}
-
-/* stat per slab: [0] blocks with particles, [1] count sum, then sums and
-   squares of the block density and of each block mean */
-void hcbd_slabs_end_sample(hcbd_slabs *s)
-{
-    const int nv = s ? s->nval : 0, ns = 2 + 2 * (1 + nv);
-    int k, c;
-    if (!s || !s->acc || ++s->nsamp < s->block) return;
-    for (k = 0; k < s->nslab; ++k) {
-        double *a = s->acc + (size_t)k * (1 + nv), *t = s->stat + (size_t)k * ns;
-        double cnt = a[0], dens = cnt / (s->block * s->L[0] * s->L[1] * s->L[2] / s->nslab);
-        t[1] += cnt;
-        t[2] += dens;
-        t[3] += dens * dens;
-        if (cnt > 0) {
-            t[0] += 1.0;
-            for (c = 0; c < nv; ++c) {
-                double m = a[1 + c] / cnt;
-                t[4 + 2 * c] += m;
-                t[5 + 2 * c] += m * m;
-            }
-        }
-        for (c = 0; c <= nv; ++c) a[c] = 0.0;
-    }
-    s->nblocks++;
-    s->nsamp = 0;
-}
-
-int64_t hcbd_slabs_result(const hcbd_slabs *s, double *out)
-{
-    const int nv = s ? s->nval : 0, ns = 2 + 2 * (1 + nv), no = 3 + 2 * nv;
-    int k, c;
-    if (!s || !out || !s->stat) return 0;
-    for (k = 0; k < s->nslab; ++k) {
-        const double *t = s->stat + (size_t)k * ns;
-        double *o = out + (size_t)k * no;
-        o[0] = (k + 0.5) * s->L[1] / s->nslab;
-        hcbd__block_stat((double)s->nblocks, t[2], t[3], &o[1], &o[2]);
-        for (c = 0; c < nv; ++c) hcbd__block_stat(t[0], t[4 + 2 * c], t[5 + 2 * c], &o[3 + 2 * c], &o[4 + 2 * c]);
-    }
-    return s->nblocks;
-}
-
-/* >>run-time guard: the whole state, in id order so the particle reported
-   is the lowest offending id whatever the storage. */
-static hcbd_result hcbd__guard(hcbd_world *w)
-{
-    const double L0 = w->p.L[0], L1 = w->p.L[1], L2 = w->p.L[2];
-    int k;
-    for (k = 0; k < w->n; ++k) {
-        const int i = w->slot[k];
-        const double x = w->x[i], y = w->y[i], z = w->z[i];
-        if (!(isfinite(x) && isfinite(y) && isfinite(z)))
-            return hcbd__fail(&w->err, HCBD_ERR_NONFINITE, w->step, k,
-                              "guard at step %lld: particle %d has position (%g, %g, %g)",
-                              (long long)w->step, k, x, y, z);
-        if (w->gibd && !(isfinite(w->vx[i]) && isfinite(w->vy[i]) && isfinite(w->vz[i])))
-            return hcbd__fail(&w->err, HCBD_ERR_NONFINITE, w->step, k,
-                              "guard at step %lld: particle %d has velocity (%g, %g, %g)",
-                              (long long)w->step, k, (double)w->vx[i], (double)w->vy[i],
-                              (double)w->vz[i]);
-        /* images within int32 with room for another box per step */
-        if (!(x >= 0 && x < L0 && y >= 0 && y < L1 && z >= 0 && z < L2) ||
-            w->ix[i] < -0x3FFFFFFF || w->ix[i] > 0x3FFFFFFF || w->iy[i] < -0x3FFFFFFF ||
-            w->iy[i] > 0x3FFFFFFF || w->iz[i] < -0x3FFFFFFF || w->iz[i] > 0x3FFFFFFF ||
-            !isfinite(w->lx[i]))
-            return hcbd__fail(&w->err, HCBD_ERR_OUTSIDE, w->step, k,
-                              "guard at step %lld: particle %d at (%.17g, %.17g, %.17g), "
-                              "images (%d, %d, %d), is outside the box [0, %g) x [0, %g) "
-                              "x [0, %g) or its image count is near overflow",
-                              (long long)w->step, k, x, y, z, (int)w->ix[i], (int)w->iy[i],
-                              (int)w->iz[i], L0, L1, L2);
-        if (w->walls && w->p.guard_walls && (y < w->wall_lo || y > w->wall_hi))
-            return hcbd__fail(&w->err, HCBD_ERR_WALL, w->step, k,
-                              "guard at step %lld: particle %d at y = %.17g is inside a "
-                              "wall (the channel is %g <= y <= %g)",
-                              (long long)w->step, k, y, w->wall_lo, w->wall_hi);
-        if (w->gibd && w->rho_valid && !(w->rho[i] > 0 && isfinite(w->rho[i])))
-            return hcbd__fail(&w->err, HCBD_ERR_NONFINITE, w->step, k,
-                              "guard at step %lld: particle %d has density %g",
-                              (long long)w->step, k, (double)w->rho[i]);
-    }
-    return HCBD_OK;
-}
-
-/* >>checkpoint: a header of seven little-endian 64-bit words (magic,
-   version, model, sizeof(hcbd_real), world kind, payload bytes, FNV-1a of
-   the payload), then the payload as 64-bit words.  One walker per world
-   both writes (out != NULL), measures (out == in == NULL) and reads, so
-   the two directions cannot disagree. */
-#ifndef HCBD_LOAD_MAX_BYTES
-/* a forged header of a few bytes must not make the loader ask for
-   terabytes; 8 GiB (1 GiB where size_t has 32 bits) holds some 10^7
-   particles */
-#define HCBD_LOAD_MAX_BYTES ((size_t)1 << (sizeof(size_t) >= 8 ? 33 : 30))
-#endif
-#define HCBD__CK_HEAD 56
-#define HCBD__CK_WORLD 1
-#define HCBD__CK_HC 2
-static const char hcbd__ck_magic[8] = {'H', 'C', 'B', 'D', 'C', 'K', 'P', 'T'};
-
-typedef struct hcbd__ck {
-    unsigned char *out;
-    const unsigned char *in;
-    size_t size, off;
-    int bad; /* a read past the end or an out-of-range integer */
-} hcbd__ck;
-
-static void hcbd__ck_u64(hcbd__ck *c, uint64_t *v)
-{
-    int k;
-    if (c->in) {
-        uint64_t x = 0;
-        if (c->bad || c->off > c->size || c->size - c->off < 8) {
-            c->bad = 1; /* off stays where the data ran out */
-            *v = 0;
-            return;
-        }
-        for (k = 0; k < 8; ++k) x |= (uint64_t)c->in[c->off + k] << (8 * k);
-        *v = x;
-    } else if (c->out) {
-        for (k = 0; k < 8; ++k) c->out[c->off + k] = (unsigned char)(*v >> (8 * k));
-    }
-    c->off += 8;
-}
-
-static void hcbd__ck_f64(hcbd__ck *c, double *v)
-{
-    uint64_t u = 0;
-    if (!c->in) memcpy(&u, v, 8);
-    hcbd__ck_u64(c, &u);
-    if (c->in) memcpy(v, &u, 8);
-}
-
-static void hcbd__ck_i64(hcbd__ck *c, int64_t *v)
-{
-    uint64_t u = c->in ? 0 : (uint64_t)*v;
-    hcbd__ck_u64(c, &u);
-    if (c->in) *v = (int64_t)u;
-}
-
-static void hcbd__ck_int(hcbd__ck *c, int *v)
-{
-    int64_t x = c->in ? 0 : *v;
-    hcbd__ck_i64(c, &x);
-    if (c->in) {
-        if (x < INT_MIN || x > INT_MAX) c->bad = 1;
-        *v = c->bad ? 0 : (int)x;
-    }
-}
-
-#define HCBD__CK_ENUM(c, field, type)                                         \
-    do {                                                                       \
-        int e_ = (int)(field);                                                 \
-        hcbd__ck_int((c), &e_);                                                \
-        if ((c)->in) (field) = (type)e_;                                       \
-    } while (0)
-
-/* n reals, or int32s, or u64s, at a[map[k]] (map NULL: a[k]); stored as
-   doubles, so a float world's values are exact too */
-static void hcbd__ck_reals(hcbd__ck *c, hcbd_real *a, const int32_t *map, int n)
-{
-    int k;
-    for (k = 0; k < n; ++k) {
-        double v = c->in ? 0.0 : (double)a[map ? map[k] : k];
-        hcbd__ck_f64(c, &v);
-        if (c->in) a[k] = (hcbd_real)v;
-    }
-}
-
-static void hcbd__ck_i32s(hcbd__ck *c, int32_t *a, const int32_t *map, int n)
-{
-    int k;
-    for (k = 0; k < n; ++k) {
-        int64_t v = c->in ? 0 : a[map ? map[k] : k];
-        hcbd__ck_i64(c, &v);
-        if (c->in) {
-            if (v < INT32_MIN || v > INT32_MAX) c->bad = 1;
-            a[k] = c->bad ? 0 : (int32_t)v;
-        }
-    }
-}
-
-
-static void hcbd__ck_f64s(hcbd__ck *c, double *a, const int32_t *map, int n)
-{
-    int k;
-    for (k = 0; k < n; ++k) {
-        double v = c->in ? 0.0 : a[map ? map[k] : k];
-        hcbd__ck_f64(c, &v);
-        if (c->in) a[k] = v;
-    }
-}
-
-static const char *hcbd__model_name(uint64_t m)
-{
-    return m == HCBD_MODEL_GIBD ? "GI-BD" : m == HCBD_MODEL_WALLED ? "walled"
-                                          : m == HCBD_MODEL_HCBD ? "HCBD" : "unknown";
-}
-
-static void hcbd__ck_head(unsigned char *b, uint64_t kind, size_t payload)
-{
-    hcbd__ck c;
-    uint64_t v[6];
-    int k;
-    memcpy(b, hcbd__ck_magic, 8);
-    v[0] = HCBD_CHECKPOINT_VERSION;
-    v[1] = HCBD_MODEL;
-    v[2] = sizeof(hcbd_real);
-    v[3] = kind;
-    v[4] = payload;
-    v[5] = hcbd__hash(0xCBF29CE484222325ULL, b + HCBD__CK_HEAD, payload);
-    memset(&c, 0, sizeof c);
-    c.out = b;
-    c.off = 8;
-    for (k = 0; k < 6; ++k) hcbd__ck_u64(&c, &v[k]);
-}
-
-/* Checks the header; on success c reads the payload. */
-static hcbd_result hcbd__ck_open(hcbd_error *e, const void *buf, size_t size, uint64_t kind,
-                                 hcbd__ck *c)
-{
-    static const char *kinds[3] = {"unknown", "hcbd_world (GI-BD/walled)", "hcbd_hc_world (HCBD)"};
-    uint64_t v[6];
-    int k;
-    memset(c, 0, sizeof *c);
-    if (!buf) return hcbd__fail(e, HCBD_ERR_NULL, -1, -1, "checkpoint buffer is NULL");
-    if (size < HCBD__CK_HEAD)
-        return hcbd__fail(e, HCBD_ERR_FORMAT, -1, -1,
-                          "checkpoint of %zu bytes is shorter than its %d-byte header "
-                          "(truncated)", size, HCBD__CK_HEAD);
-    if (memcmp(buf, hcbd__ck_magic, 8))
-        return hcbd__fail(e, HCBD_ERR_FORMAT, -1, -1,
-                          "not an hcbd checkpoint: the first 8 bytes are not \"HCBDCKPT\"");
-    c->in = (const unsigned char *)buf;
-    c->size = HCBD__CK_HEAD;
-    c->off = 8;
-    for (k = 0; k < 6; ++k) hcbd__ck_u64(c, &v[k]);
-    if (v[0] != HCBD_CHECKPOINT_VERSION)
-        return hcbd__fail(e, HCBD_ERR_VERSION, -1, -1,
-                          "checkpoint format version %llu; this build reads version %d",
-                          (unsigned long long)v[0], HCBD_CHECKPOINT_VERSION);
-    if (v[1] != HCBD_MODEL)
-        return hcbd__fail(e, HCBD_ERR_MODEL, -1, -1,
-                          "checkpoint model %llu (%s); this is the %s build",
-                          (unsigned long long)v[1], hcbd__model_name(v[1]),
-                          hcbd__model_name(HCBD_MODEL));
-    if (v[2] != sizeof(hcbd_real))
-        return hcbd__fail(e, HCBD_ERR_MODEL, -1, -1,
-                          "checkpoint precision: hcbd_real of %llu bytes; this build's is %d",
-                          (unsigned long long)v[2], (int)sizeof(hcbd_real));
-    if (v[3] != kind)
-        return hcbd__fail(e, HCBD_ERR_MODEL, -1, -1,
-                          "checkpoint world kind %llu (%s); expected %s",
-                          (unsigned long long)v[3], kinds[v[3] < 3 ? v[3] : 0], kinds[kind]);
-    if (v[4] != size - HCBD__CK_HEAD)
-        return hcbd__fail(e, HCBD_ERR_FORMAT, -1, -1,
-                          "checkpoint payload should be %llu bytes but %zu follow the "
-                          "header (truncated or padded)", (unsigned long long)v[4],
-                          size - HCBD__CK_HEAD);
-    if (v[5] != hcbd__hash(0xCBF29CE484222325ULL, c->in + HCBD__CK_HEAD, size - HCBD__CK_HEAD))
-        return hcbd__fail(e, HCBD_ERR_FORMAT, -1, -1,
-                          "checkpoint checksum mismatch: the payload is corrupted");
-    c->in += HCBD__CK_HEAD;
-    c->size = size - HCBD__CK_HEAD;
-    c->off = 0;
-    return HCBD_OK;
-}
-
-/* e->msg = a b e->msg, cut to fit */
-static void hcbd__prefix(hcbd_error *e, const char *a, const char *b)
-{
-    char m[sizeof e->msg];
-    const char *part[3];
-    size_t k = 0, j;
-    int q;
-    part[0] = a; part[1] = b; part[2] = e->msg;
-    for (q = 0; q < 3; ++q)
-        for (j = 0; part[q][j] && k + 1 < sizeof m; ++j) m[k++] = part[q][j];
-    m[k] = 0;
-    memcpy(e->msg, m, k + 1);
-}
-
-static hcbd_result hcbd__ck_bad(hcbd_error *e, const hcbd__ck *c, const char *where)
-{
-    return hcbd__fail(e, HCBD_ERR_FORMAT, -1, -1,
-                      "checkpoint %s at byte %zu of the %zu-byte payload", where, c->off,
-                      c->size);
-}
-
-static hcbd_result hcbd__save_file(hcbd_error *e, const unsigned char *b, size_t n,
-                                   const char *path)
-{
-    char tmp[4096];
-    FILE *f;
-    size_t len = strlen(path);
-    if (len == 0 || len + 5 > sizeof tmp)
-        return hcbd__fail(e, HCBD_ERR_PARAM, -1, -1,
-                          "path of %zu characters (need 1..%d)", len, (int)sizeof tmp - 5);
-    snprintf(tmp, sizeof tmp, "%s.tmp", path);
-    f = fopen(tmp, "wb");
-    if (!f) return hcbd__fail(e, HCBD_ERR_IO, -1, -1, "cannot open %s for writing", tmp);
-    if (fwrite(b, 1, n, f) != n) {
-        fclose(f);
-        remove(tmp);
-        return hcbd__fail(e, HCBD_ERR_IO, -1, -1, "writing %zu bytes to %s failed", n, tmp);
-    }
-    if (fclose(f) != 0) {
-        remove(tmp);
-        return hcbd__fail(e, HCBD_ERR_IO, -1, -1, "closing %s failed (disk full?)", tmp);
-    }
-    if (rename(tmp, path) != 0) {
-        remove(tmp);
-        return hcbd__fail(e, HCBD_ERR_IO, -1, -1, "renaming %s to %s failed", tmp, path);
-    }
-    return HCBD_OK;
-}
-
-/* Whole file into a fresh block (caller frees). */
-static hcbd_result hcbd__read_file(hcbd_error *e, const char *path, unsigned char **b, size_t *n)
-{
-    FILE *f;
-    long len;
-    *b = NULL;
-    *n = 0;
-    f = fopen(path, "rb");
-    if (!f) return hcbd__fail(e, HCBD_ERR_IO, -1, -1, "cannot open %s for reading", path);
-    if (fseek(f, 0, SEEK_END) != 0 || (len = ftell(f)) < 0 || fseek(f, 0, SEEK_SET) != 0) {
-        fclose(f);
-        return hcbd__fail(e, HCBD_ERR_IO, -1, -1, "cannot find the size of %s", path);
-    }
-    *b = (unsigned char *)HCBD_MALLOC(len > 0 ? (size_t)len : 1);
-    if (!*b) {
-        fclose(f);
-        return hcbd__fail(e, HCBD_ERR_MEMORY, -1, -1, "malloc of %ld bytes for %s failed",
-                          len, path);
-    }
-    if (fread(*b, 1, (size_t)len, f) != (size_t)len) {
-        fclose(f);
-        HCBD_FREE(*b);
-        *b = NULL;
-        return hcbd__fail(e, HCBD_ERR_IO, -1, -1, "reading %ld bytes of %s failed", len, path);
-    }
-    fclose(f);
-    *n = (size_t)len;
-    return HCBD_OK;
-}
-
-static void hcbd__ck_params(hcbd__ck *c, hcbd_params *p)
-{
-    int d;
-    for (d = 0; d < 3; ++d) hcbd__ck_f64(c, &p->L[d]);
-    hcbd__ck_f64(c, &p->dt); hcbd__ck_f64(c, &p->kT); hcbd__ck_f64(c, &p->xi);
-    hcbd__ck_f64(c, &p->xip); hcbd__ck_f64(c, &p->tau); hcbd__ck_f64(c, &p->Rc);
-    hcbd__ck_f64(c, &p->density);
-    hcbd__ck_int(c, &p->density_norm); hcbd__ck_int(c, &p->lagged_density);
-    HCBD__CK_ENUM(c, p->dynamics, hcbd_dynamics);
-    HCBD__CK_ENUM(c, p->potential, hcbd_potential);
-    HCBD__CK_ENUM(c, p->noise, hcbd_noise);
-    HCBD__CK_ENUM(c, p->pair_integrator, hcbd_pair_integrator);
-    hcbd__ck_f64(c, &p->f); hcbd__ck_f64(c, &p->sigma); hcbd__ck_f64(c, &p->star_eps);
-    hcbd__ck_f64(c, &p->rcut);
-    hcbd__ck_int(c, &p->table_n); hcbd__ck_f64(c, &p->table_r0);
-    for (d = 0; d < 3; ++d) hcbd__ck_f64(c, &p->fext[d]);
-    hcbd__ck_int(c, &p->fext_background_only);
-    hcbd__ck_f64(c, &p->gdot);
-    hcbd__ck_f64(c, &p->wall_thickness);
-    hcbd__ck_f64(c, &p->wall_vx[0]); hcbd__ck_f64(c, &p->wall_vx[1]);
-    hcbd__ck_f64(c, &p->wall_beta_max);
-    HCBD__CK_ENUM(c, p->wall_mode, hcbd_wall_mode);
-    hcbd__ck_f64(c, &p->wall_a); hcbd__ck_f64(c, &p->wall_b);
-    hcbd__ck_f64(c, &p->wall_plane); hcbd__ck_f64(c, &p->wall_shift);
-    hcbd__ck_int(c, &p->wall_noise_beta);
-    hcbd__ck_f64(c, &p->skin);
-    hcbd__ck_int(c, &p->sort);
-    hcbd__ck_int(c, &p->force_table);
-    hcbd__ck_u64(c, &p->seed);
-    hcbd__ck_int(c, &p->threads);
-    hcbd__ck_f64(c, &p->min_distance);
-    hcbd__ck_int(c, &p->guard_every); hcbd__ck_int(c, &p->guard_walls);
-    hcbd__ck_f64(c, &p->guard_step);
-}
-
-/* Everything after the definition, per particle in id order (map = slot
-   when writing; a loaded world is stored in id order). */
-static void hcbd__ck_state(hcbd__ck *c, hcbd_world *w)
-{
-    const int32_t *map = c->in ? NULL : w->slot;
-    const int n = w->n;
-    int d;
-    hcbd__ck_i64(c, &w->step);
-    hcbd__ck_f64(c, &w->le_offset);
-    hcbd__ck_int(c, &w->flux_on);
-    hcbd__ck_i64(c, &w->flux_steps);
-    for (d = 0; d < 3; ++d) hcbd__ck_f64(c, &w->flux_sum[d]);
-    hcbd__ck_i64(c, &w->wall_pen);
-    hcbd__ck_i64(c, &w->wall_pen_step);
-    hcbd__ck_int(c, &w->wall_pen_id);
-    hcbd__ck_int(c, &w->rho_valid);
-    hcbd__ck_int(c, &w->rho_current);
-    hcbd__ck_i64(c, &w->nl.n_rebuilds);
-    hcbd__ck_i64(c, &w->nl.n_rescans);
-    hcbd__ck_reals(c, w->x, map, n); hcbd__ck_reals(c, w->y, map, n); hcbd__ck_reals(c, w->z, map, n);
-    hcbd__ck_i32s(c, w->ix, map, n); hcbd__ck_i32s(c, w->iy, map, n); hcbd__ck_i32s(c, w->iz, map, n);
-    hcbd__ck_f64s(c, w->lx, map, n);
-    if (w->gibd) {
-        hcbd__ck_reals(c, w->vx, map, n); hcbd__ck_reals(c, w->vy, map, n);
-        hcbd__ck_reals(c, w->vz, map, n);
-        hcbd__ck_reals(c, w->rho, map, n); hcbd__ck_reals(c, w->inv_rho, map, n);
-    }
-}
-
-/* capacity, max_pairs, n, parameters, table; the state follows */
-static void hcbd__ck_world(hcbd__ck *c, hcbd_world *w)
-{
-    int64_t cap = w->capacity, mp = w->nl.max_pairs;
-    hcbd__ck_i64(c, &cap);
-    hcbd__ck_i64(c, &mp);
-    hcbd__ck_int(c, &w->n);
-    hcbd__ck_params(c, &w->p);
-    if (w->p.potential == HCBD_POT_TABLE) {
-        hcbd__ck_f64s(c, w->tab_F, NULL, w->p.table_n);
-        hcbd__ck_f64s(c, w->tab_V, NULL, w->p.table_n);
-    }
-    hcbd__ck_state(c, w);
-}
-
-static void hcbd__ck_walk(hcbd__ck *c, void *w)
-{
-    hcbd__ck_world(c, (hcbd_world *)w);
-}
-
-/* Loads into a fresh world w (its old contents are not looked at): the
-   definition first, then the world created from it and its state.  A
-   failure after the creation leaves w live, for hcbd__adopt to free. */
-static hcbd_result hcbd__ck_load(hcbd_world *w, const void *buf, size_t size)
-{
-    hcbd__ck c;
-    hcbd_world_def def;
-    int64_t cap = 0, mp = 0;
-    int n = 0, k;
-    double *tab = NULL;
-    hcbd_result r;
-    size_t bytes;
-    if (!w) return HCBD_ERR_NULL;
-    memset(w, 0, sizeof *w);
-    hcbd__clear(&w->err);
-    if ((r = hcbd__ck_open(&w->err, buf, size, HCBD__CK_WORLD, &c)) != HCBD_OK) return r;
-    memset(&def, 0, sizeof def);
-    hcbd__ck_i64(&c, &cap);
-    hcbd__ck_i64(&c, &mp);
-    hcbd__ck_int(&c, &n);
-    hcbd__ck_params(&c, &def.params);
-    if (c.bad) return hcbd__ck_bad(&w->err, &c, "ends inside the parameters");
-    if (cap < 1 || cap > INT32_MAX || n < 0 || n > cap)
-        return hcbd__fail(&w->err, HCBD_ERR_FORMAT, -1, -1,
-                          "checkpoint holds n = %d particles for capacity %lld", n,
-                          (long long)cap);
-    def.capacity = (int)cap;
-    def.max_pairs = mp;
-    def.params.table_F = def.params.table_V = NULL;
-    if (def.params.potential == HCBD_POT_TABLE) {
-        const int tn = def.params.table_n;
-        if (tn < 2 || (size_t)tn > (c.size - c.off) / 16)
-            return hcbd__ck_bad(&w->err, &c, "table_n does not fit the rest");
-        tab = (double *)HCBD_MALLOC(2 * (size_t)tn * sizeof(double));
-        if (!tab) return hcbd__fail(&w->err, HCBD_ERR_MEMORY, -1, -1, "malloc of the table failed");
-        hcbd__ck_f64s(&c, tab, NULL, tn);
-        hcbd__ck_f64s(&c, tab + tn, NULL, tn);
-        def.params.table_F = tab;
-        def.params.table_V = tab + tn;
-    }
-    /* every particle takes at least 7 words (position, images, Lees-Edwards
-       shift): a short file is refused before its capacity is allocated */
-    if ((size_t)n > (c.size - c.off) / (7 * 8)) {
-        HCBD_FREE(tab);
-        return hcbd__ck_bad(&w->err, &c, "is shorter than its particles");
-    }
-    bytes = hcbd_world_bytes(&def);
-    if (bytes > HCBD_LOAD_MAX_BYTES) {
-        HCBD_FREE(tab);
-        return hcbd__fail(&w->err, HCBD_ERR_MEMORY, -1, -1,
-                          "checkpoint world needs %zu bytes, more than HCBD_LOAD_MAX_BYTES",
-                          bytes);
-    }
-    r = hcbd_world_create(w, &def);
-    HCBD_FREE(tab);
-    if (r != HCBD_OK) return r; /* w->err names the parameter */
-    w->n = n;
-    hcbd__ck_state(&c, w);
-    if (c.bad || c.off != c.size)
-        return hcbd__ck_bad(&w->err, &c,
-                            c.bad ? "ends inside the particle state" : "has trailing bytes");
-    for (k = 0; k < n; ++k) {
-        w->id[k] = k;
-        w->slot[k] = k;
-    }
-    w->nl.list_valid = 0;
-    w->nl.le_drift = 0.0;
-    /* a checksum-valid file from elsewhere may still hold nonsense */
-    r = hcbd__guard(w);
-    if (r == HCBD_OK && ((w->flux_on & ~1) || !(w->le_offset >= 0 && w->le_offset < w->p.L[0])))
-        r = hcbd__fail(&w->err, HCBD_ERR_FORMAT, -1, -1, "flux_on = %d, le_offset = %g",
-                       w->flux_on, w->le_offset);
-    /* the artificial wall particles of the saved step, for observables
-       called before the next step draws its own */
-    if (r == HCBD_OK && HCBD__WALLS && w->n_art > 0) {
-        w->step--;
-        hcbd__wall_draw(w);
-        w->step++;
-    }
-    if (r != HCBD_OK) {
-        hcbd__prefix(&w->err, "checkpoint state refused: ", "");
-        return r;
-    }
-    hcbd__clear(&w->err);
-    return HCBD_OK;
-}
-
-/* >>world kinds: the lifecycle, the thread setting and the checkpoint
-   wrappers of both worlds, written once over a description of each world
-   type (its size, where its shared fields sit, its model's functions). */
-typedef void (*hcbd__walk_fn)(hcbd__ck *c, void *w);
-typedef struct hcbd__kind {
-    size_t size, o_err, o_step, o_live, o_owned, o_threads; /* sizeof, offsetof */
-    uint64_t tag;            /* checkpoint world kind (HCBD__CK_*)             */
-    const char *size_fn;     /* the checkpoint size function a message names  */
-    hcbd_result (*check)(const void *def, char *msg, size_t n);
-    size_t (*bytes)(const void *def);
-    hcbd_result (*init)(void *w, const void *def, void *mem, size_t bytes);
-    hcbd__walk_fn walk;      /* writes, or with c->out NULL measures, fields  */
-    hcbd_result (*load)(void *w, const void *buf, size_t size); /* into a
-                                zeroed world; may fail leaving it live      */
-} hcbd__kind;
-
-#define HCBD__AT(T, k, w, o) ((T *)(void *)((char *)(w) + (k)->o))
-
-/* scratch room for a world of either kind while a load builds it aside */
-typedef union hcbd__any_world {
-    hcbd_world bd;
-#if HCBD_MODEL == HCBD_MODEL_HCBD
-    hcbd_hc_world hc;
-#endif
-} hcbd__any_world;
-
-static hcbd_result hcbd__create(const hcbd__kind *k, void *w, const void *def)
-{
-    hcbd_error *e;
-    size_t need;
-    void *mem;
-    hcbd_result r;
-    if (!w) return HCBD_ERR_NULL;
-    memset(w, 0, k->size);
-    e = HCBD__AT(hcbd_error, k, w, o_err);
-    hcbd__clear(e);
-    r = k->check(def, e->msg, sizeof e->msg);
-    if (r != HCBD_OK) {
-        e->code = r;
-        return r;
-    }
-    need = k->bytes(def);
-    if (!(mem = HCBD_MALLOC(need)))
-        return hcbd__fail(e, HCBD_ERR_MEMORY, -1, -1, "malloc of %zu bytes failed", need);
-    r = k->init(w, def, mem, need);
-    if (r != HCBD_OK) {
-        HCBD_FREE(mem);
-        return r;
-    }
-    *HCBD__AT(void *, k, w, o_owned) = mem;
-    return HCBD_OK;
-}
-
-static void hcbd__destroy(const hcbd__kind *k, void *w)
-{
-    void *mem;
-    if (!w) return;
-    mem = *HCBD__AT(void *, k, w, o_owned);
-    if (mem) HCBD_FREE(mem);
-    /* a destroyed world has no particles and no arrays to touch */
-    memset(w, 0, k->size);
-}
-
-static hcbd_result hcbd__set_threads(const hcbd__kind *k, void *w, int threads)
-{
-    hcbd_error *e;
-    if (!w) return HCBD_ERR_NULL;
-    e = HCBD__AT(hcbd_error, k, w, o_err);
-    hcbd__clear(e);
-    if (threads < 1 || threads > 1024)
-        return hcbd__fail(e, HCBD_ERR_PARAM, *HCBD__AT(int64_t, k, w, o_step), -1,
-                          "threads = %d is invalid (need 1..1024)", threads);
-    *HCBD__AT(int, k, w, o_threads) = threads;
-    return HCBD_OK;
-}
-
-static size_t hcbd__ck_size(const hcbd__kind *k, const void *w)
-{
-    hcbd__ck c;
-    if (!w) return 0;
-    memset(&c, 0, sizeof c);
-    k->walk(&c, (void *)w); /* measures only: nothing is written */
-    return HCBD__CK_HEAD + c.off;
-}
-
-static hcbd_result hcbd__ck_put(const hcbd__kind *k, void *w, void *buf, size_t size)
-{
-    hcbd__ck c;
-    hcbd_error *e;
-    int64_t step;
-    size_t need;
-    if (!w) return HCBD_ERR_NULL;
-    e = HCBD__AT(hcbd_error, k, w, o_err);
-    step = *HCBD__AT(int64_t, k, w, o_step);
-    need = hcbd__ck_size(k, w);
-    hcbd__clear(e);
-    if (!buf) return hcbd__fail(e, HCBD_ERR_NULL, step, -1, "checkpoint buffer is NULL");
-    if (size < need)
-        return hcbd__fail(e, HCBD_ERR_MEMORY, step, -1,
-                          "checkpoint buffer of %zu bytes is smaller than the %zu bytes "
-                          "%s asks for", size, need, k->size_fn);
-    memset(&c, 0, sizeof c);
-    c.out = (unsigned char *)buf + HCBD__CK_HEAD;
-    c.size = need - HCBD__CK_HEAD;
-    k->walk(&c, w);
-    hcbd__ck_head((unsigned char *)buf, k->tag, c.off);
-    return HCBD_OK;
-}
-
-/* The loaders build the new world aside in t: on success it replaces w (a
-   live w is destroyed first); on failure t is freed, a live w keeps its
-   state and only its error changes, and a w that is not live (never
-   initialised, or destroyed) is zeroed and carries the error. */
-static hcbd_result hcbd__adopt(const hcbd__kind *k, void *w, void *t, hcbd_result r)
-{
-    const hcbd_error e = *HCBD__AT(hcbd_error, k, t, o_err);
-    const int live = *HCBD__AT(uint64_t, k, w, o_live) == HCBD__LIVE;
-    if (r == HCBD_OK) {
-        if (live) hcbd__destroy(k, w);
-        memcpy(w, t, k->size);
-        return r;
-    }
-    if (*HCBD__AT(uint64_t, k, t, o_live) == HCBD__LIVE) hcbd__destroy(k, t);
-    if (!live) memset(w, 0, k->size);
-    *HCBD__AT(hcbd_error, k, w, o_err) = e;
-    return r;
-}
-
-static hcbd_result hcbd__ck_get(const hcbd__kind *k, void *w, const void *buf, size_t size)
-{
-    hcbd__any_world t;
-    if (!w) return HCBD_ERR_NULL;
-    return hcbd__adopt(k, w, &t, k->load(&t, buf, size));
-}
-
-static hcbd_result hcbd__save(const hcbd__kind *k, void *w, const char *path)
-{
-    hcbd_error *e;
-    int64_t step;
-    unsigned char *b;
-    size_t n;
-    hcbd_result r;
-    if (!w) return HCBD_ERR_NULL;
-    e = HCBD__AT(hcbd_error, k, w, o_err);
-    step = *HCBD__AT(int64_t, k, w, o_step);
-    hcbd__clear(e);
-    if (!path) return hcbd__fail(e, HCBD_ERR_NULL, step, -1, "path is NULL");
-    n = hcbd__ck_size(k, w);
-    if (!(b = (unsigned char *)HCBD_MALLOC(n)))
-        return hcbd__fail(e, HCBD_ERR_MEMORY, step, -1, "malloc of %zu bytes failed", n);
-    r = hcbd__ck_put(k, w, b, n);
-    if (r == HCBD_OK) r = hcbd__save_file(e, b, n, path);
-    HCBD_FREE(b);
-    return r;
-}
-
-static hcbd_result hcbd__load(const hcbd__kind *k, void *w, const char *path)
-{
-    hcbd__any_world t;
-    hcbd_error *e = HCBD__AT(hcbd_error, k, &t, o_err);
-    unsigned char *b;
-    size_t n;
-    hcbd_result r;
-    if (!w) return HCBD_ERR_NULL;
-    memset(&t, 0, sizeof t);
-    if (!path) {
-        r = hcbd__fail(e, HCBD_ERR_NULL, -1, -1, "path is NULL");
-    } else if ((r = hcbd__read_file(e, path, &b, &n)) == HCBD_OK) {
-        r = k->load(&t, b, n);
-        HCBD_FREE(b);
-        if (r != HCBD_OK) hcbd__prefix(e, path, ": ");
-    }
-    return hcbd__adopt(k, w, &t, r);
-}
-
-/* The GI-BD world's kind and its public lifecycle, thread and checkpoint
-   functions. */
-static hcbd_result hcbd__bd_check(const void *def, char *msg, size_t n)
-{
-    return hcbd__check_def((const hcbd_world_def *)def, msg, n);
-}
-
-static size_t hcbd__bd_bytes(const void *def)
-{
-    return hcbd_world_bytes((const hcbd_world_def *)def);
-}
-
-static hcbd_result hcbd__bd_init(void *w, const void *def, void *mem, size_t bytes)
-{
-    return hcbd_world_init((hcbd_world *)w, (const hcbd_world_def *)def, mem, bytes);
-}
-
-static hcbd_result hcbd__bd_load(void *w, const void *buf, size_t size)
-{
-    return hcbd__ck_load((hcbd_world *)w, buf, size);
-}
-
-static const hcbd__kind hcbd__kind_bd = {
-    sizeof(hcbd_world), offsetof(hcbd_world, err), offsetof(hcbd_world, step),
-    offsetof(hcbd_world, live), offsetof(hcbd_world, owned_mem),
-    offsetof(hcbd_world, p) + offsetof(hcbd_params, threads), HCBD__CK_WORLD,
-    "hcbd_checkpoint_size", hcbd__bd_check, hcbd__bd_bytes, hcbd__bd_init, hcbd__ck_walk,
-    hcbd__bd_load};
-
-hcbd_result hcbd_world_create(hcbd_world *w, const hcbd_world_def *def)
-{
-    return hcbd__create(&hcbd__kind_bd, w, def);
-}
-
-void hcbd_world_destroy(hcbd_world *w) { hcbd__destroy(&hcbd__kind_bd, w); }
-
-hcbd_result hcbd_set_threads(hcbd_world *w, int threads)
-{
-    return hcbd__set_threads(&hcbd__kind_bd, w, threads);
-}
-
-size_t hcbd_checkpoint_size(const hcbd_world *w) { return hcbd__ck_size(&hcbd__kind_bd, w); }
-
-hcbd_result hcbd_checkpoint_save(hcbd_world *w, void *buf, size_t size)
-{
-    return hcbd__ck_put(&hcbd__kind_bd, w, buf, size);
-}
-
-hcbd_result hcbd_checkpoint_load(hcbd_world *w, const void *buf, size_t size)
-{
-    return hcbd__ck_get(&hcbd__kind_bd, w, buf, size);
-}
-
-hcbd_result hcbd_save(hcbd_world *w, const char *path)
-{
-    return hcbd__save(&hcbd__kind_bd, w, path);
-}
-
-hcbd_result hcbd_load(hcbd_world *w, const char *path)
-{
-    return hcbd__load(&hcbd__kind_bd, w, path);
-}
-
-/* >>extended XYZ and thermo lines */
-static void hcbd__xyz_head(FILE *f, int n, const double L[3], double time, int64_t step,
-                           double le_offset, const char *extra)
-{
-    fprintf(f, "%d\nLattice=\"%.17g 0 0 0 %.17g 0 0 0 %.17g\" Origin=\"0 0 0\" "
-               "Properties=species:S:1:pos:R:3:velo:R:3:id:I:1 pbc=\"T T T\" "
-               "Time=%.17g Step=%lld le_offset=%.17g%s\n",
-            n, L[0], L[1], L[2], time, (long long)step, le_offset, extra);
-}
-
-static void hcbd__xyz_atom(FILE *f, const char *sp, double x, double y, double z, double vx,
-                           double vy, double vz, int id)
-{
-    fprintf(f, "%s %.17g %.17g %.17g %.17g %.17g %.17g %d\n", sp, x, y, z, vx, vy, vz, id);
-}
-
-static hcbd_result hcbd__xyz(const hcbd_world *w, FILE *f, const int *ids, int nids,
-                             const char *extra)
-{
-    int k;
-    if (!w || !f) return HCBD_ERR_NULL;
-    if (!ids) nids = w->n;
-    if (nids < 0 || nids > w->n) return HCBD_ERR_PARAM;
-    for (k = 0; ids && k < nids; ++k)
-        if (ids[k] < 0 || ids[k] >= w->n) return HCBD_ERR_PARAM;
-    hcbd__xyz_head(f, nids, w->p.L, (double)w->step * w->p.dt, w->step, w->le_offset, extra);
-    for (k = 0; k < nids; ++k) {
-        const int id = ids ? ids[k] : k, i = w->slot[id];
-        hcbd__xyz_atom(f, "S", w->x[i], w->y[i], w->z[i], w->gibd ? (double)w->vx[i] : 0.0,
-                       w->gibd ? (double)w->vy[i] : 0.0, w->gibd ? (double)w->vz[i] : 0.0, id);
-    }
-    return ferror(f) ? HCBD_ERR_IO : HCBD_OK;
-}
-
-hcbd_result hcbd_xyz_write(const hcbd_world *w, FILE *f, const int *ids, int nids)
-{
-    return hcbd__xyz(w, f, ids, nids, "");
-}
-
-hcbd_result hcbd_xyz_offenders(const hcbd_world *w, FILE *f)
-{
-    char extra[96];
-    int k, m = 0, *ids;
-    const int bad = w ? (int)w->err.id : -1;
-    hcbd_result r;
-    if (!w || !f) return HCBD_ERR_NULL;
-    if (bad < 0 || bad >= w->n) return HCBD_ERR_STATE;
-    /* the scratch area holds n ints; the frame needs no allocation */
-    ids = (int *)w->scratch;
-    {
-        const double rr = w->nl.rlist > 0 ? w->nl.rlist : 0.0;
-        const int i = w->slot[bad];
-        for (k = 0; k < w->n; ++k) {
-            const int j = w->slot[k];
-            double e[3];
-            e[0] = hcbd__mi((double)w->x[i] - w->x[j], w->p.L[0]);
-            e[1] = hcbd__mi((double)w->y[i] - w->y[j], w->p.L[1]);
-            e[2] = hcbd__mi((double)w->z[i] - w->z[j], w->p.L[2]);
-            if (k == bad || !(e[0] * e[0] + e[1] * e[1] + e[2] * e[2] > rr * rr)) ids[m++] = k;
-        }
-    }
-    snprintf(extra, sizeof extra, " error=%s offender=%d", hcbd_result_name(w->err.code), bad);
-    r = hcbd__xyz(w, f, ids, m, extra);
-    return r;
-}
-
-int hcbd_thermo_header(char *buf, size_t size)
-{
-    return snprintf(buf, size, "# step time T px py pz list_pairs wall_pen ns_pstep");
-}
-
-int hcbd_thermo_line(const hcbd_world *w, double ns_pstep, char *buf, size_t size)
-{
-    double p[3];
-    char ns[32];
-    if (!w) return snprintf(buf, size, "# no world");
-    hcbd_momentum(w, p);
-    if (isfinite(ns_pstep)) snprintf(ns, sizeof ns, "%.4g", ns_pstep);
-    else snprintf(ns, sizeof ns, "-");
-    return snprintf(buf, size, "%lld %.9g %.9g %.6e %.6e %.6e %lld %lld %s",
-                    (long long)w->step, (double)w->step * w->p.dt, hcbd_temperature(w), p[0],
-                    p[1], p[2], (long long)w->nl.npairs, (long long)w->wall_pen, ns);
-}
-
-#if HCBD_MODEL == HCBD_MODEL_HCBD
-/* Positions inside the box, finite velocities and pair variables. */
-static hcbd_result hcbd__hc_guard(hcbd_hc_world *w)
-{
-    const double *L = w->p.L;
-    int i, k;
-    for (i = 0; i < w->nf; ++i) {
-        const double x = w->fx[i], y = w->fy[i], z = w->fz[i];
-        if (!(isfinite(w->fvx[i]) && isfinite(w->fvy[i]) && isfinite(w->fvz[i])))
-            return hcbd__fail(&w->err, HCBD_ERR_NONFINITE, w->step, i,
-                              "guard at step %lld: fluid blob %d has velocity (%g, %g, %g)",
-                              (long long)w->step, i, (double)w->fvx[i], (double)w->fvy[i],
-                              (double)w->fvz[i]);
-        if (!(x >= 0 && x < L[0] && y >= 0 && y < L[1] && z >= 0 && z < L[2]))
-            return hcbd__fail(&w->err, HCBD_ERR_OUTSIDE, w->step, i,
-                              "guard at step %lld: fluid blob %d at (%.17g, %.17g, %.17g) is "
-                              "outside the box", (long long)w->step, i, x, y, z);
-    }
-    for (i = 0; i < w->np; ++i) {
-        const double x = w->px[i], y = w->py[i], z = w->pz[i];
-        if (!(x >= 0 && x < L[0] && y >= 0 && y < L[1] && z >= 0 && z < L[2]))
-            return hcbd__fail(&w->err, HCBD_ERR_OUTSIDE, w->step, w->nf + i,
-                              "guard at step %lld: polymer %d at (%.17g, %.17g, %.17g) is "
-                              "outside the box", (long long)w->step, i, x, y, z);
-        for (k = 0; w->transient && k < w->pair_n[i]; ++k)
-            if (!isfinite(w->pair_l[(size_t)i * w->pair_cap + k]))
-                return hcbd__fail(&w->err, HCBD_ERR_NONFINITE, w->step, w->nf + i,
-                                  "guard at step %lld: polymer %d's pair variable with %d "
-                                  "is not finite", (long long)w->step, i,
-                                  (int)w->pair_b[(size_t)i * w->pair_cap + k]);
-    }
-    return HCBD_OK;
-}
-
+/* >>HCBD: checkpoints, lifecycle, XYZ and thermo */
 static void hcbd__ck_hc_params(hcbd__ck *c, hcbd_hc_params *p)
 {
     int d;
