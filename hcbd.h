@@ -861,11 +861,11 @@ typedef struct hcbd_hc_world {
        fluid blob's polymers in increasing id at xt_a[xt_start[i] ..] */
     hcbd__nlist lf, lp, lx;
     int32_t *xt_start, *xt_a, *scratch;
-    /* the polymers' pairs (half list): owners' separations dx dy dz r (pd,
-       r = -1 beyond rc), weights (pw) and forces (pf) per pair, the owners'
-       own weight sums (pown), and each polymer's pairs as the partner
-       (rv_p[rv_start[b] ..], owners in increasing id) */
-    double *pd, *pw, *pf, *pown;
+    /* the polymers' pairs (half list): weights (pw) and forces (pf) per
+       list entry (zero beyond rc), the owners' own weight sums (pown), and
+       each polymer's pairs as the partner (rv_p[rv_start[b] ..], owners in
+       increasing id) */
+    double *pw, *pf, *pown;
     int32_t *rv_start, *rv_p;
     double *xw;                  /* W-RaPiD weight of each cross pair (0
                                     beyond rc), entry xt_p[k] of lx for the
@@ -3171,33 +3171,140 @@ static int hcbd__owners(hcbd_world *w, hcbd__owner_fn fn)
     return hcbd__nl_owners(&w->nl, w->n, w->p.threads, w, fn);
 }
 
+/* Gathers the partners of i from list entries [*p, min(pend, *p + CHUNK))
+   that lie within r^2 < cut2, without a branch (about half the list lies in
+   the skin, and a branch on it would be mispredicted half the time);
+   returns their count and advances *p. */
+typedef struct hcbd__near {
+    int32_t j[HCBD__CHUNK], k[HCBD__CHUNK]; /* partner, Lees-Edwards image     */
+    int32_t e[HCBD__CHUNK];                 /* the pair's list entry           */
+    double x[HCBD__CHUNK], y[HCBD__CHUNK], z[HCBD__CHUNK], r2[HCBD__CHUNK];
+} hcbd__near;
+
+HCBD__INLINE int hcbd__gather_at(const hcbd_real *HCBD__RESTRICT x, const hcbd_real *HCBD__RESTRICT y,
+                                 const hcbd_real *HCBD__RESTRICT z, const int32_t *HCBD__RESTRICT nb,
+                                 const hcbd__box *box, double xi, double yi, double zi, int32_t *p,
+                                 int32_t pend, double cut2, hcbd__near *c)
+{
+    const int32_t pe = pend - *p > HCBD__CHUNK ? *p + HCBD__CHUNK : pend;
+    int m = 0;
+    for (; *p < pe; ++*p) {
+        const int j = nb[*p];
+        double d[3], r2;
+        const int k = hcbd__delta_box(box, xi - x[j], yi - y[j], zi - z[j], d);
+        r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+        c->j[m] = j; c->k[m] = k; c->e[m] = *p;
+        c->x[m] = d[0]; c->y[m] = d[1]; c->z[m] = d[2]; c->r2[m] = r2;
+        m += r2 < cut2;
+    }
+    return m;
+}
+
+/* >>pair traversal: the one loop of every pair pass.  Owners come from a
+   list of indices (cell order, a sweep block, id order), each meets its
+   partners within cut in chunks (hcbd__gather_at), and a pass plugs in
+   three inline evaluators: begin (the owner's running state), pairs (one
+   chunk: the pass's equation), end (the owner's sums written; returns the
+   id of an owner whose terms left the fixed-point range, or INT_MAX).
+   The loop knows lists, orders and chunks; an evaluator knows one
+   equation.  The schedulers (slabs: hcbd__nl_owners; colours of the exact
+   sweeps) hand it ranges of owners. */
+typedef struct hcbd__acc {
+    int64_t q[8];                 /* fixed-point sums: weights, forces     */
+    double r[8];                  /* double sums, an owner's velocity      */
+    int bad;                      /* a term left the fixed-point range     */
+} hcbd__acc;
+
+typedef struct hcbd__trav {
+    const int32_t *start, *nb;    /* owner i's entries start[i] .. start[i+1] */
+    const hcbd_real *x, *y, *z;   /* partners' positions by the list's index  */
+    const hcbd_real *ox, *oy, *oz; /* owners' (the same for a half list)      */
+    hcbd__box box;
+    double cut2;
+} hcbd__trav;
+
+static inline hcbd__trav hcbd__trav_make(const hcbd__nlist *L, const hcbd_real *ox, const hcbd_real *oy,
+                                         const hcbd_real *oz, const hcbd_real *x, const hcbd_real *y,
+                                         const hcbd_real *z, hcbd__box box, double cut)
+{
+    hcbd__trav t;
+    t.start = L->nb_start; t.nb = L->nb_j;
+    t.x = x; t.y = y; t.z = z; t.ox = ox; t.oy = oy; t.oz = oz;
+    t.box = box;
+    t.cut2 = cut * cut;
+    return t;
+}
+
+typedef void (*hcbd__ev_begin)(void *ctx, int i, hcbd__acc *a);
+typedef void (*hcbd__ev_pairs)(void *ctx, int i, const hcbd__near *c, int m, hcbd__acc *a);
+typedef int (*hcbd__ev_end)(void *ctx, int i, hcbd__acc *a);
+
+HCBD__INLINE int hcbd__traverse(const hcbd__trav *T, const int32_t *owners, int q0, int q1,
+                                void *ctx, hcbd__ev_begin begin, hcbd__ev_pairs pairs,
+                                hcbd__ev_end end)
+{
+    int q, worst = INT_MAX;
+    for (q = q0; q < q1; ++q) {
+        const int i = owners[q];
+        const int32_t pend = T->start[i + 1];
+        int32_t p = T->start[i];
+        hcbd__acc a;
+        int b;
+        begin(ctx, i, &a);
+        while (p < pend) {
+            hcbd__near c;
+            const int m = hcbd__gather_at(T->x, T->y, T->z, T->nb, &T->box, T->ox[i], T->oy[i],
+                                          T->oz[i], &p, pend, T->cut2, &c);
+            pairs(ctx, i, &c, m, &a);
+        }
+        b = end(ctx, i, &a);
+        if (b < worst) worst = b;
+    }
+    return worst;
+}
+
+/* begin for passes whose owner state is sums from zero */
+HCBD__INLINE void hcbd__ev_zero(void *ctx, int i, hcbd__acc *a)
+{
+    (void)ctx; (void)i;
+    memset(a, 0, sizeof *a);
+}
+
+/* GI-BD density weights (MODEL 1-3) into aW, each pair once */
+typedef struct hcbd__dens_ctx {
+    hcbd_world *w;
+    double invRc, cwq;
+} hcbd__dens_ctx;
+
+HCBD__INLINE void hcbd__dens_pairs(void *ctx, int i, const hcbd__near *c, int m, hcbd__acc *a)
+{
+    const hcbd__dens_ctx *d = (const hcbd__dens_ctx *)ctx;
+    int64_t *HCBD__RESTRICT aW = d->w->aW;
+    int t;
+    (void)i;
+    for (t = 0; t < m; ++t) {
+        const double qq = sqrt(c->r2[t]) * d->invRc;
+        const int64_t v = hcbd__fix(hcbd__weight(d->cwq, qq, 1.0 - qq));
+        a->q[0] += v;
+        aW[c->j[t]] += v;
+    }
+}
+
+HCBD__INLINE int hcbd__dens_end(void *ctx, int i, hcbd__acc *a)
+{
+    ((hcbd__dens_ctx *)ctx)->w->aW[i] += a->q[0];
+    return INT_MAX;
+}
+
 static int hcbd__density_owners(void *ctx, int q0, int q1)
 {
     hcbd_world *w = (hcbd_world *)ctx;
-    const double Rc2 = w->p.Rc * w->p.Rc, invRc = 1.0 / w->p.Rc, cwq = w->cw * w->qW;
-    const hcbd__box box = hcbd__box_of(w);
-    int64_t *HCBD__RESTRICT aW = w->aW;
-    int q;
-    for (q = q0; q < q1; ++q) {
-        const int i = w->nl.perm[q];
-        const double xi = w->x[i], yi = w->y[i], zi = w->z[i];
-        int64_t s = 0;
-        int32_t p;
-        for (p = w->nl.nb_start[i]; p < w->nl.nb_start[i + 1]; ++p) {
-            const int j = w->nl.nb_j[p];
-            double d[3], r2;
-            hcbd__delta_box(&box, xi - w->x[j], yi - w->y[j], zi - w->z[j], d);
-            r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-            if (r2 < Rc2) {
-                const double qq = sqrt(r2) * invRc, a = 1.0 - qq;
-                const int64_t v = hcbd__fix(hcbd__weight(cwq, qq, a));
-                s += v;
-                aW[j] += v;
-            }
-        }
-        aW[i] += s;
-    }
-    return INT_MAX;
+    const hcbd__trav T = hcbd__trav_make(&w->nl, w->x, w->y, w->z, w->x, w->y, w->z, hcbd__box_of(w), w->p.Rc);
+    hcbd__dens_ctx d;
+    d.w = w;
+    d.invRc = 1.0 / w->p.Rc;
+    d.cwq = w->cw * w->qW;
+    return hcbd__traverse(&T, w->nl.perm, q0, q1, &d, hcbd__ev_zero, hcbd__dens_pairs, hcbd__dens_end);
 }
 
 /* rho_i from the weight sums in aW (and the wall's artificial particles) */
@@ -3227,161 +3334,158 @@ static void hcbd__density(hcbd_world *w)
     hcbd__density_finish(w);
 }
 
-/* Gathers the partners of i from list entries [*p, min(pend, *p + CHUNK))
-   that lie within r^2 < cut2, without a branch (about half the list lies in
-   the skin, and a branch on it would be mispredicted half the time);
-   returns their count and advances *p. */
-typedef struct hcbd__near {
-    int32_t j[HCBD__CHUNK], k[HCBD__CHUNK]; /* partner, Lees-Edwards image     */
-    double x[HCBD__CHUNK], y[HCBD__CHUNK], z[HCBD__CHUNK], r2[HCBD__CHUNK];
-} hcbd__near;
-
-HCBD__INLINE int hcbd__gather_at(const hcbd_real *HCBD__RESTRICT x, const hcbd_real *HCBD__RESTRICT y,
-                                 const hcbd_real *HCBD__RESTRICT z, const int32_t *HCBD__RESTRICT nb,
-                                 const hcbd__box *box, double xi, double yi, double zi, int32_t *p,
-                                 int32_t pend, double cut2, hcbd__near *c)
-{
-    const int32_t pe = pend - *p > HCBD__CHUNK ? *p + HCBD__CHUNK : pend;
-    int m = 0;
-    for (; *p < pe; ++*p) {
-        const int j = nb[*p];
-        double d[3], r2;
-        const int k = hcbd__delta_box(box, xi - x[j], yi - y[j], zi - z[j], d);
-        r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-        c->j[m] = j; c->k[m] = k; c->x[m] = d[0]; c->y[m] = d[1]; c->z[m] = d[2]; c->r2[m] = r2;
-        m += r2 < cut2;
-    }
-    return m;
-}
-
-HCBD__INLINE int hcbd__gather(const hcbd_world *w, const hcbd__box *box, int i, int32_t *p,
-                              int32_t pend, double cut2, hcbd__near *c)
-{
-    return hcbd__gather_at(w->x, w->y, w->z, w->nl.nb_j, box, w->x[i], w->y[i], w->z[i], p, pend,
-                           cut2, c);
-}
-
 /* Forces, and in GI-BD the friction and noise momentum exchanges
    dp_ij = (S_ij/tau)(v_j - v_i) dt + sqrt(2 kT S_ij dt/tau) zeta,
    S_ij = m_i f_ij (MODEL 2, pair-momentum form), added to the owner i and
    taken from the partner j.  With lag, the density weights of the same
    positions are summed into aW (the next step's lagged density, or this
    step's before the exact sweep). */
-HCBD__INLINE int hcbd__forces_body(hcbd_world *w, int q0, int q1, const int pot,
-                                    const int fric, const int lag, const int flux)
+typedef struct hcbd__force_ctx {
+    hcbd_world *w;
+    int pot, fric, lag, flux, gibd, noise, table; /* constants in each wrapper */
+    double vle, rc2, Rc2, invRc, cs, two_kT, cwq, qF, qP, limF, limP;
+    uint64_t skey;
+    hcbd__box box;
+} hcbd__force_ctx;
+
+HCBD__INLINE hcbd__force_ctx hcbd__force_ctx_of(hcbd_world *w, const int pot, const int fric,
+                                                const int lag, const int flux)
 {
-    const int gibd = fric || lag, noise = w->has_noise, table = w->star_tab != NULL;
-    const double vle = w->le_vjump;
-    const hcbd__box box = hcbd__box_of(w);
-    const double rc2 = w->p.rcut * w->p.rcut, Rc2 = w->p.Rc * w->p.Rc;
-    const double cut2 = w->cutmax * w->cutmax, invRc = 1.0 / w->p.Rc;
-    const double cs = w->cf * w->m * w->m * w->p.dt / w->p.tau, two_kT = 2.0 * w->p.kT;
-    const double cwq = w->cw * w->qW, qF = w->qF, qP = w->qP, limF = w->limF, limP = w->limP;
-    const uint64_t skey = hcbd__step_key(w, w->step);
+    hcbd__force_ctx f;
+    f.w = w;
+    f.pot = pot; f.fric = fric; f.lag = lag; f.flux = flux;
+    f.gibd = fric || lag;
+    f.noise = w->has_noise;
+    f.table = w->star_tab != NULL;
+    f.vle = w->le_vjump;
+    f.rc2 = w->p.rcut * w->p.rcut;
+    f.Rc2 = w->p.Rc * w->p.Rc;
+    f.invRc = 1.0 / w->p.Rc;
+    f.cs = w->cf * w->m * w->m * w->p.dt / w->p.tau;
+    f.two_kT = 2.0 * w->p.kT;
+    f.cwq = w->cw * w->qW;
+    f.qF = w->qF; f.qP = w->qP; f.limF = w->limF; f.limP = w->limP;
+    f.skey = hcbd__step_key(w, w->step);
+    f.box = hcbd__box_of(w);
+    return f;
+}
+
+/* acc: q[0..2] force, q[3..5] momentum exchange, q[6] weight; r[0..2] the
+   owner's velocity, r[3] its 1/rho, r[4] r[5] its flux terms */
+HCBD__INLINE void hcbd__force_begin(void *ctx, int i, hcbd__acc *a)
+{
+    const hcbd__force_ctx *f = (const hcbd__force_ctx *)ctx;
+    memset(a, 0, sizeof *a);
+    if (f->gibd) {
+        a->r[0] = f->w->vx[i]; a->r[1] = f->w->vy[i]; a->r[2] = f->w->vz[i];
+        a->r[3] = f->w->inv_rho[i];
+    }
+}
+
+HCBD__INLINE void hcbd__force_pairs(void *ctx, int i, const hcbd__near *c, int m, hcbd__acc *a)
+{
+    const hcbd__force_ctx *f = (const hcbd__force_ctx *)ctx;
+    hcbd_world *w = f->w;
+    const double vxi = a->r[0], vyi = a->r[1], vzi = a->r[2], iri = a->r[3];
+    const int32_t idi = w->id[i];
     int64_t *HCBD__RESTRICT aFx = w->aF[0], *HCBD__RESTRICT aFy = w->aF[1];
     int64_t *HCBD__RESTRICT aFz = w->aF[2], *HCBD__RESTRICT aPx = w->aP[0];
     int64_t *HCBD__RESTRICT aPy = w->aP[1], *HCBD__RESTRICT aPz = w->aP[2];
     int64_t *HCBD__RESTRICT aW = w->aW;
-    int q, worst = INT_MAX;
-    (void)flux;
-    for (q = q0; q < q1; ++q) {
-        const int i = w->nl.perm[q];
-        int bad = 0;
-        int64_t fxs = 0, fys = 0, fzs = 0, pxs = 0, pys = 0, pzs = 0, ws = 0;
-        double sp = 0, sb = 0;
-        const double vxi = gibd ? w->vx[i] : 0, vyi = gibd ? w->vy[i] : 0;
-        const double vzi = gibd ? w->vz[i] : 0, iri = gibd ? w->inv_rho[i] : 0;
-        const int32_t idi = w->id[i], pend = w->nl.nb_start[i + 1];
-        int32_t p = w->nl.nb_start[i];
-        while (p < pend) {
-            hcbd__near c;
-            const int m = hcbd__gather(w, &box, i, &p, pend, cut2, &c);
-            int t;
-            for (t = 0; t < m; ++t) {
-                const int j = c.j[t], k = c.k[t];
-                const double dx = c.x[t], dy = c.y[t], dz = c.z[t], r2 = c.r2[t];
-                double r, Fx = 0, Fy = 0, Fz = 0, Px = 0, Py = 0, Pz = 0;
-                r = gibd || !table || flux ? sqrt(r2) : 0.0; /* the table needs r^2 only */
-                if (pot && r2 < rc2) {
-                    const double fr = table ? hcbd__star_table(w, r2) : hcbd__force_over_r(w, r, r2);
-                    int64_t a;
-                    Fx = fr * dx; Fy = fr * dy; Fz = fr * dz;
-                    bad |= !(fabs(Fx) <= limF && fabs(Fy) <= limF && fabs(Fz) <= limF);
-                    a = hcbd__fix(Fx * qF); fxs += a; aFx[j] -= a;
-                    a = hcbd__fix(Fy * qF); fys += a; aFy[j] -= a;
-                    a = hcbd__fix(Fz * qF); fzs += a; aFz[j] -= a;
+    int t;
+    for (t = 0; t < m; ++t) {
+        const int j = c->j[t], k = c->k[t];
+        const double dx = c->x[t], dy = c->y[t], dz = c->z[t], r2 = c->r2[t];
+        double r, Fx = 0, Fy = 0, Fz = 0, Px = 0, Py = 0, Pz = 0;
+        r = f->gibd || !f->table || f->flux ? sqrt(r2) : 0.0; /* the table needs r^2 only */
+        if (f->pot && r2 < f->rc2) {
+            const double fr = f->table ? hcbd__star_table(w, r2) : hcbd__force_over_r(w, r, r2);
+            int64_t u;
+            Fx = fr * dx; Fy = fr * dy; Fz = fr * dz;
+            a->bad |= !(fabs(Fx) <= f->limF && fabs(Fy) <= f->limF && fabs(Fz) <= f->limF);
+            u = hcbd__fix(Fx * f->qF); a->q[0] += u; aFx[j] -= u;
+            u = hcbd__fix(Fy * f->qF); a->q[1] += u; aFy[j] -= u;
+            u = hcbd__fix(Fz * f->qF); a->q[2] += u; aFz[j] -= u;
+        }
+        if (f->gibd && r2 < f->Rc2) {
+            const double qq = r * f->invRc, aa = 1.0 - qq;
+            if (f->fric) {
+                const double sdt = hcbd__sdt(f->cs, iri, w->inv_rho[j], aa); /* S dt/tau */
+                int64_t u;
+                /* j's image across the sheared boundary moves faster by
+                   k gdot Ly */
+                Px = sdt * (w->vx[j] + k * f->vle - vxi);
+                Py = sdt * (w->vy[j] - vyi);
+                Pz = sdt * (w->vz[j] - vzi);
+                if (f->noise) {
+                    double z3[3], b = sqrt(f->two_kT * sdt);
+                    hcbd__noise3(w, hcbd__pair_key(f->skey, idi, w->id[j]), z3);
+                    Px += b * z3[0]; Py += b * z3[1]; Pz += b * z3[2];
                 }
-                if (gibd && r2 < Rc2) {
-                    const double qq = r * invRc, a = 1.0 - qq;
-                    if (fric) {
-                        const double sdt = hcbd__sdt(cs, iri, w->inv_rho[j], a); /* S dt/tau */
-                        int64_t u;
-                        /* j's image across the sheared boundary moves faster by
-                           k gdot Ly */
-                        Px = sdt * (w->vx[j] + k * vle - vxi);
-                        Py = sdt * (w->vy[j] - vyi);
-                        Pz = sdt * (w->vz[j] - vzi);
-                        if (noise) {
-                            double z3[3], b = sqrt(two_kT * sdt);
-                            hcbd__noise3(w, hcbd__pair_key(skey, idi, w->id[j]), z3);
-                            Px += b * z3[0]; Py += b * z3[1]; Pz += b * z3[2];
-                        }
-                        bad |= !(fabs(Px) <= limP && fabs(Py) <= limP && fabs(Pz) <= limP);
-                        u = hcbd__fix(Px * qP); pxs += u; aPx[j] -= u;
-                        u = hcbd__fix(Py * qP); pys += u; aPy[j] -= u;
-                        u = hcbd__fix(Pz * qP); pzs += u; aPz[j] -= u;
-                    }
-                    if (lag) {
-                        const int64_t v = hcbd__fix(hcbd__weight(cwq, qq, a));
-                        ws += v;
-                        aW[j] += v;
-                    }
-                }
-                if (flux) { /* y_ij F_ij,x: flux of x momentum across y planes */
-                    sp += 0.5 * (dy * Fx + dx * Fy);
-                    sb += dy * Px;
-                }
+                a->bad |= !(fabs(Px) <= f->limP && fabs(Py) <= f->limP && fabs(Pz) <= f->limP);
+                u = hcbd__fix(Px * f->qP); a->q[3] += u; aPx[j] -= u;
+                u = hcbd__fix(Py * f->qP); a->q[4] += u; aPy[j] -= u;
+                u = hcbd__fix(Pz * f->qP); a->q[5] += u; aPz[j] -= u;
+            }
+            if (f->lag) {
+                const int64_t v = hcbd__fix(hcbd__weight(f->cwq, qq, aa));
+                a->q[6] += v;
+                aW[j] += v;
             }
         }
-        if (flux) {
-            w->fl_p[i] = (hcbd_real)sp;
-            if (fric) w->fl_b[i] = (hcbd_real)sb;
+        if (f->flux) { /* y_ij F_ij,x: flux of x momentum across y planes */
+            a->r[4] += 0.5 * (dy * Fx + dx * Fy);
+            a->r[5] += dy * Px;
         }
-        if (pot) { aFx[i] += fxs; aFy[i] += fys; aFz[i] += fzs; }
-        if (fric) { aPx[i] += pxs; aPy[i] += pys; aPz[i] += pzs; }
-        if (lag) aW[i] += ws;
-        if (bad && idi < worst) worst = idi;
     }
-    return worst;
+}
+
+HCBD__INLINE int hcbd__force_end(void *ctx, int i, hcbd__acc *a)
+{
+    const hcbd__force_ctx *f = (const hcbd__force_ctx *)ctx;
+    hcbd_world *w = f->w;
+    if (f->flux) {
+        w->fl_p[i] = (hcbd_real)a->r[4];
+        if (f->fric) w->fl_b[i] = (hcbd_real)a->r[5];
+    }
+    if (f->pot) { w->aF[0][i] += a->q[0]; w->aF[1][i] += a->q[1]; w->aF[2][i] += a->q[2]; }
+    if (f->fric) { w->aP[0][i] += a->q[3]; w->aP[1][i] += a->q[4]; w->aP[2][i] += a->q[5]; }
+    if (f->lag) w->aW[i] += a->q[6];
+    return a->bad ? w->id[i] : INT_MAX;
+}
+
+HCBD__INLINE int hcbd__forces_run(hcbd_world *w, int q0, int q1, const int pot, const int fric,
+                                  const int lag, const int flux)
+{
+    hcbd__force_ctx f = hcbd__force_ctx_of(w, pot, fric, lag, flux);
+    const hcbd__trav T = hcbd__trav_make(&w->nl, w->x, w->y, w->z, w->x, w->y, w->z, f.box, w->cutmax);
+    return hcbd__traverse(&T, w->nl.perm, q0, q1, &f, hcbd__force_begin, hcbd__force_pairs,
+                          hcbd__force_end);
 }
 
 /* The common cases with their switches constant, so that each loop holds
    only its own work; anything else takes the general one. */
 static int hcbd__forces_pot(void *ctx, int q0, int q1)
 {
-    hcbd_world *w = (hcbd_world *)ctx;
-    return hcbd__forces_body(w, q0, q1, 1, 0, 0, 0);
+    return hcbd__forces_run((hcbd_world *)ctx, q0, q1, 1, 0, 0, 0);
 }
 
 static int hcbd__forces_gibd(void *ctx, int q0, int q1)
 {
-    hcbd_world *w = (hcbd_world *)ctx;
-    return hcbd__forces_body(w, q0, q1, 1, 1, 0, 0);
+    return hcbd__forces_run((hcbd_world *)ctx, q0, q1, 1, 1, 0, 0);
 }
 
 /* forces and this step's density weights in one pass (exact sweep) */
 static int hcbd__forces_dens(void *ctx, int q0, int q1)
 {
-    hcbd_world *w = (hcbd_world *)ctx;
-    return hcbd__forces_body(w, q0, q1, 1, 0, 1, 0);
+    return hcbd__forces_run((hcbd_world *)ctx, q0, q1, 1, 0, 1, 0);
 }
 
 static int hcbd__forces_any(void *ctx, int q0, int q1)
 {
     hcbd_world *w = (hcbd_world *)ctx;
-    return hcbd__forces_body(w, q0, q1, w->p.potential != HCBD_POT_IDEAL,
-                             w->gibd && !w->shardlow, w->gibd && w->p.lagged_density,
-                             w->flux_on);
+    return hcbd__forces_run(w, q0, q1, w->p.potential != HCBD_POT_IDEAL, w->gibd && !w->shardlow,
+                            w->gibd && w->p.lagged_density, w->flux_on);
 }
 
 /* dens: the density of this step is summed in the same pass (the
@@ -3445,48 +3549,63 @@ static inline double hcbd__one_minus_exp(double x)
     return x < 0.125 ? hcbd__one_minus_exp_series(x) : -expm1(-x);
 }
 
-static void hcbd__shardlow_owner(hcbd_world *w, int i, uint64_t skey, uint64_t wkey)
+typedef struct hcbd__sweep_ctx {
+    hcbd_world *w;
+    double m, inv_m, kT, vle, invRc, cs;
+    uint64_t skey, wkey;
+    int noise;
+} hcbd__sweep_ctx;
+
+/* acc: r[0..2] the owner's velocity (in registers: no partner is the
+   owner itself), r[3] its flux term */
+HCBD__INLINE void hcbd__sweep_begin(void *ctx, int i, hcbd__acc *a)
 {
-    const double m = w->m, inv_m = w->inv_m, kT = w->p.kT, vle = w->le_vjump;
-    const double Rc2 = w->p.Rc * w->p.Rc, invRc = 1.0 / w->p.Rc;
-    const double cs = w->cf * m * m * w->p.dt / w->p.tau;
-    const int noise = w->has_noise;
-    const hcbd__box box = hcbd__box_of(w);
+    const hcbd_world *w = ((const hcbd__sweep_ctx *)ctx)->w;
+    a->r[0] = w->vx[i]; a->r[1] = w->vy[i]; a->r[2] = w->vz[i];
+    a->r[3] = 0.0;
+}
+
+HCBD__INLINE void hcbd__sweep_pairs(void *ctx, int i, const hcbd__near *c, int m2, hcbd__acc *a)
+{
+    const hcbd__sweep_ctx *s = (const hcbd__sweep_ctx *)ctx;
+    hcbd_world *w = s->w;
+    const double m = s->m, inv_m = s->inv_m, iri = w->inv_rho[i];
+    const int32_t idi = w->id[i];
     hcbd_real *HCBD__RESTRICT vx = w->vx, *HCBD__RESTRICT vy = w->vy, *HCBD__RESTRICT vz = w->vz;
-    const double yi = w->y[i], iri = w->inv_rho[i];
-    const int32_t pend = w->nl.nb_start[i + 1], idi = w->id[i];
-    /* i's velocity stays in registers: no partner is i itself */
-    hcbd_real vxi = vx[i], vyi = vy[i], vzi = vz[i];
-    double sb = 0.0;
-    int32_t p = w->nl.nb_start[i];
-    while (p < pend) {
-        hcbd__near nc;
-        const int m2 = hcbd__gather(w, &box, i, &p, pend, Rc2, &nc);
-        int t;
-        for (t = 0; t < m2; ++t) {
-            const int j = nc.j[t], kk = nc.k[t];
-            double a, sdt, om, c, Px, Py, Pz;
-            a = 1.0 - sqrt(nc.r2[t]) * invRc;
-            sdt = hcbd__sdt(cs, iri, w->inv_rho[j], a);
-            om = hcbd__one_minus_exp(2.0 * sdt * inv_m); /* 1 - e */
-            c = 0.5 * m * om;
-            Px = -c * (vxi - vx[j] - kk * vle);
-            Py = -c * (vyi - vy[j]);
-            Pz = -c * (vzi - vz[j]);
-            if (noise) {
-                double z3[3], b = sqrt(0.5 * kT * m * om * (2.0 - om));
-                hcbd__noise3(w, hcbd__pair_key(skey, idi, w->id[j]), z3);
-                Px += b * z3[0]; Py += b * z3[1]; Pz += b * z3[2];
-            }
-            vxi = (hcbd_real)(vxi + Px * inv_m); vx[j] = (hcbd_real)(vx[j] - Px * inv_m);
-            vyi = (hcbd_real)(vyi + Py * inv_m); vy[j] = (hcbd_real)(vy[j] - Py * inv_m);
-            vzi = (hcbd_real)(vzi + Pz * inv_m); vz[j] = (hcbd_real)(vz[j] - Pz * inv_m);
-            sb += nc.y[t] * Px;
+    hcbd_real vxi = (hcbd_real)a->r[0], vyi = (hcbd_real)a->r[1], vzi = (hcbd_real)a->r[2];
+    double sb = a->r[3];
+    int t;
+    for (t = 0; t < m2; ++t) {
+        const int j = c->j[t], kk = c->k[t];
+        double aa, sdt, om, cc, Px, Py, Pz;
+        aa = 1.0 - sqrt(c->r2[t]) * s->invRc;
+        sdt = hcbd__sdt(s->cs, iri, w->inv_rho[j], aa);
+        om = hcbd__one_minus_exp(2.0 * sdt * inv_m); /* 1 - e */
+        cc = 0.5 * m * om;
+        Px = -cc * (vxi - vx[j] - kk * s->vle);
+        Py = -cc * (vyi - vy[j]);
+        Pz = -cc * (vzi - vz[j]);
+        if (s->noise) {
+            double z3[3], b = sqrt(0.5 * s->kT * m * om * (2.0 - om));
+            hcbd__noise3(w, hcbd__pair_key(s->skey, idi, w->id[j]), z3);
+            Px += b * z3[0]; Py += b * z3[1]; Pz += b * z3[2];
         }
+        vxi = (hcbd_real)(vxi + Px * inv_m); vx[j] = (hcbd_real)(vx[j] - Px * inv_m);
+        vyi = (hcbd_real)(vyi + Py * inv_m); vy[j] = (hcbd_real)(vy[j] - Py * inv_m);
+        vzi = (hcbd_real)(vzi + Pz * inv_m); vz[j] = (hcbd_real)(vz[j] - Pz * inv_m);
+        sb += c->y[t] * Px;
     }
-    vx[i] = vxi; vy[i] = vyi; vz[i] = vzi;
-    if (HCBD__WALLS && wkey && hcbd__near_wall(w, yi)) hcbd__morris(w, i, wkey, NULL, 1);
-    if (w->flux_on) w->fl_b[i] = (hcbd_real)sb;
+    a->r[0] = vxi; a->r[1] = vyi; a->r[2] = vzi; a->r[3] = sb;
+}
+
+HCBD__INLINE int hcbd__sweep_end(void *ctx, int i, hcbd__acc *a)
+{
+    const hcbd__sweep_ctx *s = (const hcbd__sweep_ctx *)ctx;
+    hcbd_world *w = s->w;
+    w->vx[i] = (hcbd_real)a->r[0]; w->vy[i] = (hcbd_real)a->r[1]; w->vz[i] = (hcbd_real)a->r[2];
+    if (HCBD__WALLS && s->wkey && hcbd__near_wall(w, w->y[i])) hcbd__morris(w, i, s->wkey, NULL, 1);
+    if (w->flux_on) w->fl_b[i] = (hcbd_real)a->r[3];
+    return INT_MAX;
 }
 
 static void hcbd__shardlow(hcbd_world *w)
@@ -3522,16 +3641,26 @@ static void hcbd__shardlow(hcbd_world *w)
     }
     for (r = nrows; r > 0; --r) start[r] = start[r - 1];
     start[0] = 0;
-    HCBD__OMP(omp parallel num_threads(nt))
     {
-        int col;
-        for (col = 0; col < 9; ++col) {
-            int rr;
-            HCBD__OMP(omp for schedule(dynamic, 1))
-            for (rr = 0; rr < nrows; ++rr) {
-                int q;
-                if ((rr % ny) % 3 + 3 * ((rr / ny) % 3) != col) continue;
-                for (q = start[rr]; q < start[rr + 1]; ++q) hcbd__shardlow_owner(w, list[q], skey, wkey);
+        const hcbd__trav T = hcbd__trav_make(&w->nl, w->x, w->y, w->z, w->x, w->y, w->z,
+                                             hcbd__box_of(w), w->p.Rc);
+        hcbd__sweep_ctx s;
+        s.w = w;
+        s.m = w->m; s.inv_m = w->inv_m; s.kT = w->p.kT; s.vle = w->le_vjump;
+        s.invRc = 1.0 / w->p.Rc;
+        s.cs = w->cf * w->m * w->m * w->p.dt / w->p.tau;
+        s.skey = skey; s.wkey = wkey;
+        s.noise = w->has_noise;
+        HCBD__OMP(omp parallel num_threads(nt))
+        {
+            int col;
+            for (col = 0; col < 9; ++col) {
+                int rr;
+                HCBD__OMP(omp for schedule(dynamic, 1))
+                for (rr = 0; rr < nrows; ++rr)
+                    if ((rr % ny) % 3 + 3 * ((rr / ny) % 3) == col)
+                        hcbd__traverse(&T, list, start[rr], start[rr + 1], &s, hcbd__sweep_begin,
+                                       hcbd__sweep_pairs, hcbd__sweep_end);
             }
         }
     }
@@ -4009,11 +4138,11 @@ hcbd_result hcbd_config_temperature(hcbd_world *w, double out[2])
     return HCBD_OK;
 }
 
-typedef struct { hcbd_world *w; double *f; } hcbd__force_ctx;
+typedef struct { hcbd_world *w; double *f; } hcbd__forces_obs_ctx;
 
 static void hcbd__force_fn(void *c, int i, int j, double dx, double dy, double dz, double r2)
 {
-    hcbd__force_ctx *t = (hcbd__force_ctx *)c;
+    hcbd__forces_obs_ctx *t = (hcbd__forces_obs_ctx *)c;
     const double fr = hcbd__force_over_r(t->w, sqrt(r2), r2);
     double *fi = t->f + 3 * (size_t)t->w->id[i], *fj = t->f + 3 * (size_t)t->w->id[j];
     fi[0] += fr * dx; fi[1] += fr * dy; fi[2] += fr * dz;
@@ -4022,7 +4151,7 @@ static void hcbd__force_fn(void *c, int i, int j, double dx, double dy, double d
 
 hcbd_result hcbd_forces(hcbd_world *w, double *f)
 {
-    hcbd__force_ctx t;
+    hcbd__forces_obs_ctx t;
     hcbd_result r;
     int k, d;
     if (!w) return HCBD_ERR_NULL;
@@ -6045,21 +6174,40 @@ static void hcbd__hc_dims(const hcbd_hc_params *p, double cut, int nc[3])
 }
 
 /* Blocks of the exact fluid sweep along one axis (hcbd__hc_fluid_shardlow):
-   at least reach wide (and a hair more, so that round-off in the block of
-   a blob cannot put a pair two blocks apart), a multiple of 3, or one. */
-static int hcbd__hc_sweep_count(double L, double reach)
+   s = 1, 2 or 3 blocks per reach (each a hair wider than reach/s, so that
+   round-off in the block of a blob cannot let a pair span more than s), a
+   multiple of 2s + 1 of them, so that blocks 2s + 1 apart share no blob and
+   may take one colour; the s that puts the most blocks in one colour (the
+   smallest s on a tie), or a single block when none puts two there.
+   Returns the blocks; *ncol their colours; with room, the most that any s
+   could give (for sizing). */
+static int hcbd__hc_sweep_axis(double L, double reach, int *ncol, int *room)
 {
-    const double k = floor(L / (reach * (1.0 + 1e-9)));
-    return k >= 3.0 ? 3 * (int)((k > 96.0 ? 96.0 : k) / 3.0) : 1;
+    int s, bk = 1, bc = 1, most = 1;
+    for (s = 1; s <= 3; ++s) {
+        const int c = 2 * s + 1;
+        double k = floor(L * s / (reach * (1.0 + 1e-9)));
+        int kk;
+        if (k > 96.0) k = 96.0;
+        kk = c * (int)(k / c);
+        if (kk > most) most = kk;
+        if (kk / c > bk / bc && kk / c >= 2) { bk = kk; bc = c; }
+    }
+    if (ncol) *ncol = bc;
+    if (room) *room = most;
+    return bk;
 }
 
-/* Blocks along x, y, z at offset tilt t (t = 0: the most along x). */
-static int hcbd__hc_sweep_blocks(const hcbd_hc_params *p, double t, int nb[3])
+/* Blocks along x, y, z and their colours at offset tilt t; with room the
+   most blocks any tilt could give. */
+static int hcbd__hc_sweep_blocks(const hcbd_hc_params *p, double t, int nb[3], int nc[3], int *room)
 {
     const double cut = 2.0 * p->h;
-    nb[0] = hcbd__hc_sweep_count(p->L[0], cut * sqrt(1.0 + t * t));
-    nb[1] = hcbd__hc_sweep_count(p->L[1], cut);
-    nb[2] = hcbd__hc_sweep_count(p->L[2], cut);
+    int r[3];
+    nb[0] = hcbd__hc_sweep_axis(p->L[0], cut * sqrt(1.0 + t * t), &nc[0], &r[0]);
+    nb[1] = hcbd__hc_sweep_axis(p->L[1], cut, &nc[1], &r[1]);
+    nb[2] = hcbd__hc_sweep_axis(p->L[2], cut, &nc[2], &r[2]);
+    if (room) *room = r[0] * r[1] * r[2];
     return nb[0] * nb[1] * nb[2];
 }
 
@@ -6147,7 +6295,7 @@ static size_t hcbd__hc_layout(const hcbd_hc_def *def, hcbd_hc_world *t, char *ba
     hcbd__nl_take(base, &off, &t->lp, np, ncp, mp[1]);
     hcbd__nl_take(base, &off, &t->lx, np, one, mp[2]);
     HCBD__HA(xt_start, (nf + 1) * I); HCBD__HA(xt_a, (size_t)mp[2] * I);
-    HCBD__HA(pd, 4 * (size_t)mp[1] * D); HCBD__HA(pw, (size_t)mp[1] * D);
+    HCBD__HA(pw, (size_t)mp[1] * D);
     HCBD__HA(pf, 3 * (size_t)mp[1] * D); HCBD__HA(pown, np * D);
     HCBD__HA(rv_start, (np + 1) * I); HCBD__HA(rv_p, (size_t)mp[1] * I);
     HCBD__HA(xw, (size_t)mp[2] * D); HCBD__HA(xt_p, (size_t)mp[2] * I);
@@ -6158,8 +6306,9 @@ static size_t hcbd__hc_layout(const hcbd_hc_def *def, hcbd_hc_world *t, char *ba
     HCBD__HA(sn, nf * R); HCBD__HA(sP, nf * R); HCBD__HA(sIn, nf * R);
     HCBD__HA(sw_blk, nf * I); HCBD__HA(sw_list, nf * I);
     {
-        int nb[3];
-        HCBD__HA(sw_start, ((size_t)hcbd__hc_sweep_blocks(p, 0.0, nb) + 1) * I);
+        int nb[3], nc[3], room;
+        hcbd__hc_sweep_blocks(p, 0.0, nb, nc, &room);
+        HCBD__HA(sw_start, ((size_t)room + 1) * I);
     }
 #undef HCBD__HA
     return off + HCBD__ALIGN;
@@ -6626,34 +6775,48 @@ static inline double hcbd__m4u(double q)
     return a * a * a - 4.0 * b * b * b;
 }
 
+/* Fluid density weights w(r_ij) (MODEL 6) into aW, each pair once */
+typedef struct hcbd__hc_dens_ctx {
+    hcbd_hc_world *w;
+    double ih, cq;
+} hcbd__hc_dens_ctx;
+
+HCBD__INLINE void hcbd__hc_dens_pairs(void *ctx, int i, const hcbd__near *c, int m, hcbd__acc *a)
+{
+    const hcbd__hc_dens_ctx *d = (const hcbd__hc_dens_ctx *)ctx;
+    int64_t *HCBD__RESTRICT aW = d->w->aW;
+    int t;
+    (void)i;
+    for (t = 0; t < m; ++t) {
+        const int64_t v = hcbd__fix(d->cq * hcbd__m4u(sqrt(c->r2[t]) * d->ih));
+        a->q[0] += v;
+        aW[c->j[t]] += v;
+    }
+}
+
+HCBD__INLINE int hcbd__hc_dens_end(void *ctx, int i, hcbd__acc *a)
+{
+    ((hcbd__hc_dens_ctx *)ctx)->w->aW[i] += a->q[0];
+    return INT_MAX;
+}
+
+/* the fluid's half list over its cell-ordered copy, within range */
+static inline hcbd__trav hcbd__hc_trav_f(const hcbd_hc_world *w, double range)
+{
+    return hcbd__trav_make(&w->lf, w->sx, w->sy, w->sz, w->sx, w->sy, w->sz, hcbd__hc_box(w), range);
+}
+
 static int hcbd__hc_dens_owners(void *ctx, int q0, int q1)
 {
     hcbd_hc_world *w = (hcbd_hc_world *)ctx;
-    const double h = w->p.h, cut2 = 4.0 * h * h, ih = 1.0 / h;
-    const double cq = w->qW / (4.0 * HCBD__PI * h * h * h);
-    const hcbd__box box = hcbd__hc_box(w);
-    const hcbd_real *HCBD__RESTRICT x = w->sx, *HCBD__RESTRICT y = w->sy, *HCBD__RESTRICT z = w->sz;
-    const int32_t *HCBD__RESTRICT nb = w->lf.nb_j;
-    int64_t *HCBD__RESTRICT aW = w->aW;
-    int q;
-    for (q = q0; q < q1; ++q) {
-        const int i = w->lf.perm[q];
-        const int32_t pend = w->lf.nb_start[i + 1];
-        int64_t s = 0;
-        int32_t p = w->lf.nb_start[i];
-        while (p < pend) {
-            hcbd__near c;
-            const int m = hcbd__gather_at(x, y, z, nb, &box, x[i], y[i], z[i], &p, pend, cut2, &c);
-            int t;
-            for (t = 0; t < m; ++t) {
-                const int64_t v = hcbd__fix(cq * hcbd__m4u(sqrt(c.r2[t]) * ih));
-                s += v;
-                aW[c.j[t]] += v;
-            }
-        }
-        aW[i] += s;
-    }
-    return INT_MAX;
+    const double h = w->p.h;
+    const hcbd__trav T = hcbd__hc_trav_f(w, 2.0 * h);
+    hcbd__hc_dens_ctx d;
+    d.w = w;
+    d.ih = 1.0 / h;
+    d.cq = w->qW / (4.0 * HCBD__PI * h * h * h);
+    return hcbd__traverse(&T, w->lf.perm, q0, q1, &d, hcbd__ev_zero, hcbd__hc_dens_pairs,
+                          hcbd__hc_dens_end);
 }
 
 /* Fluid densities and Tait pressures (MODEL 6). */
@@ -6680,40 +6843,102 @@ static void hcbd__hc_fluid_density(hcbd_hc_world *w)
 }
 
 /* Polymer pairs run over the half list (owner a < partner b) in two
-   steps: the owner evaluates each pair once and keeps its separation and
-   weight (pd: dx, dy, dz, r, with r = -1 beyond rc) or force (pf); then
-   each polymer sums its own pairs and, through the reverse list (its pairs
-   as a partner, owners in increasing id), the others.  Double precision,
-   a fixed order set by the ids alone (the skin's entries add zeros), any
-   thread count.  Returns the first id with phi >= 1, or -1. */
+   steps: the owner evaluates each pair within rc once (the traversal) and
+   keeps its weight (pw) or force (pf) per list entry, zero for the skin's;
+   then each polymer sums its own pairs and, through the reverse list (its
+   pairs as a partner, owners in increasing id), the others.  Double
+   precision, a fixed order set by the ids alone, any thread count: each
+   owner writes only its own entries, so the owners are shared out in
+   contiguous ranges, and counters are summed per thread. */
+typedef struct hcbd__hc_poly_ctx {
+    hcbd_hc_world *w;
+    double rc, sg, A, cfh, alpha;
+    size_t cap;
+    int tr, fc, stress;
+    int64_t created, total, coinc; /* per thread */
+    int most;
+} hcbd__hc_poly_ctx;
+
+static hcbd__hc_poly_ctx hcbd__hc_poly_ctx_of(hcbd_hc_world *w)
+{
+    hcbd__hc_poly_ctx c;
+    memset(&c, 0, sizeof c);
+    c.w = w;
+    c.rc = w->p.rc;
+    c.sg = w->p.sigma;
+    c.A = hcbd__rapid_A(c.sg, c.rc);
+    c.cfh = w->p.p_kuhn * w->p.kT / w->p.n_max;
+    c.alpha = w->p.alpha;
+    c.cap = (size_t)w->pair_cap;
+    c.tr = w->transient;
+    c.fc = w->has_fc;
+    c.stress = w->stress_on;
+    return c;
+}
+
+/* this thread's contiguous share of n owners */
+static inline void hcbd__share(int n, int *lo, int *hi)
+{
+    int tid = 0, nth = 1;
+#ifdef _OPENMP
+    tid = omp_get_thread_num();
+    nth = omp_get_num_threads();
+#endif
+    *lo = (int)((int64_t)n * tid / nth);
+    *hi = (int)((int64_t)n * (tid + 1) / nth);
+}
+
+/* the polymers' half list within rc */
+static inline hcbd__trav hcbd__hc_trav_p(const hcbd_hc_world *w)
+{
+    return hcbd__trav_make(&w->lp, w->px, w->py, w->pz, w->px, w->py, w->pz, hcbd__hc_box(w), w->p.rc);
+}
+
+HCBD__INLINE void hcbd__hc_pdens_begin(void *ctx, int a, hcbd__acc *acc)
+{
+    hcbd_hc_world *w = ((hcbd__hc_poly_ctx *)ctx)->w;
+    int32_t p;
+    acc->r[0] = 0;
+    for (p = w->lp.nb_start[a]; p < w->lp.nb_start[a + 1]; ++p) w->pw[p] = 0; /* the skin's */
+}
+
+HCBD__INLINE void hcbd__hc_pdens_pairs(void *ctx, int a, const hcbd__near *c, int m, hcbd__acc *acc)
+{
+    const hcbd__hc_poly_ctx *s = (const hcbd__hc_poly_ctx *)ctx;
+    double *HCBD__RESTRICT pw = s->w->pw;
+    int t;
+    (void)a;
+    for (t = 0; t < m; ++t) {
+        const double wt = hcbd__rapid(sqrt(c->r2[t]), s->sg, s->rc, s->A);
+        pw[c->e[t]] = wt;
+        acc->r[0] += wt;
+    }
+}
+
+HCBD__INLINE int hcbd__hc_pdens_end(void *ctx, int a, hcbd__acc *acc)
+{
+    ((hcbd__hc_poly_ctx *)ctx)->w->pown[a] = acc->r[0];
+    return INT_MAX;
+}
+
+/* RaPiD densities and mu(phi) (MODEL 8).  Returns the first id with
+   phi >= 1, or -1. */
 static int hcbd__hc_poly_density(hcbd_hc_world *w)
 {
     const int n = w->np, nt = w->p.threads, fc = w->has_fc;
-    const double rc = w->p.rc, sg = w->p.sigma, cut2 = rc * rc, A = hcbd__rapid_A(sg, rc);
+    const double rc = w->p.rc, sg = w->p.sigma, A = hcbd__rapid_A(sg, rc);
     const double w0 = A * (rc - sg) * (rc + sg), inv_nmax = 1.0 / w->p.n_max;
-    const hcbd__box box = hcbd__hc_box(w);
+    const hcbd__trav T = hcbd__hc_trav_p(w);
+    const hcbd__hc_poly_ctx base = hcbd__hc_poly_ctx_of(w);
     int q, bad = INT_MAX;
     (void)nt;
-    HCBD__OMP(omp parallel for num_threads(nt) schedule(static))
-    for (q = 0; q < n; ++q) {
-        const int i = w->lp.perm[q];
-        const double xi = w->px[i], yi = w->py[i], zi = w->pz[i];
-        double s = 0;
-        int32_t p;
-        for (p = w->lp.nb_start[i]; p < w->lp.nb_start[i + 1]; ++p) {
-            const int j = w->lp.nb_j[p];
-            double *d = w->pd + 4 * (size_t)p, r2, wt = 0;
-            hcbd__delta_box(&box, xi - w->px[j], yi - w->py[j], zi - w->pz[j], d);
-            r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-            d[3] = -1.0;
-            if (r2 < cut2) {
-                d[3] = sqrt(r2);
-                wt = hcbd__rapid(d[3], sg, rc, A);
-            }
-            w->pw[p] = wt;
-            s += wt;
-        }
-        w->pown[i] = s;
+    HCBD__OMP(omp parallel num_threads(nt))
+    {
+        hcbd__hc_poly_ctx s = base;
+        int lo, hi;
+        hcbd__share(n, &lo, &hi);
+        hcbd__traverse(&T, w->lp.perm, lo, hi, &s, hcbd__hc_pdens_begin, hcbd__hc_pdens_pairs,
+                       hcbd__hc_pdens_end);
     }
     HCBD__OMP(omp parallel for num_threads(nt) schedule(static) reduction(min:bad))
     for (q = 0; q < n; ++q) {
@@ -6739,61 +6964,6 @@ static inline double hcbd__leq(double r, double rc)
     return u * u;
 }
 
-/* Transient pairs at the present positions: the partners b > a within rc
-   (from the list, already in increasing id), merged with the old list
-   so a persisting pair keeps its lambda, a new one starts at lambda_eq, a
-   departed one is dropped.  Returns the first polymer whose pairs overflow
-   pair_cap, or -1. */
-static int hcbd__hc_pairs(hcbd_hc_world *w, int *need)
-{
-    const int n = w->np, nt = w->p.threads, cap = w->pair_cap;
-    const double rc = w->p.rc;
-    int q, bad = INT_MAX, most = 0;
-    int64_t created = 0, total = 0;
-    (void)nt;
-    HCBD__OMP(omp parallel for num_threads(nt) schedule(static) reduction(min:bad) reduction(max:most) reduction(+:created) reduction(+:total))
-    for (q = 0; q < n; ++q) {
-        const int a = w->lp.perm[q];
-        int32_t *nb = w->pair_b2 + (size_t)a * cap;
-        hcbd_real *nl = w->pair_l2 + (size_t)a * cap, *ne = w->pair_eq2 + (size_t)a * cap;
-        const int32_t *ob = w->pair_b + (size_t)a * cap;
-        const hcbd_real *ol = w->pair_l + (size_t)a * cap;
-        int cnt = 0, k, o = 0, on = w->fresh_pairs ? 0 : w->pair_n[a];
-        int32_t p;
-        for (p = w->lp.nb_start[a]; p < w->lp.nb_start[a + 1]; ++p) {
-            const double r = w->pd[4 * (size_t)p + 3];
-            if (r < 0) continue; /* beyond rc */
-            if (cnt < cap) {
-                nb[cnt] = w->lp.nb_j[p];
-                ne[cnt] = (hcbd_real)hcbd__leq(r, rc);
-            }
-            ++cnt;
-        }
-        if (cnt > most) most = cnt;
-        if (cnt > cap) {
-            if (a < bad) bad = a;
-            cnt = cap;
-        }
-        for (k = 0; k < cnt; ++k) {
-            while (o < on && ob[o] < nb[k]) ++o;
-            if (o < on && ob[o] == nb[k]) {
-                nl[k] = ol[o];
-            } else {
-                nl[k] = ne[k];
-                ++created;
-            }
-        }
-        w->pair_n2[a] = cnt;
-        total += cnt;
-    }
-    *need = most;
-    if (bad != INT_MAX) return bad;
-    hcbd__hc_swap_pairs(w);
-    w->npairs = total;
-    w->n_created += created;
-    return -1;
-}
-
 static int hcbd__hc_find(const hcbd_hc_world *w, int a, int b)
 {
     const int32_t *l = w->pair_b + (size_t)a * w->pair_cap;
@@ -6806,73 +6976,135 @@ static int hcbd__hc_find(const hcbd_hc_world *w, int a, int b)
     return lo < w->pair_n[a] && l[lo] == b ? lo : -1;
 }
 
-/* Polymer forces: Flory-Huggins and transient (MODEL 8), each pair once
-   from the separations of hcbd__hc_poly_density, in the same two steps.
-   The owner keeps the pair's stress; the transient pairs are the list's
-   entries within rc, in the same order. */
-static void hcbd__hc_poly_forces(hcbd_hc_world *w)
+/* Polymer forces, Flory-Huggins and transient (MODEL 8), each pair once,
+   fused with the search for the transient pairs: the partners b > a within
+   rc come in increasing id and are merged with the old list, so a
+   persisting pair keeps its lambda, a new one starts at lambda_eq and a
+   departed one is dropped; the new list goes to the spare buffers.
+   acc: q[0] the pairs found, q[1] the old list's cursor; r[0..2] the
+   force, r[3] r[4] the conservative and transient stress. */
+HCBD__INLINE void hcbd__hc_pforce_begin(void *ctx, int a, hcbd__acc *acc)
 {
-    const int n = w->np, nt = w->p.threads, tr = w->transient, fc = w->has_fc;
-    const int stress = w->stress_on;
-    const double rc = w->p.rc, sg = w->p.sigma, A = hcbd__rapid_A(sg, rc);
-    const double cfh = w->p.p_kuhn * w->p.kT / w->p.n_max, alpha = w->p.alpha;
-    const size_t cap = (size_t)w->pair_cap;
-    int q;
-    int64_t coinc = 0;
+    hcbd_hc_world *w = ((hcbd__hc_poly_ctx *)ctx)->w;
+    int32_t p;
+    memset(acc, 0, sizeof *acc);
+    for (p = w->lp.nb_start[a]; p < w->lp.nb_start[a + 1]; ++p) /* the skin's */
+        w->pf[3 * (size_t)p] = w->pf[3 * (size_t)p + 1] = w->pf[3 * (size_t)p + 2] = 0;
+}
+
+HCBD__INLINE void hcbd__hc_pforce_pairs(void *ctx, int a, const hcbd__near *c, int m, hcbd__acc *acc)
+{
+    hcbd__hc_poly_ctx *s = (hcbd__hc_poly_ctx *)ctx;
+    hcbd_hc_world *w = s->w;
+    const double rc = s->rc, sg = s->sg, A = s->A, mua = w->pmu[a];
+    const size_t cap = s->cap, o0 = (size_t)a * cap;
+    const int on = s->tr && !w->fresh_pairs ? w->pair_n[a] : 0;
+    const int32_t *ob = w->pair_b + o0;
+    const hcbd_real *ol = w->pair_l + o0;
+    int32_t *nb = w->pair_b2 + o0;
+    hcbd_real *nl = w->pair_l2 + o0, *ne = w->pair_eq2 + o0;
+    int t;
+    for (t = 0; t < m; ++t) {
+        const int b = c->j[t];
+        const double r = sqrt(c->r2[t]);
+        double *f = w->pf + 3 * (size_t)c->e[t], fr = 0, ft = 0, lam = 0;
+        if (s->tr) {
+            const double leq = hcbd__leq(r, rc);
+            int o = (int)acc->q[1];
+            while (o < on && ob[o] < b) ++o;
+            acc->q[1] = o;
+            if (o < on && ob[o] == b) {
+                lam = ol[o];
+            } else {
+                lam = (hcbd_real)leq;
+                ++s->created;
+            }
+            if (acc->q[0] < (int64_t)cap) {
+                nb[acc->q[0]] = b;
+                ne[acc->q[0]] = (hcbd_real)leq;
+                nl[acc->q[0]] = (hcbd_real)lam;
+            }
+            acc->q[0]++;
+        }
+        if (r < 1e-12 * sg) { /* no direction: counted, no force */
+            ++s->coinc;
+            continue;
+        }
+        if (s->fc) {
+            const double wd = r <= sg ? -2.0 * A * (rc - sg) : 2.0 * A * (r - rc);
+            fr = -s->cfh * (mua + w->pmu[b]) * wd / r;
+        }
+        if (s->tr) {
+            const double u = 1.0 - r / rc;
+            ft = s->alpha * (lam - u * u) * (-2.0 * u / rc) / r;
+        }
+        f[0] = (fr + ft) * c->x[t];
+        f[1] = (fr + ft) * c->y[t];
+        f[2] = (fr + ft) * c->z[t];
+        acc->r[0] += f[0];
+        acc->r[1] += f[1];
+        acc->r[2] += f[2];
+        if (s->stress) {
+            acc->r[3] += c->y[t] * fr * c->x[t];
+            acc->r[4] += c->y[t] * ft * c->x[t];
+        }
+    }
+}
+
+HCBD__INLINE int hcbd__hc_pforce_end(void *ctx, int a, hcbd__acc *acc)
+{
+    hcbd__hc_poly_ctx *s = (hcbd__hc_poly_ctx *)ctx;
+    hcbd_hc_world *w = s->w;
+    const int cnt = (int)acc->q[0];
+    w->pFx[a] = (hcbd_real)acc->r[0];
+    w->pFy[a] = (hcbd_real)acc->r[1];
+    w->pFz[a] = (hcbd_real)acc->r[2];
+    if (s->stress) {
+        w->ps[3 * a] = acc->r[3];
+        w->ps[3 * a + 1] = acc->r[4];
+    }
+    if (!s->tr) return INT_MAX;
+    if (cnt > s->most) s->most = cnt;
+    s->total += cnt;
+    w->pair_n2[a] = cnt;
+    return cnt > (int)s->cap ? a : INT_MAX;
+}
+
+/* Returns the first polymer whose transient pairs overflow pair_cap (with
+   the largest count in *need), or -1; on success the new pair list
+   replaces the old. */
+static int hcbd__hc_poly_forces(hcbd_hc_world *w, int *need)
+{
+    const int n = w->np, nt = w->p.threads;
+    const hcbd__trav T = hcbd__hc_trav_p(w);
+    const hcbd__hc_poly_ctx base = hcbd__hc_poly_ctx_of(w);
+    int q, bad = INT_MAX, most = 0;
+    int64_t created = 0, total = 0, coinc = 0;
     (void)nt;
-    if (!fc && !tr) { /* no polymer pair forces: nothing to sum */
+    if (!base.fc && !base.tr) { /* no polymer pair forces: nothing to sum */
         memset(w->pFx, 0, (size_t)n * sizeof(hcbd_real));
         memset(w->pFy, 0, (size_t)n * sizeof(hcbd_real));
         memset(w->pFz, 0, (size_t)n * sizeof(hcbd_real));
-        if (stress)
+        if (base.stress)
             for (q = 0; q < n; ++q) w->ps[3 * q] = w->ps[3 * q + 1] = 0;
-        return;
+        *need = 0;
+        return -1;
     }
-    HCBD__OMP(omp parallel for num_threads(nt) schedule(static) reduction(+:coinc))
-    for (q = 0; q < n; ++q) {
-        const int a = w->lp.perm[q];
-        const double mua = w->pmu[a];
-        const hcbd_real *lam = w->pair_l + a * cap;
-        double F[3] = {0, 0, 0}, sc = 0, st = 0;
-        int k = 0;
-        int32_t p;
-        for (p = w->lp.nb_start[a]; p < w->lp.nb_start[a + 1]; ++p) {
-            const double *d = w->pd + 4 * (size_t)p, r = d[3];
-            double *f = w->pf + 3 * (size_t)p, fr = 0, ft = 0;
-            f[0] = f[1] = f[2] = 0;
-            if (r < 0) continue; /* beyond rc */
-            if (tr) ++k;
-            if (r < 1e-12 * sg) { /* no direction: counted, no force */
-                ++coinc;
-                continue;
-            }
-            if (fc) {
-                double wd = r <= sg ? -2.0 * A * (rc - sg) : 2.0 * A * (r - rc);
-                fr = -cfh * (mua + w->pmu[w->lp.nb_j[p]]) * wd / r;
-            }
-            if (tr) {
-                double u = 1.0 - r / rc;
-                ft = alpha * (lam[k - 1] - u * u) * (-2.0 * u / rc) / r;
-            }
-            f[0] = (fr + ft) * d[0];
-            f[1] = (fr + ft) * d[1];
-            f[2] = (fr + ft) * d[2];
-            F[0] += f[0];
-            F[1] += f[1];
-            F[2] += f[2];
-            if (stress) {
-                sc += d[1] * fr * d[0];
-                st += d[1] * ft * d[0];
-            }
-        }
-        w->pFx[a] = (hcbd_real)F[0];
-        w->pFy[a] = (hcbd_real)F[1];
-        w->pFz[a] = (hcbd_real)F[2];
-        if (stress) {
-            w->ps[3 * a] = sc;
-            w->ps[3 * a + 1] = st;
-        }
+    HCBD__OMP(omp parallel num_threads(nt) reduction(min:bad) reduction(max:most) reduction(+:created) reduction(+:total) reduction(+:coinc))
+    {
+        hcbd__hc_poly_ctx s = base;
+        int lo, hi, b;
+        hcbd__share(n, &lo, &hi);
+        b = hcbd__traverse(&T, w->lp.perm, lo, hi, &s, hcbd__hc_pforce_begin, hcbd__hc_pforce_pairs,
+                           hcbd__hc_pforce_end);
+        if (b < bad) bad = b;
+        if (s.most > most) most = s.most;
+        created += s.created;
+        total += s.total;
+        coinc += s.coinc;
     }
+    *need = most;
+    if (bad != INT_MAX) return bad;
     HCBD__OMP(omp parallel for num_threads(nt) schedule(static))
     for (q = 0; q < n; ++q) {
         const int a = w->lp.perm[q];
@@ -6890,66 +7122,107 @@ static void hcbd__hc_poly_forces(hcbd_hc_world *w)
         w->pFz[a] = (hcbd_real)F[2];
     }
     w->n_coincident += coinc;
+    if (base.tr) {
+        hcbd__hc_swap_pairs(w);
+        w->npairs = total;
+        w->n_created += created;
+    }
+    return -1;
 }
 
-/* Interpolated fluid velocity and drift velocity of every polymer (MODEL 7).
-   Relative to the first neighbour's velocity, so a uniform flow is
-   reproduced bit for bit.  Returns the first polymer with no fluid blob
-   within rc, or -1. */
+/* Interpolated fluid velocity and drift velocity of every polymer (MODEL 7),
+   over the cross list: each polymer's fluid blobs within rc, whose RaPiD
+   weights it keeps (xw, zero for the skin's entries) for the
+   redistribution.  Relative to the first neighbour's velocity, so a
+   uniform flow is reproduced bit for bit.  acc: q[0] no neighbour yet;
+   r[0] the psi normaliser S, r[1..3] the weighted velocity differences,
+   r[4..6] the reference velocity, r[7] the stress lever. */
+typedef struct hcbd__hc_interp_ctx {
+    hcbd_hc_world *w;
+    double rc, sg, A, inv_xi, vj;
+    int shep, stress;
+} hcbd__hc_interp_ctx;
+
+HCBD__INLINE void hcbd__hc_interp_begin(void *ctx, int a, hcbd__acc *acc)
+{
+    hcbd_hc_world *w = ((hcbd__hc_interp_ctx *)ctx)->w;
+    int32_t p;
+    memset(acc, 0, sizeof *acc);
+    acc->q[0] = 1;
+    for (p = w->lx.nb_start[a]; p < w->lx.nb_start[a + 1]; ++p) w->xw[p] = 0; /* the skin's */
+}
+
+HCBD__INLINE void hcbd__hc_interp_pairs(void *ctx, int a, const hcbd__near *c, int m, hcbd__acc *acc)
+{
+    const hcbd__hc_interp_ctx *s = (const hcbd__hc_interp_ctx *)ctx;
+    hcbd_hc_world *w = s->w;
+    int t;
+    (void)a;
+    for (t = 0; t < m; ++t) {
+        const int i = c->j[t]; /* a fluid slot */
+        const double wr = hcbd__rapid(sqrt(c->r2[t]), s->sg, s->rc, s->A), wt = wr / w->sn[i];
+        double u[3];
+        w->xw[c->e[t]] = wr;
+        /* the image of blob i moves with the velocity of its layer */
+        u[0] = w->svx[i] + c->k[t] * s->vj;
+        u[1] = w->svy[i];
+        u[2] = w->svz[i];
+        if (acc->q[0]) {
+            acc->r[4] = u[0]; acc->r[5] = u[1]; acc->r[6] = u[2];
+            acc->q[0] = 0;
+        }
+        acc->r[0] += wt;
+        acc->r[1] += wt * (u[0] - acc->r[4]);
+        acc->r[2] += wt * (u[1] - acc->r[5]);
+        acc->r[3] += wt * (u[2] - acc->r[6]);
+        acc->r[7] -= wt * c->y[t];
+    }
+}
+
+HCBD__INLINE int hcbd__hc_interp_end(void *ctx, int a, hcbd__acc *acc)
+{
+    const hcbd__hc_interp_ctx *s = (const hcbd__hc_interp_ctx *)ctx;
+    hcbd_hc_world *w = s->w;
+    double S = acc->r[0], v[3];
+    const double *dv = acc->r + 1, *vref = acc->r + 4;
+    const int none = !(S > 0);
+    if (none) S = 1;
+    if (s->shep) {
+        v[0] = vref[0] + dv[0] / S; v[1] = vref[1] + dv[1] / S; v[2] = vref[2] + dv[2] / S;
+    } else {
+        v[0] = S * vref[0] + dv[0]; v[1] = S * vref[1] + dv[1]; v[2] = S * vref[2] + dv[2];
+    }
+    w->pS[a] = (hcbd_real)(s->shep ? S : 1.0);
+    w->pux[a] = (hcbd_real)(v[0] + w->pFx[a] * s->inv_xi);
+    w->puy[a] = (hcbd_real)(v[1] + w->pFy[a] * s->inv_xi);
+    w->puz[a] = (hcbd_real)(v[2] + w->pFz[a] * s->inv_xi);
+    if (s->stress) w->ps[3 * a + 2] = acc->r[7] / (s->shep ? S : 1.0) * w->pFx[a];
+    return none ? a : INT_MAX;
+}
+
+/* Returns the first polymer with no fluid blob within rc, or -1. */
 static int hcbd__hc_interp(hcbd_hc_world *w)
 {
-    const int n = w->np, nt = w->p.threads, shep = w->p.coupling == HCBD_COUPLE_SHEPARD;
-    const int stress = w->stress_on;
-    const double rc = w->p.rc, sg = w->p.sigma, cut2 = rc * rc, A = hcbd__rapid_A(sg, rc);
-    const double inv_xi = 1.0 / w->p.xi, vj = w->le_vjump;
-    const hcbd__box box = hcbd__hc_box(w);
-    int q, bad = INT_MAX;
+    const int n = w->np, nt = w->p.threads;
+    const hcbd__trav T = hcbd__trav_make(&w->lx, w->px, w->py, w->pz, w->sx, w->sy, w->sz,
+                                         hcbd__hc_box(w), w->p.rc);
+    hcbd__hc_interp_ctx s;
+    int bad = INT_MAX;
     (void)nt;
-    HCBD__OMP(omp parallel for num_threads(nt) schedule(static) reduction(min:bad))
-    for (q = 0; q < n; ++q) {
-        const int a = w->lp.perm[q];
-        const double xa = w->px[a], ya = w->py[a], za = w->pz[a];
-        double S = 0, dv[3] = {0, 0, 0}, vref[3] = {0, 0, 0}, ydy = 0, v[3];
-        int first = 1;
-        int32_t p;
-        for (p = w->lx.nb_start[a]; p < w->lx.nb_start[a + 1]; ++p) {
-            const int i = w->lx.nb_j[p]; /* a fluid slot */
-            double d[3], r2, r, wt, u[3];
-            int k = hcbd__delta_box(&box, xa - w->sx[i], ya - w->sy[i], za - w->sz[i], d);
-            r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-            w->xw[p] = 0;
-            if (r2 >= cut2) continue;
-            r = sqrt(r2);
-            w->xw[p] = hcbd__rapid(r, sg, rc, A);
-            wt = w->xw[p] / w->sn[i];
-            /* the image of blob i moves with the velocity of its layer */
-            u[0] = w->svx[i] + k * vj;
-            u[1] = w->svy[i];
-            u[2] = w->svz[i];
-            if (first) {
-                vref[0] = u[0]; vref[1] = u[1]; vref[2] = u[2];
-                first = 0;
-            }
-            S += wt;
-            dv[0] += wt * (u[0] - vref[0]);
-            dv[1] += wt * (u[1] - vref[1]);
-            dv[2] += wt * (u[2] - vref[2]);
-            ydy -= wt * d[1];
-        }
-        if (!(S > 0)) {
-            if (a < bad) bad = a;
-            S = 1;
-        }
-        if (shep) {
-            v[0] = vref[0] + dv[0] / S; v[1] = vref[1] + dv[1] / S; v[2] = vref[2] + dv[2] / S;
-        } else {
-            v[0] = S * vref[0] + dv[0]; v[1] = S * vref[1] + dv[1]; v[2] = S * vref[2] + dv[2];
-        }
-        w->pS[a] = (hcbd_real)(shep ? S : 1.0);
-        w->pux[a] = (hcbd_real)(v[0] + w->pFx[a] * inv_xi);
-        w->puy[a] = (hcbd_real)(v[1] + w->pFy[a] * inv_xi);
-        w->puz[a] = (hcbd_real)(v[2] + w->pFz[a] * inv_xi);
-        if (stress) w->ps[3 * a + 2] = ydy / (shep ? S : 1.0) * w->pFx[a];
+    s.w = w;
+    s.rc = w->p.rc;
+    s.sg = w->p.sigma;
+    s.A = hcbd__rapid_A(s.sg, s.rc);
+    s.inv_xi = 1.0 / w->p.xi;
+    s.vj = w->le_vjump;
+    s.shep = w->p.coupling == HCBD_COUPLE_SHEPARD;
+    s.stress = w->stress_on;
+    HCBD__OMP(omp parallel num_threads(nt) reduction(min:bad))
+    {
+        int lo, hi;
+        hcbd__share(n, &lo, &hi);
+        bad = hcbd__traverse(&T, w->lp.perm, lo, hi, &s, hcbd__hc_interp_begin, hcbd__hc_interp_pairs,
+                             hcbd__hc_interp_end);
     }
     return bad == INT_MAX ? -1 : bad;
 }
@@ -6999,99 +7272,111 @@ static inline double hcbd__m4_wdr(double q, double c1h)
    viscous column.
 
    The order of the sweep: each blob, by its present position relative to
-   blob 0, lies in a block of a grid at least 2h wide along each axis (a
-   multiple of 3 blocks, or a single one), and a pair belongs to the block
-   of its owner (the lower id).  A pair reaches at most one block along
-   each axis, so blocks of one colour (each index mod 3) never touch the
-   same blob: the 27 colours run in turn, the blocks of a colour side by
-   side; inside a block, owners by increasing id, partners by increasing
-   id.  Under Lees-Edwards the blocks are cut along u = x - t y, t = s/Ly
-   with the offset s taken in [-Lx/2, Lx/2): an image across the sheared
-   boundary has the same u, so the grid is periodic there too, and a pair
-   within 2h spans at most 2h sqrt(1 + t^2) in u, which the blocks along x
-   are made wide enough for (their count may change as the offset moves).
-   The order is set by positions and ids alone: the bits depend neither on
-   the thread count, nor on the storage, nor on when the lists were built.
-   A box too small for three blocks along every axis sweeps in the same
-   order on one thread. */
-/* One owner's pairs of the sweep, fused with their pressure forces (which
-   need no velocity, so they join the fixed-point sums in any order).  Per
-   chunk of partners the velocity-free part (kernel, rate, 1 - e, pressure)
-   comes first, in a loop without dependences; the chain of velocity
-   updates follows.  Returns the owner's id if a pressure term leaves the
-   fixed-point range, else INT_MAX. */
-static int hcbd__hc_sweep_owner(hcbd_hc_world *w, int i, double dt, uint64_t skey,
-                                const hcbd__box *box)
+   blob 0, lies in a block of a grid (hcbd__hc_sweep_axis: along each axis
+   blocks at least 2h/s wide, a multiple of 2s + 1 of them, or a single
+   one), and a pair belongs to the block of its owner (the lower id).  A
+   pair reaches at most s blocks along the axis, so blocks of one colour
+   (each index mod 2s + 1) never touch the same blob: the colours run in
+   turn, the blocks of a colour side by side; inside a block, owners by
+   increasing id, partners by increasing id.  Under Lees-Edwards the
+   blocks are cut along u = x - t y, t = s/Ly with the offset s taken in
+   [-Lx/2, Lx/2): an image across the sheared boundary has the same u, so
+   the grid is periodic there too, and a pair within 2h spans at most
+   2h sqrt(1 + t^2) in u, which the blocks along x are made wide enough
+   for (their count may change as the offset moves).  The order is set by
+   positions and ids alone: the bits depend neither on the thread count,
+   nor on the storage, nor on when the lists were built.  A box too small
+   for two blocks of one colour along any axis sweeps in the same order on
+   one thread. */
+/* The sweep's pairs, fused with their pressure forces (which need no
+   velocity, so they join the fixed-point sums in any order).  Per chunk of
+   partners the velocity-free part (kernel, rate, 1 - e, pressure) comes
+   first, in a loop without dependences; the chain of velocity updates
+   follows. */
+typedef struct hcbd__hc_sweep_ctx {
+    hcbd_hc_world *w;
+    double dt, ih, c1h, m, inv_m, kT, vj, rate0, qF, lim;
+    uint64_t skey;
+    int noise, stress;
+} hcbd__hc_sweep_ctx;
+
+/* acc: r[0..2] the owner's velocity (in registers: no partner is the
+   owner itself), r[3] r[4] its viscous and pressure stress; q[0..2] its
+   pressure force */
+HCBD__INLINE void hcbd__hc_sweep_begin(void *ctx, int i, hcbd__acc *a)
 {
-    const int noise = w->noise_f, stress = w->stress_on;
-    const double h = w->p.h, cut2 = 4.0 * h * h, ih = 1.0 / h;
-    const double c1h = 1.0 / (4.0 * HCBD__PI * h * h * h * h * h);
-    const double m = w->m, inv_m = w->inv_m, kT = w->p.kT, vj = w->le_vjump;
-    const double rate = 2.0 * dt * inv_m * 2.0 * w->p.eta * w->sIn[i]; /* 2 f dt/m over wdr/n_j */
-    const double qF = w->qF, lim = w->limF, Pi = w->sP[i];
+    const hcbd_hc_world *w = ((const hcbd__hc_sweep_ctx *)ctx)->w;
+    memset(a, 0, sizeof *a);
+    a->r[0] = w->svx[i]; a->r[1] = w->svy[i]; a->r[2] = w->svz[i];
+}
+
+HCBD__INLINE void hcbd__hc_sweep_pairs(void *ctx, int i, const hcbd__near *c, int mm, hcbd__acc *a)
+{
+    const hcbd__hc_sweep_ctx *s = (const hcbd__hc_sweep_ctx *)ctx;
+    hcbd_hc_world *w = s->w;
+    const double m = s->m, inv_m = s->inv_m, vj = s->vj, qF = s->qF, lim = s->lim;
+    const double rate = s->rate0 * w->sIn[i], Pi = w->sP[i]; /* 2 f dt/m over wdr/n_j */
     hcbd_real *HCBD__RESTRICT vx = w->svx, *HCBD__RESTRICT vy = w->svy, *HCBD__RESTRICT vz = w->svz;
     const hcbd_real *HCBD__RESTRICT In = w->sIn, *HCBD__RESTRICT Pn2 = w->sP;
     const int32_t *HCBD__RESTRICT fid = w->fid;
     int64_t *HCBD__RESTRICT aFx = w->aF[0], *HCBD__RESTRICT aFy = w->aF[1];
     int64_t *HCBD__RESTRICT aFz = w->aF[2];
-    const int32_t pend = w->lf.nb_start[i + 1], idi = fid[i];
-    /* i's velocity stays in registers: no partner is i itself */
-    double vxi = vx[i], vyi = vy[i], vzi = vz[i], sv = 0, sp = 0;
-    int64_t fx = 0, fy = 0, fz = 0;
-    int bad = 0;
-    int32_t p = w->lf.nb_start[i];
-    while (p < pend) {
-        hcbd__near c;
-        double x[HCBD__CHUNK], om[HCBD__CHUNK], fp[HCBD__CHUNK];
-        const int mm = hcbd__gather_at(w->sx, w->sy, w->sz, w->lf.nb_j, box, w->sx[i], w->sy[i],
-                                       w->sz[i], &p, pend, cut2, &c);
-        int t;
-        HCBD__OMP(omp simd)
-        for (t = 0; t < mm; ++t) {
-            const int j = c.j[t];
-            const double wdr = hcbd__m4_wdr(sqrt(c.r2[t]) * ih, c1h);
-            x[t] = rate * wdr * In[j];
-            om[t] = hcbd__one_minus_exp_series(x[t]);
-            fp[t] = (Pi + Pn2[j]) * wdr; /* -(P_i/n_i^2 + P_j/n_j^2) w' e_ij */
-        }
-        for (t = 0; t < mm; ++t)
-            if (!(x[t] < 0.125)) om[t] = -expm1(-x[t]);
-        for (t = 0; t < mm; ++t) {
-            const int j = c.j[t];
-            const double cc = 0.5 * m * om[t];
-            double P[3], F[3];
-            int64_t u;
-            P[0] = -cc * (vxi - vx[j] - c.k[t] * vj);
-            P[1] = -cc * (vyi - vy[j]);
-            P[2] = -cc * (vzi - vz[j]);
-            if (noise) {
-                const double b = sqrt(0.5 * kT * m * om[t] * (2.0 - om[t]));
-                double z3[3];
-                hcbd__deviates3(w->zig, HCBD_NOISE_GAUSS, hcbd__pair_key(skey, idi, fid[j]), z3);
-                P[0] += b * z3[0];
-                P[1] += b * z3[1];
-                P[2] += b * z3[2];
-            }
-            vxi = (hcbd_real)(vxi + P[0] * inv_m); vx[j] = (hcbd_real)(vx[j] - P[0] * inv_m);
-            vyi = (hcbd_real)(vyi + P[1] * inv_m); vy[j] = (hcbd_real)(vy[j] - P[1] * inv_m);
-            vzi = (hcbd_real)(vzi + P[2] * inv_m); vz[j] = (hcbd_real)(vz[j] - P[2] * inv_m);
-            F[0] = fp[t] * c.x[t]; F[1] = fp[t] * c.y[t]; F[2] = fp[t] * c.z[t];
-            bad |= !(fabs(F[0]) <= lim && fabs(F[1]) <= lim && fabs(F[2]) <= lim);
-            u = hcbd__fix(F[0] * qF); fx += u; aFx[j] -= u;
-            u = hcbd__fix(F[1] * qF); fy += u; aFy[j] -= u;
-            u = hcbd__fix(F[2] * qF); fz += u; aFz[j] -= u;
-            sv += c.y[t] * P[0];
-            sp += c.y[t] * F[0];
-        }
+    const int32_t idi = fid[i];
+    double vxi = a->r[0], vyi = a->r[1], vzi = a->r[2], x[HCBD__CHUNK], om[HCBD__CHUNK], fp[HCBD__CHUNK];
+    int t;
+    HCBD__OMP(omp simd)
+    for (t = 0; t < mm; ++t) {
+        const int j = c->j[t];
+        const double wdr = hcbd__m4_wdr(sqrt(c->r2[t]) * s->ih, s->c1h);
+        x[t] = rate * wdr * In[j];
+        om[t] = hcbd__one_minus_exp_series(x[t]);
+        fp[t] = (Pi + Pn2[j]) * wdr; /* -(P_i/n_i^2 + P_j/n_j^2) w' e_ij */
     }
-    vx[i] = (hcbd_real)vxi; vy[i] = (hcbd_real)vyi; vz[i] = (hcbd_real)vzi;
-    aFx[i] += fx; aFy[i] += fy; aFz[i] += fz;
-    if (stress) {
-        w->fs[3 * idi] = sp;
-        w->fs[3 * idi + 1] = sv / dt;
+    for (t = 0; t < mm; ++t)
+        if (!(x[t] < 0.125)) om[t] = -expm1(-x[t]);
+    for (t = 0; t < mm; ++t) {
+        const int j = c->j[t];
+        const double cc = 0.5 * m * om[t];
+        double P[3], F[3];
+        int64_t u;
+        P[0] = -cc * (vxi - vx[j] - c->k[t] * vj);
+        P[1] = -cc * (vyi - vy[j]);
+        P[2] = -cc * (vzi - vz[j]);
+        if (s->noise) {
+            const double b = sqrt(0.5 * s->kT * m * om[t] * (2.0 - om[t]));
+            double z3[3];
+            hcbd__deviates3(w->zig, HCBD_NOISE_GAUSS, hcbd__pair_key(s->skey, idi, fid[j]), z3);
+            P[0] += b * z3[0];
+            P[1] += b * z3[1];
+            P[2] += b * z3[2];
+        }
+        vxi = (hcbd_real)(vxi + P[0] * inv_m); vx[j] = (hcbd_real)(vx[j] - P[0] * inv_m);
+        vyi = (hcbd_real)(vyi + P[1] * inv_m); vy[j] = (hcbd_real)(vy[j] - P[1] * inv_m);
+        vzi = (hcbd_real)(vzi + P[2] * inv_m); vz[j] = (hcbd_real)(vz[j] - P[2] * inv_m);
+        F[0] = fp[t] * c->x[t]; F[1] = fp[t] * c->y[t]; F[2] = fp[t] * c->z[t];
+        a->bad |= !(fabs(F[0]) <= lim && fabs(F[1]) <= lim && fabs(F[2]) <= lim);
+        u = hcbd__fix(F[0] * qF); a->q[0] += u; aFx[j] -= u;
+        u = hcbd__fix(F[1] * qF); a->q[1] += u; aFy[j] -= u;
+        u = hcbd__fix(F[2] * qF); a->q[2] += u; aFz[j] -= u;
+        a->r[3] += c->y[t] * P[0];
+        a->r[4] += c->y[t] * F[0];
+    }
+    a->r[0] = vxi; a->r[1] = vyi; a->r[2] = vzi;
+}
+
+HCBD__INLINE int hcbd__hc_sweep_end(void *ctx, int i, hcbd__acc *a)
+{
+    const hcbd__hc_sweep_ctx *s = (const hcbd__hc_sweep_ctx *)ctx;
+    hcbd_hc_world *w = s->w;
+    const int32_t idi = w->fid[i];
+    w->svx[i] = (hcbd_real)a->r[0]; w->svy[i] = (hcbd_real)a->r[1]; w->svz[i] = (hcbd_real)a->r[2];
+    w->aF[0][i] += a->q[0]; w->aF[1][i] += a->q[1]; w->aF[2][i] += a->q[2];
+    if (s->stress) {
+        w->fs[3 * idi] = a->r[4];
+        w->fs[3 * idi + 1] = a->r[3] / s->dt;
         w->fs[3 * idi + 2] = 0;
     }
-    return bad ? idi : INT_MAX;
+    return a->bad ? idi : INT_MAX;
 }
 
 static int hcbd__hc_fluid_shardlow(hcbd_hc_world *w, double dt, uint64_t skey)
@@ -7100,17 +7385,29 @@ static int hcbd__hc_fluid_shardlow(hcbd_hc_world *w, double dt, uint64_t skey)
     const double *L = w->p.L;
     const double s = w->le_on ? w->le_offset - L[0] * floor(w->le_offset / L[0] + 0.5) : 0.0;
     const double t = s / L[1];
-    const hcbd__box box = hcbd__hc_box(w);
+    const double h = w->p.h;
+    const hcbd__trav T = hcbd__hc_trav_f(w, 2.0 * h);
+    hcbd__hc_sweep_ctx sc;
     /* blocks move with blob 0, so that a boosted copy of the world sweeps
        in the same order (Galilean invariance of the trajectory) */
     const int o = w->fslot[0];
     const double x0 = w->sx[o], y0 = w->sy[o], z0 = w->sz[o];
     int32_t *HCBD__RESTRICT blk = w->sw_blk, *HCBD__RESTRICT start = w->sw_start;
     int32_t *HCBD__RESTRICT list = w->sw_list;
-    int nb[3], nblk, q, id, b, worst = INT_MAX;
+    int nb[3], nc[3], nblk, q, id, b, worst = INT_MAX;
     double f[3];
     (void)nt;
-    nblk = hcbd__hc_sweep_blocks(&w->p, t, nb);
+    sc.w = w;
+    sc.dt = dt;
+    sc.ih = 1.0 / h;
+    sc.c1h = 1.0 / (4.0 * HCBD__PI * h * h * h * h * h);
+    sc.m = w->m; sc.inv_m = w->inv_m; sc.kT = w->p.kT; sc.vj = w->le_vjump;
+    sc.rate0 = 2.0 * dt * w->inv_m * 2.0 * w->p.eta;
+    sc.qF = w->qF; sc.lim = w->limF;
+    sc.skey = skey;
+    sc.noise = w->noise_f;
+    sc.stress = w->stress_on;
+    nblk = hcbd__hc_sweep_blocks(&w->p, t, nb, nc, NULL);
     f[0] = nb[0] / L[0]; f[1] = nb[1] / L[1]; f[2] = nb[2] / L[2];
     HCBD__OMP(omp parallel for num_threads(nt) schedule(static))
     for (q = 0; q < n; ++q) {
@@ -7139,16 +7436,19 @@ static int hcbd__hc_fluid_shardlow(hcbd_hc_world *w, double dt, uint64_t skey)
     start[0] = 0;
     HCBD__OMP(omp parallel num_threads(nt) reduction(min:worst))
     {
-        int col, bb, k;
-        for (col = 0; col < 27; ++col) {
+        /* colour (a0, a1, a2): the blocks a_d + nc_d m_d, m_d < nb_d / nc_d */
+        const int m0 = nb[0] / nc[0], m1 = nb[1] / nc[1], per = m0 * m1 * (nb[2] / nc[2]);
+        int col, j, k;
+        for (col = 0; col < nc[0] * nc[1] * nc[2]; ++col) {
+            const int a0 = col % nc[0], a1 = col / nc[0] % nc[1], a2 = col / (nc[0] * nc[1]);
             HCBD__OMP(omp for schedule(dynamic, 1))
-            for (bb = 0; bb < nblk; ++bb) {
-                const int cx = bb % nb[0], cy = bb / nb[0] % nb[1], cz = bb / (nb[0] * nb[1]);
-                if (cx % 3 + 3 * (cy % 3) + 9 * (cz % 3) != col) continue;
-                for (k = start[bb]; k < start[bb + 1]; ++k) {
-                    const int bad = hcbd__hc_sweep_owner(w, list[k], dt, skey, &box);
-                    if (bad < worst) worst = bad;
-                }
+            for (j = 0; j < per; ++j) {
+                const int bb = ((a2 + nc[2] * (j / (m0 * m1))) * nb[1] + a1 + nc[1] * (j / m0 % m1)) * nb[0] +
+                               a0 + nc[0] * (j % m0);
+                const int bad = hcbd__traverse(&T, list, start[bb], start[bb + 1], &sc,
+                                               hcbd__hc_sweep_begin, hcbd__hc_sweep_pairs,
+                                               hcbd__hc_sweep_end);
+                if (bad < worst) worst = bad;
             }
         }
         HCBD__OMP(omp for schedule(static))
@@ -7160,96 +7460,116 @@ static int hcbd__hc_fluid_shardlow(hcbd_hc_world *w, double dt, uint64_t skey)
     return worst;
 }
 
-/* HCBD_PAIR_EULER: the fluid pair forces of the owners, pressure, Morris
-   friction and the pair noise, dp = sqrt(2 kT f_ij dt) zeta_ij on the
-   owner i (the lower id) and minus on j (2018 eq. 18-19). */
-HCBD__INLINE int hcbd__hc_kick_body(hcbd_hc_world *w, int q0, int q1, const int noise,
-                                    const int stress)
+/* HCBD_PAIR_EULER: the fluid pair forces, pressure, Morris friction and
+   the pair noise, dp = sqrt(2 kT f_ij dt) zeta_ij on the owner i (the
+   lower id) and minus on j (2018 eq. 18-19). */
+typedef struct hcbd__hc_kick_ctx {
+    hcbd_hc_world *w;
+    double ih, c1h, two_eta, sn, vj, qF, lim;
+    uint64_t skey;
+    int noise, stress;
+} hcbd__hc_kick_ctx;
+
+/* acc: r[0..2] the owner's velocity, r[3] its P/n^2, r[4] its 1/n, r[5..7]
+   its pressure, viscous and noise stress; q[0..2] its force */
+HCBD__INLINE void hcbd__hc_kick_begin(void *ctx, int i, hcbd__acc *a)
 {
-    const double h = w->p.h, cut2 = 4.0 * h * h, ih = 1.0 / h;
-    const double c1h = 1.0 / (4.0 * HCBD__PI * h * h * h * h * h);
-    const double two_eta = 2.0 * w->p.eta, dt = w->p.dt / w->p.substeps;
-    const double sn = noise ? sqrt(2.0 * w->p.kT / dt) : 0.0, vj = w->le_vjump;
-    const double qF = w->qF, lim = w->limF;
-    const uint64_t skey = w->kick_key;
-    const hcbd__box box = hcbd__hc_box(w);
-    const hcbd_real *HCBD__RESTRICT x = w->sx, *HCBD__RESTRICT y = w->sy, *HCBD__RESTRICT z = w->sz;
+    const hcbd_hc_world *w = ((const hcbd__hc_kick_ctx *)ctx)->w;
+    memset(a, 0, sizeof *a);
+    a->r[0] = w->svx[i]; a->r[1] = w->svy[i]; a->r[2] = w->svz[i];
+    a->r[3] = w->sP[i]; a->r[4] = w->sIn[i];
+}
+
+HCBD__INLINE void hcbd__hc_kick_pairs(void *ctx, int i, const hcbd__near *c, int m, hcbd__acc *a)
+{
+    const hcbd__hc_kick_ctx *s = (const hcbd__hc_kick_ctx *)ctx;
+    hcbd_hc_world *w = s->w;
     const hcbd_real *HCBD__RESTRICT vx = w->svx, *HCBD__RESTRICT vy = w->svy;
     const hcbd_real *HCBD__RESTRICT vz = w->svz, *HCBD__RESTRICT Pn2 = w->sP, *HCBD__RESTRICT In = w->sIn;
     const int32_t *HCBD__RESTRICT fid = w->fid;
     int64_t *HCBD__RESTRICT aFx = w->aF[0], *HCBD__RESTRICT aFy = w->aF[1];
     int64_t *HCBD__RESTRICT aFz = w->aF[2];
-    int q, worst = INT_MAX;
-    for (q = q0; q < q1; ++q) {
-        const int i = w->lf.perm[q];
-        const double xi = x[i], yi = y[i], zi = z[i], vxi = vx[i], vyi = vy[i], vzi = vz[i];
-        const double Pi = Pn2[i], ini = In[i];
-        int64_t fx = 0, fy = 0, fz = 0;
-        double sp = 0, sv = 0, sz = 0;
-        const int32_t pend = w->lf.nb_start[i + 1];
-        int bad = 0;
-        int32_t p = w->lf.nb_start[i];
-        while (p < pend) {
-            hcbd__near c;
-            const int m = hcbd__gather_at(x, y, z, w->lf.nb_j, &box, xi, yi, zi, &p, pend, cut2, &c);
-            int t;
-            for (t = 0; t < m; ++t) {
-                const int j = c.j[t], k = c.k[t];
-                const double wdr = hcbd__m4_wdr(sqrt(c.r2[t]) * ih, c1h);
-                double d[3], fp, F[3];
-                int64_t u;
-                d[0] = c.x[t]; d[1] = c.y[t]; d[2] = c.z[t];
-                /* -(P_i/n_i^2 + P_j/n_j^2) w' e_ij */
-                fp = (Pi + Pn2[j]) * wdr;
-                F[0] = fp * d[0]; F[1] = fp * d[1]; F[2] = fp * d[2];
-                if (stress) sp += d[1] * F[0];
-                {
-                    const double f = two_eta * wdr * ini * In[j]; /* Morris */
-                    const double Fv0 = -f * (vxi - (vx[j] + k * vj));
-                    F[0] += Fv0;
-                    F[1] += -f * (vyi - vy[j]);
-                    F[2] += -f * (vzi - vz[j]);
-                    if (stress) sv += d[1] * Fv0;
-                    if (noise) {
-                        double zz[3], s = sn * sqrt(f);
-                        hcbd__deviates3(w->zig, HCBD_NOISE_GAUSS, hcbd__pair_key(skey, fid[i], fid[j]), zz);
-                        F[0] += s * zz[0];
-                        F[1] += s * zz[1];
-                        F[2] += s * zz[2];
-                        if (stress) sz += d[1] * s * zz[0];
-                    }
-                }
-                bad |= !(fabs(F[0]) <= lim && fabs(F[1]) <= lim && fabs(F[2]) <= lim);
-                u = hcbd__fix(F[0] * qF); fx += u; aFx[j] -= u;
-                u = hcbd__fix(F[1] * qF); fy += u; aFy[j] -= u;
-                u = hcbd__fix(F[2] * qF); fz += u; aFz[j] -= u;
-            }
+    const double vxi = a->r[0], vyi = a->r[1], vzi = a->r[2], Pi = a->r[3], ini = a->r[4];
+    const double qF = s->qF, lim = s->lim;
+    int t;
+    for (t = 0; t < m; ++t) {
+        const int j = c->j[t], k = c->k[t];
+        const double wdr = hcbd__m4_wdr(sqrt(c->r2[t]) * s->ih, s->c1h);
+        const double f = s->two_eta * wdr * ini * In[j]; /* Morris */
+        double d[3], fp, F[3], Fv0;
+        int64_t u;
+        d[0] = c->x[t]; d[1] = c->y[t]; d[2] = c->z[t];
+        /* -(P_i/n_i^2 + P_j/n_j^2) w' e_ij */
+        fp = (Pi + Pn2[j]) * wdr;
+        F[0] = fp * d[0]; F[1] = fp * d[1]; F[2] = fp * d[2];
+        if (s->stress) a->r[5] += d[1] * F[0];
+        Fv0 = -f * (vxi - (vx[j] + k * s->vj));
+        F[0] += Fv0;
+        F[1] += -f * (vyi - vy[j]);
+        F[2] += -f * (vzi - vz[j]);
+        if (s->stress) a->r[6] += d[1] * Fv0;
+        if (s->noise) {
+            double zz[3], sf = s->sn * sqrt(f);
+            hcbd__deviates3(w->zig, HCBD_NOISE_GAUSS, hcbd__pair_key(s->skey, fid[i], fid[j]), zz);
+            F[0] += sf * zz[0];
+            F[1] += sf * zz[1];
+            F[2] += sf * zz[2];
+            if (s->stress) a->r[7] += d[1] * sf * zz[0];
         }
-        aFx[i] += fx; aFy[i] += fy; aFz[i] += fz;
-        if (stress) { /* by id: the sum over blobs in a fixed order */
-            w->fs[3 * fid[i]] = sp;
-            w->fs[3 * fid[i] + 1] = sv;
-            w->fs[3 * fid[i] + 2] = sz;
-        }
-        if (bad && fid[i] < worst) worst = fid[i];
+        a->bad |= !(fabs(F[0]) <= lim && fabs(F[1]) <= lim && fabs(F[2]) <= lim);
+        u = hcbd__fix(F[0] * qF); a->q[0] += u; aFx[j] -= u;
+        u = hcbd__fix(F[1] * qF); a->q[1] += u; aFy[j] -= u;
+        u = hcbd__fix(F[2] * qF); a->q[2] += u; aFz[j] -= u;
     }
-    return worst;
+}
+
+HCBD__INLINE int hcbd__hc_kick_end(void *ctx, int i, hcbd__acc *a)
+{
+    const hcbd__hc_kick_ctx *s = (const hcbd__hc_kick_ctx *)ctx;
+    hcbd_hc_world *w = s->w;
+    const int32_t idi = w->fid[i];
+    w->aF[0][i] += a->q[0]; w->aF[1][i] += a->q[1]; w->aF[2][i] += a->q[2];
+    if (s->stress) { /* by id: the sum over blobs in a fixed order */
+        w->fs[3 * idi] = a->r[5];
+        w->fs[3 * idi + 1] = a->r[6];
+        w->fs[3 * idi + 2] = a->r[7];
+    }
+    return a->bad ? idi : INT_MAX;
+}
+
+HCBD__INLINE int hcbd__hc_kick_run(hcbd_hc_world *w, int q0, int q1, const int noise,
+                                   const int stress)
+{
+    const double h = w->p.h, dt = w->p.dt / w->p.substeps;
+    const hcbd__trav T = hcbd__hc_trav_f(w, 2.0 * h);
+    hcbd__hc_kick_ctx s;
+    s.w = w;
+    s.ih = 1.0 / h;
+    s.c1h = 1.0 / (4.0 * HCBD__PI * h * h * h * h * h);
+    s.two_eta = 2.0 * w->p.eta;
+    s.sn = noise ? sqrt(2.0 * w->p.kT / dt) : 0.0;
+    s.vj = w->le_vjump;
+    s.qF = w->qF; s.lim = w->limF;
+    s.skey = w->kick_key;
+    s.noise = noise; s.stress = stress;
+    return hcbd__traverse(&T, w->lf.perm, q0, q1, &s, hcbd__hc_kick_begin, hcbd__hc_kick_pairs,
+                          hcbd__hc_kick_end);
 }
 
 static int hcbd__hc_kick_v(void *c, int q0, int q1)
 {
-    return hcbd__hc_kick_body((hcbd_hc_world *)c, q0, q1, 0, 0);
+    return hcbd__hc_kick_run((hcbd_hc_world *)c, q0, q1, 0, 0);
 }
 
 static int hcbd__hc_kick_vn(void *c, int q0, int q1)
 {
-    return hcbd__hc_kick_body((hcbd_hc_world *)c, q0, q1, 1, 0);
+    return hcbd__hc_kick_run((hcbd_hc_world *)c, q0, q1, 1, 0);
 }
 
 static int hcbd__hc_kick_any(void *c, int q0, int q1)
 {
     hcbd_hc_world *w = (hcbd_hc_world *)c;
-    return hcbd__hc_kick_body(w, q0, q1, w->noise_f, w->stress_on);
+    return hcbd__hc_kick_run(w, q0, q1, w->noise_f, w->stress_on);
 }
 
 /* Fluid velocities of t + dt (MODEL 6) into the scratch velocities: the
@@ -7428,14 +7748,11 @@ static hcbd_result hcbd__hc_prepare(hcbd_hc_world *w, int64_t step)
     if (w->np > 0) {
         bad = hcbd__hc_poly_density(w);
         if (bad >= 0) return hcbd__hc_phi_fail(w, step, bad, w->pn[bad]);
-        if (w->transient) {
-            bad = hcbd__hc_pairs(w, &need);
-            if (bad >= 0)
-                return hcbd__fail(&w->err, HCBD_ERR_CAPACITY, step, bad,
-                                  "polymer %d has %d transient partners of higher id, more "
-                                  "than pair_capacity %d", bad, need, w->pair_cap);
-        }
-        hcbd__hc_poly_forces(w);
+        bad = hcbd__hc_poly_forces(w, &need);
+        if (bad >= 0)
+            return hcbd__fail(&w->err, HCBD_ERR_CAPACITY, step, bad,
+                              "polymer %d has %d transient partners of higher id, more "
+                              "than pair_capacity %d", bad, need, w->pair_cap);
         bad = hcbd__hc_interp(w);
         if (bad >= 0)
             return hcbd__fail(&w->err, HCBD_ERR_PARAM, step, bad,

@@ -436,11 +436,12 @@ void test_hc_determinism(void)
     }
 }
 
-/* The exact fluid sweep in blocks (6 x 3 x 3 at h = 1.3) under a shear
+/* The exact fluid sweep in blocks (21 along x at h = 1.3) under a shear
    fast enough that the Lees-Edwards offset crosses the box, so that the
-   blocks along x go from 6 to 3 and back: 1, 2 and 3 threads, and lists
-   rebuilt at other steps, give the same bits; and the momentum along y
-   and z (the shear boundary changes only x) is kept to round-off. */
+   blocks along x change with it (21, 14, 10, 6 ... as the tilt grows): 1, 2
+   and 3 threads, and lists rebuilt at other steps, give the same bits;
+   and the momentum along y and z (the shear boundary changes only x) is
+   kept to round-off. */
 void test_hc_sweep_blocks_determinism(void)
 {
     const int steps = 140; /* a multiple of 7 */
@@ -468,8 +469,7 @@ void test_hc_sweep_blocks_determinism(void)
             }
         }
         if (t == 0) {
-            /* the offset's range: t = s/Ly in [-0.5, 0.5) Lx/Ly reached
-               both sides of the switch from 6 to 3 blocks along x */
+            /* the offset went through its range, t = s/Ly in [-0.5, 0.5) Lx/Ly */
             const double travel = dd.params.gdot * dd.params.L[1] * dd.params.dt * steps;
             CHECK(travel > dd.params.L[0], "the offset moved %.2f, less than Lx", travel);
         }
