@@ -3282,11 +3282,15 @@ HCBD__INLINE void hcbd__dens_pairs(void *ctx, int i, const hcbd__near *c, int m,
     int64_t *HCBD__RESTRICT aW = d->w->aW;
     int t;
     (void)i;
+    int64_t v[HCBD__CHUNK];
+    HCBD__OMP(omp simd)
     for (t = 0; t < m; ++t) {
         const double qq = sqrt(c->r2[t]) * d->invRc;
-        const int64_t v = hcbd__fix(hcbd__weight(d->cwq, qq, 1.0 - qq));
-        a->q[0] += v;
-        aW[c->j[t]] += v;
+        v[t] = hcbd__fix(hcbd__weight(d->cwq, qq, 1.0 - qq));
+    }
+    for (t = 0; t < m; ++t) {
+        a->q[0] += v[t];
+        aW[c->j[t]] += v[t];
     }
 }
 
@@ -3988,28 +3992,40 @@ double hcbd_temperature(const hcbd_world *w)
 }
 
 /* Calls fn for every pair within rmax (<= the list's guaranteed range) once,
-   with x_ij = x_i - x_j. */
+   with x_ij = x_i - x_j: the traversal with owners in id order, partners in
+   id order, on one thread (the observables sum in double in that order). */
 typedef void (*hcbd__pair_fn)(void *ctx, int i, int j, double dx, double dy,
                               double dz, double r2);
+typedef struct hcbd__obs_ctx {
+    hcbd__pair_fn fn;
+    void *ctx;
+} hcbd__obs_ctx;
+
+HCBD__INLINE void hcbd__obs_pairs(void *ctx, int i, const hcbd__near *c, int m, hcbd__acc *a)
+{
+    const hcbd__obs_ctx *o = (const hcbd__obs_ctx *)ctx;
+    int t;
+    (void)a;
+    for (t = 0; t < m; ++t) o->fn(o->ctx, i, c->j[t], c->x[t], c->y[t], c->z[t], c->r2[t]);
+}
+
+HCBD__INLINE int hcbd__obs_end(void *ctx, int i, hcbd__acc *a)
+{
+    (void)ctx; (void)i; (void)a;
+    return INT_MAX;
+}
+
 static hcbd_result hcbd__for_pairs(hcbd_world *w, double rmax, hcbd__pair_fn fn,
                                    void *ctx)
 {
-    int k;
-    double r2max = rmax * rmax;
+    hcbd__obs_ctx o;
+    hcbd__trav T;
     hcbd_result r = hcbd__ensure_list(w);
     if (r != HCBD_OK) return r;
-    for (k = 0; k < w->n; ++k) { /* owners in id order, partners in id order */
-        int i = w->slot[k];
-        int32_t p;
-        for (p = w->nl.nb_start[i]; p < w->nl.nb_start[i + 1]; ++p) {
-            int j = w->nl.nb_j[p];
-            double d[3], r2;
-            hcbd__delta(w, (double)w->x[i] - w->x[j], (double)w->y[i] - w->y[j],
-                        (double)w->z[i] - w->z[j], d);
-            r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-            if (r2 < r2max) fn(ctx, i, j, d[0], d[1], d[2], r2);
-        }
-    }
+    T = hcbd__trav_make(&w->nl, w->x, w->y, w->z, w->x, w->y, w->z, hcbd__box_of(w), rmax);
+    o.fn = fn;
+    o.ctx = ctx;
+    hcbd__traverse(&T, w->slot, 0, w->n, &o, hcbd__ev_zero, hcbd__obs_pairs, hcbd__obs_end);
     return HCBD_OK;
 }
 
@@ -6784,13 +6800,14 @@ typedef struct hcbd__hc_dens_ctx {
 HCBD__INLINE void hcbd__hc_dens_pairs(void *ctx, int i, const hcbd__near *c, int m, hcbd__acc *a)
 {
     const hcbd__hc_dens_ctx *d = (const hcbd__hc_dens_ctx *)ctx;
-    int64_t *HCBD__RESTRICT aW = d->w->aW;
+    int64_t *HCBD__RESTRICT aW = d->w->aW, v[HCBD__CHUNK];
     int t;
     (void)i;
+    HCBD__OMP(omp simd)
+    for (t = 0; t < m; ++t) v[t] = hcbd__fix(d->cq * hcbd__m4u(sqrt(c->r2[t]) * d->ih));
     for (t = 0; t < m; ++t) {
-        const int64_t v = hcbd__fix(d->cq * hcbd__m4u(sqrt(c->r2[t]) * d->ih));
-        a->q[0] += v;
-        aW[c->j[t]] += v;
+        a->q[0] += v[t];
+        aW[c->j[t]] += v[t];
     }
 }
 
@@ -6905,13 +6922,14 @@ HCBD__INLINE void hcbd__hc_pdens_begin(void *ctx, int a, hcbd__acc *acc)
 HCBD__INLINE void hcbd__hc_pdens_pairs(void *ctx, int a, const hcbd__near *c, int m, hcbd__acc *acc)
 {
     const hcbd__hc_poly_ctx *s = (const hcbd__hc_poly_ctx *)ctx;
-    double *HCBD__RESTRICT pw = s->w->pw;
+    double *HCBD__RESTRICT pw = s->w->pw, wt[HCBD__CHUNK];
     int t;
     (void)a;
+    HCBD__OMP(omp simd)
+    for (t = 0; t < m; ++t) wt[t] = hcbd__rapid(sqrt(c->r2[t]), s->sg, s->rc, s->A);
     for (t = 0; t < m; ++t) {
-        const double wt = hcbd__rapid(sqrt(c->r2[t]), s->sg, s->rc, s->A);
-        pw[c->e[t]] = wt;
-        acc->r[0] += wt;
+        pw[c->e[t]] = wt[t];
+        acc->r[0] += wt[t];
     }
 }
 
@@ -7156,13 +7174,20 @@ HCBD__INLINE void hcbd__hc_interp_pairs(void *ctx, int a, const hcbd__near *c, i
 {
     const hcbd__hc_interp_ctx *s = (const hcbd__hc_interp_ctx *)ctx;
     hcbd_hc_world *w = s->w;
+    const hcbd_real *HCBD__RESTRICT sn = w->sn;
+    double wr[HCBD__CHUNK], wn[HCBD__CHUNK];
     int t;
     (void)a;
+    HCBD__OMP(omp simd)
+    for (t = 0; t < m; ++t) {
+        wr[t] = hcbd__rapid(sqrt(c->r2[t]), s->sg, s->rc, s->A);
+        wn[t] = wr[t] / sn[c->j[t]];
+    }
     for (t = 0; t < m; ++t) {
         const int i = c->j[t]; /* a fluid slot */
-        const double wr = hcbd__rapid(sqrt(c->r2[t]), s->sg, s->rc, s->A), wt = wr / w->sn[i];
+        const double wt = wn[t];
         double u[3];
-        w->xw[c->e[t]] = wr;
+        w->xw[c->e[t]] = wr[t];
         /* the image of blob i moves with the velocity of its layer */
         u[0] = w->svx[i] + c->k[t] * s->vj;
         u[1] = w->svy[i];
@@ -7322,23 +7347,28 @@ HCBD__INLINE void hcbd__hc_sweep_pairs(void *ctx, int i, const hcbd__near *c, in
     int64_t *HCBD__RESTRICT aFx = w->aF[0], *HCBD__RESTRICT aFy = w->aF[1];
     int64_t *HCBD__RESTRICT aFz = w->aF[2];
     const int32_t idi = fid[i];
-    double vxi = a->r[0], vyi = a->r[1], vzi = a->r[2], x[HCBD__CHUNK], om[HCBD__CHUNK], fp[HCBD__CHUNK];
-    int t;
-    HCBD__OMP(omp simd)
+    double vxi = a->r[0], vyi = a->r[1], vzi = a->r[2], x[HCBD__CHUNK], om[HCBD__CHUNK], f0[HCBD__CHUNK];
+    int64_t u0[HCBD__CHUNK], u1[HCBD__CHUNK], u2[HCBD__CHUNK];
+    int t, bad = 0;
+    HCBD__OMP(omp simd reduction(|:bad))
     for (t = 0; t < mm; ++t) {
         const int j = c->j[t];
         const double wdr = hcbd__m4_wdr(sqrt(c->r2[t]) * s->ih, s->c1h);
+        const double fp = (Pi + Pn2[j]) * wdr; /* -(P_i/n_i^2 + P_j/n_j^2) w' e_ij */
+        const double F0 = fp * c->x[t], F1 = fp * c->y[t], F2 = fp * c->z[t];
         x[t] = rate * wdr * In[j];
         om[t] = hcbd__one_minus_exp_series(x[t]);
-        fp[t] = (Pi + Pn2[j]) * wdr; /* -(P_i/n_i^2 + P_j/n_j^2) w' e_ij */
+        bad |= !((fabs(F0) <= lim) & (fabs(F1) <= lim) & (fabs(F2) <= lim));
+        f0[t] = F0;
+        u0[t] = hcbd__fix(F0 * qF); u1[t] = hcbd__fix(F1 * qF); u2[t] = hcbd__fix(F2 * qF);
     }
+    a->bad |= bad;
     for (t = 0; t < mm; ++t)
         if (!(x[t] < 0.125)) om[t] = -expm1(-x[t]);
     for (t = 0; t < mm; ++t) {
         const int j = c->j[t];
         const double cc = 0.5 * m * om[t];
-        double P[3], F[3];
-        int64_t u;
+        double P[3];
         P[0] = -cc * (vxi - vx[j] - c->k[t] * vj);
         P[1] = -cc * (vyi - vy[j]);
         P[2] = -cc * (vzi - vz[j]);
@@ -7353,13 +7383,11 @@ HCBD__INLINE void hcbd__hc_sweep_pairs(void *ctx, int i, const hcbd__near *c, in
         vxi = (hcbd_real)(vxi + P[0] * inv_m); vx[j] = (hcbd_real)(vx[j] - P[0] * inv_m);
         vyi = (hcbd_real)(vyi + P[1] * inv_m); vy[j] = (hcbd_real)(vy[j] - P[1] * inv_m);
         vzi = (hcbd_real)(vzi + P[2] * inv_m); vz[j] = (hcbd_real)(vz[j] - P[2] * inv_m);
-        F[0] = fp[t] * c->x[t]; F[1] = fp[t] * c->y[t]; F[2] = fp[t] * c->z[t];
-        a->bad |= !(fabs(F[0]) <= lim && fabs(F[1]) <= lim && fabs(F[2]) <= lim);
-        u = hcbd__fix(F[0] * qF); a->q[0] += u; aFx[j] -= u;
-        u = hcbd__fix(F[1] * qF); a->q[1] += u; aFy[j] -= u;
-        u = hcbd__fix(F[2] * qF); a->q[2] += u; aFz[j] -= u;
+        a->q[0] += u0[t]; aFx[j] -= u0[t];
+        a->q[1] += u1[t]; aFy[j] -= u1[t];
+        a->q[2] += u2[t]; aFz[j] -= u2[t];
         a->r[3] += c->y[t] * P[0];
-        a->r[4] += c->y[t] * F[0];
+        a->r[4] += c->y[t] * f0[t];
     }
     a->r[0] = vxi; a->r[1] = vyi; a->r[2] = vzi;
 }

@@ -8,13 +8,17 @@
 # lmp is the first of $LMP, lmp on the PATH, build/lammps/lmp (make lammps)
 # and /tmp/peer/build/lmp (../shared/PEERS.md) that has the styles the
 # inputs use: Debian's own lmp lacks fix brownian and the SPH pair styles.  Environment knobs (defaults in brackets):
-#   REPS [3]  STAR_N [32768]  FLUID_N [64000]
+#   REPS [3]  STAR_N [32768]  FLUID_N [64000]  SOLUTION_N [8000]
 #   STAR_STEPS [1500]  GAUSS_STEPS [800]  DPD_STEPS [800]
 #   SPH_STEPS [250]  SDPD_STEPS [40]  PEERS_OUT [out/peers]
 # Writes $PEERS_OUT/peers.csv (relative to the repository root) and prints a
 # table: hcbd and LAMMPS ns per particle-step, their ratio, the target and
 # neighbour counts (hcbd: pairs per particle in its half Verlet list;
-# LAMMPS: "Ave neighs/atom" of its half list, skin included).
+# LAMMPS: "Ave neighs/atom" of its half list, skin included); then hcbd on
+# 2 threads: its ns, the speed-up over 1 thread and whether the two runs
+# ended with the same checksum.  The "table1" row is hcbd's Table I polymer
+# solution (SOLUTION_N fluid + SOLUTION_N polymer blobs, the defaults) per
+# blob-step against LAMMPS's pure Tait fluid per particle-step.
 set -u
 
 here=$(cd "$(dirname "$0")" && pwd)
@@ -42,6 +46,7 @@ fi
 REPS=${REPS:-3}
 STAR_N=${STAR_N:-32768}
 FLUID_N=${FLUID_N:-64000}
+SOLUTION_N=${SOLUTION_N:-8000}
 STAR_STEPS=${STAR_STEPS:-1500}
 GAUSS_STEPS=${GAUSS_STEPS:-800}
 DPD_STEPS=${DPD_STEPS:-800}
@@ -90,11 +95,11 @@ lmp_run() {
         >>"$tmp/lmp_$name.txt"
 }
 
-# hcbd CSV lookup by column name: file scene keycol keyval field (threads = 1)
+# hcbd CSV lookup by column name: file scene keycol keyval field [threads, 1]
 csv_get() {
-    awk -F, -v sc="$2" -v kc="$3" -v kv="$4" -v fld="$5" '
+    awk -F, -v sc="$2" -v kc="$3" -v kv="$4" -v fld="$5" -v th="${6:-1}" '
         NR == 1 {for (i = 1; i <= NF; ++i) h[$i] = i; next}
-        $(h["scene"]) == sc && $(h[kc]) + 0 == kv + 0 && $(h["threads"]) + 0 == 1 {print $(h[fld]); exit}' "$1"
+        $(h["scene"]) == sc && $(h[kc]) + 0 == kv + 0 && $(h["threads"]) + 0 == th {print $(h[fld]); exit}' "$1"
 }
 
 median() { # median of the numbers on stdin (lower middle for an even count)
@@ -113,26 +118,38 @@ for rep in $(seq 1 "$REPS"); do
         d="$tmp/hcbd$rep"
         mkdir -p "$d"
         for nz in uniform gauss; do
-            (cd "$root" && ./build/bench_speed Nmax="$STAR_N" threads=1 noise=$nz scenes=bd,gibd \
-                out="$d" >"$d/speed_$nz.log" 2>&1) ||
+            (cd "$root" && OMP_NUM_THREADS=2 ./build/bench_speed Nmax="$STAR_N" threads=2 noise=$nz \
+                scenes=bd,gibd out="$d" >"$d/speed_$nz.log" 2>&1) ||
                 { echo "bench/peers: bench_speed failed"; tail -n 5 "$d/speed_$nz.log"; }
         done
-        (cd "$root" && ./build/bench_hcbd Nmax="$FLUID_N" threads=1 scenes=sph,sdpd out="$d" \
-            >"$d/hcbd.log" 2>&1) ||
+        (cd "$root" && OMP_NUM_THREADS=2 ./build/bench_hcbd Nmax="$FLUID_N" threads=2 scenes=sph,sdpd \
+            out="$d" >"$d/hcbd.log" 2>&1) ||
             { echo "bench/peers: bench_hcbd failed"; tail -n 5 "$d/hcbd.log"; }
+        mkdir -p "$d/sol"
+        (cd "$root" && OMP_NUM_THREADS=2 ./build/bench_hcbd Nmax="$SOLUTION_N" threads=2 scenes=table1 \
+            out="$d/sol" >"$d/sol.log" 2>&1) ||
+            { echo "bench/peers: bench_hcbd table1 failed"; tail -n 5 "$d/sol.log"; }
+        # per row: ns (1 thread), pairs, ns (2 threads), checksums (1, 2)
         for s in bd gibd; do
             for f in "$d/speed_uniform.csv:_u" "$d/speed.csv:"; do
                 csvf=${f%%:*}
                 [ -f "$csvf" ] || continue
                 echo "$(csv_get "$csvf" "$s" N "$STAR_N" ns_per_particle_step)" \
-                     "$(csv_get "$csvf" "$s" N "$STAR_N" pairs_per_particle)" >>"$tmp/hcbd_$s${f##*:}.txt"
+                     "$(csv_get "$csvf" "$s" N "$STAR_N" pairs_per_particle)" \
+                     "$(csv_get "$csvf" "$s" N "$STAR_N" ns_per_particle_step 2)" \
+                     "$(csv_get "$csvf" "$s" N "$STAR_N" checksum)" \
+                     "$(csv_get "$csvf" "$s" N "$STAR_N" checksum 2)" >>"$tmp/hcbd_$s${f##*:}.txt"
             done
         done
-        for s in sph sdpd; do
-            [ -f "$d/speed_hcbd.csv" ] || break
-            echo "$(csv_get "$d/speed_hcbd.csv" "$s" N_fluid "$FLUID_N" ns_per_particle_step)" \
-                 "$(csv_get "$d/speed_hcbd.csv" "$s" N_fluid "$FLUID_N" pairs_per_particle)" \
-                 >>"$tmp/hcbd_$s.txt"
+        for s in sph sdpd table1; do
+            csvf="$d/speed_hcbd.csv"; n=$FLUID_N
+            [ "$s" = table1 ] && { csvf="$d/sol/speed_hcbd.csv"; n=$SOLUTION_N; }
+            [ -f "$csvf" ] || continue
+            echo "$(csv_get "$csvf" "$s" N_fluid "$n" ns_per_particle_step)" \
+                 "$(csv_get "$csvf" "$s" N_fluid "$n" pairs_per_particle)" \
+                 "$(csv_get "$csvf" "$s" N_fluid "$n" ns_per_particle_step 2)" \
+                 "$(csv_get "$csvf" "$s" N_fluid "$n" checksum)" \
+                 "$(csv_get "$csvf" "$s" N_fluid "$n" checksum 2)" >>"$tmp/hcbd_$s.txt"
         done
     fi
 done
@@ -144,16 +161,19 @@ med_col() { # file column
 
 mkdir -p "$root/$OUTDIR"
 csv="$root/$OUTDIR/peers.csv"
-echo "hcbd_scene,lammps_scene,N,hcbd_ns_per_particle_step,lammps_ns_per_particle_step,lammps_particle_steps_per_s,ratio_lammps_over_hcbd,target,met,hcbd_pairs_per_particle,lammps_neighs_per_atom,noise,lammps_version,reps" >"$csv"
+echo "hcbd_scene,lammps_scene,N,hcbd_ns_per_particle_step,lammps_ns_per_particle_step,lammps_particle_steps_per_s,ratio_lammps_over_hcbd,target,met,hcbd_pairs_per_particle,lammps_neighs_per_atom,noise,lammps_version,reps,hcbd_ns_2_threads,speedup_2_threads,same_checksum" >"$csv"
 
-printf '\n%-12s %-14s %6s %10s %10s %7s %6s %4s %9s %9s\n' \
-    "hcbd" "LAMMPS" "N" "hcbd ns" "LAMMPS ns" "ratio" "target" "met" "hcbd nb" "LAMMPS nb"
-printf '%s\n' "-------------------------------------------------------------------------------------------"
+printf '\n%-12s %-14s %6s %10s %10s %7s %6s %4s %9s %9s %9s %7s %5s\n' \
+    "hcbd" "LAMMPS" "N" "hcbd ns" "LAMMPS ns" "ratio" "target" "met" "hcbd nb" "LAMMPS nb" "2 thr ns" "x 2 thr" "bits"
+printf '%s\n' "--------------------------------------------------------------------------------------------------------------"
 row() { # hcbd_scene lammps_scene N target noise
     local hs=$1 ls=$2 n=$3 target=$4 noise=$5
-    local hns lns lnb hnb ratio met pss
+    local hns lns lnb hnb ratio met pss h2 sp same
     hns=$(med_col "$tmp/hcbd_$hs.txt" 1)
     hnb=$(med_col "$tmp/hcbd_$hs.txt" 2)
+    h2=$(med_col "$tmp/hcbd_$hs.txt" 3)
+    sp=$(awk -v a="$hns" -v b="$h2" 'BEGIN {if (a + 0 > 0 && b + 0 > 0) printf "%.2f", a / b; else print "n/a"}')
+    same=$(awk 'NF >= 5 {n++; if ($4 != $5) d++} END {print n ? (d ? "no" : "yes") : "n/a"}' "$tmp/hcbd_$hs.txt" 2>/dev/null)
     lns=$(med_col "$tmp/lmp_$ls.txt" 1)
     lnb=$(med_col "$tmp/lmp_$ls.txt" 2)
     case "$hs" in fluid*) hnb="n/a" ;; esac   # the fluid bench reports no pair count
@@ -161,9 +181,9 @@ row() { # hcbd_scene lammps_scene N target noise
     pss=$(awk -v a="$lns" 'BEGIN {if (a + 0 > 0) printf "%.3g", 1e9 / a; else print "n/a"}')
     if [ "$target" = "-" ] || [ "$ratio" = "n/a" ]; then met="-"
     else met=$(awk -v r="$ratio" -v t="$target" 'BEGIN {print (r + 0 >= t + 0) ? "yes" : "no"}'); fi
-    printf '%-12s %-14s %6s %10s %10s %7s %6s %4s %9s %9s\n' \
-        "$hs" "$ls" "$n" "$hns" "$lns" "$ratio" "$target" "$met" "$hnb" "$lnb"
-    echo "$hs,$ls,$n,$hns,$lns,$pss,$ratio,$target,$met,$hnb,$lnb,$noise,\"$lmp_version\",$REPS" >>"$csv"
+    printf '%-12s %-14s %6s %10s %10s %7s %6s %4s %9s %9s %9s %7s %5s\n' \
+        "$hs" "$ls" "$n" "$hns" "$lns" "$ratio" "$target" "$met" "$hnb" "$lnb" "$h2" "$sp" "$same"
+    echo "$hs,$ls,$n,$hns,$lns,$pss,$ratio,$target,$met,$hnb,$lnb,$noise,\"$lmp_version\",$REPS,$h2,$sp,$same" >>"$csv"
 }
 row bd_u        star_bd       "$STAR_N"  3  "uniform noise on both sides (LAMMPS fix brownian default)"
 row bd          star_bd_gauss "$STAR_N"  3  "Gaussian noise on both sides (LAMMPS rng gaussian)"
@@ -172,12 +192,14 @@ row gibd        star_bd_gauss "$STAR_N"  -  "Gaussian: hcbd GI-BD; LAMMPS fix br
 row gibd        star_dpd      "$STAR_N"  -  "LAMMPS dpd/tstat (1 Gaussian per pair) + fix nve"
 row sph         sph_tait      "$FLUID_N" 2  "no noise; both from random positions"
 row sdpd        sdpd          "$FLUID_N" 5  "LAMMPS 6 Gaussians per pair; hcbd pairwise"
+row table1      sph_tait      "$SOLUTION_N" 1 "hcbd Table I solution (N fluid + N polymer blobs, defaults) per blob-step; LAMMPS pure fluid"
 own=$(awk -v a="$(med_col "$tmp/hcbd_gibd_u.txt" 1)" -v b="$(med_col "$tmp/hcbd_bd_u.txt" 1)" \
     'BEGIN {if (a + 0 > 0 && b + 0 > 0) printf "%.2f", a / b; else print "n/a"}')
 echo "hcbd GI-BD / hcbd BD (uniform noise): $own (target <= 1.5)"
 echo "hcbd_gibd_over_bd,,$STAR_N,,,,$own,1.5,,,,uniform,\"$lmp_version\",$REPS" >>"$csv"
 echo
-echo "ns = nanoseconds per particle-step, single thread, median of $REPS runs"
+echo "ns = nanoseconds per particle-step, single thread, median of $REPS runs; 2 thr: hcbd on"
+echo "2 threads, x 2 thr its speed-up (target 1.8), bits: the same checksum on 1 and 2 threads"
 echo "(hcbd: each run's value is bench_speed/bench_hcbd's own minimum over repeats);"
 echo "ratio = LAMMPS / hcbd; nb = neighbours per particle in the half list (skin included)."
 echo "LAMMPS particle-steps/s: $(awk -F, 'NR > 1 && !s[$2]++ {printf "%s %s  ", $2, $6}' "$csv")"
