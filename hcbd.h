@@ -884,6 +884,7 @@ typedef struct hcbd_hc_world {
        hcbd__fix): weights and pair forces */
     int64_t *aW, *aF[3];
     double qW, qF, limF;
+    int dens_bad;                /* the first blob with n/nbar outside (1/3, 3) */
     uint64_t kick_key;           /* pair-noise key of the fluid step        */
     /* stress accumulation (hcbd_hc_stress_enable) */
     int stress_on;
@@ -6842,21 +6843,23 @@ static void hcbd__hc_fluid_density(hcbd_hc_world *w)
     const int n = w->nf, nt = w->p.threads;
     const double h = w->p.h, w0 = 1.0 / (HCBD__PI * h * h * h), inv_q = 1.0 / w->qW;
     const double inv_nbar = 1.0 / w->p.nbar, P0 = w->p.P0;
-    int i;
+    int i, bad = INT_MAX;
     (void)nt;
     hcbd__zero64(w->aW, n);
     hcbd__nl_owners(&w->lf, n, nt, w, hcbd__hc_dens_owners);
-    HCBD__OMP(omp parallel for num_threads(nt) schedule(static))
+    HCBD__OMP(omp parallel for num_threads(nt) schedule(static) reduction(min:bad))
     for (i = 0; i < n; ++i) { /* i: slot */
         const double s = w0 + (double)w->aW[i] * inv_q, x = s * inv_nbar;
         const int id = w->fid[i];
         double x7 = x * x * x;
+        if (!(x > 1.0 / 3.0 && x < 3.0) && id < bad) bad = id;
         x7 = x7 * x7 * x;
         w->fn[id] = w->sn[i] = (hcbd_real)s;
         w->sIn[i] = (hcbd_real)(1.0 / s);
         w->fP[id] = (hcbd_real)(P0 * (x7 - 1.0));
         w->fPn2[id] = w->sP[i] = (hcbd_real)(P0 * (x7 - 1.0) / (s * s));
     }
+    w->dens_bad = bad == INT_MAX ? -1 : bad;
 }
 
 /* Polymer pairs run over the half list (owner a < partner b) in two
@@ -7834,8 +7837,27 @@ static void hcbd__hc_stress_add(hcbd_hc_world *w)
 static hcbd_result hcbd__hc_guard(hcbd_hc_world *w)
 {
     const double *L = w->p.L;
-    int i, k;
+    const int nt = w->p.threads;
+    int i, k, f0 = INT_MAX, p0 = INT_MAX;
+    (void)nt;
+    /* the first offending blob and polymer, found on all threads; the
+       loops below then name the cause from there on */
+    HCBD__OMP(omp parallel for num_threads(nt) schedule(static) reduction(min:f0))
     for (i = 0; i < w->nf; ++i) {
+        const double x = w->fx[i], y = w->fy[i], z = w->fz[i];
+        if (!(isfinite(w->fvx[i]) && isfinite(w->fvy[i]) && isfinite(w->fvz[i])) ||
+            !(x >= 0 && x < L[0] && y >= 0 && y < L[1] && z >= 0 && z < L[2]))
+            if (i < f0) f0 = i;
+    }
+    HCBD__OMP(omp parallel for num_threads(nt) schedule(static) reduction(min:p0))
+    for (i = 0; i < w->np; ++i) {
+        const double x = w->px[i], y = w->py[i], z = w->pz[i];
+        int bad = !(x >= 0 && x < L[0] && y >= 0 && y < L[1] && z >= 0 && z < L[2]), kk;
+        for (kk = 0; w->transient && kk < w->pair_n[i]; ++kk)
+            bad |= !isfinite(w->pair_l[(size_t)i * w->pair_cap + kk]);
+        if (bad && i < p0) p0 = i;
+    }
+    for (i = f0; i < w->nf; ++i) {
         const double x = w->fx[i], y = w->fy[i], z = w->fz[i];
         if (!(isfinite(w->fvx[i]) && isfinite(w->fvy[i]) && isfinite(w->fvz[i])))
             return hcbd__fail(&w->err, HCBD_ERR_NONFINITE, w->step, i,
@@ -7847,7 +7869,7 @@ static hcbd_result hcbd__hc_guard(hcbd_hc_world *w)
                               "guard at step %lld: fluid blob %d at (%.17g, %.17g, %.17g) is "
                               "outside the box", (long long)w->step, i, x, y, z);
     }
-    for (i = 0; i < w->np; ++i) {
+    for (i = p0; i < w->np; ++i) {
         const double x = w->px[i], y = w->py[i], z = w->pz[i];
         if (!(x >= 0 && x < L[0] && y >= 0 && y < L[1] && z >= 0 && z < L[2]))
             return hcbd__fail(&w->err, HCBD_ERR_OUTSIDE, w->step, w->nf + i,
@@ -7887,13 +7909,11 @@ hcbd_result hcbd_hc_step(hcbd_hc_world *w, int nsteps)
                 if ((r = hcbd__hc_lists(w, w->step)) != HCBD_OK) return r;
                 hcbd__hc_fluid_density(w);
             }
-            for (i = 0; i < w->nf; ++i) {
-                double x = w->fn[i] / w->p.nbar;
-                if (!(x > 1.0 / 3.0 && x < 3.0))
-                    return hcbd__fail(&w->err, HCBD_ERR_UNSTABLE, w->step, i,
-                                      "fluid blob %d: density n/nbar = %g is outside (1/3, 3): "
-                                      "dt too long for the sound speed or the flow", i, x);
-            }
+            if ((i = w->dens_bad) >= 0)
+                return hcbd__fail(&w->err, HCBD_ERR_UNSTABLE, w->step, i,
+                                  "fluid blob %d: density n/nbar = %g is outside (1/3, 3): "
+                                  "dt too long for the sound speed or the flow", i,
+                                  (double)w->fn[i] / w->p.nbar);
             hcbd__hc_sync(w); /* velocities may have been set between steps */
             if ((bad = hcbd__hc_fluid_kick(w, dt_f, skey)) >= 0)
                 return hcbd__fail(&w->err, HCBD_ERR_UNSTABLE, w->step, bad,
