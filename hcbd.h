@@ -876,9 +876,10 @@ typedef struct hcbd_hc_world {
        sits at slot fslot[i]; the lists lf and lx index these slots */
     int32_t *fid, *fslot;
     hcbd_real *sx, *sy, *sz, *svx, *svy, *svz, *sn, *sP, *sIn; /* sIn = 1/n */
-    /* the exact fluid sweep's blocks (hcbd__hc_fluid_shardlow): each
-       slot's block, the slots block by block, and the blocks' starts */
-    int32_t *sw_blk, *sw_list, *sw_start;
+    /* the exact fluid sweep's order (hcbd__hc_fluid_shardlow): each slot's
+       block and fine cell, the slots fine cell by fine cell and then block
+       by block, and the starts of both */
+    int32_t *sw_blk, *sw_list, *sw_start, *sw_fine, *sw_tmp, *sw_fstart;
     double skin;
     /* the fluid's pair sums of one step in 64-bit fixed point (see
        hcbd__fix): weights and pair forces */
@@ -6190,42 +6191,64 @@ static void hcbd__hc_dims(const hcbd_hc_params *p, double cut, int nc[3])
     }
 }
 
-/* Blocks of the exact fluid sweep along one axis (hcbd__hc_fluid_shardlow):
-   s = 1, 2 or 3 blocks per reach (each a hair wider than reach/s, so that
-   round-off in the block of a blob cannot let a pair span more than s), a
-   multiple of 2s + 1 of them, so that blocks 2s + 1 apart share no blob and
-   may take one colour; the s that puts the most blocks in one colour (the
-   smallest s on a tie), or a single block when none puts two there.
-   Returns the blocks; *ncol their colours; with room, the most that any s
-   could give (for sizing). */
-static int hcbd__hc_sweep_axis(double L, double reach, int *ncol, int *room)
-{
-    int s, bk = 1, bc = 1, most = 1;
-    for (s = 1; s <= 3; ++s) {
-        const int c = 2 * s + 1;
-        double k = floor(L * s / (reach * (1.0 + 1e-9)));
-        int kk;
-        if (k > 96.0) k = 96.0;
-        kk = c * (int)(k / c);
-        if (kk > most) most = kk;
-        if (kk / c > bk / bc && kk / c >= 2) { bk = kk; bc = c; }
-    }
-    if (ncol) *ncol = bc;
-    if (room) *room = most;
-    return bk;
-}
-
-/* Blocks along x, y, z and their colours at offset tilt t; with room the
-   most blocks any tilt could give. */
+/* Blocks of the exact fluid sweep (hcbd__hc_fluid_shardlow).  Along an
+   axis either one block, or, for s = 1, 2 or 3, blocks a hair wider than
+   reach/s (so that round-off in the block of a blob cannot let a pair span
+   more than s), a multiple of 2s + 1 of them: blocks 2s + 1 apart share no
+   blob and take one colour.  Every colour is a pass over the whole fluid,
+   so the grid is the one with the fewest colours that still puts 8 blocks
+   in a colour (or, where none does, the most).  Returns the blocks along
+   each axis and their colours; with room, the most blocks any grid of any
+   tilt could have (for sizing). */
+#define HCBD__SWEEP_PER 8
 static int hcbd__hc_sweep_blocks(const hcbd_hc_params *p, double t, int nb[3], int nc[3], int *room)
 {
     const double cut = 2.0 * p->h;
-    int r[3];
-    nb[0] = hcbd__hc_sweep_axis(p->L[0], cut * sqrt(1.0 + t * t), &nc[0], &r[0]);
-    nb[1] = hcbd__hc_sweep_axis(p->L[1], cut, &nc[1], &r[1]);
-    nb[2] = hcbd__hc_sweep_axis(p->L[2], cut, &nc[2], &r[2]);
-    if (room) *room = r[0] * r[1] * r[2];
+    int k[3][4], c[3][4], d, s, o0, o1, o2, best = -1, bcol = 0, bcnt = 0, rm = 1;
+    for (d = 0; d < 3; ++d) {
+        const double reach = d == 0 ? cut * sqrt(1.0 + t * t) : cut;
+        int most = 1;
+        k[d][0] = c[d][0] = 1;
+        for (s = 1; s <= 3; ++s) {
+            double kk = floor(p->L[d] * s / (reach * (1.0 + 1e-9)));
+            c[d][s] = 2 * s + 1;
+            if (kk > 96.0) kk = 96.0;
+            k[d][s] = c[d][s] * (int)(kk / c[d][s]);
+            if (k[d][s] / c[d][s] < 2) k[d][s] = 0; /* one per colour: no use */
+            if (c[d][s] * (int)(floor(p->L[d] * s / (cut * (1.0 + 1e-9))) / c[d][s]) > most)
+                most = c[d][s] * (int)(floor(p->L[d] * s / (cut * (1.0 + 1e-9))) / c[d][s]);
+        }
+        rm *= most > 96 ? 96 : most;
+    }
+    nb[0] = nb[1] = nb[2] = nc[0] = nc[1] = nc[2] = 1;
+    for (o0 = 0; o0 < 4; ++o0)
+        for (o1 = 0; o1 < 4; ++o1)
+            for (o2 = 0; o2 < 4; ++o2) {
+                int cnt, col, key;
+                if (!k[0][o0] || !k[1][o1] || !k[2][o2]) continue;
+                cnt = k[0][o0] / c[0][o0] * (k[1][o1] / c[1][o1]) * (k[2][o2] / c[2][o2]);
+                col = c[0][o0] * c[1][o1] * c[2][o2];
+                key = cnt < HCBD__SWEEP_PER ? cnt : HCBD__SWEEP_PER;
+                if (key > best || (key == best && (col < bcol || (col == bcol && cnt > bcnt)))) {
+                    best = key; bcol = col; bcnt = cnt;
+                    nb[0] = k[0][o0]; nb[1] = k[1][o1]; nb[2] = k[2][o2];
+                    nc[0] = c[0][o0]; nc[1] = c[1][o1]; nc[2] = c[2][o2];
+                }
+            }
+    if (room) *room = rm;
     return nb[0] * nb[1] * nb[2];
+}
+
+/* The sweep's fine cells (owners in a block go cell by cell, then by id, so
+   that consecutive owners share their partners): about h wide. */
+static int hcbd__hc_fine_cells(const hcbd_hc_params *p, int nf[3])
+{
+    int d;
+    for (d = 0; d < 3; ++d) {
+        const double k = floor(p->L[d] / p->h);
+        nf[d] = k < 1.0 ? 1 : (k > 256.0 ? 256 : (int)k);
+    }
+    return nf[0] * nf[1] * nf[2];
 }
 
 /* Fixed-point bounds of the fluid sums (see hcbd__fixed_scales): a weight
@@ -6322,10 +6345,12 @@ static size_t hcbd__hc_layout(const hcbd_hc_def *def, hcbd_hc_world *t, char *ba
     HCBD__HA(svx, nf * R); HCBD__HA(svy, nf * R); HCBD__HA(svz, nf * R);
     HCBD__HA(sn, nf * R); HCBD__HA(sP, nf * R); HCBD__HA(sIn, nf * R);
     HCBD__HA(sw_blk, nf * I); HCBD__HA(sw_list, nf * I);
+    HCBD__HA(sw_fine, nf * I); HCBD__HA(sw_tmp, nf * I);
     {
         int nb[3], nc[3], room;
         hcbd__hc_sweep_blocks(p, 0.0, nb, nc, &room);
         HCBD__HA(sw_start, ((size_t)room + 1) * I);
+        HCBD__HA(sw_fstart, ((size_t)hcbd__hc_fine_cells(p, nb) + 1) * I);
     }
 #undef HCBD__HA
     return off + HCBD__ALIGN;
@@ -7424,9 +7449,10 @@ static int hcbd__hc_fluid_shardlow(hcbd_hc_world *w, double dt, uint64_t skey)
     const int o = w->fslot[0];
     const double x0 = w->sx[o], y0 = w->sy[o], z0 = w->sz[o];
     int32_t *HCBD__RESTRICT blk = w->sw_blk, *HCBD__RESTRICT start = w->sw_start;
-    int32_t *HCBD__RESTRICT list = w->sw_list;
-    int nb[3], nc[3], nblk, q, id, b, worst = INT_MAX;
-    double f[3];
+    int32_t *HCBD__RESTRICT list = w->sw_list, *HCBD__RESTRICT fine = w->sw_fine;
+    int32_t *HCBD__RESTRICT tmp = w->sw_tmp, *HCBD__RESTRICT fstart = w->sw_fstart;
+    int nb[3], nc[3], nfc[3], nblk, nfine, q, id, b, worst = INT_MAX;
+    double f[3], g[3];
     (void)nt;
     sc.w = w;
     sc.dt = dt;
@@ -7439,11 +7465,13 @@ static int hcbd__hc_fluid_shardlow(hcbd_hc_world *w, double dt, uint64_t skey)
     sc.noise = w->noise_f;
     sc.stress = w->stress_on;
     nblk = hcbd__hc_sweep_blocks(&w->p, t, nb, nc, NULL);
+    nfine = hcbd__hc_fine_cells(&w->p, nfc);
     f[0] = nb[0] / L[0]; f[1] = nb[1] / L[1]; f[2] = nb[2] / L[2];
+    g[0] = nfc[0] / L[0]; g[1] = nfc[1] / L[1]; g[2] = nfc[2] / L[2];
     HCBD__OMP(omp parallel for num_threads(nt) schedule(static))
     for (q = 0; q < n; ++q) {
         double r[3];
-        int c[3], d;
+        int c[3], e[3], d;
         r[1] = w->sy[q] - y0;
         r[0] = w->sx[q] - x0 - t * r[1];
         r[2] = w->sz[q] - z0;
@@ -7452,15 +7480,27 @@ static int hcbd__hc_fluid_shardlow(hcbd_hc_world *w, double dt, uint64_t skey)
             c[d] = (int)(r[d] * f[d]);
             if (c[d] > nb[d] - 1) c[d] = nb[d] - 1;
             if (c[d] < 0) c[d] = 0;
+            e[d] = (int)(r[d] * g[d]);
+            if (e[d] > nfc[d] - 1) e[d] = nfc[d] - 1;
+            if (e[d] < 0) e[d] = 0;
         }
         blk[q] = (c[2] * nb[1] + c[1]) * nb[0] + c[0];
+        fine[q] = (e[2] * nfc[1] + e[1]) * nfc[0] + e[0];
     }
-    /* blocks by counting sort, filled in id order */
+    /* two stable counting sorts: by fine cell (filled in id order), then
+       by block, so that a block's owners go fine cell by fine cell */
+    for (b = 0; b <= nfine; ++b) fstart[b] = 0;
+    for (q = 0; q < n; ++q) fstart[fine[q] + 1]++;
+    for (b = 0; b < nfine; ++b) fstart[b + 1] += fstart[b];
+    for (id = 0; id < n; ++id) {
+        const int i = w->fslot[id];
+        tmp[fstart[fine[i]]++] = i;
+    }
     for (b = 0; b <= nblk; ++b) start[b] = 0;
     for (q = 0; q < n; ++q) start[blk[q] + 1]++;
     for (b = 0; b < nblk; ++b) start[b + 1] += start[b];
-    for (id = 0; id < n; ++id) {
-        const int i = w->fslot[id];
+    for (q = 0; q < n; ++q) {
+        const int i = tmp[q];
         list[start[blk[i]]++] = i;
     }
     for (b = nblk; b > 0; --b) start[b] = start[b - 1];

@@ -22,9 +22,9 @@ static const char *g_name[G_N] = {"GI-BD Euler stars", "GI-BD Shardlow stars, sh
 static const uint64_t *golden_table(void)
 {
     static const uint64_t dbl[G_N] = {0x34cb467a054c54e1ULL, 0x620ab7b3980b5a57ULL, 0x37004618b698f9a7ULL,
-                                      0xca08eed51029a528ULL, 0x9d36cc4f67504d86ULL};
+                                      0xca08eed51029a528ULL, 0x02f10d8bf488ee77ULL};
     static const uint64_t flt[G_N] = {0xaed4993760453c3eULL, 0x4fc17811aa6eec78ULL, 0xd71b2af658a06d35ULL,
-                                      0x569afa9331137cf4ULL, 0x32a41d539284c958ULL};
+                                      0x569afa9331137cf4ULL, 0x61d5d42dfd1292acULL};
     return sizeof(hcbd_real) == sizeof(double) ? dbl : flt;
 }
 
@@ -37,7 +37,7 @@ static uint64_t golden_run(int sc, int threads, int *skip)
         /* Recorded anew (issue 26) when the exact fluid sweep became the
            default, in a scene whose sweep runs in 21 x 14 x 1 blocks of
            7 x 7 colours (h = 1.3), so that 2 and 3 threads sweep side by
-           side */
+           side; owners in a block go by fine cell, then id */
         hcbd_hc_def d = hc_scene(12, 8, 5, 60);
         hcbd_hc_world w;
         d.params.threads = threads;
