@@ -2982,6 +2982,19 @@ static int hcbd__nl_query(const hcbd__nlist *cl, const hcbd__pset *q, const hcbd
     return hcbd__nl_scan(cl, t, box, r, half ? (q->id ? q->id[i] : i) : -1, rl, out, room);
 }
 
+/* this thread's contiguous share [lo, hi) of n items (all of them outside
+   a parallel region) */
+static inline void hcbd__share(int64_t n, int64_t *lo, int64_t *hi)
+{
+    int tid = 0, nth = 1;
+#ifdef _OPENMP
+    tid = omp_get_thread_num();
+    nth = omp_get_num_threads();
+#endif
+    *lo = n * tid / nth;
+    *hi = n * (tid + 1) / nth;
+}
+
 /* The list nl of the set q against the set t held in the cells of cl (cl =
    nl, q = t for a half list; half = 0 lists every partner) within
    nl->rlist, partners sorted by id.  Each thread lists its contiguous
@@ -2999,17 +3012,11 @@ static int hcbd__nl_pairs(hcbd__nlist *nl, const hcbd__nlist *cl, const hcbd__ps
     nl->list_valid = 0; /* until the new list is complete */
     HCBD__OMP(omp parallel num_threads(nt) reduction(max:overflow))
     {
-        int tid = 0, nth = 1, a, b, ii, ovf = 0;
-        int64_t pos, end;
-#ifdef _OPENMP
-        tid = omp_get_thread_num();
-        nth = omp_get_num_threads();
-#endif
-        a = (int)((int64_t)n * tid / nth);
-        b = (int)((int64_t)n * (tid + 1) / nth);
-        pos = nl->max_pairs * tid / nth;
-        end = nl->max_pairs * (tid + 1) / nth;
-        for (ii = a; ii < b; ++ii) {
+        int ii, ovf = 0;
+        int64_t a, b, pos, end;
+        hcbd__share(n, &a, &b);
+        hcbd__share(nl->max_pairs, &pos, &end);
+        for (ii = (int)a; ii < (int)b; ++ii) {
             /* a particle has at most t->n partners */
             int room = end - pos < t->n ? (int)(end - pos) : t->n;
             int cnt = hcbd__nl_query(cl, q, t, box, ii, half, rl, nl->nb_tmp + pos, room);
@@ -6921,18 +6928,6 @@ static hcbd__hc_poly_ctx hcbd__hc_poly_ctx_of(hcbd_hc_world *w)
     return c;
 }
 
-/* this thread's contiguous share of n owners */
-static inline void hcbd__share(int n, int *lo, int *hi)
-{
-    int tid = 0, nth = 1;
-#ifdef _OPENMP
-    tid = omp_get_thread_num();
-    nth = omp_get_num_threads();
-#endif
-    *lo = (int)((int64_t)n * tid / nth);
-    *hi = (int)((int64_t)n * (tid + 1) / nth);
-}
-
 /* the polymers' half list within rc */
 static inline hcbd__trav hcbd__hc_trav_p(const hcbd_hc_world *w)
 {
@@ -6981,9 +6976,9 @@ static int hcbd__hc_poly_density(hcbd_hc_world *w)
     HCBD__OMP(omp parallel num_threads(nt))
     {
         hcbd__hc_poly_ctx s = base;
-        int lo, hi;
+        int64_t lo, hi;
         hcbd__share(n, &lo, &hi);
-        hcbd__traverse(&T, w->lp.perm, lo, hi, &s, hcbd__hc_pdens_begin, hcbd__hc_pdens_pairs,
+        hcbd__traverse(&T, w->lp.perm, (int)lo, (int)hi, &s, hcbd__hc_pdens_begin, hcbd__hc_pdens_pairs,
                        hcbd__hc_pdens_end);
     }
     HCBD__OMP(omp parallel for num_threads(nt) schedule(static) reduction(min:bad))
@@ -7139,9 +7134,10 @@ static int hcbd__hc_poly_forces(hcbd_hc_world *w, int *need)
     HCBD__OMP(omp parallel num_threads(nt) reduction(min:bad) reduction(max:most) reduction(+:created) reduction(+:total) reduction(+:coinc))
     {
         hcbd__hc_poly_ctx s = base;
-        int lo, hi, b;
+        int64_t lo, hi;
+        int b;
         hcbd__share(n, &lo, &hi);
-        b = hcbd__traverse(&T, w->lp.perm, lo, hi, &s, hcbd__hc_pforce_begin, hcbd__hc_pforce_pairs,
+        b = hcbd__traverse(&T, w->lp.perm, (int)lo, (int)hi, &s, hcbd__hc_pforce_begin, hcbd__hc_pforce_pairs,
                            hcbd__hc_pforce_end);
         if (b < bad) bad = b;
         if (s.most > most) most = s.most;
@@ -7272,9 +7268,9 @@ static int hcbd__hc_interp(hcbd_hc_world *w)
     s.stress = w->stress_on;
     HCBD__OMP(omp parallel num_threads(nt) reduction(min:bad))
     {
-        int lo, hi;
+        int64_t lo, hi;
         hcbd__share(n, &lo, &hi);
-        bad = hcbd__traverse(&T, w->lp.perm, lo, hi, &s, hcbd__hc_interp_begin, hcbd__hc_interp_pairs,
+        bad = hcbd__traverse(&T, w->lp.perm, (int)lo, (int)hi, &s, hcbd__hc_interp_begin, hcbd__hc_interp_pairs,
                              hcbd__hc_interp_end);
     }
     return bad == INT_MAX ? -1 : bad;

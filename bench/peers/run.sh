@@ -102,6 +102,16 @@ csv_get() {
         $(h["scene"]) == sc && $(h[kc]) + 0 == kv + 0 && $(h["threads"]) + 0 == th {print $(h[fld]); exit}' "$1"
 }
 
+# one run's row of an hcbd CSV: file scene keycol keyval ->
+# ns (1 thread), pairs, ns (2 threads), checksums (1 thread, 2 threads)
+hcbd_row() {
+    echo "$(csv_get "$1" "$2" "$3" "$4" ns_per_particle_step)" \
+         "$(csv_get "$1" "$2" "$3" "$4" pairs_per_particle)" \
+         "$(csv_get "$1" "$2" "$3" "$4" ns_per_particle_step 2)" \
+         "$(csv_get "$1" "$2" "$3" "$4" checksum)" \
+         "$(csv_get "$1" "$2" "$3" "$4" checksum 2)"
+}
+
 median() { # median of the numbers on stdin (lower middle for an even count)
     sort -g | awk 'NF {a[++n] = $1} END {if (n) print a[int((n + 1) / 2)]; else print "n/a"}'
 }
@@ -129,28 +139,16 @@ for rep in $(seq 1 "$REPS"); do
         (cd "$root" && OMP_NUM_THREADS=2 ./build/bench_hcbd Nmax="$SOLUTION_N" threads=2 scenes=table1 \
             out="$d/sol" >"$d/sol.log" 2>&1) ||
             { echo "bench/peers: bench_hcbd table1 failed"; tail -n 5 "$d/sol.log"; }
-        # per row: ns (1 thread), pairs, ns (2 threads), checksums (1, 2)
         for s in bd gibd; do
             for f in "$d/speed_uniform.csv:_u" "$d/speed.csv:"; do
-                csvf=${f%%:*}
-                [ -f "$csvf" ] || continue
-                echo "$(csv_get "$csvf" "$s" N "$STAR_N" ns_per_particle_step)" \
-                     "$(csv_get "$csvf" "$s" N "$STAR_N" pairs_per_particle)" \
-                     "$(csv_get "$csvf" "$s" N "$STAR_N" ns_per_particle_step 2)" \
-                     "$(csv_get "$csvf" "$s" N "$STAR_N" checksum)" \
-                     "$(csv_get "$csvf" "$s" N "$STAR_N" checksum 2)" >>"$tmp/hcbd_$s${f##*:}.txt"
+                [ -f "${f%%:*}" ] && hcbd_row "${f%%:*}" "$s" N "$STAR_N" >>"$tmp/hcbd_$s${f##*:}.txt"
             done
         done
-        for s in sph sdpd table1; do
-            csvf="$d/speed_hcbd.csv"; n=$FLUID_N
-            [ "$s" = table1 ] && { csvf="$d/sol/speed_hcbd.csv"; n=$SOLUTION_N; }
-            [ -f "$csvf" ] || continue
-            echo "$(csv_get "$csvf" "$s" N_fluid "$n" ns_per_particle_step)" \
-                 "$(csv_get "$csvf" "$s" N_fluid "$n" pairs_per_particle)" \
-                 "$(csv_get "$csvf" "$s" N_fluid "$n" ns_per_particle_step 2)" \
-                 "$(csv_get "$csvf" "$s" N_fluid "$n" checksum)" \
-                 "$(csv_get "$csvf" "$s" N_fluid "$n" checksum 2)" >>"$tmp/hcbd_$s.txt"
+        for s in sph sdpd; do
+            [ -f "$d/speed_hcbd.csv" ] && hcbd_row "$d/speed_hcbd.csv" "$s" N_fluid "$FLUID_N" >>"$tmp/hcbd_$s.txt"
         done
+        [ -f "$d/sol/speed_hcbd.csv" ] &&
+            hcbd_row "$d/sol/speed_hcbd.csv" table1 N_fluid "$SOLUTION_N" >>"$tmp/hcbd_table1.txt"
     fi
 done
 
