@@ -167,8 +167,7 @@ test-examples: $(EXAMPLES) $(HC_EXAMPLES) | $(B)/logs
 
 # make exercise N=k [ANSWER=x]: runs exercise k of docs/exercises.md and
 # says whether the run, and the answer, are within its tolerance.
-exercise: $(EXAMPLES)
-	@mkdir -p out
+exercise: $(EXAMPLES) $(HC_EXAMPLES)
 	@examples/exercise.sh $(B) "$(N)" "$(ANSWER)"
 
 test-hcbd-float: $(B)/run_tests_hcbd_float | $(B)/logs
@@ -229,22 +228,39 @@ test-fuzz-args: $(B)/replay_args | $(B)/logs
 test-fuzz-ckpt: $(B)/replay_ckpt | $(B)/logs
 	./$(B)/replay_ckpt $(wildcard tests/fuzz/corpus_ckpt/* tests/fuzz/regress_ckpt/*) $(call LOG,fuzz-ckpt)
 
-# make install PREFIX=...: the header and a pkg-config file (the library
-# is the header: users define HCBD_IMPLEMENTATION in one file).
+# make install PREFIX=...: the header, the implementation compiled for
+# this machine (CFLAGS, so -march=native unless set) as libhcbd.a (the
+# Makefile's MODEL) and libhcbd_hc.a (HCBD), and a pkg-config file for each
+# (hcbd, hcbd-hcbd) that carries the model define and the OpenMP flag: a
+# program built with those flags reads the examples' checkpoints.  A
+# program may instead define HCBD_IMPLEMENTATION in one file and skip the
+# library (the same Cflags still apply).
 PREFIX ?= /usr/local
 VERSION := $(shell sed -n 's/^\#define HCBD_VERSION_MAJOR //p' hcbd.h).$(shell sed -n 's/^\#define HCBD_VERSION_MINOR //p' hcbd.h)
-install:
+MODELNAME := $(patsubst -DHCBD_MODEL=%,%,$(MODELFLAG))
+PCSUB = -e 's|@PREFIX@|$(PREFIX)|' -e 's|@VERSION@|$(VERSION)|' -e 's|@OMPFLAG@|$(OMPFLAG)|g'
+install: $(B)/hcbd_impl.o $(B)/hcbd_impl_hc.o
 	mkdir -p $(DESTDIR)$(PREFIX)/include $(DESTDIR)$(PREFIX)/lib/pkgconfig
 	cp hcbd.h $(DESTDIR)$(PREFIX)/include/hcbd.h
-	sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@VERSION@|$(VERSION)|' hcbd.pc.in > $(DESTDIR)$(PREFIX)/lib/pkgconfig/hcbd.pc
+	rm -f $(DESTDIR)$(PREFIX)/lib/libhcbd.a $(DESTDIR)$(PREFIX)/lib/libhcbd_hc.a
+	ar rcs $(DESTDIR)$(PREFIX)/lib/libhcbd.a $(B)/hcbd_impl.o
+	ar rcs $(DESTDIR)$(PREFIX)/lib/libhcbd_hc.a $(B)/hcbd_impl_hc.o
+	sed $(PCSUB) -e 's|@NAME@|hcbd|' -e 's|@MODEL@|$(MODELNAME)|g' -e 's|@LIB@|hcbd|' hcbd.pc.in > $(DESTDIR)$(PREFIX)/lib/pkgconfig/hcbd.pc
+	sed $(PCSUB) -e 's|@NAME@|hcbd-hcbd|' -e 's|@MODEL@|HCBD_MODEL_HCBD|g' -e 's|@LIB@|hcbd_hc|' hcbd.pc.in > $(DESTDIR)$(PREFIX)/lib/pkgconfig/hcbd-hcbd.pc
 
-# A program built against the installed copy alone (a fresh prefix; the
-# flags from pkg-config when it is there).
-test-install: | $(B)/logs
+# Programs built against the installed copy alone (a fresh prefix; the
+# flags from pkg-config when it is there): one that defines
+# HCBD_IMPLEMENTATION itself, one that links the installed library (the
+# objects are prerequisites here, so that the install's own make finds
+# them built and never races the other parts for them).
+test-install: $(B)/hcbd_impl.o $(B)/hcbd_impl_hc.o | $(B)/logs
 	rm -rf $(B)/prefix
 	$(MAKE) --no-print-directory install PREFIX=$(CURDIR)/$(B)/prefix $(call LOG,install-copy)
-	cd $(B) && flags=$$(PKG_CONFIG_PATH=$(CURDIR)/$(B)/prefix/lib/pkgconfig pkg-config --cflags --libs hcbd 2>/dev/null || echo "-I$(CURDIR)/$(B)/prefix/include -lm"); \
-	  $(CC) $(WARN) -x c ../tests/install_check.c $$flags -o install_check && ./install_check $(call LOG,install)
+	cd $(B) && flags=$$(PKG_CONFIG_PATH=$(CURDIR)/$(B)/prefix/lib/pkgconfig pkg-config --cflags --libs hcbd 2>/dev/null || \
+	    echo "-I$(CURDIR)/$(B)/prefix/include $(MODELFLAG) $(OMPFLAG) -L$(CURDIR)/$(B)/prefix/lib -lhcbd -lm"); \
+	  $(CC) $(WARN) -x c ../tests/install_check.c $$flags -o install_check && \
+	  $(CC) $(WARN) -DHCBD_CHECK_LIBRARY -x c ../tests/install_check.c $$flags -o install_check_lib && \
+	  { ./install_check && ./install_check_lib && echo "2 passed, 0 failed"; } $(call LOG,install)
 
 # The header alone, both halves, with gcc and clang as C99 (and C11 in the
 # HCBD build, which holds all of the code) and as

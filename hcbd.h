@@ -1017,10 +1017,13 @@ hcbd_result hcbd_set_threads(hcbd_world *w, int threads);
 hcbd_result hcbd_xyz_write(const hcbd_world *w, FILE *f, const int *ids, int nids);
 hcbd_result hcbd_xyz_offenders(const hcbd_world *w, FILE *f);
 /* Thermo log: a header line and one line per call, space separated:
-   step time T px py pz list_pairs wall_pen ns_pstep (list_pairs: the
-   neighbour list's pairs, skin included, so it depends on when the list
-   was last built; ns_pstep as the caller measured it; NAN prints "-").  Both return the length the full text
-   needs, as snprintf does. */
+   step time T px py pz list_pairs wall_pen ns_per_particle_step
+   (list_pairs: the neighbour list's pairs, skin included, so it depends on
+   when the list was last built; the nanoseconds as the caller measured
+   them; NAN prints "-").  The header marks units in brackets: L, t, E, M
+   are the length, time, energy and mass units the parameters are given in
+   (for the papers' scenes sigma, xi sigma^2/kT or 1 us, kT, and m).  Both
+   return the length the full text needs, as snprintf does. */
 int hcbd_thermo_header(char *buf, size_t size);
 int hcbd_thermo_line(const hcbd_world *w, double ns_pstep, char *buf, size_t size);
 
@@ -2019,9 +2022,11 @@ int hcbd_limits_format(const hcbd_limit *l, int n, char *buf, size_t size)
     if (buf && size) buf[0] = 0;
     for (k = 0; l && k < n; ++k) {
         const int room = buf && (size_t)len < size;
+        const char *g = l[k].guard;
         int c = snprintf(room ? buf + len : NULL, room ? size - (size_t)len : 0,
-                         "  %-56s %10.3g / %-10.3g margin %8.3g  %s%s\n", l[k].name, l[k].value,
-                         l[k].bound, l[k].margin, l[k].guard, l[k].margin < 1 ? "  CROSSED" : "");
+                         "  %-56s %10.3g / %-10.3g margin %8.3g  %-7s (crossed: %s%s)\n", l[k].name,
+                         l[k].value, l[k].bound, l[k].margin, l[k].margin < 1 ? "CROSSED" : "ok",
+                         !strncmp(g, "HCBD_ERR", 8) ? "the run stops with " : "costs ", g);
         if (c > 0) len += c;
     }
     return len;
@@ -5232,6 +5237,12 @@ static const char *hcbd__model_name(uint64_t m)
                                           : m == HCBD_MODEL_HCBD ? "HCBD" : "unknown";
 }
 
+static const char *hcbd__model_define(uint64_t m)
+{
+    return m == HCBD_MODEL_GIBD ? "HCBD_MODEL_GIBD" : m == HCBD_MODEL_WALLED ? "HCBD_MODEL_WALLED"
+                                   : m == HCBD_MODEL_HCBD ? "HCBD_MODEL_HCBD" : "(no model of this version)";
+}
+
 static void hcbd__ck_head(unsigned char *b, uint64_t kind, size_t payload)
 {
     hcbd__ck c;
@@ -5276,9 +5287,10 @@ static hcbd_result hcbd__ck_open(hcbd_error *e, const void *buf, size_t size, ui
                           (unsigned long long)v[0], HCBD_CHECKPOINT_VERSION);
     if (v[1] != HCBD_MODEL)
         return hcbd__fail(e, HCBD_ERR_MODEL, -1, -1,
-                          "checkpoint model %llu (%s); this is the %s build",
+                          "checkpoint model %llu (%s); this is the %s build: compile the "
+                          "implementation with -DHCBD_MODEL=%s to read it",
                           (unsigned long long)v[1], hcbd__model_name(v[1]),
-                          hcbd__model_name(HCBD_MODEL));
+                          hcbd__model_name(HCBD_MODEL), hcbd__model_define(v[1]));
     if (v[2] != sizeof(hcbd_real))
         return hcbd__fail(e, HCBD_ERR_MODEL, -1, -1,
                           "checkpoint precision: hcbd_real of %llu bytes; this build's is %d",
@@ -5857,7 +5869,8 @@ hcbd_result hcbd_xyz_offenders(const hcbd_world *w, FILE *f)
 
 int hcbd_thermo_header(char *buf, size_t size)
 {
-    return snprintf(buf, size, "# step time T px py pz list_pairs wall_pen ns_pstep");
+    return snprintf(buf, size, "# step time[t] T[E] px[M*L/t] py[M*L/t] pz[M*L/t] list_pairs wall_pen "
+                               "ns_per_particle_step");
 }
 
 int hcbd_thermo_line(const hcbd_world *w, double ns_pstep, char *buf, size_t size)
@@ -8353,7 +8366,8 @@ hcbd_result hcbd_hc_xyz_write(const hcbd_hc_world *w, FILE *f)
 
 int hcbd_hc_thermo_header(char *buf, size_t size)
 {
-    return snprintf(buf, size, "# step time T_fluid px py pz max_phi pairs ns_pstep");
+    return snprintf(buf, size, "# step time[t] T_fluid[E] px[M*L/t] py[M*L/t] pz[M*L/t] max_phi pairs "
+                               "ns_per_particle_step");
 }
 
 int hcbd_hc_thermo_line(const hcbd_hc_world *w, double ns_pstep, char *buf, size_t size)

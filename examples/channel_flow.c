@@ -33,9 +33,9 @@ static int nxip, nslab = 26;
 static double wall_t = 1.5, g_force = 133.4, beta_max = 0, shift = HCBD_AUTO;
 static int wall_mode = HCBD_WALL_GAUSS, bg_only = 0;
 
-static void usage(void)
+static void usage(FILE *f)
 {
-    fprintf(stderr,
+    fprintf(f,
             "usage: channel_flow [key=value ...]\n"
             "  preset=quick|paper  quick (default): 40000 steps per run; paper: 1000000\n"
             "  xip=a,b,...         background frictions xi' (xi = 1): default 1,2,5\n"
@@ -146,13 +146,14 @@ int main(int argc, char **argv)
     c.density = 0.24;
     c.L[0] = c.L[1] = c.L[2] = 13.0;
     c.box_given = 7;
+    if (!expand_args(&c, &argc, &argv)) return 2;
     for (k = 1; k < argc; ++k)
         if (!strcmp(argv[k], "preset=paper")) paper = 1;
     c.steps = paper ? 1000000 : 40000;
     xips[0] = 1; xips[1] = 2; xips[2] = 5;
     nxip = 3;
     snprintf(c.out, sizeof c.out, "out/channel_flow");
-    if (!parse_args(argc, argv, &c, own_key, usage)) return 2;
+    if (!parse_args(argc, argv, &c, own_key, usage)) return c.help ? 0 : 2;
     p = &c.def.params;
     p->wall_thickness = wall_t;
     p->wall_mode = (hcbd_wall_mode)wall_mode;
@@ -163,11 +164,9 @@ int main(int argc, char **argv)
     p->fext_background_only = bg_only;
     c.N = (int)floor(c.density * p->L[0] * (p->L[1] - 2 * wall_t) * p->L[2] + 0.5);
     c.def.capacity = c.N < 2 ? 2 : c.N;
-    if (c.restart[0] && nxip > 1) {
-        fprintf(stderr, "channel_flow: restart= continues one run: give one xip\n");
-        return 2;
-    }
+    if (c.restart[0]) nxip = 1; /* one run, with the checkpoint's xi' and flow */
     mkdirs(c.out);
+    write_run_conf(&c);
     printf("channel_flow: GI-BD %s, N = %d real particles, box %.3g x %.3g x %.3g, walls %.3g thick "
            "(%s), n# = %g, dt = %g, tau = %g, g = %g (body force on %s), %d steps per run\n",
            p->potential == HCBD_POT_STAR ? "star polymers" : "ideal particles", c.N, p->L[0],
@@ -186,7 +185,7 @@ int main(int argc, char **argv)
         hcbd_profile prof;
         double *mem, *out, ys[10000], vs[10000], es[10000], q[3] = {0, 0, 0}, C[9] = {0};
         double gv[3], gs[3], vmax_err, slip_err;
-        double lo, hi, nbulk = 0, tc = 0, vmax, slip = 0, slope, dep = 0, tdev = 0, meanc = 0;
+        double lo, hi, nbulk = 0, nbulk_e2 = 0, tc_e2 = 0, tc_err, tc = 0, vmax, slip = 0, slope, dep = 0, dep_err, tdev = 0, meanc = 0;
         int nint = 0, ncen = 0, s, nc = 0;
         int64_t pen;
         size_t bytes = hcbd_profile_bytes(nslab);
@@ -226,6 +225,8 @@ int main(int argc, char **argv)
             double y = out[8 * s];
             if (fabs(y - 0.5 * p->L[1]) <= 0.1 * (hi - lo)) {
                 nbulk += out[8 * s + 1]; tc += out[8 * s + 5]; ++ncen;
+                nbulk_e2 += out[8 * s + 2] * out[8 * s + 2];
+                tc_e2 += out[8 * s + 6] * out[8 * s + 6];
             }
             if (out[8 * s + 7] > 0) { meanc += out[8 * s + 7]; ++nc; }
             /* interior profile: slabs at least 1 sigma from the interfaces */
@@ -244,6 +245,10 @@ int main(int argc, char **argv)
                 tdev = fmax(tdev, fabs(out[8 * s + 5] / tc - 1));
         }
         dep *= 0.5;
+        /* the particles in the channel are fixed, so dep = (W - N/(n_bulk A))/2
+           and its error is n_bulk's (slab errors taken as independent) */
+        dep_err = 0.5 * (hi - lo - 2 * dep) * sqrt(nbulk_e2) / ncen / nbulk;
+        tc_err = sqrt(tc_e2) / ncen;
         fit_parabola(ys, vs, es, nint, q, C);
         vmax = q[2] != 0 ? q[0] - q[1] * q[1] / (4 * q[2]) : 0;
         slope = 0.5 * (fabs(q[1] + 2 * q[2] * lo) + fabs(q[1] + 2 * q[2] * hi));
@@ -273,9 +278,30 @@ int main(int argc, char **argv)
         printf("slip_velocity_ratio=%.4g\nslip_velocity_ratio_err=%.3g\nslip_length=%.4g\n",
                vmax != 0 ? slip / vmax : 0, vmax != 0 ? slip_err / fabs(vmax) : 0,
                slope > 0 ? slip / slope : 0);
-        printf("depletion_width=%.4g\ndepletion_width_boltzmann=%.4g\n", dep, th.depletion_width);
+        printf("depletion_width=%.4g\ndepletion_width_err=%.3g\ndepletion_width_boltzmann=%.4g\n", dep, dep_err,
+               th.depletion_width);
         printf("T_bulk_ratio=%.4g\nT_profile_max_dev=%.4g\n", tc / p->kT, tdev);
         printf("wall_penetrations=%lld\n", (long long)pen);
+        judge("v_max_measured", vmax, vmax_err, "kT/(xi sigma)", th.v_max, 0, "Newtonian parabola, mean-field nu",
+              p->potential == HCBD_POT_IDEAL
+                  ? "ideal carriers' viscosity is ~0.66 of the mean field (docs/MODEL.md 12), and Gaussian walls slip"
+                  : "the stars add their own viscosity to the background's, and thin under shear");
+        if (wall_mode == HCBD_WALL_GAUSS)
+            judge("slip_velocity_ratio", vmax != 0 ? slip / vmax : 0, vmax != 0 ? slip_err / fabs(vmax) : NAN, "1", NAN, 0,
+                  "soft Gaussian walls slip (2016 sec. IV C)", NULL);
+        else
+            judge("slip_velocity_ratio", vmax != 0 ? slip / vmax : 0, vmax != 0 ? slip_err / fabs(vmax) : NAN, "1", 0, 0,
+                  "no slip at the interface", NULL);
+        if (wall_mode == HCBD_WALL_GAUSS && p->potential == HCBD_POT_IDEAL)
+            judge("depletion_width", dep, dep_err, "sigma", th.depletion_width, 0,
+                  "Boltzmann, integral of 1 - exp(-phi/kT)", NULL);
+        else
+            judge("depletion_width", dep, dep_err, "sigma", NAN, 0,
+                  wall_mode != HCBD_WALL_GAUSS ? "the Boltzmann width is for Gaussian walls"
+                                               : "stars layer at the walls (negative: denser than the bulk)", NULL);
+        judge("T_bulk_ratio", tc / p->kT, tc_err / p->kT, "kT", 1, 0, "equipartition in the channel's centre", NULL);
+        judge("wall_penetrations", (double)pen, NAN, "count", 0, 0, "none through the walls", NULL);
+        verdicts_flush();
         printf("eta_inf=%.6g\nnu_meanfield=%.6g\nre_max=%.4g\n", th.eta_inf, th.nu, th.re_max);
         if (th.re_max >= 1)
             printf("# warning: Re_max = %.3g >= 1 (2016 eq. 37-39): inertia is not negligible "
@@ -347,5 +373,6 @@ int main(int argc, char **argv)
         fclose(f);
         make_figures(&c);
     }
+    summary_end(&c, 1);
     return 0;
 }

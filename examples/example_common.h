@@ -27,6 +27,12 @@ typedef struct {
        end, a start from a checkpoint */
     char xyz[512], checkpoint[512], restart[512];
     int xyz_every, thermo_every;
+    int help;                  /* help was asked for: exit 0, not 2 */
+    /* the key=value arguments taken, in order (the parameter file's
+       first): run.conf repeats them, and restart= refuses the ones a
+       checkpoint overrides */
+    const char *given[256];
+    int ngiven;
 } config;
 
 /* An example's own key: 1 taken, 0 error (already reported), -1 unknown. */
@@ -102,26 +108,115 @@ static inline int check_preset(const config *c, const char *v)
     return 0;
 }
 
+/* in=FILE or @FILE: the file's key=value lines (blank lines and text after
+   # skipped, spaces around = allowed) go before the command line's other
+   keys, which override them.  *argc and *argv become the expanded list
+   (static storage: one call per program).  0 after a message. */
+static inline int expand_args(const config *c, int *argc, char ***argv)
+{
+    static char text[1 << 16], *av[256];
+    size_t used = 0;
+    int n = 1, k, files = 0;
+    av[0] = (*argv)[0];
+    for (k = 1; k < *argc; ++k) {
+        const char *a = (*argv)[k], *path = !strncmp(a, "in=", 3) ? a + 3 : a[0] == '@' ? a + 1 : NULL;
+        char line[1024];
+        FILE *f;
+        int ln = 0;
+        if (!path) continue;
+        if (++files > 1) { fprintf(stderr, "%s: more than one parameter file (%s)\n", c->name, a); return 0; }
+        if (!(f = fopen(path, "r"))) { fprintf(stderr, "%s: cannot read the parameter file %s\n", c->name, path); return 0; }
+        while (fgets(line, sizeof line, f)) {
+            char *b = line, *e, *hash = strchr(line, '#'), *eq;
+            size_t len;
+            ++ln;
+            if (hash) *hash = 0;
+            while (*b == ' ' || *b == '\t') ++b;
+            for (e = b + strlen(b); e > b && (e[-1] == ' ' || e[-1] == '\t' || e[-1] == '\n' || e[-1] == '\r');) *--e = 0;
+            if (!*b) continue;
+            if (!(eq = strchr(b, '=')) || eq == b) {
+                fprintf(stderr, "%s: %s line %d: '%s' is not key=value\n", c->name, path, ln, b);
+                fclose(f);
+                return 0;
+            }
+            for (e = eq; e > b && (e[-1] == ' ' || e[-1] == '\t');) --e; /* "key = value" */
+            len = (size_t)(e - b);
+            for (++eq; *eq == ' ' || *eq == '\t';) ++eq;
+            if (n == 200 || used + len + strlen(eq) + 2 > sizeof text) {
+                fprintf(stderr, "%s: %s is too long (at most 200 keys)\n", c->name, path);
+                fclose(f);
+                return 0;
+            }
+            av[n++] = text + used;
+            memcpy(text + used, b, len);
+            used += len;
+            text[used++] = '=';
+            memcpy(text + used, eq, strlen(eq) + 1);
+            used += strlen(eq) + 1;
+        }
+        fclose(f);
+    }
+    if (!files) return 1;
+    for (k = 1; k < *argc; ++k) {
+        const char *a = (*argv)[k];
+        if (!strncmp(a, "in=", 3) || a[0] == '@') continue;
+        if (n == 255) { fprintf(stderr, "%s: too many arguments\n", c->name); return 0; }
+        av[n++] = (*argv)[k];
+    }
+    av[n] = NULL;
+    *argc = n;
+    *argv = av;
+    return 1;
+}
+
+/* What every example takes besides its own keys, for help. */
+static inline void common_help(FILE *f)
+{
+    fprintf(f, "common keys:\n"
+               "  in=FILE or @FILE    key=value lines (# comments); the command line overrides them\n"
+               "  threads=k           OpenMP threads (default: OMP_NUM_THREADS if set, else 1;\n"
+               "                      the results are the same bits for any count)\n"
+               "  seed=u              the random stream (unsigned integer)\n"
+               "  out=DIR             where the CSV files, plots.gp and run.conf go\n"
+               "  xyz=FILE xyz_every=k  extended XYZ frames every k steps (OVITO, ASE: README)\n"
+               "  thermo_every=k      a thermo line every k steps\n"
+               "  checkpoint=FILE     save the world at the end\n"
+               "  restart=FILE        start from a checkpoint\n"
+               "  help (or --help, -h) this text\n"
+               "limits: steps >= 1000 where an example takes steps; N >= 2; positive densities,\n"
+               "times and lengths; an unknown key or a bad value ends the run with exit code 2\n");
+}
+
 /* Physical keys of docs/MODEL.md, seed, steps, threads, out; the example's
    own keys first through own().  threads defaults to OMP_NUM_THREADS when
-   it is set, else to the cores online (the results are the same bits for
-   any count).  Returns 0 after printing what was wrong. */
-static inline int parse_args(int argc, char **argv, config *c, own_key_fn own, void (*usage)(void))
+   it is set, else to 1: threads that spin on cores other jobs hold can make
+   a run many times slower than one thread (the results are the same bits
+   for any count).  help, --help, -h print the usage on stdout and return 0
+   with c->help set.  Returns 0 after printing what was wrong. */
+static inline int parse_args(int argc, char **argv, config *c, own_key_fn own, void (*usage)(FILE *))
 {
     hcbd_params *p = &c->def.params;
     const char *omp = getenv("OMP_NUM_THREADS");
-    long cores = omp && atoi(omp) > 0 ? atoi(omp) : sysconf(_SC_NPROCESSORS_ONLN);
     int k, e;
-    p->threads = cores < 1 ? 1 : cores > 1024 ? 1024 : (int)cores;
+    p->threads = omp && atoi(omp) > 0 ? (atoi(omp) > 1024 ? 1024 : atoi(omp)) : 1;
+    c->ngiven = 0;
     for (k = 1; k < argc; ++k) {
         char key[64], *eq = strchr(argv[k], '=');
         const char *v;
         double d;
-        if (!eq || eq == argv[k] || eq - argv[k] >= (long)sizeof key) {
-            fprintf(stderr, "%s: argument '%s' is not key=value\n", c->name, argv[k]);
-            usage();
+        if (!strcmp(argv[k], "help") || !strncmp(argv[k], "help=", 5) || !strcmp(argv[k], "--help") ||
+            !strcmp(argv[k], "-h")) {
+            usage(stdout);
+            common_help(stdout);
+            c->help = 1;
             return 0;
         }
+        if (!eq || eq == argv[k] || eq - argv[k] >= (long)sizeof key) {
+            fprintf(stderr, "%s: argument '%s' is not key=value\n", c->name, argv[k]);
+            usage(stderr);
+            return 0;
+        }
+        if (c->ngiven < (int)(sizeof c->given / sizeof c->given[0])) c->given[c->ngiven++] = argv[k];
         memcpy(key, argv[k], (size_t)(eq - argv[k]));
         key[eq - argv[k]] = 0;
         v = eq + 1;
@@ -188,8 +283,8 @@ static inline int parse_args(int argc, char **argv, config *c, own_key_fn own, v
             if (*x < 0) { fprintf(stderr, "%s: %s=%s must not be negative\n", c->name, key, v); return 0; }
         }
         else {
-            fprintf(stderr, "%s: unknown key '%s'\n", c->name, key);
-            usage();
+            fprintf(stderr, "%s: unknown key '%s' (help lists the keys)\n", c->name, key);
+            usage(stderr);
             return 0;
         }
 #undef DBL
@@ -226,18 +321,122 @@ static inline FILE *open_out(const config *c, const char *name)
     return f;
 }
 
-/* Runs gnuplot on plots.gp in the output folder, or says why not. */
+/* What became of the figures, for the last lines of the output. */
+static char figures_note[800];
+
+/* Runs gnuplot on plots.gp in the output folder, or notes why not. */
 static inline void make_figures(const config *c)
 {
     if (strchr(c->out, '\'')) {
-        printf("%s: out=%s contains a quote: run gnuplot plots.gp there yourself\n", c->name, c->out);
+        snprintf(figures_note, sizeof figures_note, "out=%s contains a quote: run gnuplot plots.gp there yourself",
+                 c->out);
     } else if (system("command -v gnuplot >/dev/null 2>&1") == 0) {
         char cmd[800];
         snprintf(cmd, sizeof cmd, "cd '%s' && gnuplot plots.gp", c->out);
-        if (system(cmd) != 0) fprintf(stderr, "%s: gnuplot failed\n", c->name);
+        snprintf(figures_note, sizeof figures_note, "%s", system(cmd) != 0 ? "gnuplot failed on plots.gp: no PNG figures"
+                                                                            : "PNG figures made by gnuplot");
     } else {
-        printf("gnuplot not found: skipped the PNG figures (CSV files and plots.gp are in %s)\n", c->out);
+        snprintf(figures_note, sizeof figures_note,
+                 "gnuplot not found: no PNG figures (install gnuplot, then run gnuplot plots.gp there)");
     }
+}
+
+/* The parameters of the run beside its output (out/run.conf): the keys it
+   was given, then the seed and threads it used, so that
+   "example in=out/.../run.conf" repeats it bit for bit. */
+static inline void write_run_conf(const config *c)
+{
+    FILE *f = open_out(c, "run.conf");
+    int k, seed = 0;
+    if (!f) return;
+    fprintf(f, "# %s, hcbd %d.%d: the keys of this run; repeat it with %s in=%s/run.conf\n", c->name,
+            HCBD_VERSION_MAJOR, HCBD_VERSION_MINOR, c->name, c->out);
+    for (k = 0; k < c->ngiven; ++k) {
+        seed |= !strncmp(c->given[k], "seed=", 5);
+        fprintf(f, "%s\n", c->given[k]);
+    }
+    if (!seed) fprintf(f, "seed=%llu\n", (unsigned long long)c->def.params.seed);
+    fprintf(f, "# threads=%d (the bits do not depend on it)\n", c->def.params.threads);
+    fclose(f);
+}
+
+/* The verdict table of a summary.  judge() files one measured value with
+   its block error, unit and expectation: "ok" when |value - expected| <=
+   3 err + tol (tol: an allowance the expectation itself carries, 0 for an
+   exact one), else "known" with the named effect that explains the
+   difference, else "UNEXPLAINED"; expected NaN files a reference value
+   that no theory predicts.  summary_end() prints the table, a
+   key_verdict=... line for scripts, and where the output went. */
+typedef struct {
+    char key[40], unit[32], expect[120], verdict[200];
+    double v, e;
+} judged;
+static judged judged_rows[48];
+static int judged_n;
+
+static inline void judge(const char *key, double v, double e, const char *unit, double expected, double tol,
+                         const char *expect_what, const char *known)
+{
+    judged *j;
+    double d = fabs(v - expected), lim = 3 * (isfinite(e) ? e : 0) + tol;
+    if (judged_n == (int)(sizeof judged_rows / sizeof judged_rows[0])) return;
+    j = &judged_rows[judged_n++];
+    snprintf(j->key, sizeof j->key, "%s", key);
+    snprintf(j->unit, sizeof j->unit, "%s", unit);
+    j->v = v;
+    j->e = e;
+    if (!isfinite(expected)) {
+        snprintf(j->expect, sizeof j->expect, "none, %s", expect_what);
+        snprintf(j->verdict, sizeof j->verdict, "reference");
+    } else {
+        snprintf(j->expect, sizeof j->expect, "%.4g (%s)", expected, expect_what);
+        if (!isfinite(v))
+            snprintf(j->verdict, sizeof j->verdict, "UNEXPLAINED: not measured (run longer)");
+        else if (d <= lim)
+            snprintf(j->verdict, sizeof j->verdict, "ok: within %s", tol > 0 ? "3 errors + the stated allowance" : "3 errors");
+        else if (known)
+            snprintf(j->verdict, sizeof j->verdict, "known: %s", known);
+        else
+            snprintf(j->verdict, sizeof j->verdict, "UNEXPLAINED: %.2g errors off", isfinite(e) && e > 0 ? d / e : INFINITY);
+    }
+}
+
+/* The table of the values judged since the last call (one per summary
+   section of an example that runs several scenes). */
+static inline void verdicts_flush(void)
+{
+    int k;
+    if (judged_n) {
+        printf("# verdicts: measured +- block error [unit]; expected; verdict (ok, known effect, reference, "
+               "UNEXPLAINED)\n");
+        for (k = 0; k < judged_n; ++k) {
+            const judged *j = &judged_rows[k];
+            char val[64], unit[40];
+            if (isfinite(j->e)) snprintf(val, sizeof val, "%.5g +- %.2g", j->v, j->e);
+            else snprintf(val, sizeof val, "%.5g", j->v);
+            snprintf(unit, sizeof unit, "[%s]", j->unit);
+            printf("#   %-24s %-20s %-14s expected %s: %s\n", j->key, val, unit, j->expect, j->verdict);
+        }
+        for (k = 0; k < judged_n; ++k) {
+            const char *v = judged_rows[k].verdict;
+            printf("%s_verdict=%s\n", judged_rows[k].key,
+                   !strncmp(v, "ok", 2) ? "ok" : !strncmp(v, "known", 5) ? "known" : !strncmp(v, "reference", 9) ? "reference"
+                                                                                                            : "UNEXPLAINED");
+        }
+    }
+    judged_n = 0;
+}
+
+static inline void summary_end(const config *c, int has_files)
+{
+    verdicts_flush();
+    if (figures_note[0]) printf("# figures: %s\n", figures_note);
+    if (has_files)
+        printf("# output: %s/ (CSV files, plots.gp, run.conf)%s%s%s%s\n", c->out, c->xyz[0] ? ", " : "", c->xyz,
+               c->checkpoint[0] ? ", " : "", c->checkpoint);
+    else
+        printf("# output: this summary%s%s%s%s\n", c->xyz[0] ? ", " : "", c->xyz, c->checkpoint[0] ? ", " : "",
+               c->checkpoint);
 }
 
 /* Mean and standard error of per-block values. */
@@ -404,16 +603,38 @@ static inline void gp_preamble(FILE *f, int width, int height)
 #if HCBD_MODEL != HCBD_MODEL_HCBD
 /* The world of a run: loaded from restart= (the checkpoint's parameters
    and particles replace the command line's; returns 2) or created from
-   c->def (returns 1); 0 after a message. */
+   c->def (returns 1); 0 after a message.  Beside restart= only the keys of
+   the run itself (steps, threads, output) may be given. */
 static inline int world_start(config *c, hcbd_world *w)
 {
+    const int threads = c->def.params.threads;
+    int k;
     if (!c->restart[0]) {
         if (hcbd_world_create(w, &c->def) == HCBD_OK) return 1;
         fprintf(stderr, "%s: %s\n", c->name, w->err.msg);
         return 0;
     }
+    for (k = 0; k < c->ngiven; ++k) { /* keys a checkpoint would silently override */
+        static const char *run_keys[] = {"steps=", "threads=", "out=", "xyz=", "xyz_every=", "thermo_every=",
+                                         "checkpoint=", "restart=", "preset=", "slabs="};
+        size_t r;
+        int ok = 0;
+        for (r = 0; r < sizeof run_keys / sizeof run_keys[0]; ++r)
+            ok |= !strncmp(c->given[k], run_keys[r], strlen(run_keys[r]));
+        if (!ok) {
+            fprintf(stderr, "%s: %s cannot apply with restart=%s: a run from a checkpoint keeps the "
+                    "checkpoint's particles and parameters (drop the key, or start afresh without "
+                    "restart=)\n", c->name, c->given[k], c->restart);
+            return 0;
+        }
+    }
     if (hcbd_load(w, c->restart) != HCBD_OK) {
+        fprintf(stderr, "%s: restart=%s: %s\n", c->name, c->restart, w->err.msg);
+        return 0;
+    }
+    if (hcbd_set_threads(w, threads) != HCBD_OK) {
         fprintf(stderr, "%s: %s\n", c->name, w->err.msg);
+        hcbd_world_destroy(w);
         return 0;
     }
     c->def.params = w->p;
@@ -511,7 +732,10 @@ static inline void print_limits(const hcbd_params *p)
 #else
     if (hcbd_stability(p, l, &n) != HCBD_OK) return;
 #endif
+    static char last[4096];
     hcbd_limits_format(l, n, buf, sizeof buf);
-    printf("# stability limits (value / bound, margin = bound / value):\n%s", buf);
+    if (!strcmp(buf, last)) return; /* the runs of one scene repeat them */
+    memcpy(last, buf, sizeof last);
+    printf("# stability limits (value / bound; margin = bound / value, ok above 1; what crossing does):\n%s", buf);
 }
 #endif

@@ -10,7 +10,7 @@
    uncorrelated.  Keys as in gibd_bulk (N=1000 density tau steps=10000 ...). */
 #include "example_common.h"
 
-static void usage(void) { fprintf(stderr, "usage: first_step [N=1000] [tau=0.0036] [key=value ...]\n"); }
+static void usage(FILE *f) { fprintf(f, "usage: first_step [N=1000] [tau=0.0036] [key=value ...]\n"); }
 
 int main(int argc, char **argv)
 {
@@ -23,7 +23,9 @@ int main(int argc, char **argv)
     memset(&c, 0, sizeof c);
     c.name = "first_step", c.def = hcbd_world_def_default(), c.N = 1000, c.steps = 10000, c.density = 0.24;
     c.def.params.potential = HCBD_POT_IDEAL;
-    if (!parse_args(argc, argv, &c, NULL, usage) || !world_start(&c, &w)) return 2;
+    if (!expand_args(&c, &argc, &argv)) return 2;
+    if (!parse_args(argc, argv, &c, NULL, usage)) return c.help ? 0 : 2;
+    if (!world_start(&c, &w)) return 2;
     if (c.restart[0] == 0 && (hcbd_world_place_random(&w, c.N) != HCBD_OK || hcbd_step(&w, 2000) != HCBD_OK))
         return fprintf(stderr, "first_step: %s\n", w.err.msg), 1; /* 2000 steps forget the start */
     if (!run_out_open(&c, &o, &w, NULL)) return 2;
@@ -47,7 +49,11 @@ int main(int argc, char **argv)
     printf("temperature %.4f +- %.4f   (T / kT; 1 expected)\n", mT, eT);
     printf("viscosity   %.4g +- %.2g   (mean field Rc^2/(28 tau) = %.4g, at k = 2 pi/L %.4g)\n",
            mn, en, th.nu, th.nu * a / q);
+    judge("T_ratio", mT, eT, "kT", 1, 0, "equipartition", NULL);
+    judge("nu", mn, en, "sigma^2/time", th.nu * a / q, 0.005 * th.nu * a / q,
+          "mean field at k, allowance 0.5 %: correlated carriers, MODEL.md 12", NULL);
     if (!run_out_close(&c, &o, &w)) return 1;
+    summary_end(&c, 0);
     hcbd_world_destroy(&w);
     return 0;
 }

@@ -34,9 +34,9 @@
 
 #define PI 3.14159265358979323846
 
-static void usage(void)
+static void usage(FILE *f)
 {
-    fprintf(stderr,
+    fprintf(f,
             "usage: gibd_bulk [key=value ...]\n"
             "  preset=quick|paper  quick (default): 40000 steps; paper: 10^6 steps\n"
             "  N density dt kT xi xip tau Rc f sigma rcut skin gdot  physical parameters\n"
@@ -169,15 +169,17 @@ int main(int argc, char **argv)
     c.N = 512;
     c.density = 0.24;
     c.steps = 40000;
+    snprintf(c.out, sizeof c.out, "out/gibd_bulk");
+    if (!expand_args(&c, &argc, &argv)) return 2;
     for (k = 1; k < argc; ++k) /* the preset first: explicit keys override it */
         if (!strcmp(argv[k], "preset=paper")) c.steps = 1000000;
-    snprintf(c.out, sizeof c.out, "out/gibd_bulk");
-    if (!parse_args(argc, argv, &c, own_key, usage)) return 2;
+    if (!parse_args(argc, argv, &c, own_key, usage)) return c.help ? 0 : 2;
     p = &c.def.params;
     gibd = p->dynamics == HCBD_DYN_GIBD;
     if (!world_start(&c, &w)) return 2;
     print_limits(p);
     mkdirs(c.out);
+    write_run_conf(&c);
     V = p->L[0] * p->L[1] * p->L[2];
     k1 = 2 * PI / p->L[0];
     nu_theory = p->Rc * p->Rc / (28 * p->tau);
@@ -217,8 +219,12 @@ int main(int argc, char **argv)
 
     /* equilibrate from a lattice: a tenth of the run, at least 5000 steps */
     if (!c.restart[0]) {
+        const int eq = c.steps / 10 > 5000 ? c.steps / 10 : 5000;
+        printf("gibd_bulk: %d steps of equilibration from a lattice first, not measured (the trajectory's "
+               "and thermo's Step= count them: the measured steps are %d..%d)\n", eq, eq, eq + c.steps);
+        fflush(stdout);
         hcbd_world_place_lattice(&w, c.N);
-        if (hcbd_step(&w, c.steps / 10 > 5000 ? c.steps / 10 : 5000) != HCBD_OK) {
+        if (hcbd_step(&w, eq) != HCBD_OK) {
             fprintf(stderr, "gibd_bulk: %s\n", w.err.msg);
             return 1;
         }
@@ -533,6 +539,11 @@ int main(int argc, char **argv)
         double D_th = p->kT / p->xi + p->kT / p->xip, D_meas = NAN;
         mean_err(Tblk, NB, &m, &e);
         printf("T_ratio=%.5f\nT_ratio_err=%.5f\n", m, e);
+        if (p->pair_integrator == HCBD_PAIR_EULER)
+            judge("T_ratio", m, e, "kT", 1.0 + p->dt / (2 * tau) * sumf / nmf, 0.1 * p->dt / (2 * tau) * sumf / nmf,
+                  "1 + the Euler bias (dt/2tau)<sum f>, allowance 10 % of it for its higher orders", NULL);
+        else
+            judge("T_ratio", m, e, "kT", 1, 0, "equipartition", NULL);
         /* the temperature excess the papers' Euler pairs would give; the
            exact sweep (the default) has none */
         printf("pair=%s\n", p->pair_integrator == HCBD_PAIR_EULER ? "euler" : "shardlow");
@@ -544,12 +555,17 @@ int main(int argc, char **argv)
         printf("nu_theory=%.6g\n", nu_theory);
         mean_err(mf_b, NB, &m, &e);
         printf("nu_meanfield=%.6g\nnu_meanfield_err=%.3g\n", m, e);
+        judge("nu_meanfield", m, e, "sigma^2/time", nu_theory, 0, "2016 eq. 35, Rc^2/(28 tau)",
+              p->potential == HCBD_POT_IDEAL ? "eq. 35 is the k -> 0 limit; the friction average is taken at k = 2 pi/L"
+                                             : "eq. 35 takes g(r) = 1; the stars' first shell within Rc raises the friction sum");
         mean_err(eff_b, NB, &m, &e);
         printf("nu_eff=%.6g\n", m);
         if (mean_err(nu_init_b, NB, &m, &e) < NB)
             printf("# nu_initial: in some blocks C_t(k,t) fell below 0.75 C_t(k,0) within two lags "
                    "(decay faster than a few steps): those blocks are left out\n");
         printf("nu_initial=%.6g\nnu_initial_err=%.3g\n", m, e);
+        judge("nu_initial", m, e, "sigma^2/time", mf / nmf / (1 - sk / nmf / c.N), 0,
+              "nu_meanfield / (1 - S(k)/N), exact", NULL);
         /* the exact finite-system identity (see tests/test_physics.c) */
         printf("finite_size_factor=%.5f\n", 1 - sk / nmf / c.N);
         printf("nu_initial_over_meanfield=%.4f\n", m / (mf / nmf / (1 - sk / nmf / c.N)));
@@ -557,16 +573,25 @@ int main(int argc, char **argv)
         printf("# initial_decay_identity: initial decay rate of C_t at k, 2k, 3k over the friction\n"
                "# average that must equal it (1 exactly, tests/test_physics.c)\n");
         printf("initial_decay_identity=%.4f\ninitial_decay_identity_err=%.3g\n", m, e);
+        judge("initial_decay_identity", m, e, "1", 1, 0, "exact finite-system identity", NULL);
         if (mean_err(nu_hydro_b, NB, &m, &e) < NB)
             printf("# nu_hydro: in some blocks C_t(k,t) had fewer than three lags between 0.03 and "
                    "0.8 of C_t(k,0) (too fast a decay for the lag grid, or blocks shorter than the "
                    "decay): those blocks are left out\n");
         printf("nu_hydro=%.6g\nnu_hydro_err=%.3g\n", m, e);
+        judge("nu_hydro", m, e, "sigma^2/time", NAN, 0,
+              "no closed form for the late decay rate of C_t", NULL);
         {
             double t = tau, mt;
             for (k = 0; k < n; ++k) lag[k] *= 5; /* samples were every 5 steps */
             mt = msd_at(lag, mm, n, p->dt, t);
             printf("msd_ratio_at_tau=%.4f\n", mt / th_tau);
+            if (p->potential == HCBD_POT_IDEAL)
+                judge("msd_ratio_at_tau", mt / th_tau, NAN, "1", 1, 0.03,
+                      "2016 eq. 32, allowance 3 % for the MSD's log interpolation", NULL);
+            else
+                judge("msd_ratio_at_tau", mt / th_tau, NAN, "1", NAN, 0,
+                      "eq. 32 is for ideal particles; the stars' cage slows them", NULL);
             if (p->potential != HCBD_POT_IDEAL)
                 printf("# msd_ratio_at_tau: 2016 eq. 32 is the ideal-particle result\n");
             if (tau < 5 * p->dt) printf("# msd_ratio_at_tau: tau is shorter than the MSD sampling interval\n");
@@ -574,7 +599,16 @@ int main(int argc, char **argv)
         D_meas = long_time_D(&msd, 5 * p->dt, tau, &D_err);
         if (!isfinite(D_meas))
             printf("# D_measured: the MSD blocks (%g time units) hold fewer than two lags beyond "
-                   "5 tau = %g: run longer for the long-time diffusion\n", blk_steps * p->dt, 5 * tau);
+                   "5 tau = %g: run steps >= %.0f (blocks of 10 tau) for the long-time diffusion\n",
+                   blk_steps * p->dt, 5 * tau, ceil(NB * 10 * tau / p->dt));
+        if (!isfinite(D_meas))
+            judge("D_measured", D_meas, D_err, "sigma^2/time", NAN, 0,
+                  "not measured: the blocks are shorter than 10 tau (see the note above)", NULL);
+        else
+            judge("D_measured", D_meas, D_err, "sigma^2/time", D_th, 0, "2016 eq. 33, kT/xi + kT/xi'",
+                  p->potential == HCBD_POT_IDEAL ? "ideal carriers diffuse faster than eq. 33 at long times "
+                                                   "(momentum flows back from the neighbours)"
+                                                 : "eq. 33 is for ideal carriers: the stars' interactions slow them");
         printf("D_theory=%.6g\nD_measured=%.6g\nD_measured_err=%.3g\nD_ratio=%.4f\n", D_th, D_meas,
                D_err, D_meas / D_th);
     } else {
@@ -587,14 +621,22 @@ int main(int argc, char **argv)
         printf("eta_particle_measured=%.6g\neta_background_measured=%.6g\n", fl[0] / p->gdot, fl[1] / p->gdot);
         printf("eta_carrier_measured=%.6g\neta_total_measured=%.6g\n", fl[2] / p->gdot, fl[3] / p->gdot);
         printf("eta_background_theory=%.6g\n", p->Rc * p->Rc * c.density * p->xip / 28);
+        judge("eta_background_measured", fl[1] / p->gdot, NAN, "kT time/sigma^3", p->Rc * p->Rc * c.density * p->xip / 28,
+              0.1 * p->Rc * p->Rc * c.density * p->xip / 28, "2016 eq. 35 times n# xi', allowance 10 %",
+              "Lees-Edwards, channel and transverse-current runs read 0.63-0.69 of eq. 35 (docs/MODEL.md 12)");
+        judge("eta_total_measured", fl[3] / p->gdot, NAN, "kT time/sigma^3", NAN, 0,
+              "the sum of the particle, background and carrier parts", NULL);
     }
     if (isfinite(coord)) {
         printf("# coordination: neighbours within the first minimum of g(r), with its block error\n");
         printf("rdf_first_minimum=%.4g\ncoordination=%.4f\ncoordination_err=%.3g\n", rdf_min, coord, coord_err);
+        judge("coordination", coord, coord_err, "neighbours", NAN, 0,
+              "the structure of the star liquid (2014 Fig. 2)", NULL);
     }
     printf("neighbour_rebuilds=%lld\n", (long long)w.nl.n_rebuilds);
     printf("state_checksum=%016llx\n", (unsigned long long)hcbd_state_checksum(&w));
     if (!run_out_close(&c, &ro, &w)) return 1;
+    summary_end(&c, 1);
     hcbd_world_destroy(&w);
     free(xyz); free(vel); free(mem_ct); free(mem_gt); free(mem_v); free(mem_msd);
     return 0;

@@ -86,9 +86,9 @@ static struct {
 } opt;
 static hcbd_hc_si si; /* the fluid's physical parameters, SI (Table I by default) */
 
-static void usage(void)
+static void usage(FILE *f)
 {
-    fprintf(stderr,
+    fprintf(f,
             "usage: hcbd_fluid [key=value ...]\n"
             "  preset=quick|paper  quick (default, ~1.5 min on one core): relax_steps=1500\n"
             "                      eq_steps=1000 ct_steps=8000 le_steps=500 rp_steps=1400\n"
@@ -165,7 +165,7 @@ static int own_key(config *c, const char *key, const char *v)
         !strcmp(key, "restart"))
         return -1;
     fprintf(stderr, "%s: unknown key '%s'\n", c->name, key);
-    usage();
+    usage(stderr);
     return 0;
 }
 
@@ -829,6 +829,7 @@ int main(int argc, char **argv)
     c.N = 2;                          /* satisfies parse_args's GI-BD checks */
     c.density = 1;
     c.steps = 1000;
+    if (!expand_args(&c, &argc, &argv)) return 2;
     for (k = 1; k < argc; ++k) /* the preset first: explicit keys override it */
         if (!strcmp(argv[k], "preset=paper")) paper = 1;
     si = hcbd_hc_si_table1();
@@ -852,7 +853,7 @@ int main(int argc, char **argv)
         opt.gdot_si[0] = 5; opt.gdot_si[1] = 15; opt.gdot_si[2] = 50;
     }
     snprintf(c.out, sizeof c.out, "out/hcbd_fluid");
-    if (!parse_args(argc, argv, &c, own_key, usage)) return 2;
+    if (!parse_args(argc, argv, &c, own_key, usage)) return c.help ? 0 : 2;
 
     /* ---- units ---- */
     x.c = &c;
@@ -888,6 +889,7 @@ int main(int argc, char **argv)
     x.def.fluid_capacity = x.N;
     x.def.polymer_capacity = 0;
     mkdirs(c.out);
+    write_run_conf(&c);
 
     printf("hcbd_fluid: pure SPH fluid of HCBD (2018 sec. IV A), %d fluid blobs, "
            "box %.4g x %.4g x %.4g sigma, threads = %d, seed = %llu\n",
@@ -1125,6 +1127,29 @@ int main(int argc, char **argv)
         printf("density_profile_dev=%.4g\ndensity_dev_max=%.4g\n", eq.dens_profile_dev, eq.dens_dev_max);
         printf("run_time_s=%.1f\n", el);
         printf("state_checksum=%016llx\n", (unsigned long long)x.checksum);
+        if (p->pair_integrator == HCBD_PAIR_EULER)
+            judge("T_ratio", Tm, Te, "kT", 1 + eq.euler_bias, 0.1 * eq.euler_bias,
+                  "1 + the Euler pair bias, allowance 10 % of it for its higher orders", NULL);
+        else
+            judge("T_ratio", Tm, Te, "kT", 1, 0, "equipartition (exact pair sweep)", NULL);
+        for (k = 0; k < NK; ++k) {
+            char key[32];
+            snprintf(key, sizeof key, "nu_measured_k%d", k + 1);
+            judge(key, nu_k[k], nu_k_err[k], "sigma^2/time", nu_kern[k], 0, "nu K(k), the kernel-smoothed viscosity",
+                  NULL);
+        }
+        judge("nu_le", lr[HCBD_HC_S_TOTAL] / p->rho, lre[HCBD_HC_S_TOTAL] / p->rho, "sigma^2/time", x.th.nu,
+              0.01 * x.th.nu, "eta/rho, allowance 1 % for the discretisation at h = 2 sigma", NULL);
+        judge("nu_le_nofluct", l0[HCBD_HC_S_TOTAL] / p->rho, l0e[HCBD_HC_S_TOTAL] / p->rho, "sigma^2/time", x.th.nu,
+              0.01 * x.th.nu, "eta/rho, allowance 1 % for the discretisation at h = 2 sigma", NULL);
+        judge("nu_poiseuille", nu_rp, nu_rp * rp[1].A_err / fabs(rp[1].A), "sigma^2/time", g_red / (2 * rp[1].A_kernel),
+              0, "the kernel-smoothed prediction for the square-wave forcing",
+              "the continuum prediction ignores the 7 rows the blobs keep across y (a few %)");
+        judge("v_max_measured", vmax, vmax_e, "sigma/time", thr.v_max_rp, 0, "Newtonian, bulk eta/rho",
+              "the SPH kernel smooths the forcing's harmonics (nu_poiseuille against nu_theory, 10-15 %, MODEL.md 10)");
+        judge("density_profile_dev", eq.dens_profile_dev, NAN, "nbar", NAN, 0,
+              "the slab averages of n_i/nbar stay flat", NULL);
+        summary_end(&c, 1);
     }
     free(x.xyz); free(x.vel); free(x.v0); free(x.xyz2); free(x.slab_mem); free(x.slab_out);
     free(x.rst.fluid); free(x.rst.poly);

@@ -145,9 +145,9 @@ typedef struct {
 
 static hcbd_hc_si si; /* the physical parameters, SI (Table I by default) */
 
-static void usage(void)
+static void usage(FILE *f)
 {
-    fprintf(stderr,
+    fprintf(f,
             "usage: hcbd_polymer [key=value ...]\n"
             "  preset=quick|paper  quick (default, about a minute on one core): tau_lambda=2e-4\n"
             "                      (alpha scaled to keep alpha tau_lambda), P0=571.4 (c_s = 2 m/s),\n"
@@ -253,7 +253,7 @@ static int own_key(config *c, const char *key, const char *v)
         !strcmp(key, "restart"))
         return -1;
     fprintf(stderr, "%s: unknown key '%s'\n", c->name, key);
-    usage();
+    usage(stderr);
     return 0;
 }
 
@@ -857,6 +857,25 @@ static void print_summary(const conc_run *cr, const hcbd_hc_params *p, const rp_
         printf("%s=%.4g\n%s_err=%.3g\n%s_initial=%.4g\n", dep_name[k], cr->dep[k][0], dep_name[k], cr->dep[k][1],
                dep_name[k], cr->dep0[k]);
     printf("rp_center_change=%.3g\n", m->change);
+    if (cr->C == 2.5 || cr->C == 5) { /* Table II */
+        const int table1 = fabs(p->tau_lambda * u->t - hcbd_hc_si_table1().tau_lambda) < 1e-9;
+        const char *quick = table1 ? NULL : "this run's tau_lambda (and alpha, P0) are not Table I's (NOTEs above): Table II is for Table I";
+        judge("eta0_over_eta", (cr->fitted ? cr->pc[0] : cr->eta0) / p->eta,
+              (cr->fitted ? cr->pe[0] : cr->err[0][0]) / p->eta, "1", cr->C == 2.5 ? 2.526 : 6.6688, 0,
+              "2018 Table II", quick);
+        if (cr->fitted)
+            judge("n", cr->pc[2], cr->pe[2], "1", cr->C == 2.5 ? 0.3441 : 0.0008, 0, "2018 Table II", quick);
+    }
+    judge("shear_thinning", thin, thin * hypot(cr->err[0][hi] / cr->eta[0][hi], cr->err[0][0] / cr->eta[0][0]), "1",
+          NAN, 0, "eta at the fastest over the slowest rate: below 1 when the solution thins", NULL);
+    if (cr->fitted)
+        judge("flattening_carreau", m->vc / m->vcar_c, m->vc_err / m->vcar_c, "1", 1, 0,
+              "the centre velocity of the Carreau fluid of the fit",
+              cr->dep[D_PCOUNT][0] - cr->dep0[D_PCOUNT] > 3 * cr->dep[D_PCOUNT][1]
+                  ? "the polymers migrate across the channel during the run (polymer_depletion against its "
+                    "initial value), so the local viscosity is not the homogeneous fit's"
+                  : NULL);
+    verdicts_flush();
 }
 
 /* The figures in SI (micrometres, mm/s, microseconds, mPa s); the values
@@ -1048,6 +1067,7 @@ int main(int argc, char **argv)
     c.N = 2;
     c.density = 1;
     c.steps = 1000;
+    if (!expand_args(&c, &argc, &argv)) return 2;
     for (k = 1; k < argc; ++k) /* the preset first: explicit keys override it */
         if (!strcmp(argv[k], "preset=paper")) paper = 1;
     si = si1;
@@ -1079,7 +1099,7 @@ int main(int argc, char **argv)
     opt.nslab = 18;
     opt.eta_inf_mpas = 0.9;
     snprintf(c.out, sizeof c.out, "out/hcbd_polymer");
-    if (!parse_args(argc, argv, &c, own_key, usage)) return 2;
+    if (!parse_args(argc, argv, &c, own_key, usage)) return c.help ? 0 : 2;
     for (k = 1; k < opt.ngdot; ++k) /* ascending: the summary compares the ends */
         for (r = k; r > 0 && opt.gdot_si[r] < opt.gdot_si[r - 1]; --r) {
             double t = opt.gdot_si[r];
@@ -1124,6 +1144,7 @@ int main(int argc, char **argv)
     for (r = 0; r < opt.ngdot; ++r) gmax = fmax(gmax, opt.gdot_si[r] * u.t);
     mach = gmax * p->L[1] / th.cs;
     mkdirs(c.out);
+    write_run_conf(&c);
 
     printf("hcbd_polymer: HCBD polymer solutions (2018 sec. IV B), preset %s, box %.4g x %.4g x %.4g sigma "
            "(reverse Poiseuille %.4g x %.4g x %.4g), fluid blobs %d (%d), polymers", paper ? "paper" : "quick",
@@ -1203,8 +1224,11 @@ int main(int argc, char **argv)
            dscale);
     printf("run_time_s=%.1f\n", seconds_since(&prog.t0));
     printf("state_checksum=%016llx\n", (unsigned long long)checksum);
+    judge("momentum_drift", dscale > 0 ? dp / dscale : 0, NAN, "1", 0, 1e-12, "exact momentum conservation (round-off)",
+          NULL);
     fflush(stdout);
     write_plots(&c, runs, &prp, prp.L[1], &u);
+    summary_end(&c, 1);
     free(rst.fluid);
     free(rst.poly);
     return 0;

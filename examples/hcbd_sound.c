@@ -22,9 +22,9 @@ static hcbd_hc_si si;
 static double amp = 1e-3;
 static int relax = 1500;
 
-static void usage(void)
+static void usage(FILE *f)
 {
-    fprintf(stderr, "usage: hcbd_sound [rho eta nbar P0 T dt sigma h amp relax_steps steps seed threads\n"
+    fprintf(f, "usage: hcbd_sound [rho eta nbar P0 T dt sigma h amp relax_steps steps seed threads\n"
                     "                  xyz xyz_every thermo_every checkpoint restart]=value\n");
 }
 
@@ -51,7 +51,7 @@ static int own_key(config *c, const char *key, const char *v)
         !strcmp(key, "restart") || !strcmp(key, "out"))
         return -1;
     fprintf(stderr, "%s: unknown key '%s'\n", c->name, key);
-    usage();
+    usage(stderr);
     return 0;
 }
 
@@ -70,7 +70,8 @@ int main(int argc, char **argv)
     c.name = "hcbd_sound", c.def = hcbd_world_def_default(), c.N = 2, c.density = 1, c.steps = 12000;
     si = hcbd_hc_si_table1();
     si.eta = 1e-4;
-    if (!parse_args(argc, argv, &c, own_key, usage)) return 2;
+    if (!expand_args(&c, &argc, &argv)) return 2;
+    if (!parse_args(argc, argv, &c, own_key, usage)) return c.help ? 0 : 2;
     if (hcbd_hc_params_si(&si, 1e-6, &d.params, msg, sizeof msg) != HCBD_OK)
         return fprintf(stderr, "hcbd_sound: %s\n", msg), 2;
     d.params.fluctuations = 0;
@@ -133,7 +134,12 @@ int main(int argc, char **argv)
            th.cs * Wk, c_meas, c_meas / (th.cs * Wk));
     printf("damping_measured=%.4g\ndamping_expected=%.4g\n", gam, th.nu * k * k / 2);
     printf("state_checksum=%016llx\n", (unsigned long long)hcbd_hc_state_checksum(&w));
+    judge("c_measured", c_meas, NAN, "sigma/time", th.cs * Wk, 0.02 * th.cs * Wk,
+          "c_s W~(k), the kernel-smoothed sound speed, allowance 2 % for one fit of the crossings", NULL);
+    judge("damping_measured", gam, NAN, "1/time", th.nu * k * k / 2, 0.1 * th.nu * k * k / 2,
+          "nu k^2 / 2, allowance 10 % for a fit over few extrema", NULL);
     if (!run_out_close(&c, &o, &w)) return 1;
+    summary_end(&c, 0);
     hcbd_hc_world_destroy(&w);
     free(xyz), free(a);
     return 0;

@@ -32,9 +32,9 @@
 static double rates[MAXR], xips[MAXX];
 static int nrates, nxip;
 
-static void usage(void)
+static void usage(FILE *f)
 {
-    fprintf(stderr,
+    fprintf(f,
             "usage: shear_flow [key=value ...]\n"
             "  preset=quick|paper  quick (default): gdot=2,5,10,20, 20000 steps each;\n"
             "                      paper: 10 rates from 0.3 to 100, 300000 steps each\n"
@@ -78,6 +78,7 @@ int main(int argc, char **argv)
     c.def.params.tau = 3e-3; /* 2016 sec. IV */
     c.N = 512;
     c.density = 0.24;
+    if (!expand_args(&c, &argc, &argv)) return 2;
     for (k = 1; k < argc; ++k)
         if (!strcmp(argv[k], "preset=paper")) paper = 1;
     c.steps = paper ? 300000 : 15000;
@@ -91,13 +92,11 @@ int main(int argc, char **argv)
     xips[0] = 1; xips[1] = 2; xips[2] = 5;
     nxip = 3;
     snprintf(c.out, sizeof c.out, "out/shear_flow");
-    if (!parse_args(argc, argv, &c, own_key, usage)) return 2;
+    if (!parse_args(argc, argv, &c, own_key, usage)) return c.help ? 0 : 2;
     p = &c.def.params;
-    if (c.restart[0] && nxip * nrates > 1) {
-        fprintf(stderr, "shear_flow: restart= continues one run: give one gdot and one xip\n");
-        return 2;
-    }
+    if (c.restart[0]) nxip = nrates = 1; /* one run, at the checkpoint's rate and xi' */
     mkdirs(c.out);
+    write_run_conf(&c);
     printf("shear_flow: GI-BD %s, N = %d, box %.3g x %.3g x %.3g, n# = %g, dt = %g, tau = %g, "
            "%d values of xi', %d rates, %d steps each\n",
            p->potential == HCBD_POT_STAR ? "star polymers" : "ideal particles", c.N, p->L[0], p->L[1],
@@ -168,12 +167,19 @@ int main(int argc, char **argv)
         printf("eta_background_measured=%.6g\neta_background_err=%.3g\n", eta[x][1][0], err[x][1][0]);
         printf("eta_carrier_measured=%.6g\neta_carrier_err=%.3g\n", eta[x][2][0], err[x][2][0]);
         printf("eta_background_theory=%.6g\n", th.eta_inf);
+        judge("eta_total_measured", eta[x][3][0], err[x][3][0], "xi/sigma", NAN, 0,
+              "particle + background + carrier stress over gdot", NULL);
+        judge("eta_background_measured", eta[x][1][0], err[x][1][0], "xi/sigma", th.eta_inf, 0,
+              "2016 eq. 35 times n# xi'",
+              p->potential == HCBD_POT_IDEAL ? "ideal carriers read 0.63-0.69 of eq. 35 (docs/MODEL.md 12)"
+                                             : "eq. 35 takes g(r) = 1; the stars' first shell within Rc raises the friction sum");
         fitted[x] = 0;
         for (r = 0; r < nrates; ++r) e[r] = err[x][3][r] > 0 ? err[x][3][r] : 1e-12;
         if (nrates >= 4 && hcbd_carreau_fit(rates, eta[x][3], e, nrates, th.eta_inf, 0, pc, pe, &chi2) == HCBD_OK) {
             printf("eta_inf=%.6g\neta0=%.6g\neta0_err=%.3g\nlambda=%.6g\nlambda_err=%.3g\nn=%.4g\nn_err=%.3g\n",
                    th.eta_inf, pc[0], pe[0], pc[1], pe[1], pc[2], pe[2]);
             printf("carreau_chi2_per_dof=%.3g\n", chi2 / (nrates - 3));
+            judge("n", pc[2], pe[2], "1", NAN, 0, "the Carreau exponent; below 1: shear thinning (2016 Fig. 7)", NULL);
             memcpy(carreau[x], pc, sizeof pc);
             memcpy(carreau_err[x], pe, sizeof pe);
             fitted[x] = 1;
@@ -188,6 +194,7 @@ int main(int argc, char **argv)
         if (re >= 1)
             printf("# warning: Re = %.3g >= 1 at gdot = %g (2016 eq. 37-39): inertia is not "
                    "negligible\n", re, rates[nrates - 1]);
+        verdicts_flush();
     }
     printf("state_checksum=%016llx\n", (unsigned long long)checksum);
     if ((f = open_out(&c, "plots.gp"))) {
@@ -266,5 +273,6 @@ int main(int argc, char **argv)
         fclose(f);
         make_figures(&c);
     }
+    summary_end(&c, 1);
     return 0;
 }

@@ -63,6 +63,49 @@ then ok "first_step: checkpoint + restart = one run; 5 frames, 4 thermo lines"
 else bad "first_step: checkpoint/restart/xyz/thermo output wrong"; fi
 rm -rf "$t"
 
+# help: exit 0, the usage on stdout with the common keys and the limits
+for e in first_step gibd_bulk shear_flow channel_flow hcbd_fluid hcbd_polymer hcbd_sound; do
+    for h in help=1 help --help -h; do
+        o=$("$B/$e" $h 2>/dev/null); rc=$?
+        if [ $rc -eq 0 ] && printf '%s' "$o" | grep -q "usage: $e" && printf '%s' "$o" | grep -q "steps >= 1000"
+        then ok "$e $h: usage, common keys and limits, rc 0"
+        else bad "$e $h: rc $rc, output: $(printf '%s' "$o" | head -n 1)"; fi
+    done
+done
+
+# restart= refuses the keys a checkpoint would override; run keys apply
+t=$(mktemp -d)
+"$B/first_step" N=200 steps=1000 checkpoint="$t/a" >/dev/null 2>&1
+expect tau "$B/first_step" tau=0.05 restart="$t/a"
+expect gdot "$B/gibd_bulk" gdot=1 restart="$t/a"
+expect seed "$B/first_step" seed=3 restart="$t/a"
+if "$B/first_step" restart="$t/a" steps=1000 threads=2 >/dev/null 2>&1; then ok "first_step: restart= with steps and threads runs"
+else bad "first_step: restart= with steps and threads refused"; fi
+
+# a parameter file: its keys, the command line's over them; a bad line named
+printf 'N = 200   # carriers\nsteps=1000\ntau=0.0036\n' > "$t/run.conf"
+"$B/gibd_bulk" in="$t/run.conf" steps=1500 out="$t/g" > "$t/g.txt" 2>/dev/null
+"$B/gibd_bulk" N=200 steps=1500 tau=0.0036 out="$t/h" > "$t/h.txt" 2>/dev/null
+if [ -n "$(grep '^state_checksum=' "$t/g.txt")" ] && [ "$(grep '^state_checksum=' "$t/g.txt")" = "$(grep '^state_checksum=' "$t/h.txt")" ]
+then ok "gibd_bulk in=FILE with a key overridden = the same keys on the command line"
+else bad "gibd_bulk in=FILE differs from the command line"; fi
+# run.conf beside the output repeats the run bit for bit
+"$B/gibd_bulk" in="$t/g/run.conf" out="$t/r" > "$t/r.txt" 2>/dev/null
+if [ "$(grep '^state_checksum=' "$t/r.txt")" = "$(grep '^state_checksum=' "$t/g.txt")" ] && grep -q '^seed=' "$t/g/run.conf"
+then ok "gibd_bulk: out/run.conf repeats the run"
+else bad "gibd_bulk: run.conf does not repeat the run"; fi
+printf 'N=200\nnot a key\n' > "$t/bad.conf"
+expect "line 2" "$B/first_step" @"$t/bad.conf"
+expect "parameter file" "$B/first_step" in="$t/missing.conf"
+# the summary: key=value, a verdict table with units, errors and
+# expectations, key_verdict lines, and where the output went last
+if grep -q '^T_ratio=' "$t/g.txt" && grep -q '^#   T_ratio  *[0-9.]* +- [0-9.e-]* *\[kT\] *expected 1 (equipartition): ok' "$t/g.txt" &&
+    grep -q '^T_ratio_verdict=ok$' "$t/g.txt" && grep -q '^D_measured_verdict=' "$t/g.txt" &&
+    tail -n 1 "$t/g.txt" | grep -q "^# output: $t/g/"
+then ok "gibd_bulk summary: values, verdict table, verdict keys, output line last"
+else bad "gibd_bulk summary format: $(grep -c verdict "$t/g.txt") verdict lines, last: $(tail -n 1 "$t/g.txt")"; fi
+rm -rf "$t"
+
 # first_step: T within 4 errors of kT; nu within 4 errors plus 0.5 % (the
 # deficit docs/MODEL.md 12 records at this tau) of the mean field at k.
 out=$("$B/first_step" N=500 2>&1)
@@ -87,6 +130,15 @@ then ok "exercise 1: answer $right accepted, 1.5 refused"
 else bad "exercise 1: the checker does not tell answer $right from 1.5"; fi
 examples/exercise.sh "$B" 99 >/dev/null 2>&1
 if [ $? -eq 2 ]; then ok "exercise 99 refused"; else bad "exercise 99 not refused"; fi
+# a wrong answer is told apart from a failed run and from a missing example
+o=$(examples/exercise.sh "$B" 1 1.5); rc=$?
+if [ $rc -eq 4 ] && printf '%s' "$o" | tail -n 1 | grep -q "your answer is off; the run itself is fine"
+then ok "exercise 1 ANSWER=1.5: exit 4, the last line says the answer is off"
+else bad "exercise 1 ANSWER=1.5: rc $rc, last line: $(printf '%s' "$o" | tail -n 1)"; fi
+o=$(examples/exercise.sh /nonexistent 1 2>&1); rc=$?
+if [ $rc -eq 3 ] && printf '%s' "$o" | grep -q "the example failed" && printf '%s' "$o" | grep -q "not built"
+then ok "exercise with no build: exit 3, says the example failed and how to build it"
+else bad "exercise with no build: rc $rc: $(printf '%s' "$o" | head -n 2)"; fi
 
 echo "$pass passed, $fail failed"
 [ $fail -eq 0 ]

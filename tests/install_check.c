@@ -1,8 +1,17 @@
-/* Compiled against the installed header only (make test-install): a
-   20-step run of the default scene through the public API. */
+/* Compiled against the installed copy only (make test-install): a
+   20-step run of the default scene through the public API, with the
+   implementation from the header, or with -DHCBD_CHECK_LIBRARY from the
+   installed library. */
+#ifndef HCBD_CHECK_LIBRARY
 #define HCBD_IMPLEMENTATION
+#endif
 #include <hcbd.h>
 #include <stdio.h>
+#ifdef HCBD_CHECK_LIBRARY
+#define HCBD_IMPL_FROM "libhcbd.a"
+#else
+#define HCBD_IMPL_FROM "HCBD_IMPLEMENTATION"
+#endif
 
 int main(void)
 {
@@ -14,8 +23,8 @@ int main(void)
         printf("install check: %s\n0 passed, 1 failed\n", w.err.msg);
         return 1;
     }
-    printf("installed hcbd.h %d.%d: 20 steps, T = %.4f\n1 passed, 0 failed\n", HCBD_VERSION_MAJOR,
-           HCBD_VERSION_MINOR, hcbd_temperature(&w));
+    printf("installed hcbd.h %d.%d (%s): 20 steps, T = %.4f\n", HCBD_VERSION_MAJOR,
+           HCBD_VERSION_MINOR, HCBD_IMPL_FROM, hcbd_temperature(&w));
     hcbd_world_destroy(&w);
     return 0;
 }

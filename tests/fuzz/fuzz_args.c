@@ -33,7 +33,7 @@
 static int fz_list_n, fz_blocks;
 static double fz_list[4];
 
-static void fz_usage(void) {} /* the examples' usage() exits nowhere either */
+static void fz_usage(FILE *f) { (void)f; } /* the examples' usage() exits nowhere either */
 
 static int fz_own(config *c, const char *key, const char *v)
 {
