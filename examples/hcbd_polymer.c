@@ -55,8 +55,19 @@
    how much the stress still rose over the measured window at the lowest
    rate; rp_center_change: the same for the reverse-Poiseuille centre
    velocity), and the block errors, from blocks shorter than tau_lambda,
-   are too small.  preset=paper keeps Table I (10^6-step tau_lambda, box
-   10^3) and takes about a week on one core.
+   are too small.  preset=paper keeps Table I (tau_lambda = 1 s, alpha =
+   500 kT, P0 = 0.13 Pa, box 10^3) but not its step: 1 us would make
+   10^6 steps per tau_lambda, a week of runs.  bench/wp_table1.c measured
+   the viscosity against the step at Table I: the fluid needs its viscous
+   step, dt_visc = 0.125 h^2/nu = 12.5 us (at 25 us its part of eta reads
+   1-2.5 % low, at 100 us 10 %), the polymers and the coupling much less
+   (a 400 us polymer step reads 1.7 % high at Wi = 0.3 against a 50 us
+   one, 200 us 1.4 %, 100 us 0.8 +- 0.4 %; at Wi = 3 even 400 us stays
+   within 0.3 %), so the preset steps the polymers by 100 us and the fluid
+   in 8 sub-steps.  Each Lees-Edwards run tests its start-up for a plateau
+   (plateau=1) and measures 4 blocks of one tau_lambda; the error of the
+   total is the larger of that block error and the one from blocks twice as
+   long.
 
    What to look for: shear thinning (eta falls once gdot tau_lambda ~ 1),
    carried by the transient part of the polymer stress, stronger at C2;
@@ -92,6 +103,11 @@
 #define MAXS 202  /* slabs */
 #define NCOMP 4   /* total, fluid, polymer, interaction */
 #define NTS 300   /* rows of the start-up series */
+/* preset=paper's step: the largest polymer step and fluid sub-steps whose
+   viscosity at Table I stays within 1 % of a resolved reference
+   (bench/wp_table1.c, README "Table II") */
+#define PAPER_DT 1e-4 /* s */
+#define PAPER_SUBSTEPS 8 /* the fluid at 12.5 us = 0.125 h^2 / nu */
 
 static const char *comp_name[NCOMP] = {"total", "fluid", "polymer", "interaction"};
 static const int comp_index[NCOMP] = {HCBD_HC_S_TOTAL, HCBD_HC_S_FLUID, HCBD_HC_S_POLYMER,
@@ -106,6 +122,12 @@ static struct {
     double tau_si, alpha, P0_si, g_si, L[3];  /* alpha in kT; g_si 0: automatic */
     int alpha_given;
     int le_steps, rp_steps, eq_steps, nblk, nslab;
+    int substeps;             /* fluid steps per polymer step              */
+    /* plateau=1: a Lees-Edwards run is start-up chunks of block_tau
+       tau_lambda until the stress levels off (at most startup_max), then
+       nblk blocks of block_tau; plateau=0: le_steps, the first 2/3 start-up */
+    int plateau, startup_max;
+    double block_tau;
     double eta_inf_mpas;      /* Carreau eta_inf, mPa s (Table II: 0.9)    */
     double eta_inf;           /* the same in reduced units                */
 } opt;
@@ -132,6 +154,8 @@ typedef struct {
     double C;                  /* in C* */
     int np, np_rp;             /* polymers in the Lees-Edwards, reverse-Poiseuille box */
     double eta[NCOMP][MAXG], err[NCOMP][MAXG], rise[MAXG];
+    double startup[MAXG];      /* start-up taken, tau_lambda; negative: no plateau found */
+    double err_ratio[MAXG];    /* total's error from blocks twice as long over the one used */
     int fitted;
     double pc[3], pe[3], chi2; /* Carreau eta0, lambda, n */
     double eta0;               /* zero-shear viscosity of the Newtonian profile */
@@ -153,10 +177,11 @@ static void usage(FILE *f)
             "                      (alpha scaled to keep alpha tau_lambda), P0=571.4 (c_s = 2 m/s),\n"
             "                      box 8^3, gdot=1000,2154,4642,10000, le_steps=rp_steps=600,\n"
             "                      eq_steps=100, blocks=5;\n"
-            "                      paper: Table I as printed (tau_lambda = 1 s = 10^6 steps), box\n"
-            "                      10^3, gdot=0.1,0.3,1,3,10,30, le_steps=rp_steps=3000000,\n"
-            "                      eq_steps=10000, blocks=10 (about a week on one core:\n"
-            "                      use threads=N)\n"
+            "                      paper: Table I as printed (tau_lambda = 1 s, alpha = 500 kT,\n"
+            "                      P0 = 0.13 Pa), box 10^3, gdot=0.1,0.3,1,3,10,30, dt=1e-4 with\n"
+            "                      substeps=8 (bench/wp_table1.c), plateau=1, blocks=4,\n"
+            "                      rp_steps=50000 (5 tau_lambda), eq_steps=1000: under an hour\n"
+            "                      with threads=2\n"
             "  C=2.5,5             polymer concentrations in C* = 3/(4 pi sigma^3)\n"
             "  gdot=a,b,...        Lees-Edwards shear rates in 1/s\n"
             "  tau_lambda=s        relaxation time of the transient pairs, seconds\n"
@@ -171,6 +196,11 @@ static void usage(FILE *f)
             "  rp_steps=N          reverse-Poiseuille run (the first 2/3 are start-up)\n"
             "  eq_steps=N          equilibrium run for the momentum drift\n"
             "  blocks=N slabs=N    blocks for the errors (2..20); slabs across y (4k+2, <= 202)\n"
+            "  substeps=k          fluid steps of dt/k per polymer step (1..1000)\n"
+            "  plateau=0|1         1: each Lees-Edwards run starts up in chunks of block_tau until\n"
+            "                      the stress levels off (4..startup_max chunks), then measures\n"
+            "                      blocks of block_tau tau_lambda; 0: le_steps, 2/3 start-up\n"
+            "  block_tau=1 startup_max=8  (with plateau=1)\n"
             "  time_unit=1e-6      reduced time unit in seconds (dt of Table I = 1)\n"
             "  rho eta nbar T dt sigma h xi chi rc p n_max   Table I parameters in SI (h, rc\n"
             "                      in sigma; p Kuhn segments per blob; n_max in C*)\n"
@@ -241,6 +271,10 @@ static int own_key(config *c, const char *key, const char *v)
     if (!strcmp(key, "rp_steps")) return int_range(c, key, v, &opt.rp_steps, 30, 1000000000);
     if (!strcmp(key, "eq_steps")) return int_range(c, key, v, &opt.eq_steps, 1, 1000000000);
     if (!strcmp(key, "blocks")) return int_range(c, key, v, &opt.nblk, 2, MAXB);
+    if (!strcmp(key, "substeps")) return int_range(c, key, v, &opt.substeps, 1, 1000);
+    if (!strcmp(key, "plateau")) return int_range(c, key, v, &opt.plateau, 0, 1);
+    if (!strcmp(key, "startup_max")) return int_range(c, key, v, &opt.startup_max, 4, 64);
+    if (!strcmp(key, "block_tau")) return positive(c, key, v, &opt.block_tau);
     if (!strcmp(key, "slabs")) {
         if (!int_range(c, key, v, &opt.nslab, 6, MAXS)) return 0;
         if (opt.nslab % 4 == 2) return 1;
@@ -355,29 +389,80 @@ static void mix_checksum(uint64_t *sum, const hcbd_hc_world *w)
     *sum = (*sum ^ hcbd_hc_state_checksum(w)) * 0x100000001B3ULL;
 }
 
+/* Steps of one block of a plateau-tested run. */
+static int block_steps(const hcbd_hc_params *p)
+{
+    const int n = (int)floor(opt.block_tau * p->tau_lambda / p->dt + 0.5);
+    return n > 0 ? n : 1;
+}
+
+/* Mean of the total stress over the next n steps (the stress average
+   restarted). */
+static int stress_chunk(hcbd_hc_world *w, int n, const char *what, double s[HCBD_HC_NSTRESS])
+{
+    hcbd_hc_stress_enable(w, 1);
+    if (!advance(w, n, what)) return 0;
+    hcbd_hc_stress_read(w, s, NULL);
+    return 1;
+}
+
 /* One Lees-Edwards run: viscosities of the four parts at shear rate gd
    with block errors; rise = (last block - first block) / mean of the
-   total, a measure of how far from steady the stress still is. */
+   total, a measure of how far from steady the stress still is.
+
+   With plateau=1 the start-up is tested, not assumed: chunks of one block
+   run until the mean of the last two agrees with the mean of the two
+   before within twice the error of that difference (estimated from the
+   spread of the four), after at least three chunks and at most
+   startup_max; a run that never levels off is flagged (startup < 0).  The
+   error of the total is the larger of the block error and the one from
+   blocks twice as long (err_ratio), so that a correlation time beyond a
+   block does not hide. */
 static int shear_run(const hcbd_hc_params *base, conc_run *cr, int r, double gd, uint64_t *checksum)
 {
     hcbd_hc_params p = *base;
     hcbd_hc_world w;
-    double blk[NCOMP][MAXB];
-    int per = (opt.le_steps - 2 * opt.le_steps / 3) / opt.nblk, b, k;
+    double blk[NCOMP][MAXB], s[HCBD_HC_NSTRESS];
+    int per, b, k;
     char what[96], label[64];
     snprintf(what, sizeof what, "C = %g C*, gdot = %g 1/s", cr->C, opt.gdot_si[r]);
     snprintf(label, sizeof label, "C%g_gdot%g", cr->C, opt.gdot_si[r]);
     p.gdot = gd;
     if (!new_world(&w, &p, blobs_in(&p), cr->np, what, label)) return 0;
-    if (!advance(&w, opt.le_steps - per * opt.nblk, what)) goto fail;
+    if (opt.plateau) {
+        double c[64];
+        int nc = 0, level = 0;
+        per = block_steps(&p);
+        while (nc < opt.startup_max && nc < 64 && !level) {
+            if (!stress_chunk(&w, per, what, s)) goto fail;
+            c[nc++] = s[HCBD_HC_S_TOTAL];
+            if (nc >= 4) {
+                const double *q = c + nc - 4, m = 0.25 * (q[0] + q[1] + q[2] + q[3]);
+                double v = 0, d = 0.5 * (q[2] + q[3]) - 0.5 * (q[0] + q[1]);
+                for (k = 0; k < 4; ++k) v += (q[k] - m) * (q[k] - m);
+                /* the difference of two means of two: error sqrt(var) */
+                level = fabs(d) <= 2 * sqrt(v / 3);
+            }
+        }
+        cr->startup[r] = (level ? 1 : -1) * nc * opt.block_tau;
+    } else {
+        per = (opt.le_steps - 2 * opt.le_steps / 3) / opt.nblk;
+        if (!advance(&w, opt.le_steps - per * opt.nblk, what)) goto fail;
+        cr->startup[r] = (opt.le_steps - per * opt.nblk) * p.dt / p.tau_lambda;
+    }
     for (b = 0; b < opt.nblk; ++b) {
-        double s[HCBD_HC_NSTRESS];
-        hcbd_hc_stress_enable(&w, 1);
-        if (!advance(&w, per, what)) goto fail;
-        hcbd_hc_stress_read(&w, s, NULL);
+        if (!stress_chunk(&w, per, what, s)) goto fail;
         for (k = 0; k < NCOMP; ++k) blk[k][b] = s[comp_index[k]] / gd;
     }
     for (k = 0; k < NCOMP; ++k) mean_err(blk[k], opt.nblk, &cr->eta[k][r], &cr->err[k][r]);
+    cr->err_ratio[r] = NAN;
+    if (opt.nblk >= 4) {
+        double two[MAXB / 2], m, e2;
+        for (b = 0; b + 1 < opt.nblk; b += 2) two[b / 2] = 0.5 * (blk[0][b] + blk[0][b + 1]);
+        mean_err(two, opt.nblk / 2, &m, &e2);
+        cr->err_ratio[r] = e2 / cr->err[0][r];
+        if (e2 > cr->err[0][r]) cr->err[0][r] = e2;
+    }
     cr->rise[r] = (blk[0][opt.nblk - 1] - blk[0][0]) / cr->eta[0][r];
     mix_checksum(checksum, &w);
     return end_world(&w, 1);
@@ -760,7 +845,7 @@ static void write_flowcurve(const config *c, const conc_run *runs, const units *
     fprintf(f, "C,gdot_per_s,gdot,Wi");
     for (k = 0; k < NCOMP; ++k) fprintf(f, ",eta_%s,eta_%s_err", comp_name[k], comp_name[k]);
     for (k = 0; k < NCOMP; ++k) fprintf(f, ",eta_%s_mPas,eta_%s_err_mPas", comp_name[k], comp_name[k]);
-    fprintf(f, ",startup_rise\n");
+    fprintf(f, ",startup_rise,startup_tau_lambda,err_ratio_2blocks\n");
     for (ci = 0; ci < opt.nconc; ++ci)
         for (r = 0; r < opt.ngdot; ++r) {
             fprintf(f, "%g,%.6g,%.6g,%.4g", runs[ci].C, opt.gdot_si[r], opt.gdot_si[r] * u->t,
@@ -768,7 +853,7 @@ static void write_flowcurve(const config *c, const conc_run *runs, const units *
             for (k = 0; k < NCOMP; ++k) fprintf(f, ",%.6g,%.3g", runs[ci].eta[k][r], runs[ci].err[k][r]);
             for (k = 0; k < NCOMP; ++k)
                 fprintf(f, ",%.6g,%.3g", runs[ci].eta[k][r] * u->eta * 1e3, runs[ci].err[k][r] * u->eta * 1e3);
-            fprintf(f, ",%.4g\n", runs[ci].rise[r]);
+            fprintf(f, ",%.4g,%.4g,%.4g\n", runs[ci].rise[r], runs[ci].startup[r], runs[ci].err_ratio[r]);
         }
     fclose(f);
 }
@@ -836,15 +921,36 @@ static void print_summary(const conc_run *cr, const hcbd_hc_params *p, const rp_
         printf("eta0=%.6g\neta0_err=%.3g\neta0_mPas=%.6g\neta0_over_eta=%.4g\n", cr->eta0, cr->err[0][0],
                cr->eta0 * u->eta * 1e3, cr->eta0 / p->eta);
     }
-    if (cr->C == 2.5 || cr->C == 5) /* Table II, with eta = 1 mPa s */
-        printf("eta0_over_eta_paper=%g\nlambda_over_tau_lambda_paper=%g\nn_paper=%g\n", cr->C == 2.5 ? 2.526 : 6.6688,
-               cr->C == 2.5 ? 3.0504 : 2.1408, cr->C == 2.5 ? 0.3441 : 0.0008);
+    if (cr->C == 2.5 || cr->C == 5) { /* Table II, with eta = 1 mPa s */
+        const double t2[3] = {cr->C == 2.5 ? 2.526 : 6.6688, cr->C == 2.5 ? 3.0504 : 2.1408,
+                              cr->C == 2.5 ? 0.3441 : 0.0008};
+        printf("eta0_over_eta_paper=%g\nlambda_over_tau_lambda_paper=%g\nn_paper=%g\n", t2[0], t2[1], t2[2]);
+        if (cr->fitted) {
+            const double ts = p->tau_lambda * u->t, em = u->eta * 1e3;
+            printf("# Table II side by side (Carreau fit, eta_inf = %g mPa s held; C = %g C*):\n"
+                   "#   %-14s %22s %12s\n"
+                   "#   %-14s %12.4g +- %-8.2g %12.4g\n#   %-14s %12.4g +- %-8.2g %12.4g\n"
+                   "#   %-14s %12.4g +- %-8.2g %12.4g\n", opt.eta_inf_mpas, cr->C, "", "this run", "2018 paper",
+                   "eta0 [mPa s]", cr->pc[0] * em, cr->pe[0] * em, t2[0] * p->eta * em, "lambda [s]",
+                   cr->pc[1] * u->t, cr->pe[1] * u->t, t2[1] * ts, "n", cr->pc[2], cr->pe[2], t2[2]);
+        }
+    }
     for (k = 0; k < NCOMP; ++k)
         printf("eta_%s_lowest_rate=%.6g\neta_%s_lowest_rate_err=%.3g\n", comp_name[k], cr->eta[k][0], comp_name[k],
                cr->err[k][0]);
     printf("shear_thinning=%.4g\nshear_thinning_err=%.3g\n", thin,
            thin * hypot(cr->err[0][hi] / cr->eta[0][hi], cr->err[0][0] / cr->eta[0][0]));
     printf("startup_rise_lowest_rate=%.3g\nmach_max=%.4g\n", cr->rise[0], mach);
+    if (opt.plateau) {
+        int bad = 0;
+        for (k = 0; k < opt.ngdot; ++k) bad += cr->startup[k] < 0;
+        printf("# startup_tau_lambda: the start-up each rate took before its stress levelled off (negative: it "
+               "did not within startup_max); err_ratio: the error from blocks twice as long over the block error\n");
+        for (k = 0; k < opt.ngdot; ++k)
+            printf("startup_tau_lambda_gdot%g=%.3g\nerr_ratio_gdot%g=%.3g\n", opt.gdot_si[k], cr->startup[k],
+                   opt.gdot_si[k], cr->err_ratio[k]);
+        printf("rates_without_plateau=%d\n", bad);
+    }
     printf("rp_Ly=%.4g\nrp_polymers=%d\ng=%.6g\ng_si=%.6g\n", Ly_rp, cr->np_rp, cr->g, cr->g * u->acc);
     printf("v_center=%.6g\nv_center_err=%.3g\nv_center_polymer=%.6g\nv_center_newtonian=%.6g\n", m->vc, m->vc_err,
            m->vc_polymer, m->vn_c);
@@ -863,8 +969,11 @@ static void print_summary(const conc_run *cr, const hcbd_hc_params *p, const rp_
         judge("eta0_over_eta", (cr->fitted ? cr->pc[0] : cr->eta0) / p->eta,
               (cr->fitted ? cr->pe[0] : cr->err[0][0]) / p->eta, "1", cr->C == 2.5 ? 2.526 : 6.6688, 0,
               "2018 Table II", quick);
-        if (cr->fitted)
+        if (cr->fitted) {
+            judge("lambda_over_tau_lambda", cr->pc[1] / p->tau_lambda, cr->pe[1] / p->tau_lambda, "1",
+                  cr->C == 2.5 ? 3.0504 : 2.1408, 0, "2018 Table II", quick);
             judge("n", cr->pc[2], cr->pe[2], "1", cr->C == 2.5 ? 0.3441 : 0.0008, 0, "2018 Table II", quick);
+        }
     }
     judge("shear_thinning", thin, thin * hypot(cr->err[0][hi] / cr->eta[0][hi], cr->err[0][0] / cr->eta[0][0]), "1",
           NAN, 0, "eta at the fastest over the slowest rate: below 1 when the solution thins", NULL);
@@ -1082,9 +1191,11 @@ int main(int argc, char **argv)
         opt.tau_si = si.tau_lambda;
         opt.P0_si = si.P0;
         opt.L[0] = opt.L[1] = opt.L[2] = 10;
-        opt.le_steps = opt.rp_steps = 3000000;
-        opt.eq_steps = 10000;
-        opt.nblk = 10;
+        si.dt = PAPER_DT;
+        opt.le_steps = 3000000; /* used only with plateau=0 */
+        opt.rp_steps = (int)floor(5 * si.tau_lambda / PAPER_DT + 0.5);
+        opt.eq_steps = 1000;
+        opt.nblk = 4;
     } else {
         static const double gq[4] = {1000, 2154, 4642, 10000};
         memcpy(opt.gdot_si, gq, sizeof gq);
@@ -1098,6 +1209,10 @@ int main(int argc, char **argv)
     }
     opt.nslab = 18;
     opt.eta_inf_mpas = 0.9;
+    opt.substeps = paper ? PAPER_SUBSTEPS : 1;
+    opt.plateau = paper;
+    opt.block_tau = 1;
+    opt.startup_max = 8;
     snprintf(c.out, sizeof c.out, "out/hcbd_polymer");
     if (!parse_args(argc, argv, &c, own_key, usage)) return c.help ? 0 : 2;
     for (k = 1; k < opt.ngdot; ++k) /* ascending: the summary compares the ends */
@@ -1127,6 +1242,7 @@ int main(int argc, char **argv)
     p->P0 = opt.P0_si / u.P;
     p->tau_lambda = opt.tau_si / u.t;
     p->alpha = opt.alpha;
+    p->substeps = opt.substeps;
     p->seed = c.def.params.seed;
     p->threads = c.def.params.threads;
     if (hcbd_hc_params_check(p, msg, sizeof msg) != HCBD_OK) {
@@ -1165,25 +1281,39 @@ int main(int argc, char **argv)
     if (fabs(p->alpha - tab.alpha) > 1e-12 * tab.alpha)
         printf("# NOTE alpha = %g kT (paper %g kT)%s\n", p->alpha, si.alpha_kT,
                opt.alpha_given ? "" : ": scaled with 1/tau_lambda to keep the polymer viscosity ~ alpha tau_lambda");
+    if (fabs(p->dt - tab.dt) > 1e-12 * tab.dt)
+        printf("# NOTE dt = %g s (Table I %g s), the fluid in %d sub-steps of %g s%s\n", si.dt, si1.dt, p->substeps,
+               si.dt / p->substeps, paper && fabs(si.dt - PAPER_DT) < 1e-15
+                   ? ": eta within 1 % of a resolved step (+0.8 +- 0.4 % at Wi = 0.3, less above; "
+                     "bench/wp_table1.c), where 10^6 steps per tau_lambda would take a week"
+                   : "");
     if (fabs(p->P0 - tab.P0) > 1e-12 * tab.P0)
         printf("# NOTE P0 = %g Pa (Table I %g Pa): c_s = %.4g m/s keeps the fastest shear at Mach %.3g\n",
                opt.P0_si, si.P0, th.cs * u.v, mach);
     printf("# shear rates [1/s] (Wi = gdot tau_lambda):");
     for (r = 0; r < opt.ngdot; ++r) printf(" %g (%.3g)", opt.gdot_si[r], opt.gdot_si[r] * opt.tau_si);
     printf("; Mach gdot_max Ly / c_s = %.3g\n", mach);
-    printf("# runs per concentration: Lees-Edwards %d steps (%.3g tau_lambda) x %d rates, reverse Poiseuille "
-           "%d steps; equilibrium %d steps; %d blocks, %d slabs\n", opt.le_steps,
-           opt.le_steps * p->dt / p->tau_lambda, opt.ngdot, opt.rp_steps, opt.eq_steps, opt.nblk, opt.nslab);
-    if (p->dt >= th.dt_sound || p->dt >= th.dt_visc)
-        printf("# warning: dt = %g is not below the explicit limits (sound %.4g, viscous %.4g)\n", p->dt,
-               th.dt_sound, th.dt_visc);
+    if (opt.plateau)
+        printf("# runs per concentration: Lees-Edwards x %d rates, each a start-up tested for a plateau in chunks of "
+               "%g tau_lambda (%d steps; 4..%d chunks), then %d blocks of %g tau_lambda; reverse Poiseuille %d steps; "
+               "equilibrium %d steps; %d slabs\n", opt.ngdot, opt.block_tau, block_steps(p), opt.startup_max,
+               opt.nblk, opt.block_tau, opt.rp_steps, opt.eq_steps, opt.nslab);
+    else
+        printf("# runs per concentration: Lees-Edwards %d steps (%.3g tau_lambda) x %d rates, reverse Poiseuille "
+               "%d steps; equilibrium %d steps; %d blocks, %d slabs\n", opt.le_steps,
+               opt.le_steps * p->dt / p->tau_lambda, opt.ngdot, opt.rp_steps, opt.eq_steps, opt.nblk, opt.nslab);
+    if (p->dt / p->substeps > 1.0001 * th.dt_sound || p->dt / p->substeps > 1.0001 * th.dt_visc)
+        printf("# warning: the fluid step %g is not below the explicit limits (sound %.4g, viscous %.4g)\n",
+               p->dt / p->substeps, th.dt_sound, th.dt_visc);
     if (mach > 0.3) printf("# warning: Mach %.3g: the fastest shear is not well below the sound speed\n", mach);
     fflush(stdout);
 
     /* ---- the runs ---- */
     prog.c = &c;
     if (c.restart[0] && !hc_restart(&c, &rst)) return 2;
-    prog.total = (int64_t)opt.nconc * ((int64_t)opt.ngdot * opt.le_steps + opt.rp_steps) + opt.eq_steps;
+    /* with plateau=1 the start-up is a guess: 4 chunks */
+    prog.total = (int64_t)opt.nconc * ((int64_t)opt.ngdot * (opt.plateau ? (int64_t)(4 + opt.nblk) * block_steps(p)
+                                                                         : opt.le_steps) + opt.rp_steps) + opt.eq_steps;
     clock_gettime(CLOCK_MONOTONIC, &prog.t0);
     prog.last = prog.t0;
     for (ci = 0; ci < opt.nconc; ++ci) {

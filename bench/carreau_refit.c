@@ -1,0 +1,76 @@
+/* carreau_refit: how much the Carreau parameters of a flow curve depend on
+   the choices the 2018 paper leaves open (issue 28, item 3).  Reads the
+   flowcurve.csv of hcbd_polymer (total viscosity in mPa s with its error,
+   per concentration and rate) and, per concentration, refits with
+   eta_inf = 0.9 mPa s (Table II), with eta_inf = 1 mPa s (the solvent), with
+   the lowest or the highest rate left out; and scores Table II's own curve
+   against the points (chi^2 per point, with the points' errors).
+
+   usage: carreau_refit FLOWCURVE.csv */
+#include "../hcbd.h"
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define MAXP 32
+
+static double carreau(const double p[3], double eta_inf, double g)
+{
+    return eta_inf + (p[0] - eta_inf) * pow(1 + (p[1] * g) * (p[1] * g), 0.5 * (p[2] - 1));
+}
+
+static void fit(const char *what, const double *g, const double *e, const double *s, int n, double eta_inf)
+{
+    double p[3], pe[3], chi2;
+    if (n < 4 || hcbd_carreau_fit(g, e, s, n, eta_inf, 0, p, pe, &chi2) != HCBD_OK) {
+        printf("  %-34s no fit (%d rates)\n", what, n);
+        return;
+    }
+    printf("  %-34s eta0 %7.3f +- %-6.2g lambda %8.4g +- %-6.2g n %6.3f +- %-6.2g chi2/dof %.2f\n", what, p[0],
+           pe[0], p[1], pe[1], p[2], pe[2], chi2 / (n - 3));
+}
+
+int main(int argc, char **argv)
+{
+    static const double table2[2][4] = {{2.5, 2.526, 3.0504, 0.3441}, {5, 6.6688, 2.1408, 0.0008}};
+    double C[MAXP], g[MAXP], e[MAXP], s[MAXP];
+    int n = 0, k, c;
+    char line[4096];
+    FILE *f;
+    if (argc != 2 || !(f = fopen(argv[1], "r"))) {
+        fprintf(stderr, "usage: carreau_refit FLOWCURVE.csv (hcbd_polymer's)\n");
+        return 2;
+    }
+    if (!fgets(line, sizeof line, f)) return 2; /* header */
+    while (n < MAXP && fgets(line, sizeof line, f)) {
+        double v[32];
+        int m = 0;
+        char *tok = strtok(line, ",");
+        while (tok && m < 32) { v[m++] = atof(tok); tok = strtok(NULL, ","); }
+        if (m < 14) continue;
+        /* C, gdot_per_s, gdot, Wi, 4 x (eta, err) reduced, then mPa s */
+        C[n] = v[0]; g[n] = v[1]; e[n] = v[12]; s[n] = v[13] > 0 ? v[13] : 1e-9;
+        ++n;
+    }
+    fclose(f);
+    for (c = 0; c < 2; ++c) {
+        double gg[MAXP], ee[MAXP], ss[MAXP], chi = 0;
+        int m = 0;
+        for (k = 0; k < n; ++k)
+            if (C[k] == table2[c][0]) { gg[m] = g[k]; ee[m] = e[k]; ss[m] = s[k]; ++m; }
+        if (!m) continue;
+        printf("C = %g C* (%d rates %g..%g 1/s); eta in mPa s, lambda in s\n", table2[c][0], m, gg[0], gg[m - 1]);
+        for (k = 0; k < m; ++k) {
+            const double d = (ee[k] - carreau(table2[c] + 1, 0.9, gg[k])) / ss[k];
+            chi += d * d;
+        }
+        printf("  %-34s eta0 %7.3f            lambda %8.4g            n %6.3f            chi2/point %.2f\n",
+               "Table II (against these points)", table2[c][1], table2[c][2], table2[c][3], chi / m);
+        fit("fit, eta_inf = 0.9 (Table II)", gg, ee, ss, m, 0.9);
+        fit("fit, eta_inf = 1.0 (the solvent)", gg, ee, ss, m, 1.0);
+        fit("fit, lowest rate left out", gg + 1, ee + 1, ss + 1, m - 1, 0.9);
+        fit("fit, highest rate left out", gg, ee, ss, m - 1, 0.9);
+    }
+    return 0;
+}
