@@ -25,7 +25,7 @@
    200/8, 400/16) and at 10 us and 12.5 us with a long polymer step
    (400/40, 400/32).  About 35 minutes on two threads.
 
-   usage: wp_table1 [C=5] [Wi=0.3,1,3] [cfg=50/5,50/1,...] [startup=1]
+   usage: wp_table1 [C=5] [L=10] [Wi=0.3,1,3] [cfg=50/5,50/1,...] [startup=1]
                     [blocks=2] [threads=2] [seed=1] [out=bench/results]
    Writes OUT/wp_table1.csv. */
 #define _POSIX_C_SOURCE 200809L /* clock_gettime under -std=c99 */
@@ -172,7 +172,7 @@ int main(int argc, char **argv)
 {
     static result res[MAXWI][MAXCFG];
     cfg cf[MAXCFG] = {{50, 5}, {50, 1}, {100, 1}, {200, 1}, {100, 4}, {200, 8}, {400, 16}, {400, 40}, {400, 32}};
-    double wis[MAXWI] = {0.3, 1, 3}, C = 5;
+    double wis[MAXWI] = {0.3, 1, 3}, C = 5, L = 10;
     int ncf = 9, nwi = 3, startup = 1, nblk = 2, threads = 2, k, i, j, np;
     unsigned long long seed = 1;
     const char *out = "bench/results";
@@ -185,6 +185,7 @@ int main(int argc, char **argv)
         if (!v) { fprintf(stderr, "wp_table1: '%s' is not key=value\n", argv[k]); return 2; }
         ++v;
         if (!strncmp(argv[k], "C=", 2)) C = atof(v);
+        else if (!strncmp(argv[k], "L=", 2)) L = atof(v);
         else if (!strncmp(argv[k], "Wi=", 3)) nwi = parse_list(v, wis, MAXWI);
         else if (!strncmp(argv[k], "cfg=", 4)) {
             const char *s = v;
@@ -205,21 +206,21 @@ int main(int argc, char **argv)
         else if (!strncmp(argv[k], "out=", 4)) out = v;
         else { fprintf(stderr, "wp_table1: unknown key '%s'\n", argv[k]); return 2; }
     }
-    if (nwi < 1 || ncf < 1 || startup < 0 || nblk < 2 || nblk > MAXBLK || !(C > 0)) {
-        fprintf(stderr, "wp_table1: bad Wi, cfg, startup, blocks (2..%d) or C\n", MAXBLK);
+    if (nwi < 1 || ncf < 1 || startup < 0 || nblk < 2 || nblk > MAXBLK || !(C > 0) || !(L >= 8)) {
+        fprintf(stderr, "wp_table1: bad Wi, cfg, startup, blocks (2..%d), C or L (>= 8)\n", MAXBLK);
         return 2;
     }
     if (hcbd_hc_params_si(&si, 1e-6, &p, msg, sizeof msg) != HCBD_OK) {
         fprintf(stderr, "wp_table1: %s\n", msg);
         return 2;
     }
-    p.L[0] = p.L[1] = p.L[2] = 10;
+    p.L[0] = p.L[1] = p.L[2] = L;
     p.fluctuations = 0;
     p.threads = threads;
     p.seed = seed;
-    np = (int)floor(C * 3.0 / (4.0 * PI) * 1000 + 0.5);
-    printf("wp_table1: Table I, box 10^3, C = %g C* (%d polymers), tau_lambda = %g us, startup %d tau_lambda, "
-           "%d blocks of tau_lambda/2, threads %d\n", C, np, p.tau_lambda, startup, nblk, threads);
+    np = (int)floor(C * 3.0 / (4.0 * PI) * L * L * L + 0.5);
+    printf("wp_table1: Table I, box %g^3, C = %g C* (%d polymers), tau_lambda = %g us, startup %d tau_lambda, "
+           "%d blocks of tau_lambda/2, threads %d\n", L, C, np, p.tau_lambda, startup, nblk, threads);
     printf("%-6s %-5s %-4s %9s %9s %9s %9s %9s %8s %9s %8s %8s %8s\n", "dt_us", "sub", "Wi", "eta/eta_s", "err",
            "d_eta", "d_err", "fluid", "polymer", "pairs", "msd_z", "T_fluid", "s/tau_l");
     fflush(stdout);
@@ -238,8 +239,8 @@ int main(int argc, char **argv)
         fprintf(stderr, "wp_table1: cannot write %s\n", path);
         return 1;
     }
-    fprintf(f, "# wp_table1 C=%g startup=%d blocks=%d threads=%d seed=%llu; eta in units of the solvent eta; d_eta: "
-               "eta minus the first configuration's, paired block by block\n", C, startup, nblk, threads, seed);
+    fprintf(f, "# wp_table1 C=%g L=%g startup=%d blocks=%d threads=%d seed=%llu; eta in units of the solvent eta; "
+               "d_eta: eta minus the first configuration's, paired block by block\n", C, L, startup, nblk, threads, seed);
     fprintf(f, "dt_us,substeps,Wi,eta,eta_err,d_eta,d_eta_err,eta_fluid,eta_polymer,pairs_per_polymer,msd_z,T_fluid,"
                "seconds_per_tau_lambda\n");
     for (i = 0; i < nwi; ++i)
