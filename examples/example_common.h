@@ -369,6 +369,7 @@ static inline void write_run_conf(const config *c)
    key_verdict=... line for scripts, and where the output went. */
 typedef struct {
     char key[40], unit[32], expect[120], verdict[200];
+    const char *kind; /* ok, known, reference, UNEXPLAINED */
     double v, e;
 } judged;
 static judged judged_rows[48];
@@ -388,8 +389,10 @@ static inline void judge(const char *key, double v, double e, const char *unit, 
     if (!isfinite(expected)) {
         snprintf(j->expect, sizeof j->expect, "none, %s", expect_what);
         snprintf(j->verdict, sizeof j->verdict, "reference");
+        j->kind = "reference";
     } else {
         snprintf(j->expect, sizeof j->expect, "%.4g (%s)", expected, expect_what);
+        j->kind = isfinite(v) && d <= lim ? "ok" : isfinite(v) && known ? "known" : "UNEXPLAINED";
         if (!isfinite(v))
             snprintf(j->verdict, sizeof j->verdict, "UNEXPLAINED: not measured (run longer)");
         else if (d <= lim)
@@ -417,12 +420,7 @@ static inline void verdicts_flush(void)
             snprintf(unit, sizeof unit, "[%s]", j->unit);
             printf("#   %-24s %-20s %-14s expected %s: %s\n", j->key, val, unit, j->expect, j->verdict);
         }
-        for (k = 0; k < judged_n; ++k) {
-            const char *v = judged_rows[k].verdict;
-            printf("%s_verdict=%s\n", judged_rows[k].key,
-                   !strncmp(v, "ok", 2) ? "ok" : !strncmp(v, "known", 5) ? "known" : !strncmp(v, "reference", 9) ? "reference"
-                                                                                                            : "UNEXPLAINED");
-        }
+        for (k = 0; k < judged_n; ++k) printf("%s_verdict=%s\n", judged_rows[k].key, judged_rows[k].kind);
     }
     judged_n = 0;
 }
@@ -439,7 +437,6 @@ static inline void summary_end(const config *c, int has_files)
                c->checkpoint);
 }
 
-/* Mean and standard error of per-block values. */
 /* Mean and standard error of the finite values of x[0..n) (a block whose
    estimate could not be made is NaN and left out); returns how many were
    used.  NaN mean without any, NaN error with fewer than two. */

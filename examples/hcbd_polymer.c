@@ -898,11 +898,23 @@ static void write_profiles(const config *c, const conc_run *cr, const hcbd_hc_pa
     }
 }
 
+/* 2018 Table II at C = 2.5 or 5 C* (else 0): eta0 / eta (with eta = 1
+   mPa s), lambda / tau_lambda, n; eta_inf = 0.9 mPa s. */
+static int table2(double C, double t[3])
+{
+    if (C != 2.5 && C != 5) return 0;
+    t[0] = C == 2.5 ? 2.526 : 6.6688;
+    t[1] = C == 2.5 ? 3.0504 : 2.1408;
+    t[2] = C == 2.5 ? 0.3441 : 0.0008;
+    return 1;
+}
+
 static void print_summary(const conc_run *cr, const hcbd_hc_params *p, const rp_metrics *m, const units *u,
                           double mach, double Ly_rp)
 {
     const int hi = opt.ngdot - 1;
     const double thin = cr->eta[0][hi] / cr->eta[0][0];
+    double t2[3];
     int k;
     printf("# summary C=%g (C/C* = %g, %d polymers; reduced units: sigma, kT, time unit %g s; "
            "viscosities also in mPa s)\n", cr->C, cr->C, cr->np, u->t);
@@ -921,9 +933,7 @@ static void print_summary(const conc_run *cr, const hcbd_hc_params *p, const rp_
         printf("eta0=%.6g\neta0_err=%.3g\neta0_mPas=%.6g\neta0_over_eta=%.4g\n", cr->eta0, cr->err[0][0],
                cr->eta0 * u->eta * 1e3, cr->eta0 / p->eta);
     }
-    if (cr->C == 2.5 || cr->C == 5) { /* Table II, with eta = 1 mPa s */
-        const double t2[3] = {cr->C == 2.5 ? 2.526 : 6.6688, cr->C == 2.5 ? 3.0504 : 2.1408,
-                              cr->C == 2.5 ? 0.3441 : 0.0008};
+    if (table2(cr->C, t2)) {
         printf("eta0_over_eta_paper=%g\nlambda_over_tau_lambda_paper=%g\nn_paper=%g\n", t2[0], t2[1], t2[2]);
         if (cr->fitted) {
             const double ts = p->tau_lambda * u->t, em = u->eta * 1e3;
@@ -963,16 +973,16 @@ static void print_summary(const conc_run *cr, const hcbd_hc_params *p, const rp_
         printf("%s=%.4g\n%s_err=%.3g\n%s_initial=%.4g\n", dep_name[k], cr->dep[k][0], dep_name[k], cr->dep[k][1],
                dep_name[k], cr->dep0[k]);
     printf("rp_center_change=%.3g\n", m->change);
-    if (cr->C == 2.5 || cr->C == 5) { /* Table II */
+    if (table2(cr->C, t2)) {
         const int table1 = fabs(p->tau_lambda * u->t - hcbd_hc_si_table1().tau_lambda) < 1e-9;
         const char *quick = table1 ? NULL : "this run's tau_lambda (and alpha, P0) are not Table I's (NOTEs above): Table II is for Table I";
         judge("eta0_over_eta", (cr->fitted ? cr->pc[0] : cr->eta0) / p->eta,
-              (cr->fitted ? cr->pe[0] : cr->err[0][0]) / p->eta, "1", cr->C == 2.5 ? 2.526 : 6.6688, 0,
+              (cr->fitted ? cr->pe[0] : cr->err[0][0]) / p->eta, "1", t2[0], 0,
               "2018 Table II", quick);
         if (cr->fitted) {
             judge("lambda_over_tau_lambda", cr->pc[1] / p->tau_lambda, cr->pe[1] / p->tau_lambda, "1",
-                  cr->C == 2.5 ? 3.0504 : 2.1408, 0, "2018 Table II", quick);
-            judge("n", cr->pc[2], cr->pe[2], "1", cr->C == 2.5 ? 0.3441 : 0.0008, 0, "2018 Table II", quick);
+                  t2[1], 0, "2018 Table II", quick);
+            judge("n", cr->pc[2], cr->pe[2], "1", t2[2], 0, "2018 Table II", quick);
         }
     }
     judge("shear_thinning", thin, thin * hypot(cr->err[0][hi] / cr->eta[0][hi], cr->err[0][0] / cr->eta[0][0]), "1",
@@ -998,7 +1008,7 @@ static void write_plots(const config *c, const conc_run *runs, const hcbd_hc_par
     const hcbd_hc_si t1 = hcbd_hc_si_table1();
     const int ny = 121;
     char scene[400], tl[64] = "";
-    double ylo = HUGE_VAL, yhi = 0;
+    double ylo = HUGE_VAL, yhi = 0, t2[3];
     FILE *f = open_out(c, "plots.gp");
     int ci, k, j;
     if (!f) return;
@@ -1053,10 +1063,9 @@ static void write_plots(const config *c, const conc_run *runs, const hcbd_hc_par
         if (cr->fitted)
             fprintf(f, ", \\\n     %.17g + (%.17g - %.17g) * (1 + (%.17g * x)**2)**((%.17g - 1) / 2) w l lw 2 lc 1 "
                        "t 'Carreau fit of the total'", ei, cr->pc[0] * u->eta * 1e3, ei, cr->pc[1] * u->t, cr->pc[2]);
-        if (cr->C == 2.5 || cr->C == 5) {
+        if (table2(cr->C, t2)) {
             /* Table II with eta = 1 mPa s, scaled by this run's solvent */
-            double e0 = (cr->C == 2.5 ? 2.526 : 6.669) * eta_f, l = (cr->C == 2.5 ? 3.0504 : 2.1408) * tau_s;
-            double n = cr->C == 2.5 ? 0.3441 : 0.0008, einf = 0.9 * eta_f;
+            double e0 = t2[0] * eta_f, l = t2[1] * tau_s, n = t2[2], einf = 0.9 * eta_f;
             fprintf(f, ", \\\n     %.17g + (%.17g - %.17g) * (1 + (%.17g * x)**2)**((%.17g - 1) / 2) w l dt 4 lw 2 "
                        "lc 'gray30' t '2018 Table II Carreau, " GP_LAMBDA " scaled to this " GP_TAU "_" GP_LAMBDA "'",
                     einf, e0, einf, l, n);
