@@ -64,10 +64,15 @@
    (a 400 us polymer step reads 1.7 % high at Wi = 0.3 against a 50 us
    one, 200 us 1.4 %, 100 us 0.8 +- 0.4 %; at Wi = 3 even 400 us stays
    within 0.3 %), so the preset steps the polymers by 100 us and the fluid
-   in 8 sub-steps.  Each Lees-Edwards run tests its start-up for a plateau
-   (plateau=1) and measures 4 blocks of one tau_lambda; the error of the
-   total is the larger of that block error and the one from blocks twice as
-   long.
+   in 8 sub-steps.  Each Lees-Edwards run measures its start-up
+   (plateau=1): at least 4 times the slowest stress relaxation time (3
+   tau_lambda, over 1 + 3 Wi: a slow part of the growth, 5-8 % of the
+   stress at Wi = 0.1, hides under the noise of a few tau_lambda), then on
+   until the stress growth fitted to it would shift the measured mean by
+   less than 0.5 %; then it measures 4 blocks of one tau_lambda; the error of the total is the larger of that
+   block error and the one from blocks twice as long.  The runs are
+   independent, so with threads=2 two of them run side by side on one
+   thread each (jobs=).
 
    What to look for: shear thinning (eta falls once gdot tau_lambda ~ 1),
    carried by the transient part of the polymer stress, stronger at C2;
@@ -94,6 +99,9 @@
 #include "example_common.h"
 
 #include <limits.h>
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 
 #define PI 3.14159265358979323846
 #define KB 1.380649e-23
@@ -103,6 +111,7 @@
 #define MAXS 202  /* slabs */
 #define NCOMP 4   /* total, fluid, polymer, interaction */
 #define NTS 300   /* rows of the start-up series */
+#define NSER 168  /* half blocks of a Lees-Edwards run: start-up <= 128, blocks 2 x MAXB */
 /* preset=paper's step: the largest polymer step and fluid sub-steps whose
    viscosity at Table I stays within 1 % of a resolved reference
    (bench/wp_table1.c, README "Table II") */
@@ -124,20 +133,32 @@ static struct {
     int le_steps, rp_steps, eq_steps, nblk, nslab;
     int substeps;             /* fluid steps per polymer step              */
     /* plateau=1: a Lees-Edwards run is start-up chunks of block_tau
-       tau_lambda until the stress levels off (at most startup_max), then
+       tau_lambda until the stress levels off (startup_bias; at most
+       startup_max), then
        nblk blocks of block_tau; plateau=0: le_steps, the first 2/3 start-up */
     int plateau, startup_max;
-    double block_tau;
+    double block_tau, startup_tol;
+    double startup_lambda;    /* the stress's slowest relaxation time assumed
+                                 for the least start-up, tau_lambda          */
+    int jobs;                 /* runs at a time, each on threads/jobs threads */
     double eta_inf_mpas;      /* Carreau eta_inf, mPa s (Table II: 0.9)    */
     double eta_inf;           /* the same in reduced units                */
 } opt;
 
-/* Progress over all runs, reported at most every few seconds. */
+/* Progress over all runs, reported at most every few seconds; runs at a
+   time (jobs=) share it in one critical section, and a failed run stops
+   the others. */
 static struct {
     config *c;
     int64_t done, total;
     struct timespec t0, last;
+    int failed;
 } prog;
+#ifdef _OPENMP
+#define PROGRESS_LOCK _Pragma("omp critical(hcbd_polymer_progress)")
+#else
+#define PROGRESS_LOCK
+#endif
 
 /* Slab profile rows (hcbd_slabs_result): y, count density, its error,
    then mean and error of each value. */
@@ -155,6 +176,10 @@ typedef struct {
     int np, np_rp;             /* polymers in the Lees-Edwards, reverse-Poiseuille box */
     double eta[NCOMP][MAXG], err[NCOMP][MAXG], rise[MAXG];
     double startup[MAXG];      /* start-up taken, tau_lambda; negative: no plateau found */
+    double relax[MAXG];        /* relaxation time of the stress growth, tau_lambda */
+    double bias[MAXG];         /* the growth's estimated share of the measured mean */
+    double series[MAXG][NSER]; /* total viscosity of each half block, start-up and blocks */
+    int nser[MAXG], nser_up[MAXG]; /* its length and how much of it is start-up */
     double err_ratio[MAXG];    /* total's error from blocks twice as long over the one used */
     int fitted;
     double pc[3], pe[3], chi2; /* Carreau eta0, lambda, n */
@@ -198,9 +223,15 @@ static void usage(FILE *f)
             "  blocks=N slabs=N    blocks for the errors (2..20); slabs across y (4k+2, <= 202)\n"
             "  substeps=k          fluid steps of dt/k per polymer step (1..1000)\n"
             "  plateau=0|1         1: each Lees-Edwards run starts up in chunks of block_tau until\n"
-            "                      the stress levels off (4..startup_max chunks), then measures\n"
-            "                      blocks of block_tau tau_lambda; 0: le_steps, 2/3 start-up\n"
-            "  block_tau=1 startup_max=8  (with plateau=1)\n"
+            "                      the stress growth fitted to them would carry less than\n"
+            "                      startup_tol of the measured mean (3..startup_max blocks), then\n"
+            "                      measures blocks of block_tau tau_lambda; 0: le_steps, 2/3 start-up\n"
+            "  block_tau=1 startup_max=8 (paper 16) startup_tol=0.005  (with plateau=1)\n"
+            "  startup_lambda=3    the slowest stress relaxation time assumed, in tau_lambda: every\n"
+            "                      start-up lasts at least 4 of it over 1 + gdot startup_lambda\n"
+            "                      tau_lambda (2018 Table II: lambda = 2.1-3.1 s)\n"
+            "  jobs=k              runs at a time, each on threads/k threads (default: threads;\n"
+            "                      1 with thermo_every); the same bits for any jobs and threads\n"
             "  time_unit=1e-6      reduced time unit in seconds (dt of Table I = 1)\n"
             "  rho eta nbar T dt sigma h xi chi rc p n_max   Table I parameters in SI (h, rc\n"
             "                      in sigma; p Kuhn segments per blob; n_max in C*)\n"
@@ -273,7 +304,10 @@ static int own_key(config *c, const char *key, const char *v)
     if (!strcmp(key, "blocks")) return int_range(c, key, v, &opt.nblk, 2, MAXB);
     if (!strcmp(key, "substeps")) return int_range(c, key, v, &opt.substeps, 1, 1000);
     if (!strcmp(key, "plateau")) return int_range(c, key, v, &opt.plateau, 0, 1);
-    if (!strcmp(key, "startup_max")) return int_range(c, key, v, &opt.startup_max, 4, 64);
+    if (!strcmp(key, "startup_max")) return int_range(c, key, v, &opt.startup_max, 3, 64);
+    if (!strcmp(key, "startup_tol")) return positive(c, key, v, &opt.startup_tol);
+    if (!strcmp(key, "startup_lambda")) return positive(c, key, v, &opt.startup_lambda);
+    if (!strcmp(key, "jobs")) return int_range(c, key, v, &opt.jobs, 1, 64);
     if (!strcmp(key, "block_tau")) return positive(c, key, v, &opt.block_tau);
     if (!strcmp(key, "slabs")) {
         if (!int_range(c, key, v, &opt.nslab, 6, MAXS)) return 0;
@@ -298,6 +332,14 @@ static double seconds_since(const struct timespec *t0)
     return (t1.tv_sec - t0->tv_sec) + 1e-9 * (t1.tv_nsec - t0->tv_nsec);
 }
 
+static void sleep_s(double s)
+{
+    struct timespec t;
+    t.tv_sec = (time_t)s;
+    t.tv_nsec = (long)((s - (double)t.tv_sec) * 1e9);
+    nanosleep(&t, NULL);
+}
+
 static void report_progress(int force)
 {
     int64_t unit = 1 + prog.total / INT_MAX; /* progress() counts in int */
@@ -306,22 +348,28 @@ static void report_progress(int force)
     progress(prog.c, (int)(prog.done / unit), (int)(prog.total / unit), &prog.t0);
 }
 
-static run_out ro;     /* the output of the run in progress */
 static hc_config rst;  /* restart='s configuration, if given */
 
 /* Steps with progress and run output; on failure prints the library's
    message. */
-static int advance(hcbd_hc_world *w, int n, const char *what)
+static int advance(hcbd_hc_world *w, run_out *o, int n, const char *what)
 {
     while (n > 0) {
-        int k = n < 1000 ? n : 1000;
-        if (run_steps(prog.c, &ro, w, k) != HCBD_OK) {
+        int k = n < 1000 ? n : 1000, stop;
+        if (run_steps(prog.c, o, w, k) != HCBD_OK) {
             fprintf(stderr, "\nhcbd_polymer: %s: %s\n", what, w->err.msg);
+            PROGRESS_LOCK
+            prog.failed = 1;
             return 0;
         }
         n -= k;
-        prog.done += k;
-        report_progress(0);
+        PROGRESS_LOCK
+        {
+            prog.done += k;
+            report_progress(0);
+            stop = prog.failed;
+        }
+        if (stop) return 0;
     }
     return 1;
 }
@@ -329,7 +377,7 @@ static int advance(hcbd_hc_world *w, int n, const char *what)
 /* A run's world: Table I at p, the fluid on a lattice and the polymers at
    random, or restart='s configuration when its counts are the run's; its
    run output opens under label. */
-static int new_world(hcbd_hc_world *w, const hcbd_hc_params *p, int nf, int np, const char *what,
+static int new_world(hcbd_hc_world *w, run_out *o, const hcbd_hc_params *p, int nf, int np, const char *what,
                      const char *label)
 {
     hcbd_hc_def def = hcbd_hc_def_default();
@@ -337,7 +385,6 @@ static int new_world(hcbd_hc_world *w, const hcbd_hc_params *p, int nf, int np, 
     def.fluid_capacity = nf;
     def.polymer_capacity = np;
     def.pair_capacity = HCBD_AUTO;
-    print_limits(&def.params);
     if (hcbd_hc_world_create(w, &def) != HCBD_OK) {
         fprintf(stderr, "hcbd_polymer: %s: %s\n", what, w->err.msg);
         return 0;
@@ -355,7 +402,7 @@ static int new_world(hcbd_hc_world *w, const hcbd_hc_params *p, int nf, int np, 
             return 0;
         }
     }
-    if (!run_out_open(prog.c, &ro, w, label)) {
+    if (!run_out_open(prog.c, o, w, label)) {
         hcbd_hc_world_destroy(w);
         return 0;
     }
@@ -364,11 +411,11 @@ static int new_world(hcbd_hc_world *w, const hcbd_hc_params *p, int nf, int np, 
 
 /* Ends a run: its trajectory closes and, if it went well, its checkpoint
    is written. */
-static int end_world(hcbd_hc_world *w, int ok)
+static int end_world(hcbd_hc_world *w, run_out *o, int ok)
 {
-    if (ok) ok = run_out_close(prog.c, &ro, w);
-    else if (ro.xyz) fclose(ro.xyz);
-    ro.xyz = NULL;
+    if (ok) ok = run_out_close(prog.c, o, w);
+    else if (o->xyz) fclose(o->xyz);
+    o->xyz = NULL;
     hcbd_hc_world_destroy(w);
     return ok;
 }
@@ -384,9 +431,11 @@ static int polymers_in(const hcbd_hc_params *p, double C)
     return (int)floor(C * cstar * p->L[0] * p->L[1] * p->L[2] + 0.5);
 }
 
-static void mix_checksum(uint64_t *sum, const hcbd_hc_world *w)
+/* The runs' state checksums, mixed in the order of the runs (not of
+   their ends, which jobs= changes). */
+static void mix_checksum(uint64_t *sum, uint64_t run)
 {
-    *sum = (*sum ^ hcbd_hc_state_checksum(w)) * 0x100000001B3ULL;
+    *sum = (*sum ^ run) * 0x100000001B3ULL;
 }
 
 /* Steps of one block of a plateau-tested run. */
@@ -398,60 +447,127 @@ static int block_steps(const hcbd_hc_params *p)
 
 /* Mean of the total stress over the next n steps (the stress average
    restarted). */
-static int stress_chunk(hcbd_hc_world *w, int n, const char *what, double s[HCBD_HC_NSTRESS])
+static int stress_chunk(hcbd_hc_world *w, run_out *o, int n, const char *what, double s[HCBD_HC_NSTRESS])
 {
     hcbd_hc_stress_enable(w, 1);
-    if (!advance(w, n, what)) return 0;
+    if (!advance(w, o, n, what)) return 0;
     hcbd_hc_stress_read(w, s, NULL);
     return 1;
+}
+
+/* The start-up's stress growth, chunk means c[1..nc-1] of width bt (the
+   first chunk holds the fast transients and is left out), fitted by
+   a + b exp(-t / tau) (least squares in a and b for each tau on a grid of
+   0.2 to 20 chunks); returns the share of the measured mean that the
+   growth would still carry, b tau / W exp(-T / tau) (1 - exp(-W / tau)) / a
+   over the window T = nc bt .. T + W, W = nw bt, the fitted tau and
+   |b| over its standard error (below 2: no growth is seen above the
+   noise, and a growth fitted to noise would extrapolate anywhere). */
+static double startup_bias(const double *c, int nc, double bt, int nw, double *tau_fit, double *signif)
+{
+    const double T = nc * bt, W = nw * bt, n = nc - 1;
+    double best = INFINITY, ba = 0, bb = 0, btau = bt, bse = 0;
+    int g, k;
+    for (g = 0; g < 64; ++g) {
+        const double tau = bt * 0.2 * pow(100.0, g / 63.0);
+        double sx = 0, sy = 0, sxx = 0, sxy = 0, det, a, b, ssr = 0;
+        for (k = 1; k < nc; ++k) {
+            const double x = exp(-(k + 0.5) * bt / tau);
+            sx += x;
+            sy += c[k];
+            sxx += x * x;
+            sxy += x * c[k];
+        }
+        det = n * sxx - sx * sx;
+        if (!(det > 0)) continue;
+        b = (n * sxy - sx * sy) / det;
+        a = (sy - b * sx) / n;
+        for (k = 1; k < nc; ++k) {
+            const double r = c[k] - a - b * exp(-(k + 0.5) * bt / tau);
+            ssr += r * r;
+        }
+        if (ssr < best) {
+            best = ssr;
+            ba = a;
+            bb = b;
+            btau = tau;
+            bse = sqrt(ssr / (n > 3 ? n - 3 : 1) * n / det); /* a, b and tau fitted */
+        }
+    }
+    *tau_fit = btau;
+    *signif = bse > 0 ? fabs(bb) / bse : INFINITY;
+    if (!(best < INFINITY) || ba == 0) return INFINITY;
+    return fabs(bb * btau / W * exp(-T / btau) * (1 - exp(-W / btau)) / ba);
 }
 
 /* One Lees-Edwards run: viscosities of the four parts at shear rate gd
    with block errors; rise = (last block - first block) / mean of the
    total, a measure of how far from steady the stress still is.
 
-   With plateau=1 the start-up is tested, not assumed: chunks of one block
-   run until the mean of the last two agrees with the mean of the two
-   before within twice the error of that difference (estimated from the
-   spread of the four), after at least three chunks and at most
-   startup_max; a run that never levels off is flagged (startup < 0).  The
-   error of the total is the larger of the block error and the one from
-   blocks twice as long (err_ratio), so that a correlation time beyond a
-   block does not hide. */
+   With plateau=1 the start-up is measured, not assumed: chunks of half a
+   block run until the stress growth fitted to them (startup_bias) would
+   carry less than startup_tol of the measured mean, or no growth stands
+   out of the noise, after at least 3 blocks and at most startup_max; a
+   run that does not level off is flagged (startup < 0).  The stress of these solutions grows on the scale
+   of the Carreau lambda (2-3 tau_lambda), so the slowest rates take ~4
+   lambda.  The error of the total is the larger of the block error and
+   the one from blocks twice as long (err_ratio), so that a correlation
+   time beyond a block does not hide. */
 static int shear_run(const hcbd_hc_params *base, conc_run *cr, int r, double gd, uint64_t *checksum)
 {
     hcbd_hc_params p = *base;
     hcbd_hc_world w;
+    run_out ro;
     double blk[NCOMP][MAXB], s[HCBD_HC_NSTRESS];
     int per, b, k;
     char what[96], label[64];
     snprintf(what, sizeof what, "C = %g C*, gdot = %g 1/s", cr->C, opt.gdot_si[r]);
     snprintf(label, sizeof label, "C%g_gdot%g", cr->C, opt.gdot_si[r]);
     p.gdot = gd;
-    if (!new_world(&w, &p, blobs_in(&p), cr->np, what, label)) return 0;
+    if (!new_world(&w, &ro, &p, blobs_in(&p), cr->np, what, label)) return 0;
+    cr->relax[r] = cr->bias[r] = NAN;
     if (opt.plateau) {
-        double c[64];
+        /* start-up chunks of half a block: the growth is resolved and the
+           fastest rates, which level off at once, stop after 3 blocks */
+        const int half = (block_steps(&p) + 1) / 2;
+        const double bt = half * p.dt / p.tau_lambda;
+        double c[128];
         int nc = 0, level = 0;
         per = block_steps(&p);
-        while (nc < opt.startup_max && nc < 64 && !level) {
-            if (!stress_chunk(&w, per, what, s)) goto fail;
+        /* at least 3 blocks, and 4 times the assumed slowest relaxation
+           time, which shear shortens as 1 / (1 + gdot lambda) */
+        const double wl = gd * opt.startup_lambda * p.tau_lambda;
+        int least = (int)ceil(8 * opt.startup_lambda / (1 + wl) / (bt > 0 ? 2 * bt : 1) - 1e-9);
+        if (least < 6) least = 6;
+        if (least > 2 * opt.startup_max) least = 2 * opt.startup_max;
+        while (nc < 2 * opt.startup_max && !level) {
+            if (!stress_chunk(&w, &ro, half, what, s)) goto fail;
             c[nc++] = s[HCBD_HC_S_TOTAL];
-            if (nc >= 4) {
-                const double *q = c + nc - 4, m = 0.25 * (q[0] + q[1] + q[2] + q[3]);
-                double v = 0, d = 0.5 * (q[2] + q[3]) - 0.5 * (q[0] + q[1]);
-                for (k = 0; k < 4; ++k) v += (q[k] - m) * (q[k] - m);
-                /* the difference of two means of two: error sqrt(var) */
-                level = fabs(d) <= 2 * sqrt(v / 3);
+            if (nc < NSER) cr->series[r][nc - 1] = s[HCBD_HC_S_TOTAL] / gd;
+            if (nc >= least) {
+                double sig;
+                cr->bias[r] = startup_bias(c, nc, bt, opt.nblk * per / half, &cr->relax[r], &sig);
+                level = cr->bias[r] <= opt.startup_tol || sig < 2;
             }
         }
-        cr->startup[r] = (level ? 1 : -1) * nc * opt.block_tau;
+        cr->startup[r] = (level ? 1 : -1) * nc * bt;
+        cr->nser_up[r] = cr->nser[r] = nc < NSER ? nc : NSER;
     } else {
         per = (opt.le_steps - 2 * opt.le_steps / 3) / opt.nblk;
-        if (!advance(&w, opt.le_steps - per * opt.nblk, what)) goto fail;
+        if (!advance(&w, &ro, opt.le_steps - per * opt.nblk, what)) goto fail;
         cr->startup[r] = (opt.le_steps - per * opt.nblk) * p.dt / p.tau_lambda;
     }
     for (b = 0; b < opt.nblk; ++b) {
-        if (!stress_chunk(&w, per, what, s)) goto fail;
+        if (opt.plateau) { /* two halves, for the series */
+            double h1[HCBD_HC_NSTRESS];
+            const int half = (per + 1) / 2;
+            if (!stress_chunk(&w, &ro, half, what, h1) || !stress_chunk(&w, &ro, per - half, what, s)) goto fail;
+            if (cr->nser[r] + 2 <= NSER) {
+                cr->series[r][cr->nser[r]++] = h1[HCBD_HC_S_TOTAL] / gd;
+                cr->series[r][cr->nser[r]++] = s[HCBD_HC_S_TOTAL] / gd;
+            }
+            for (k = 0; k < HCBD_HC_NSTRESS; ++k) s[k] = (half * h1[k] + (per - half) * s[k]) / per;
+        } else if (!stress_chunk(&w, &ro, per, what, s)) goto fail;
         for (k = 0; k < NCOMP; ++k) blk[k][b] = s[comp_index[k]] / gd;
     }
     for (k = 0; k < NCOMP; ++k) mean_err(blk[k], opt.nblk, &cr->eta[k][r], &cr->err[k][r]);
@@ -464,10 +580,10 @@ static int shear_run(const hcbd_hc_params *base, conc_run *cr, int r, double gd,
         if (e2 > cr->err[0][r]) cr->err[0][r] = e2;
     }
     cr->rise[r] = (blk[0][opt.nblk - 1] - blk[0][0]) / cr->eta[0][r];
-    mix_checksum(checksum, &w);
-    return end_world(&w, 1);
+    *checksum = hcbd_hc_state_checksum(&w);
+    return end_world(&w, &ro, 1);
 fail:
-    return end_world(&w, 0);
+    return end_world(&w, &ro, 0);
 }
 
 /* Within Ly/8 of a plane where the reverse-Poiseuille force flips. */
@@ -560,6 +676,7 @@ static int rp_run(const hcbd_hc_params *base, conc_run *cr, uint64_t *checksum)
 {
     hcbd_hc_params p = *base;
     hcbd_hc_world w;
+    run_out ro;
     hcbd_slabs sf, sp, s0;
     zone_sums z;
     size_t bf = hcbd_slabs_bytes(opt.nslab, 2), bp = hcbd_slabs_bytes(opt.nslab, 3);
@@ -580,7 +697,7 @@ static int rp_run(const hcbd_hc_params *base, conc_run *cr, uint64_t *checksum)
         fprintf(stderr, "hcbd_polymer: out of memory\n");
         goto done;
     }
-    if (!new_world(&w, &p, nf, cr->np_rp, what, label)) goto done;
+    if (!new_world(&w, &ro, &p, nf, cr->np_rp, what, label)) goto done;
     hcbd_slabs_init(&sf, p.L, opt.nslab, 2, block, mf, bf);
     hcbd_slabs_init(&sp, p.L, opt.nslab, 3, block, mp, bp);
     hcbd_slabs_init(&s0, p.L, opt.nslab, 1, 1, m0, b0);
@@ -597,11 +714,11 @@ static int rp_run(const hcbd_hc_params *base, conc_run *cr, uint64_t *checksum)
     zones_depletion(&z, cr->dep0);
     memset(&z, 0, sizeof z);
     /* the remainder of rp_steps / unit first, as start-up */
-    if (!advance(&w, opt.rp_steps - nunit * unit, what)) goto fail;
+    if (!advance(&w, &ro, opt.rp_steps - nunit * unit, what)) goto fail;
     cr->nts = 0;
     cr->ts_from = start;
     for (k = 0; k < nunit; ++k) {
-        if (!advance(&w, unit, what)) goto fail;
+        if (!advance(&w, &ro, unit, what)) goto fail;
         if (cr->nts < NTS) {
             cr->ts[cr->nts][0] = (double)w.step * p.dt;
             cr->ts[cr->nts][1] = centre_velocity(w.fy, w.fvx, nf, p.L[1]);
@@ -640,10 +757,10 @@ static int rp_run(const hcbd_hc_params *base, conc_run *cr, uint64_t *checksum)
     cr->nf_kernel = sum_nf / ((double)nf * nsamp);
     cr->np_kernel = sum_np / ((double)cr->np_rp * nsamp);
     for (d = 0; d < ND; ++d) mean_err(blk[d], nb, &cr->dep[d][0], &cr->dep[d][1]);
-    mix_checksum(checksum, &w);
+    *checksum = hcbd_hc_state_checksum(&w);
     ok = 1;
 fail:
-    ok = end_world(&w, ok);
+    ok = end_world(&w, &ro, ok);
 done:
     free(mf);
     free(mp);
@@ -757,25 +874,26 @@ static int momentum_run(const hcbd_hc_params *base, int np, double *dp, double *
 {
     hcbd_hc_params p = *base;
     hcbd_hc_world w;
+    run_out ro;
     double P0[3], P1[3];
     int s, a;
     p.gdot = 0;
     p.reverse_poiseuille = 0;
     p.g[0] = p.g[1] = p.g[2] = 0;
-    if (!new_world(&w, &p, blobs_in(&p), np, "momentum run", "momentum")) return 0;
+    if (!new_world(&w, &ro, &p, blobs_in(&p), np, "momentum run", "momentum")) return 0;
     hcbd_hc_momentum(&w, P0);
     *scale = 0;
     for (s = 0; s < opt.eq_steps; ++s) {
         for (a = 0; a < w.np; ++a)
             *scale += p.dt * sqrt((double)w.pFx[a] * w.pFx[a] + (double)w.pFy[a] * w.pFy[a] +
                                   (double)w.pFz[a] * w.pFz[a]);
-        if (!advance(&w, 1, "momentum run")) return end_world(&w, 0);
+        if (!advance(&w, &ro, 1, "momentum run")) return end_world(&w, &ro, 0);
     }
     hcbd_hc_momentum(&w, P1);
     *dp = sqrt((P1[0] - P0[0]) * (P1[0] - P0[0]) + (P1[1] - P0[1]) * (P1[1] - P0[1]) +
                (P1[2] - P0[2]) * (P1[2] - P0[2]));
-    mix_checksum(checksum, &w);
-    return end_world(&w, 1);
+    *checksum = hcbd_hc_state_checksum(&w);
+    return end_world(&w, &ro, 1);
 }
 
 /* Conversion of reduced values to SI. */
@@ -955,10 +1073,13 @@ static void print_summary(const conc_run *cr, const hcbd_hc_params *p, const rp_
         int bad = 0;
         for (k = 0; k < opt.ngdot; ++k) bad += cr->startup[k] < 0;
         printf("# startup_tau_lambda: the start-up each rate took before its stress levelled off (negative: it "
-               "did not within startup_max); err_ratio: the error from blocks twice as long over the block error\n");
+               "did not within startup_max); startup_relax: the time constant of the stress growth fitted to the "
+               "start-up, tau_lambda; startup_bias: the share of the measured mean the fitted growth still "
+               "carries; err_ratio: the error from blocks twice as long over the block error\n");
         for (k = 0; k < opt.ngdot; ++k)
-            printf("startup_tau_lambda_gdot%g=%.3g\nerr_ratio_gdot%g=%.3g\n", opt.gdot_si[k], cr->startup[k],
-                   opt.gdot_si[k], cr->err_ratio[k]);
+            printf("startup_tau_lambda_gdot%g=%.3g\nstartup_relax_gdot%g=%.3g\nstartup_bias_gdot%g=%.2g\n"
+                   "err_ratio_gdot%g=%.3g\n", opt.gdot_si[k], cr->startup[k], opt.gdot_si[k], cr->relax[k],
+                   opt.gdot_si[k], cr->bias[k], opt.gdot_si[k], cr->err_ratio[k]);
         printf("rates_without_plateau=%d\n", bad);
     }
     printf("rp_Ly=%.4g\nrp_polymers=%d\ng=%.6g\ng_si=%.6g\n", Ly_rp, cr->np_rp, cr->g, cr->g * u->acc);
@@ -1162,8 +1283,50 @@ static void write_plots(const config *c, const conc_run *runs, const hcbd_hc_par
         fprintf(f, "\n");
     }
     fprintf(f, "unset multiplot\nunset object 1\n");
+    if (opt.plateau) { /* ---- the Lees-Edwards start-ups */
+        fprintf(f, "set output 'startup.png'\nset xrange [0:*]\nset yrange [*:*]\n"
+                   "set multiplot layout 1,%d title \"Lees-Edwards start-up: the total viscosity of each half "
+                   "block over the measured mean (start-up: points; measured: line)\\n{/*0.85 \".scene.\"}\"\n"
+                   "set xlabel 't / " GP_TAU "_" GP_LAMBDA "'\nset ylabel '" GP_ETA " / " GP_ETA
+                   " (measured)'\nset key bottom right font ',11'\n", opt.nconc);
+        for (ci = 0; ci < opt.nconc; ++ci) {
+            int r;
+            fprintf(f, "set title 'C = %g C*' font ',12'\nplot 1 w l dt 2 lc 'black' notitle", runs[ci].C);
+            for (r = 0; r < opt.ngdot; ++r)
+                fprintf(f, ", 'startup_C%g.csv' u ($1 == %g && $5 == 0 ? $2 : NaN):4 w p pt 7 ps 0.6 lc %d "
+                           "t 'Wi = %g', '' u ($1 == %g && $5 == 1 ? $2 : NaN):4 w l lw 2 lc %d notitle",
+                        runs[ci].C, opt.gdot_si[r] * opt.tau_si, r + 1, opt.gdot_si[r] * opt.tau_si,
+                        opt.gdot_si[r] * opt.tau_si, r + 1);
+            fprintf(f, "\n");
+        }
+        fprintf(f, "unset multiplot\n");
+    }
     fclose(f);
     make_figures(c);
+}
+
+/* startup_C<C>.csv: each Lees-Edwards run's total viscosity in half
+   blocks, through its start-up (phase 0) and measured blocks (phase 1). */
+static void write_startups(const config *c, const conc_run *cr, const hcbd_hc_params *p, const units *u)
+{
+    char name[64];
+    FILE *f;
+    int r, k;
+    if (!opt.plateau) return;
+    snprintf(name, sizeof name, "startup_C%g.csv", cr->C);
+    if (!(f = open_out(c, name))) return;
+    fprintf(f, "Wi,t_over_tau_lambda,eta_mPas,eta_over_measured,phase\n");
+    for (r = 0; r < opt.ngdot; ++r) {
+        const double bt = ((block_steps(p) + 1) / 2) * p->dt / p->tau_lambda;
+        double t = 0;
+        for (k = 0; k < cr->nser[r]; ++k) {
+            const double w = k < cr->nser_up[r] ? bt : ((k - cr->nser_up[r]) % 2 ? opt.block_tau - bt : bt);
+            fprintf(f, "%g,%.5g,%.6g,%.6g,%d\n", opt.gdot_si[r] * opt.tau_si, t + 0.5 * w,
+                    cr->series[r][k] * u->eta * 1e3, cr->series[r][k] / cr->eta[0][r], k >= cr->nser_up[r]);
+            t += w;
+        }
+    }
+    fclose(f);
 }
 
 int main(int argc, char **argv)
@@ -1175,9 +1338,9 @@ int main(int argc, char **argv)
     hcbd_hc_theory th;
     units u, ut;
     char msg[256];
-    uint64_t checksum = 0;
+    uint64_t checksum = 0, sum_shear[MAXC][MAXG], sum_rp[MAXC], sum_mom = 0;
     double gmax = 0, mach, dp = 0, dscale = 0;
-    int paper = 0, k, r, ci, nmom;
+    int paper = 0, k, r, ci, nmom, njob, jobs, queue[MAXC * (MAXG + 1) + 1], shear_done[MAXC] = {0};
 
     memset(&c, 0, sizeof c);
     c.name = "hcbd_polymer";
@@ -1221,7 +1384,9 @@ int main(int argc, char **argv)
     opt.substeps = paper ? PAPER_SUBSTEPS : 1;
     opt.plateau = paper;
     opt.block_tau = 1;
-    opt.startup_max = 8;
+    opt.startup_max = paper ? 16 : 8;
+    opt.startup_tol = 0.005;
+    opt.startup_lambda = 3;
     snprintf(c.out, sizeof c.out, "out/hcbd_polymer");
     if (!parse_args(argc, argv, &c, own_key, usage)) return c.help ? 0 : 2;
     for (k = 1; k < opt.ngdot; ++k) /* ascending: the summary compares the ends */
@@ -1253,7 +1418,12 @@ int main(int argc, char **argv)
     p->alpha = opt.alpha;
     p->substeps = opt.substeps;
     p->seed = c.def.params.seed;
-    p->threads = c.def.params.threads;
+    /* independent runs side by side scale better than one run's threads
+       (1.4x on two cores at Table I); thermo lines would interleave */
+    jobs = opt.jobs > 0 ? opt.jobs : c.def.params.threads;
+    if (c.thermo_every > 0) jobs = 1;
+    if (jobs > opt.nconc * opt.ngdot) jobs = opt.nconc * opt.ngdot;
+    p->threads = c.def.params.threads / jobs > 1 ? c.def.params.threads / jobs : 1;
     if (hcbd_hc_params_check(p, msg, sizeof msg) != HCBD_OK) {
         fprintf(stderr, "hcbd_polymer: %s\n", msg);
         return 2;
@@ -1275,7 +1445,8 @@ int main(int argc, char **argv)
            "(reverse Poiseuille %.4g x %.4g x %.4g), fluid blobs %d (%d), polymers", paper ? "paper" : "quick",
            p->L[0], p->L[1], p->L[2], prp.L[0], prp.L[1], prp.L[2], blobs_in(p), blobs_in(&prp));
     for (ci = 0; ci < opt.nconc; ++ci) printf(" %d (%d) at C = %g C*", runs[ci].np, runs[ci].np_rp, runs[ci].C);
-    printf(", threads = %d, seed = %llu\n", p->threads, (unsigned long long)p->seed);
+    printf(", threads = %d (%d run%s at a time, %d thread%s each), seed = %llu\n", c.def.params.threads, jobs,
+           jobs > 1 ? "s" : "", p->threads, p->threads > 1 ? "s" : "", (unsigned long long)p->seed);
     printf("# reduced units: sigma = %g m, kT = %.6g J (T = %g K), time unit = %g s, mass unit "
            "kT t^2/sigma^2 = %.6g kg\n", u.len, u.kT, si.T, u.t, u.M);
     print_parameters(&u, p, &ut, &tab);
@@ -1303,10 +1474,11 @@ int main(int argc, char **argv)
     for (r = 0; r < opt.ngdot; ++r) printf(" %g (%.3g)", opt.gdot_si[r], opt.gdot_si[r] * opt.tau_si);
     printf("; Mach gdot_max Ly / c_s = %.3g\n", mach);
     if (opt.plateau)
-        printf("# runs per concentration: Lees-Edwards x %d rates, each a start-up tested for a plateau in chunks of "
-               "%g tau_lambda (%d steps; 4..%d chunks), then %d blocks of %g tau_lambda; reverse Poiseuille %d steps; "
-               "equilibrium %d steps; %d slabs\n", opt.ngdot, opt.block_tau, block_steps(p), opt.startup_max,
-               opt.nblk, opt.block_tau, opt.rp_steps, opt.eq_steps, opt.nslab);
+        printf("# runs per concentration: Lees-Edwards x %d rates, each a start-up of at least 4 x %g tau_lambda / "
+               "(1 + %g Wi), then until its fitted stress growth would shift the mean by less than %g (3..%d "
+               "blocks), then %d blocks of %g tau_lambda (%d steps); reverse Poiseuille %d steps; equilibrium %d "
+               "steps; %d slabs\n", opt.ngdot, opt.startup_lambda, opt.startup_lambda, opt.startup_tol,
+               opt.startup_max, opt.nblk, opt.block_tau, block_steps(p), opt.rp_steps, opt.eq_steps, opt.nslab);
     else
         printf("# runs per concentration: Lees-Edwards %d steps (%.3g tau_lambda) x %d rates, reverse Poiseuille "
                "%d steps; equilibrium %d steps; %d blocks, %d slabs\n", opt.le_steps,
@@ -1320,34 +1492,99 @@ int main(int argc, char **argv)
     /* ---- the runs ---- */
     prog.c = &c;
     if (c.restart[0] && !hc_restart(&c, &rst)) return 2;
-    /* with plateau=1 the start-up is a guess: 4 chunks */
-    prog.total = (int64_t)opt.nconc * ((int64_t)opt.ngdot * (opt.plateau ? (int64_t)(4 + opt.nblk) * block_steps(p)
+    /* with plateau=1 the start-up is a guess: 5 blocks */
+    prog.total = (int64_t)opt.nconc * ((int64_t)opt.ngdot * (opt.plateau ? (int64_t)(5 + opt.nblk) * block_steps(p)
                                                                          : opt.le_steps) + opt.rp_steps) + opt.eq_steps;
+    for (r = 0; r < opt.ngdot; ++r) { /* before the runs, which may overlap */
+        hcbd_hc_params q = *p;
+        q.gdot = opt.gdot_si[r] * u.t;
+        print_limits(&q);
+    }
+    fflush(stdout);
     clock_gettime(CLOCK_MONOTONIC, &prog.t0);
     prog.last = prog.t0;
+    nmom = opt.nconc - 1;
+    for (ci = 0; ci < opt.nconc; ++ci)
+        if (runs[ci].C > runs[nmom].C) nmom = ci;
+    /* One queue of runs, the longest first so that the last to end is
+       short: the fastest rate of each concentration (its reverse-Poiseuille
+       run takes g from it), then the slower rates, the higher
+       concentration first, the reverse-Poiseuille runs before the two
+       fastest rates' neighbours, the momentum run last.  A run whose input
+       is not ready waits for it. */
+    njob = 0;
+    for (ci = opt.nconc - 1; ci >= 0; --ci) queue[njob++] = ci * MAXG + opt.ngdot - 1;
+    for (r = 0; r < opt.ngdot - 1; ++r) {
+        if (r == opt.ngdot - 2 && r > 0)
+            for (ci = opt.nconc - 1; ci >= 0; --ci) queue[njob++] = -1 - ci;
+        for (ci = opt.nconc - 1; ci >= 0; --ci) queue[njob++] = ci * MAXG + r;
+    }
+    if (opt.ngdot < 3)
+        for (ci = opt.nconc - 1; ci >= 0; --ci) queue[njob++] = -1 - ci;
+    queue[njob++] = -1 - MAXC; /* momentum */
+#ifdef _OPENMP
+    if (p->threads > 1 && jobs > 1) omp_set_max_active_levels(2);
+#pragma omp parallel for schedule(dynamic, 1) num_threads(jobs)
+#endif
+    for (k = 0; k < njob; ++k) {
+        const int q = queue[k];
+        int ok;
+        if (q >= 0) {
+            ok = shear_run(p, &runs[q / MAXG], q % MAXG, opt.gdot_si[q % MAXG] * u.t, &sum_shear[q / MAXG][q % MAXG]);
+        } else if (q > -1 - MAXC) {
+            conc_run *cr = &runs[-1 - q];
+            hcbd_hc_params q_rp = prp;
+            int ready = 0, stop = 0;
+            while (!ready && !stop) {
+                PROGRESS_LOCK
+                {
+                    ready = shear_done[-1 - q];
+                    stop = prog.failed;
+                }
+                if (!ready && !stop) sleep_s(0.05);
+            }
+            ok = 0;
+            if (ready) {
+                /* the stress at the edges of the halves, rho g Ly / 4, is
+                   the one measured at the fastest rate: the profile spans
+                   the flow curve */
+                cr->g = opt.g_si > 0 ? opt.g_si / u.acc
+                                     : 4 * cr->eta[0][opt.ngdot - 1] * gmax / (p->rho * prp.L[1]);
+                q_rp.reverse_poiseuille = 1;
+                q_rp.g[0] = cr->g;
+                PROGRESS_LOCK
+                print_limits(&q_rp);
+                ok = rp_run(&prp, cr, &sum_rp[-1 - q]);
+            }
+        } else {
+            ok = momentum_run(p, runs[nmom].np, &dp, &dscale, &sum_mom);
+        }
+        PROGRESS_LOCK
+        {
+            if (!ok) prog.failed = 1;
+            if (q >= 0 && q % MAXG == opt.ngdot - 1) shear_done[q / MAXG] = 1;
+        }
+    }
+    if (prog.failed) return 1;
     for (ci = 0; ci < opt.nconc; ++ci) {
         conc_run *cr = &runs[ci];
         double e[MAXG], g_red[MAXG];
         for (r = 0; r < opt.ngdot; ++r) {
             g_red[r] = opt.gdot_si[r] * u.t;
-            if (!shear_run(p, cr, r, g_red[r], &checksum)) return 1;
+            e[r] = cr->err[0][r] > 0 ? cr->err[0][r] : 1e-12 * fabs(cr->eta[0][r]);
         }
-        for (r = 0; r < opt.ngdot; ++r) e[r] = cr->err[0][r] > 0 ? cr->err[0][r] : 1e-12 * fabs(cr->eta[0][r]);
         cr->fitted = opt.ngdot >= 4 &&
                      hcbd_carreau_fit(g_red, cr->eta[0], e, opt.ngdot, opt.eta_inf, 0, cr->pc, cr->pe, &cr->chi2) ==
                          HCBD_OK &&
                      cr->pc[0] > opt.eta_inf && cr->pc[1] > 0 && cr->pc[2] >= 0;
         /* the fit's eta0 where it is usable, else the slowest rate's viscosity */
         cr->eta0 = cr->fitted ? cr->pc[0] : cr->eta[0][0];
-        /* the stress at the edges of the halves, rho g Ly / 4, is the one
-           measured at the fastest rate: the profile spans the flow curve */
-        cr->g = opt.g_si > 0 ? opt.g_si / u.acc : 4 * cr->eta[0][opt.ngdot - 1] * gmax / (p->rho * prp.L[1]);
-        if (!rp_run(&prp, cr, &checksum)) return 1;
     }
-    nmom = opt.nconc - 1;
-    for (ci = 0; ci < opt.nconc; ++ci)
-        if (runs[ci].C > runs[nmom].C) nmom = ci;
-    if (!momentum_run(p, runs[nmom].np, &dp, &dscale, &checksum)) return 1;
+    for (ci = 0; ci < opt.nconc; ++ci) {
+        for (r = 0; r < opt.ngdot; ++r) mix_checksum(&checksum, sum_shear[ci][r]);
+        mix_checksum(&checksum, sum_rp[ci]);
+    }
+    mix_checksum(&checksum, sum_mom);
     report_progress(1);
 
     /* ---- output ---- */
@@ -1356,6 +1593,7 @@ int main(int argc, char **argv)
         rp_metrics m;
         rp_analyse(&runs[ci], &prp, &m);
         write_profiles(&c, &runs[ci], &prp, &m, &u);
+        write_startups(&c, &runs[ci], p, &u);
         print_summary(&runs[ci], p, &m, &u, mach, prp.L[1]);
     }
     printf("# summary (all runs; momentum: equilibrium run at C = %g C*)\n", runs[nmom].C);

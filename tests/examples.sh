@@ -46,6 +46,18 @@ expect restart "$B/channel_flow" restart=x.ck
 for key in rho eta nbar P0 T dt sigma h; do expect $key "$B/hcbd_fluid" $key=-1; done
 for key in rho eta nbar T dt sigma h xi chi rc p n_max P0 tau_lambda; do expect $key "$B/hcbd_polymer" $key=-1; done
 expect steps "$B/hcbd_polymer" steps=5
+expect jobs "$B/hcbd_polymer" jobs=0
+
+# hcbd_polymer's runs side by side (jobs=2, one thread each) end in the bits
+# of one run at a time on one thread, and of one run on two threads
+t=$(mktemp -d)
+for cfg in "threads=1" "threads=2 jobs=2" "threads=2 jobs=1"; do
+    "$B/hcbd_polymer" steps=60 $cfg out="$t/o" 2>/dev/null | grep '^state_checksum=' >> "$t/sums"
+done
+if [ "$(sort -u "$t/sums" | wc -l)" -eq 1 ] && [ "$(wc -l < "$t/sums")" -eq 3 ]
+then ok "hcbd_polymer: jobs=2, jobs=1 and one thread give the same state_checksum"
+else bad "hcbd_polymer: jobs or threads change the bits: $(tr '\n' ' ' < "$t/sums")"; fi
+rm -rf "$t"
 for key in rho eta nbar P0 T dt sigma h amp; do expect $key "$B/hcbd_sound" $key=0; done
 expect relax_steps "$B/hcbd_sound" relax_steps=-1
 
