@@ -214,6 +214,25 @@ typedef enum hcbd_pair_integrator {
                                rows; no O(dt/tau) temperature bias          */
 } hcbd_pair_integrator;
 
+typedef enum hcbd_brownian_integrator {
+    HCBD_BROWNIAN_EULER = 0, /* Euler-Maruyama, dR = F/xi dt + sqrt(2 kT dt/xi) R_n
+                                (LAMMPS fix brownian): statics off by O(dt)
+                                (+1.5 % configurational temperature for the
+                                2014 stars at dt = 1e-4)                   */
+    HCBD_BROWNIAN_LM = 1     /* the default, not in the papers: Leimkuhler-
+                                Matthews, dR = F/xi dt + sqrt(kT dt/(2 xi))
+                                (R_n + R_(n+1)): one force evaluation and one
+                                more Gaussian triple per step, the same D,
+                                statics off by O(dt^2) in BD (in GI-BD a first-order
+                                rest, a quarter of Euler's and of opposite
+                                sign, stays); the one-step MSD is half
+                                Euler's (successive steps share a deviate).
+                                With HCBD_WALL_REFLECT the displacement stays
+                                Euler-Maruyama: reflecting a step that
+                                shares its deviate with the next piles
+                                carriers up at the wall                     */
+} hcbd_brownian_integrator;
+
 typedef enum hcbd_wall_mode {
     HCBD_WALL_GAUSS = 0,   /* 2016 eq. 18: a exp(-b r^2) from planes inside
                               the walls; depletes the fluid next to them    */
@@ -243,6 +262,8 @@ typedef struct hcbd_params {
     hcbd_potential potential;
     hcbd_noise noise;
     hcbd_pair_integrator pair_integrator; /* GI-BD pairs and walls        */
+    hcbd_brownian_integrator brownian; /* the Brownian displacement (BD and
+                             GI-BD)                                        */
     double f;             /* star arms                                       */
     double sigma;         /* star core size                                  */
     double star_eps;      /* energy unit of the star potential (kT of 2014)  */
@@ -996,7 +1017,7 @@ double hcbd_flory_g1(double phi, double chi);
    only w->err set.
    hcbd_save writes path.tmp and renames it, so a crash while writing never
    leaves a truncated checkpoint under path. */
-#define HCBD_CHECKPOINT_VERSION 2
+#define HCBD_CHECKPOINT_VERSION 3
 size_t hcbd_checkpoint_size(const hcbd_world *w);
 hcbd_result hcbd_checkpoint_save(hcbd_world *w, void *buf, size_t size);
 hcbd_result hcbd_checkpoint_load(hcbd_world *w, const void *buf, size_t size);
@@ -1181,6 +1202,7 @@ hcbd_params hcbd_params_default(void)
     p.potential = HCBD_POT_STAR;
     p.noise = HCBD_NOISE_GAUSS;
     p.pair_integrator = HCBD_PAIR_SHARDLOW;
+    p.brownian = HCBD_BROWNIAN_LM;
     p.f = 128.0;
     p.sigma = 1.0;
     p.star_eps = 1.0;
@@ -1303,6 +1325,8 @@ hcbd_result hcbd_params_check(const hcbd_params *p, char *msg, size_t msg_size)
                 "noise", (int)p->noise);
     HCBD__CHECK(p->pair_integrator == HCBD_PAIR_EULER || p->pair_integrator == HCBD_PAIR_SHARDLOW,
                 "pair_integrator", (int)p->pair_integrator);
+    HCBD__CHECK(p->brownian == HCBD_BROWNIAN_EULER || p->brownian == HCBD_BROWNIAN_LM, "brownian",
+                (int)p->brownian);
     if (p->dynamics == HCBD_DYN_GIBD) {
         HCBD__CHECK(isfinite(p->xip) && p->xip > 0, "xip", p->xip);
         HCBD__CHECK(isfinite(p->tau) && p->tau > 0, "tau", p->tau);
@@ -3717,6 +3741,12 @@ static hcbd_result hcbd__integrate(hcbd_world *w)
     const double iqF = pot ? 1.0 / w->qF : 0.0, iqP = fric ? 1.0 / w->qP : 0.0;
     const double iqW = lag ? 1.0 / w->qW : 0.0;
     const uint64_t bkey = hcbd__mix64(w->bd_key ^ hcbd__mix64((uint64_t)w->step));
+    /* Leimkuhler-Matthews: this step's deviate and the next one's, each
+       drawn from its counter, so a restart or a changed dt needs no
+       carried state */
+    const int lm = noise && w->p.brownian == HCBD_BROWNIAN_LM && !refl;
+    const uint64_t bkey1 = lm ? hcbd__mix64(w->bd_key ^ hcbd__mix64((uint64_t)(w->step + 1))) : 0;
+    const double sdz = lm ? 0.5 * sdr : sdr;
     double dmax = 0.0;
     int bad_step = INT_MAX, bad_nan = INT_MAX, i;
     (void)nt;
@@ -3748,7 +3778,12 @@ static hcbd_result hcbd__integrate(hcbd_world *w)
         if (noise) {
             double z3[3];
             hcbd__noise3(w, hcbd__particle_key(bkey, w->id[i]), z3);
-            for (d = 0; d < 3; ++d) dr[d] += sdr * z3[d];
+            if (lm) {
+                double z1[3];
+                hcbd__noise3(w, hcbd__particle_key(bkey1, w->id[i]), z1);
+                for (d = 0; d < 3; ++d) z3[d] += z1[d];
+            }
+            for (d = 0; d < 3; ++d) dr[d] += sdz * z3[d];
         }
         if (gibd) {
             double vx = w->vx[i] + (F[0] + G[0]) * dt_m + P[0] * inv_m;
@@ -5404,6 +5439,7 @@ static void hcbd__ck_params(hcbd__ck *c, hcbd_params *p)
     HCBD__CK_ENUM(c, p->potential, hcbd_potential);
     HCBD__CK_ENUM(c, p->noise, hcbd_noise);
     HCBD__CK_ENUM(c, p->pair_integrator, hcbd_pair_integrator);
+    HCBD__CK_ENUM(c, p->brownian, hcbd_brownian_integrator);
     hcbd__ck_f64(c, &p->f); hcbd__ck_f64(c, &p->sigma); hcbd__ck_f64(c, &p->star_eps);
     hcbd__ck_f64(c, &p->rcut);
     hcbd__ck_int(c, &p->table_n); hcbd__ck_f64(c, &p->table_r0);

@@ -15,11 +15,12 @@
    variance (as LAMMPS fix brownian does by default); scenes= runs a comma
    list of bd, gibd, gibd-le, channel; skin= sets the Verlet skin (default
    HCBD_AUTO, 0.6); pair=euler takes the papers' explicit pair step instead
-   of the exact sweep.
+   of the exact sweep; brownian=euler the Euler-Maruyama displacement of the
+   papers and of LAMMPS fix brownian instead of Leimkuhler-Matthews.
 
    usage: bench_speed [Nmax=262144] [threads=2] [out=out/bench]
                       [noise=gauss|uniform] [scenes=bd,gibd,...] [skin=0.6]
-                      [pair=shardlow|euler] */
+                      [pair=shardlow|euler] [brownian=lm|euler] */
 #define _POSIX_C_SOURCE 200809L /* clock_gettime, mkdir under -std=c99 */
 #include "../hcbd.h"
 #include <math.h>
@@ -43,6 +44,7 @@ int main(int argc, char **argv)
     hcbd_noise noise = HCBD_NOISE_GAUSS;
     double skin = HCBD_AUTO;
     hcbd_pair_integrator pair = HCBD_PAIR_SHARDLOW;
+    hcbd_brownian_integrator brownian = HCBD_BROWNIAN_LM;
     FILE *csv;
     for (k = 1; k < argc; ++k) {
         if (!strncmp(argv[k], "Nmax=", 5)) Nmax = atoi(argv[k] + 5);
@@ -54,9 +56,12 @@ int main(int argc, char **argv)
         else if (!strncmp(argv[k], "skin=", 5)) skin = atof(argv[k] + 5);
         else if (!strcmp(argv[k], "pair=euler")) pair = HCBD_PAIR_EULER;
         else if (!strcmp(argv[k], "pair=shardlow")) pair = HCBD_PAIR_SHARDLOW;
+        else if (!strcmp(argv[k], "brownian=euler")) brownian = HCBD_BROWNIAN_EULER;
+        else if (!strcmp(argv[k], "brownian=lm")) brownian = HCBD_BROWNIAN_LM;
         else {
             fprintf(stderr, "bench_speed: unknown argument '%s' (Nmax=, threads=, out=, "
-                            "noise=gauss|uniform, scenes=, skin=, pair=shardlow|euler)\n", argv[k]);
+                            "noise=gauss|uniform, scenes=, skin=, pair=shardlow|euler, brownian=lm|euler)\n",
+                    argv[k]);
             return 2;
         }
     }
@@ -95,6 +100,7 @@ int main(int argc, char **argv)
                 d.params.noise = noise;
                 d.params.skin = skin;
                 d.params.pair_integrator = pair;
+                d.params.brownian = brownian;
                 if (dyn == 2) d.params.gdot = 5.0;
                 if (dyn == 3) { /* 2016 sec. IV C */
                     d.params.L[1] = L + 3.0;

@@ -263,6 +263,11 @@ static inline int parse_args(int argc, char **argv, config *c, own_key_fn own, v
             if (!parse_choice(c, key, v, "shardlow", "euler", &x, HCBD_PAIR_SHARDLOW, HCBD_PAIR_EULER)) return 0;
             p->pair_integrator = (hcbd_pair_integrator)x;
         }
+        else if (!strcmp(key, "brownian")) {
+            int x;
+            if (!parse_choice(c, key, v, "lm", "euler", &x, HCBD_BROWNIAN_LM, HCBD_BROWNIAN_EULER)) return 0;
+            p->brownian = (hcbd_brownian_integrator)x;
+        }
         else if (!strcmp(key, "noise")) {
             int x;
             if (!parse_choice(c, key, v, "gauss", "uniform", &x, HCBD_NOISE_GAUSS, HCBD_NOISE_UNIFORM)) return 0;

@@ -43,7 +43,8 @@ static void usage(FILE *f)
             "                      (gdot: Lees-Edwards shear rate, reports the viscosity)\n"
             "  Lx Ly Lz            box edges (default: cube of N/density)\n"
             "  potential=star|ideal  dynamics=gibd|bd  density_norm=2014|2016\n"
-            "  lagged=0|1 noise=gauss|uniform pair=shardlow|euler seed steps threads out\n"
+            "  lagged=0|1 noise=gauss|uniform pair=shardlow|euler\n"
+            "  brownian=lm|euler seed steps threads out\n"
             "  xyz=FILE xyz_every=k  extended XYZ frames (OVITO) every k steps\n"
             "  thermo_every=k      a thermo line every k steps\n"
             "  checkpoint=FILE     save the world at the end; restart=FILE  start from\n"
@@ -547,7 +548,8 @@ int main(int argc, char **argv)
             judge("T_ratio", m, e, "kT", 1, 0, "equipartition", NULL);
         /* the temperature excess the papers' Euler pairs would give; the
            exact sweep (the default) has none */
-        printf("pair=%s\n", p->pair_integrator == HCBD_PAIR_EULER ? "euler" : "shardlow");
+        printf("pair=%s\nbrownian=%s\n", p->pair_integrator == HCBD_PAIR_EULER ? "euler" : "shardlow",
+               p->brownian == HCBD_BROWNIAN_EULER ? "euler" : "lm");
         printf("euler_bias_first_order=%.5f\n", bias);
         printf("T_ratio_expected=%.5f\n", 1.0 + (p->pair_integrator == HCBD_PAIR_EULER
                                                   ? bias : 0.0));

@@ -139,7 +139,7 @@ nu_initial() {
 }
 
 # hcbd's run of the scene: T, nu_initial and the MSD at t = 0.15 with block errors
-"$root/build/gibd_bulk" potential=ideal pair=euler N=500 steps=40000 threads=1 out="$t/hcbd" > "$t/hcbd.txt" 2>/dev/null
+"$root/build/gibd_bulk" potential=ideal pair=euler brownian=euler N=500 steps=40000 threads=1 out="$t/hcbd" > "$t/hcbd.txt" 2>/dev/null
 hT=$(awk -F= '$1 == "T_ratio" { print $2 }' "$t/hcbd.txt")
 heT=$(awk -F= '$1 == "T_ratio_err" { print $2 }' "$t/hcbd.txt")
 hN=$(awk -F= '$1 == "nu_initial" { print $2 }' "$t/hcbd.txt")

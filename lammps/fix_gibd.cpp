@@ -57,6 +57,7 @@ FixGIBD::FixGIBD(LAMMPS *lmp, int narg, char **arg) :
   p = hcbd_params_default();
   p.potential = HCBD_POT_IDEAL; // the conservative forces are LAMMPS's pair style
   p.pair_integrator = HCBD_PAIR_EULER; // what final_integrate does (the papers' scheme)
+  p.brownian = HCBD_BROWNIAN_EULER;    // and its Brownian displacement
   if (narg % 2 == 0) error->all(FLERR, "fix gibd: keyword {} has no value", arg[narg - 1]);
   for (int k = 3; k + 1 < narg; k += 2) {
     const char *key = arg[k], *v = arg[k + 1];

@@ -67,6 +67,7 @@ int main(int argc, char **argv)
     p->rcut = atof(argv[17]);
     p->force_table = 0;
     p->pair_integrator = HCBD_PAIR_EULER;
+    p->brownian = HCBD_BROWNIAN_EULER;
     if (hcbd_world_create(&w, &def) != HCBD_OK || hcbd_world_set_positions(&w, n, x) != HCBD_OK ||
         hcbd_world_set_velocities(&w, v) != HCBD_OK) {
         fprintf(stderr, "gibd_ref: %s\n", w.err.msg);

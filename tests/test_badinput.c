@@ -191,6 +191,8 @@ static const bi_pentry bi_params[] = {
     {B_DEF, NOSET, GE(noise, -1), HCBD_ERR_PARAM, NULL},
     {B_DEF, NOSET, GE(pair_integrator, 2), HCBD_ERR_PARAM, NULL},
     {B_DEF, NOSET, GE(pair_integrator, -1), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GE(brownian, 2), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GE(brownian, -1), HCBD_ERR_PARAM, NULL},
     /* star potential */
     {B_DEF, NOSET, GD(f, 0), HCBD_ERR_PARAM, NULL},
     {B_DEF, NOSET, GD(f, -1), HCBD_ERR_PARAM, NULL},

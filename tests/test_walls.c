@@ -250,6 +250,9 @@ static int temperature_profile(double dt, int noise_beta, hcbd_pair_integrator i
     int k, s, nc = 0, ncen = 0, block = (int)(time / dt) / 200, nblk = (int)(20 * len + 0.5);
     d.params.dt = dt;
     d.params.pair_integrator = integ;
+    /* the slab temperature is the background's: its bias is the pair
+       step's, measured here with the displacement the papers use */
+    d.params.brownian = HCBD_BROWNIAN_EULER;
     d.params.wall_noise_beta = noise_beta;
     if (!make_world(&w, &d)) return 0;
     hcbd_world_place_lattice(&w, 406);

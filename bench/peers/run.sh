@@ -127,9 +127,11 @@ for rep in $(seq 1 "$REPS"); do
     if [ "$hcbd_ok" = 1 ]; then
         d="$tmp/hcbd$rep"
         mkdir -p "$d"
+        # like for like: Euler-Maruyama displacement, as fix brownian (hcbd's
+        # default Leimkuhler-Matthews draws one more Gaussian triple per step)
         for nz in uniform gauss; do
             (cd "$root" && OMP_NUM_THREADS=2 ./build/bench_speed Nmax="$STAR_N" threads=2 noise=$nz \
-                scenes=bd,gibd out="$d" >"$d/speed_$nz.log" 2>&1) ||
+                brownian=euler scenes=bd,gibd out="$d" >"$d/speed_$nz.log" 2>&1) ||
                 { echo "bench/peers: bench_speed failed"; tail -n 5 "$d/speed_$nz.log"; }
         done
         (cd "$root" && OMP_NUM_THREADS=2 ./build/bench_hcbd Nmax="$FLUID_N" threads=2 scenes=sph,sdpd \
