@@ -455,7 +455,8 @@ void test_bd_lm_statics(void)
 /* Statics of the 2014 star scene at the library's defaults (tau = 3.6e-3,
    dt = 1e-4): the exact pairwise update (Shardlow) gives classical BD's
    g(r) and configurational temperature within errors, at the same dt
-   (BD itself is about 1 % hot at this dt: Euler-Maruyama); the papers'
+   (all three with the default Leimkuhler-Matthews displacement, see
+   test_bd_lm_statics; with Euler-Maruyama BD itself is 1.5 % hot); the papers'
    Euler pair step is hotter by the static bias of its explicit coupling
    of R and v, 1.3 % +- 0.14 % in a long reference run (MODEL 12), and the
    run here must agree with that number.  The configurational temperature
