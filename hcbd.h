@@ -1639,6 +1639,11 @@ static inline uint64_t hcbd__particle_key(uint64_t step_key, int32_t id)
     return hcbd__mix64(step_key ^ (uint64_t)(uint32_t)id);
 }
 
+static inline uint64_t hcbd__bd_step_key(const hcbd_world *w, int64_t s)
+{
+    return hcbd__mix64(w->bd_key ^ hcbd__mix64((uint64_t)s));
+}
+
 void hcbd_particle_normals(const hcbd_world *w, int64_t s, int32_t id, double out[3])
 {
     if (!out) return;
@@ -1646,8 +1651,7 @@ void hcbd_particle_normals(const hcbd_world *w, int64_t s, int32_t id, double ou
         out[0] = out[1] = out[2] = NAN;
         return;
     }
-    hcbd__noise3(w, hcbd__particle_key(hcbd__mix64(w->bd_key ^ hcbd__mix64((uint64_t)s)), id),
-                 out);
+    hcbd__noise3(w, hcbd__particle_key(hcbd__bd_step_key(w, s), id), out);
 }
 
 void hcbd_pair_normals(const hcbd_world *w, int64_t s, int32_t a, int32_t b,
@@ -3740,12 +3744,12 @@ static hcbd_result hcbd__integrate(hcbd_world *w)
     const hcbd__box box = hcbd__box_of(w);
     const double iqF = pot ? 1.0 / w->qF : 0.0, iqP = fric ? 1.0 / w->qP : 0.0;
     const double iqW = lag ? 1.0 / w->qW : 0.0;
-    const uint64_t bkey = hcbd__mix64(w->bd_key ^ hcbd__mix64((uint64_t)w->step));
+    const uint64_t bkey = hcbd__bd_step_key(w, w->step);
     /* Leimkuhler-Matthews: this step's deviate and the next one's, each
        drawn from its counter, so a restart or a changed dt needs no
        carried state */
     const int lm = noise && w->p.brownian == HCBD_BROWNIAN_LM && !refl;
-    const uint64_t bkey1 = lm ? hcbd__mix64(w->bd_key ^ hcbd__mix64((uint64_t)(w->step + 1))) : 0;
+    const uint64_t bkey1 = lm ? hcbd__bd_step_key(w, w->step + 1) : 0;
     const double sdz = lm ? 0.5 * sdr : sdr;
     double dmax = 0.0;
     int bad_step = INT_MAX, bad_nan = INT_MAX, i;

@@ -445,6 +445,12 @@ static int block_steps(const hcbd_hc_params *p)
     return n > 0 ? n : 1;
 }
 
+/* Steps of half a block: the start-up's chunks and the series' points. */
+static int half_steps(const hcbd_hc_params *p)
+{
+    return (block_steps(p) + 1) / 2;
+}
+
 /* Mean of the total stress over the next n steps (the stress average
    restarted). */
 static int stress_chunk(hcbd_hc_world *w, run_out *o, int n, const char *what, double s[HCBD_HC_NSTRESS])
@@ -529,29 +535,28 @@ static int shear_run(const hcbd_hc_params *base, conc_run *cr, int r, double gd,
     if (opt.plateau) {
         /* start-up chunks of half a block: the growth is resolved and the
            fastest rates, which level off at once, stop after 3 blocks */
-        const int half = (block_steps(&p) + 1) / 2;
+        const int half = half_steps(&p);
         const double bt = half * p.dt / p.tau_lambda;
-        double c[128];
-        int nc = 0, level = 0;
-        per = block_steps(&p);
         /* at least 3 blocks, and 4 times the assumed slowest relaxation
            time, which shear shortens as 1 / (1 + gdot lambda) */
         const double wl = gd * opt.startup_lambda * p.tau_lambda;
-        int least = (int)ceil(8 * opt.startup_lambda / (1 + wl) / (bt > 0 ? 2 * bt : 1) - 1e-9);
+        int nc = 0, level = 0, least = (int)ceil(4 * opt.startup_lambda / ((1 + wl) * bt) - 1e-9);
         if (least < 6) least = 6;
         if (least > 2 * opt.startup_max) least = 2 * opt.startup_max;
+        per = block_steps(&p);
+        /* the series holds 2 startup_max <= 128 chunks; the fit's ratios
+           do not depend on the 1/gd that makes them viscosities */
         while (nc < 2 * opt.startup_max && !level) {
             if (!stress_chunk(&w, &ro, half, what, s)) goto fail;
-            c[nc++] = s[HCBD_HC_S_TOTAL];
-            if (nc < NSER) cr->series[r][nc - 1] = s[HCBD_HC_S_TOTAL] / gd;
+            cr->series[r][nc++] = s[HCBD_HC_S_TOTAL] / gd;
             if (nc >= least) {
                 double sig;
-                cr->bias[r] = startup_bias(c, nc, bt, opt.nblk * per / half, &cr->relax[r], &sig);
+                cr->bias[r] = startup_bias(cr->series[r], nc, bt, opt.nblk * per / half, &cr->relax[r], &sig);
                 level = cr->bias[r] <= opt.startup_tol || sig < 2;
             }
         }
         cr->startup[r] = (level ? 1 : -1) * nc * bt;
-        cr->nser_up[r] = cr->nser[r] = nc < NSER ? nc : NSER;
+        cr->nser_up[r] = cr->nser[r] = nc;
     } else {
         per = (opt.le_steps - 2 * opt.le_steps / 3) / opt.nblk;
         if (!advance(&w, &ro, opt.le_steps - per * opt.nblk, what)) goto fail;
@@ -560,7 +565,7 @@ static int shear_run(const hcbd_hc_params *base, conc_run *cr, int r, double gd,
     for (b = 0; b < opt.nblk; ++b) {
         if (opt.plateau) { /* two halves, for the series */
             double h1[HCBD_HC_NSTRESS];
-            const int half = (per + 1) / 2;
+            const int half = half_steps(&p);
             if (!stress_chunk(&w, &ro, half, what, h1) || !stress_chunk(&w, &ro, per - half, what, s)) goto fail;
             if (cr->nser[r] + 2 <= NSER) {
                 cr->series[r][cr->nser[r]++] = h1[HCBD_HC_S_TOTAL] / gd;
@@ -1317,7 +1322,7 @@ static void write_startups(const config *c, const conc_run *cr, const hcbd_hc_pa
     if (!(f = open_out(c, name))) return;
     fprintf(f, "Wi,t_over_tau_lambda,eta_mPas,eta_over_measured,phase\n");
     for (r = 0; r < opt.ngdot; ++r) {
-        const double bt = ((block_steps(p) + 1) / 2) * p->dt / p->tau_lambda;
+        const double bt = half_steps(p) * p->dt / p->tau_lambda;
         double t = 0;
         for (k = 0; k < cr->nser[r]; ++k) {
             const double w = k < cr->nser_up[r] ? bt : ((k - cr->nser_up[r]) % 2 ? opt.block_tau - bt : bt);
