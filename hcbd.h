@@ -3611,31 +3611,66 @@ HCBD__INLINE void hcbd__sweep_begin(void *ctx, int i, hcbd__acc *a)
     a->r[3] = 0.0;
 }
 
+/* Per chunk the velocity-free part of every pair (rate, 1 - e, the noise
+   amplitude and, for uniform noise, the deviates) comes first, in loops
+   without dependences that vectorise; the chain of velocity updates
+   through v_i follows.  The same operations in the same order as one pair
+   at a time, so the same bits. */
 HCBD__INLINE void hcbd__sweep_pairs(void *ctx, int i, const hcbd__near *c, int m2, hcbd__acc *a)
 {
     const hcbd__sweep_ctx *s = (const hcbd__sweep_ctx *)ctx;
     hcbd_world *w = s->w;
-    const double m = s->m, inv_m = s->inv_m, iri = w->inv_rho[i];
+    const double m = s->m, inv_m = s->inv_m, iri = w->inv_rho[i], invRc = s->invRc, cs = s->cs;
+    const double two_inv_m = 2.0 * inv_m, hm = 0.5 * m, hkTm = 0.5 * s->kT * m, vle = s->vle;
+    const uint64_t skey = s->skey;
     const int32_t idi = w->id[i];
+    const int noise = s->noise, uniform = w->p.noise == HCBD_NOISE_UNIFORM;
+    const hcbd_real *HCBD__RESTRICT irho = w->inv_rho;
+    const int32_t *HCBD__RESTRICT id = w->id;
     hcbd_real *HCBD__RESTRICT vx = w->vx, *HCBD__RESTRICT vy = w->vy, *HCBD__RESTRICT vz = w->vz;
     hcbd_real vxi = (hcbd_real)a->r[0], vyi = (hcbd_real)a->r[1], vzi = (hcbd_real)a->r[2];
     double sb = a->r[3];
+    double xx[HCBD__CHUNK], cc[HCBD__CHUNK], n0[HCBD__CHUNK], n1[HCBD__CHUNK], n2[HCBD__CHUNK];
+    uint64_t key[HCBD__CHUNK];
     int t;
+    HCBD__OMP(omp simd)
     for (t = 0; t < m2; ++t) {
-        const int j = c->j[t], kk = c->k[t];
-        double aa, sdt, om, cc, Px, Py, Pz;
-        aa = 1.0 - sqrt(c->r2[t]) * s->invRc;
-        sdt = hcbd__sdt(s->cs, iri, w->inv_rho[j], aa);
-        om = hcbd__one_minus_exp(2.0 * sdt * inv_m); /* 1 - e */
-        cc = 0.5 * m * om;
-        Px = -cc * (vxi - vx[j] - kk * s->vle);
-        Py = -cc * (vyi - vy[j]);
-        Pz = -cc * (vzi - vz[j]);
-        if (s->noise) {
-            double z3[3], b = sqrt(0.5 * s->kT * m * om * (2.0 - om));
-            hcbd__noise3(w, hcbd__pair_key(s->skey, idi, w->id[j]), z3);
-            Px += b * z3[0]; Py += b * z3[1]; Pz += b * z3[2];
+        const double aa = 1.0 - sqrt(c->r2[t]) * invRc;
+        const double x = 2.0 * hcbd__sdt(cs, iri, irho[c->j[t]], aa) * inv_m;
+        xx[t] = x;
+        cc[t] = hcbd__one_minus_exp_series(x);
+        key[t] = hcbd__pair_key(skey, idi, id[c->j[t]]);
+    }
+    (void)two_inv_m;
+    for (t = 0; t < m2; ++t)
+        if (!(xx[t] < 0.125)) cc[t] = -expm1(-xx[t]);
+    if (noise && uniform) {
+        const double sc = 1.7320508075688772 / 1048576.0;
+        HCBD__OMP(omp simd)
+        for (t = 0; t < m2; ++t) {
+            const double om = cc[t], bb = sqrt(hkTm * om * (2.0 - om));
+            const uint64_t u = key[t];
+            n0[t] = bb * (((double)(int64_t)(u & 0x1FFFFF) + 0.5 - 1048576.0) * sc);
+            n1[t] = bb * (((double)(int64_t)((u >> 21) & 0x1FFFFF) + 0.5 - 1048576.0) * sc);
+            n2[t] = bb * (((double)(int64_t)((u >> 42) & 0x1FFFFF) + 0.5 - 1048576.0) * sc);
         }
+    } else if (noise) {
+        for (t = 0; t < m2; ++t) {
+            const double om = cc[t], bb = sqrt(hkTm * om * (2.0 - om));
+            double z3[3];
+            hcbd__noise3(w, key[t], z3);
+            n0[t] = bb * z3[0]; n1[t] = bb * z3[1]; n2[t] = bb * z3[2];
+        }
+    }
+    HCBD__OMP(omp simd)
+    for (t = 0; t < m2; ++t) cc[t] = hm * cc[t];
+    for (t = 0; t < m2; ++t) {
+        const int j = c->j[t];
+        double Px, Py, Pz;
+        Px = -cc[t] * (vxi - vx[j] - c->k[t] * vle);
+        Py = -cc[t] * (vyi - vy[j]);
+        Pz = -cc[t] * (vzi - vz[j]);
+        if (noise) { Px += n0[t]; Py += n1[t]; Pz += n2[t]; }
         vxi = (hcbd_real)(vxi + Px * inv_m); vx[j] = (hcbd_real)(vx[j] - Px * inv_m);
         vyi = (hcbd_real)(vyi + Py * inv_m); vy[j] = (hcbd_real)(vy[j] - Py * inv_m);
         vzi = (hcbd_real)(vzi + Pz * inv_m); vz[j] = (hcbd_real)(vz[j] - Pz * inv_m);
