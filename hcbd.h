@@ -396,6 +396,10 @@ typedef struct hcbd_world {
     hcbd__nlist nl;              /* cells and the half neighbour list         */
     int sw_n[2];                 /* rows of the exact pair sweep (y, z)       */
     int32_t *sw_start;
+    /* r^2 of every list entry as the force pass found it, for the sweep of
+       the same step (pr2_ok: written this step) */
+    double *pr2;
+    int pr2_ok;
     double step_limit;
     /* Lees-Edwards: offset s of the image above, its drift since the list
        build, per-particle x shifts applied at crossings (unwrapped x) */
@@ -2256,9 +2260,12 @@ static size_t hcbd__layout(const hcbd_world_def *def, hcbd_world *w, char *base)
     HCBD__ARR(lx, N * sizeof(double));
     HCBD__ARR(fl_p, N * R); HCBD__ARR(fl_b, N * R); HCBD__ARR(fl_c, N * R);
     t->sw_start = NULL;
+    t->pr2 = NULL;
     t->sw_n[0] = t->sw_n[1] = 1;
-    if (gibd && p->pair_integrator == HCBD_PAIR_SHARDLOW && p->Rc > 0)
+    if (gibd && p->pair_integrator == HCBD_PAIR_SHARDLOW && p->Rc > 0) {
         HCBD__ARR(sw_start, ((size_t)hcbd__sweep_rows(p, t->sw_n) + 1) * I);
+        HCBD__ARR(pr2, (size_t)mp * sizeof(double));
+    }
     for (k = 0; k < 3; ++k) {
         t->aF[k] = t->aP[k] = NULL;
         if (pot) HCBD__ARR(aF[k], N * Q);
@@ -3223,10 +3230,12 @@ typedef struct hcbd__near {
     double x[HCBD__CHUNK], y[HCBD__CHUNK], z[HCBD__CHUNK], r2[HCBD__CHUNK];
 } hcbd__near;
 
+/* r2out: r^2 of every entry is also stored there, by entry */
 HCBD__INLINE int hcbd__gather_at(const hcbd_real *HCBD__RESTRICT x, const hcbd_real *HCBD__RESTRICT y,
                                  const hcbd_real *HCBD__RESTRICT z, const int32_t *HCBD__RESTRICT nb,
                                  const hcbd__box *box, double xi, double yi, double zi, int32_t *p,
-                                 int32_t pend, double cut2, hcbd__near *c)
+                                 int32_t pend, double cut2, double *HCBD__RESTRICT r2out,
+                                 hcbd__near *c)
 {
     const int32_t pe = pend - *p > HCBD__CHUNK ? *p + HCBD__CHUNK : pend;
     int m = 0;
@@ -3237,6 +3246,23 @@ HCBD__INLINE int hcbd__gather_at(const hcbd_real *HCBD__RESTRICT x, const hcbd_r
         r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
         c->j[m] = j; c->k[m] = k; c->e[m] = *p;
         c->x[m] = d[0]; c->y[m] = d[1]; c->z[m] = d[2]; c->r2[m] = r2;
+        if (r2out) r2out[*p] = r2;
+        m += r2 < cut2;
+    }
+    return m;
+}
+
+/* The partners within cut from the r^2 an earlier pass stored (r2in, by
+   entry; no shear): for a pass that needs neither the separation's
+   components nor an image. */
+HCBD__INLINE int hcbd__gather_r2(const int32_t *HCBD__RESTRICT nb, const double *HCBD__RESTRICT r2in,
+                                 int32_t *p, int32_t pend, double cut2, hcbd__near *c)
+{
+    const int32_t pe = pend - *p > HCBD__CHUNK ? *p + HCBD__CHUNK : pend;
+    int m = 0;
+    for (; *p < pe; ++*p) {
+        const double r2 = r2in[*p];
+        c->j[m] = nb[*p]; c->k[m] = 0; c->e[m] = *p; c->r2[m] = r2;
         m += r2 < cut2;
     }
     return m;
@@ -3263,6 +3289,8 @@ typedef struct hcbd__trav {
     const hcbd_real *ox, *oy, *oz; /* owners' (the same for a half list)      */
     hcbd__box box;
     double cut2;
+    double *r2out;                 /* store every entry's r^2 (or NULL)       */
+    const double *r2in;            /* take r^2 from there (or NULL)           */
 } hcbd__trav;
 
 static inline hcbd__trav hcbd__trav_make(const hcbd__nlist *L, const hcbd_real *ox, const hcbd_real *oy,
@@ -3274,6 +3302,8 @@ static inline hcbd__trav hcbd__trav_make(const hcbd__nlist *L, const hcbd_real *
     t.x = x; t.y = y; t.z = z; t.ox = ox; t.oy = oy; t.oz = oz;
     t.box = box;
     t.cut2 = cut * cut;
+    t.r2out = NULL;
+    t.r2in = NULL;
     return t;
 }
 
@@ -3295,8 +3325,10 @@ HCBD__INLINE int hcbd__traverse(const hcbd__trav *T, const int32_t *owners, int 
         begin(ctx, i, &a);
         while (p < pend) {
             hcbd__near c;
-            const int m = hcbd__gather_at(T->x, T->y, T->z, T->nb, &T->box, T->ox[i], T->oy[i],
-                                          T->oz[i], &p, pend, T->cut2, &c);
+            const int m = T->r2in ? hcbd__gather_r2(T->nb, T->r2in, &p, pend, T->cut2, &c)
+                                  : hcbd__gather_at(T->x, T->y, T->z, T->nb, &T->box, T->ox[i],
+                                                    T->oy[i], T->oz[i], &p, pend, T->cut2,
+                                                    T->r2out, &c);
             pairs(ctx, i, &c, m, &a);
         }
         b = end(ctx, i, &a);
@@ -3438,22 +3470,27 @@ HCBD__INLINE void hcbd__force_pairs(void *ctx, int i, const hcbd__near *c, int m
     int64_t *HCBD__RESTRICT aFz = w->aF[2], *HCBD__RESTRICT aPx = w->aP[0];
     int64_t *HCBD__RESTRICT aPy = w->aP[1], *HCBD__RESTRICT aPz = w->aP[2];
     int64_t *HCBD__RESTRICT aW = w->aW;
-    int t;
+    /* the owner's sums in locals: a store through a (an int, int64_t)
+       could alias the world's fields and force their reload every pair */
+    const double rc2 = f->rc2, Rc2 = f->Rc2, limF = f->limF, qF = f->qF;
+    int64_t q0 = a->q[0], q1 = a->q[1], q2 = a->q[2], q3 = a->q[3], q4 = a->q[4], q5 = a->q[5];
+    int64_t q6 = a->q[6];
+    int t, bad = a->bad;
     for (t = 0; t < m; ++t) {
         const int j = c->j[t], k = c->k[t];
         const double dx = c->x[t], dy = c->y[t], dz = c->z[t], r2 = c->r2[t];
         double r, Fx = 0, Fy = 0, Fz = 0, Px = 0, Py = 0, Pz = 0;
         r = f->gibd || !f->table || f->flux ? sqrt(r2) : 0.0; /* the table needs r^2 only */
-        if (f->pot && r2 < f->rc2) {
+        if (f->pot && r2 < rc2) {
             const double fr = f->table ? hcbd__star_table(w, r2) : hcbd__force_over_r(w, r, r2);
             int64_t u;
             Fx = fr * dx; Fy = fr * dy; Fz = fr * dz;
-            a->bad |= !(fabs(Fx) <= f->limF && fabs(Fy) <= f->limF && fabs(Fz) <= f->limF);
-            u = hcbd__fix(Fx * f->qF); a->q[0] += u; aFx[j] -= u;
-            u = hcbd__fix(Fy * f->qF); a->q[1] += u; aFy[j] -= u;
-            u = hcbd__fix(Fz * f->qF); a->q[2] += u; aFz[j] -= u;
+            bad |= !(fabs(Fx) <= limF && fabs(Fy) <= limF && fabs(Fz) <= limF);
+            u = hcbd__fix(Fx * qF); q0 += u; aFx[j] -= u;
+            u = hcbd__fix(Fy * qF); q1 += u; aFy[j] -= u;
+            u = hcbd__fix(Fz * qF); q2 += u; aFz[j] -= u;
         }
-        if (f->gibd && r2 < f->Rc2) {
+        if (f->gibd && r2 < Rc2) {
             const double qq = r * f->invRc, aa = 1.0 - qq;
             if (f->fric) {
                 const double sdt = hcbd__sdt(f->cs, iri, w->inv_rho[j], aa); /* S dt/tau */
@@ -3468,14 +3505,14 @@ HCBD__INLINE void hcbd__force_pairs(void *ctx, int i, const hcbd__near *c, int m
                     hcbd__noise3(w, hcbd__pair_key(f->skey, idi, w->id[j]), z3);
                     Px += b * z3[0]; Py += b * z3[1]; Pz += b * z3[2];
                 }
-                a->bad |= !(fabs(Px) <= f->limP && fabs(Py) <= f->limP && fabs(Pz) <= f->limP);
-                u = hcbd__fix(Px * f->qP); a->q[3] += u; aPx[j] -= u;
-                u = hcbd__fix(Py * f->qP); a->q[4] += u; aPy[j] -= u;
-                u = hcbd__fix(Pz * f->qP); a->q[5] += u; aPz[j] -= u;
+                bad |= !(fabs(Px) <= f->limP && fabs(Py) <= f->limP && fabs(Pz) <= f->limP);
+                u = hcbd__fix(Px * f->qP); q3 += u; aPx[j] -= u;
+                u = hcbd__fix(Py * f->qP); q4 += u; aPy[j] -= u;
+                u = hcbd__fix(Pz * f->qP); q5 += u; aPz[j] -= u;
             }
             if (f->lag) {
                 const int64_t v = hcbd__fix(hcbd__weight(f->cwq, qq, aa));
-                a->q[6] += v;
+                q6 += v;
                 aW[j] += v;
             }
         }
@@ -3484,6 +3521,9 @@ HCBD__INLINE void hcbd__force_pairs(void *ctx, int i, const hcbd__near *c, int m
             a->r[5] += dy * Px;
         }
     }
+    a->q[0] = q0; a->q[1] = q1; a->q[2] = q2; a->q[3] = q3; a->q[4] = q4; a->q[5] = q5;
+    a->q[6] = q6;
+    a->bad = bad;
 }
 
 HCBD__INLINE int hcbd__force_end(void *ctx, int i, hcbd__acc *a)
@@ -3501,10 +3541,11 @@ HCBD__INLINE int hcbd__force_end(void *ctx, int i, hcbd__acc *a)
 }
 
 HCBD__INLINE int hcbd__forces_run(hcbd_world *w, int q0, int q1, const int pot, const int fric,
-                                  const int lag, const int flux)
+                                  const int lag, const int flux, const int store)
 {
     hcbd__force_ctx f = hcbd__force_ctx_of(w, pot, fric, lag, flux);
-    const hcbd__trav T = hcbd__trav_make(&w->nl, w->x, w->y, w->z, w->x, w->y, w->z, f.box, w->cutmax);
+    hcbd__trav T = hcbd__trav_make(&w->nl, w->x, w->y, w->z, w->x, w->y, w->z, f.box, w->cutmax);
+    T.r2out = store && w->pr2_ok ? w->pr2 : NULL;
     return hcbd__traverse(&T, w->nl.perm, q0, q1, &f, hcbd__force_begin, hcbd__force_pairs,
                           hcbd__force_end);
 }
@@ -3513,25 +3554,25 @@ HCBD__INLINE int hcbd__forces_run(hcbd_world *w, int q0, int q1, const int pot, 
    only its own work; anything else takes the general one. */
 static int hcbd__forces_pot(void *ctx, int q0, int q1)
 {
-    return hcbd__forces_run((hcbd_world *)ctx, q0, q1, 1, 0, 0, 0);
+    return hcbd__forces_run((hcbd_world *)ctx, q0, q1, 1, 0, 0, 0, 0);
 }
 
 static int hcbd__forces_gibd(void *ctx, int q0, int q1)
 {
-    return hcbd__forces_run((hcbd_world *)ctx, q0, q1, 1, 1, 0, 0);
+    return hcbd__forces_run((hcbd_world *)ctx, q0, q1, 1, 1, 0, 0, 0);
 }
 
 /* forces and this step's density weights in one pass (exact sweep) */
 static int hcbd__forces_dens(void *ctx, int q0, int q1)
 {
-    return hcbd__forces_run((hcbd_world *)ctx, q0, q1, 1, 0, 1, 0);
+    return hcbd__forces_run((hcbd_world *)ctx, q0, q1, 1, 0, 1, 0, 1);
 }
 
 static int hcbd__forces_any(void *ctx, int q0, int q1)
 {
     hcbd_world *w = (hcbd_world *)ctx;
     return hcbd__forces_run(w, q0, q1, w->p.potential != HCBD_POT_IDEAL, w->gibd && !w->shardlow,
-                            w->gibd && w->p.lagged_density, w->flux_on);
+                            w->gibd && w->p.lagged_density, w->flux_on, 0);
 }
 
 /* dens: the density of this step is summed in the same pass (the
@@ -3545,6 +3586,8 @@ static hcbd_result hcbd__forces(hcbd_world *w, int dens)
         if (w->gibd && !w->shardlow) hcbd__zero64(w->aP[d], n);
     }
     if (w->gibd && (w->p.lagged_density || dens)) hcbd__zero64(w->aW, n);
+    /* the exact sweep that follows takes the pairs' r^2 from this pass */
+    w->pr2_ok = dens && w->pr2 && !w->le_on;
     {
         const int pot = w->p.potential != HCBD_POT_IDEAL, fric = w->gibd && !w->shardlow;
         const int plain = !w->flux_on && !(w->gibd && w->p.lagged_density) && pot;
@@ -3552,6 +3595,7 @@ static hcbd_result hcbd__forces(hcbd_world *w, int dens)
                               : plain ? hcbd__forces_gibd : hcbd__forces_any);
     }
     if (dens && bad == INT_MAX) hcbd__density_finish(w);
+    if (bad != INT_MAX) w->pr2_ok = 0;
     if (bad != INT_MAX)
         return hcbd__fail(&w->err, HCBD_ERR_UNSTABLE, w->step, bad,
                           "step %lld: particle id %d has a pair force beyond %g or a "
@@ -3599,7 +3643,7 @@ typedef struct hcbd__sweep_ctx {
     hcbd_world *w;
     double m, inv_m, kT, vle, invRc, cs;
     uint64_t skey, wkey;
-    int noise;
+    int noise, flux;
 } hcbd__sweep_ctx;
 
 /* acc: r[0..2] the owner's velocity (in registers: no partner is the
@@ -3674,7 +3718,7 @@ HCBD__INLINE void hcbd__sweep_pairs(void *ctx, int i, const hcbd__near *c, int m
         vxi = (hcbd_real)(vxi + Px * inv_m); vx[j] = (hcbd_real)(vx[j] - Px * inv_m);
         vyi = (hcbd_real)(vyi + Py * inv_m); vy[j] = (hcbd_real)(vy[j] - Py * inv_m);
         vzi = (hcbd_real)(vzi + Pz * inv_m); vz[j] = (hcbd_real)(vz[j] - Pz * inv_m);
-        sb += c->y[t] * Px;
+        if (s->flux) sb += c->y[t] * Px;
     }
     a->r[0] = vxi; a->r[1] = vyi; a->r[2] = vzi; a->r[3] = sb;
 }
@@ -3723,15 +3767,18 @@ static void hcbd__shardlow(hcbd_world *w)
     for (r = nrows; r > 0; --r) start[r] = start[r - 1];
     start[0] = 0;
     {
-        const hcbd__trav T = hcbd__trav_make(&w->nl, w->x, w->y, w->z, w->x, w->y, w->z,
-                                             hcbd__box_of(w), w->p.Rc);
+        hcbd__trav T = hcbd__trav_make(&w->nl, w->x, w->y, w->z, w->x, w->y, w->z,
+                                       hcbd__box_of(w), w->p.Rc);
         hcbd__sweep_ctx s;
+        if (w->pr2_ok) T.r2in = w->pr2;
+        w->pr2_ok = 0;
         s.w = w;
         s.m = w->m; s.inv_m = w->inv_m; s.kT = w->p.kT; s.vle = w->le_vjump;
         s.invRc = 1.0 / w->p.Rc;
         s.cs = w->cf * w->m * w->m * w->p.dt / w->p.tau;
         s.skey = skey; s.wkey = wkey;
         s.noise = w->has_noise;
+        s.flux = w->flux_on;
         HCBD__OMP(omp parallel num_threads(nt))
         {
             int col;
@@ -3984,6 +4031,7 @@ hcbd_result hcbd_step(hcbd_world *w, int nsteps)
         return hcbd__fail(&w->err, HCBD_ERR_STATE, w->step, -1,
                           "the world has no particles: set positions first");
     for (s = 0; s < nsteps; ++s) {
+        w->pr2_ok = 0;
         r = hcbd__ensure_list(w);
         if (r != HCBD_OK) return r;
         if (HCBD__WALLS && w->n_art > 0) {
