@@ -1598,6 +1598,14 @@ static inline uint64_t hcbd__pair_key(uint64_t step_key, int32_t a, int32_t b)
     return hcbd__mix64(step_key ^ ((hi << 32) | lo));
 }
 
+/* 21 bits of u from bit s on, uniform on (-sqrt 3, sqrt 3): unit variance
+   (through int64_t, the same value, so that a SIMD loop converts it) */
+static inline double hcbd__unif21(uint64_t u, int s)
+{
+    return ((double)(int64_t)((u >> s) & 0x1FFFFF) + 0.5 - 1048576.0) *
+           (1.7320508075688772 / 1048576.0);
+}
+
 /* Three noise numbers of unit variance from a counter key, for any world:
    Gaussian (the ziggurat on a splitmix64 stream started at the key) or
    uniform. */
@@ -1609,11 +1617,9 @@ static inline void hcbd__deviates3(const hcbd__zig *zig, hcbd_noise kind, uint64
     if (kind == HCBD_NOISE_UNIFORM) {
         /* 21 bits per component, uniform on (-sqrt 3, sqrt 3), taken from
            the key itself (already a mix64 output: one hash per pair) */
-        const uint64_t u = key;
-        const double s = 1.7320508075688772 / 1048576.0;
-        z3[0] = ((double)(u & 0x1FFFFF) + 0.5 - 1048576.0) * s;
-        z3[1] = ((double)((u >> 21) & 0x1FFFFF) + 0.5 - 1048576.0) * s;
-        z3[2] = ((double)((u >> 42) & 0x1FFFFF) + 0.5 - 1048576.0) * s;
+        z3[0] = hcbd__unif21(key, 0);
+        z3[1] = hcbd__unif21(key, 21);
+        z3[2] = hcbd__unif21(key, 42);
     } else {
         z3[0] = hcbd__normal(zig, &g);
         z3[1] = hcbd__normal(zig, &g);
@@ -3311,6 +3317,23 @@ typedef void (*hcbd__ev_begin)(void *ctx, int i, hcbd__acc *a);
 typedef void (*hcbd__ev_pairs)(void *ctx, int i, const hcbd__near *c, int m, hcbd__acc *a);
 typedef int (*hcbd__ev_end)(void *ctx, int i, hcbd__acc *a);
 
+/* The owners of a sweep go by id, so their list entries lie anywhere in
+   the list: ask for the entries (and stored r^2) of an owner two ahead
+   while this one's pairs run (no effect on any value). */
+HCBD__INLINE void hcbd__prefetch_owner(const hcbd__trav *T, int i)
+{
+#if defined(__GNUC__) || defined(__clang__)
+    const int32_t p = T->start[i];
+    __builtin_prefetch(T->nb + p);
+    if (T->r2in) {
+        __builtin_prefetch(T->r2in + p);
+        __builtin_prefetch(T->r2in + p + 8);
+    }
+#else
+    (void)T; (void)i;
+#endif
+}
+
 HCBD__INLINE int hcbd__traverse(const hcbd__trav *T, const int32_t *owners, int q0, int q1,
                                 void *ctx, hcbd__ev_begin begin, hcbd__ev_pairs pairs,
                                 hcbd__ev_end end)
@@ -3322,6 +3345,7 @@ HCBD__INLINE int hcbd__traverse(const hcbd__trav *T, const int32_t *owners, int 
         int32_t p = T->start[i];
         hcbd__acc a;
         int b;
+        if (q + 2 < q1) hcbd__prefetch_owner(T, owners[q + 2]);
         begin(ctx, i, &a);
         while (p < pend) {
             hcbd__near c;
@@ -3595,14 +3619,15 @@ static hcbd_result hcbd__forces(hcbd_world *w, int dens)
                               : plain ? hcbd__forces_gibd : hcbd__forces_any);
     }
     if (dens && bad == INT_MAX) hcbd__density_finish(w);
-    if (bad != INT_MAX) w->pr2_ok = 0;
-    if (bad != INT_MAX)
+    if (bad != INT_MAX) {
+        w->pr2_ok = 0;
         return hcbd__fail(&w->err, HCBD_ERR_UNSTABLE, w->step, bad,
                           "step %lld: particle id %d has a pair force beyond %g or a "
                           "momentum exchange beyond %g (the fixed-point range of the "
                           "pair sums: a move of 8 cut-offs in one step), or a non-finite "
                           "one; particles overlap or dt = %g is too long",
                           (long long)w->step, bad, w->limF, w->limP, w->p.dt);
+    }
     return HCBD_OK;
 }
 
@@ -3634,11 +3659,6 @@ static inline double hcbd__one_minus_exp_series(double x)
            (1 - x * (1.0 / 10))))))))));
 }
 
-static inline double hcbd__one_minus_exp(double x)
-{
-    return x < 0.125 ? hcbd__one_minus_exp_series(x) : -expm1(-x);
-}
-
 typedef struct hcbd__sweep_ctx {
     hcbd_world *w;
     double m, inv_m, kT, vle, invRc, cs;
@@ -3665,7 +3685,7 @@ HCBD__INLINE void hcbd__sweep_pairs(void *ctx, int i, const hcbd__near *c, int m
     const hcbd__sweep_ctx *s = (const hcbd__sweep_ctx *)ctx;
     hcbd_world *w = s->w;
     const double m = s->m, inv_m = s->inv_m, iri = w->inv_rho[i], invRc = s->invRc, cs = s->cs;
-    const double two_inv_m = 2.0 * inv_m, hm = 0.5 * m, hkTm = 0.5 * s->kT * m, vle = s->vle;
+    const double hm = 0.5 * m, hkTm = 0.5 * s->kT * m, vle = s->vle;
     const uint64_t skey = s->skey;
     const int32_t idi = w->id[i];
     const int noise = s->noise, uniform = w->p.noise == HCBD_NOISE_UNIFORM;
@@ -3685,18 +3705,15 @@ HCBD__INLINE void hcbd__sweep_pairs(void *ctx, int i, const hcbd__near *c, int m
         cc[t] = hcbd__one_minus_exp_series(x);
         key[t] = hcbd__pair_key(skey, idi, id[c->j[t]]);
     }
-    (void)two_inv_m;
     for (t = 0; t < m2; ++t)
         if (!(xx[t] < 0.125)) cc[t] = -expm1(-xx[t]);
     if (noise && uniform) {
-        const double sc = 1.7320508075688772 / 1048576.0;
         HCBD__OMP(omp simd)
         for (t = 0; t < m2; ++t) {
             const double om = cc[t], bb = sqrt(hkTm * om * (2.0 - om));
-            const uint64_t u = key[t];
-            n0[t] = bb * (((double)(int64_t)(u & 0x1FFFFF) + 0.5 - 1048576.0) * sc);
-            n1[t] = bb * (((double)(int64_t)((u >> 21) & 0x1FFFFF) + 0.5 - 1048576.0) * sc);
-            n2[t] = bb * (((double)(int64_t)((u >> 42) & 0x1FFFFF) + 0.5 - 1048576.0) * sc);
+            n0[t] = bb * hcbd__unif21(key[t], 0);
+            n1[t] = bb * hcbd__unif21(key[t], 21);
+            n2[t] = bb * hcbd__unif21(key[t], 42);
         }
     } else if (noise) {
         for (t = 0; t < m2; ++t) {

@@ -5,8 +5,9 @@
 #
 #   bench/peers/run.sh            (from anywhere; about 8 minutes on 2 cores)
 #
-# lmp is the first of $LMP, lmp on the PATH, build/lammps/lmp (make lammps)
-# and /tmp/peer/build/lmp (../shared/PEERS.md) that has the styles the
+# lmp is the first of $LMP, /tmp/peer/build/lmp (../shared/PEERS.md: -O3
+# -march=native, no MPI), lmp on the PATH and build/lammps/lmp (make lammps:
+# the plugin's engine, -O2 with MPI, the slowest) that has the styles the
 # inputs use: Debian's own lmp lacks fix brownian and the SPH pair styles.  Environment knobs (defaults in brackets):
 #   REPS [3]  STAR_N [32768]  FLUID_N [64000]  SOLUTION_N [8000]
 #   STAR_STEPS [1500]  GAUSS_STEPS [800]  DPD_STEPS [800]
@@ -33,7 +34,7 @@ has_styles() {
     done
 }
 LMP_BIN=""
-for cand in "${LMP:-}" "$(command -v lmp 2>/dev/null)" "$root/build/lammps/lmp" /tmp/peer/build/lmp; do
+for cand in "${LMP:-}" /tmp/peer/build/lmp "$(command -v lmp 2>/dev/null)" "$root/build/lammps/lmp"; do
     [ -n "$cand" ] && command -v "$cand" >/dev/null 2>&1 || continue
     if has_styles "$cand"; then LMP_BIN=$(command -v "$cand"); break; fi
     echo "bench/peers: $cand lacks fix brownian or an SPH/DPD style; not used"
