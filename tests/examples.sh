@@ -23,7 +23,10 @@ expect() {
     else bad "$* -> rc $rc, message: $(printf '%s' "$msg" | head -n 1)"; fi
 }
 
-for e in first_step gibd_bulk shear_flow channel_flow hcbd_fluid hcbd_polymer hcbd_sound; do
+# first_step parses its few keys itself (no example_common.h)
+for a in bogus=1 seed=-3 threads=x N=abc N=1 steps=12.5 steps=100; do expect "${a%%=*}" "$B/first_step" $a; done
+expect tau "$B/first_step" tau=0
+for e in gibd_bulk shear_flow channel_flow hcbd_fluid hcbd_polymer hcbd_sound; do
     expect bogus "$B/$e" bogus=1
     expect seed "$B/$e" seed=-3
     expect threads "$B/$e" threads=x
@@ -34,10 +37,8 @@ for e in first_step gibd_bulk shear_flow channel_flow hcbd_fluid hcbd_polymer hc
 done
 # restart= of a missing file: named by the GI-BD examples as they load it,
 # by the HCBD ones once their runs start
-for e in first_step gibd_bulk hcbd_fluid hcbd_polymer hcbd_sound; do expect /nonexistent/ck "$B/$e" restart=/nonexistent/ck; done
-expect N "$B/first_step" N=abc
-expect tau "$B/first_step" tau=0
-for e in first_step gibd_bulk shear_flow channel_flow; do
+for e in gibd_bulk hcbd_fluid hcbd_polymer hcbd_sound; do expect /nonexistent/ck "$B/$e" restart=/nonexistent/ck; done
+for e in gibd_bulk shear_flow channel_flow; do
     expect dt "$B/$e" dt=abc
     expect steps "$B/$e" steps=12.5
 done
@@ -62,21 +63,31 @@ for key in rho eta nbar P0 T dt sigma h amp; do expect $key "$B/hcbd_sound" $key
 expect relax_steps "$B/hcbd_sound" relax_steps=-1
 
 # run output: a checkpoint and a restart continue the run bit for bit (the
-# checkpoint after 2000 + 2000 steps equals the one after one run of 4000),
-# with a frame every xyz_every steps and a thermo line every thermo_every
+# state after 2000 + 2000 steps equals the one after one run of 4000; the
+# checkpoint files differ only in the count of list builds, one more after
+# a restart), with a frame every xyz_every steps and a thermo line every
+# thermo_every
 t=$(mktemp -d)
-"$B/first_step" N=200 steps=2000 checkpoint="$t/a" >/dev/null &&
-    "$B/first_step" restart="$t/a" steps=2000 checkpoint="$t/b" xyz="$t/t.xyz" xyz_every=500 \
-        thermo_every=500 > "$t/log" &&
-    "$B/first_step" N=200 steps=4000 checkpoint="$t/c" >/dev/null
-if cmp -s "$t/b" "$t/c" && [ "$(grep -c Lattice "$t/t.xyz")" -eq 5 ] &&
-    [ "$(grep -c '^[0-9]' "$t/log")" -eq 4 ]
-then ok "first_step: checkpoint + restart = one run; 5 frames, 4 thermo lines"
-else bad "first_step: checkpoint/restart/xyz/thermo output wrong"; fi
+g="$B/gibd_bulk potential=ideal N=200"
+$g steps=2000 checkpoint="$t/a" out="$t/o" >/dev/null 2>&1 &&
+    "$B/gibd_bulk" restart="$t/a" steps=2000 xyz="$t/t.xyz" xyz_every=500 \
+        thermo_every=500 out="$t/o" > "$t/log" 2>/dev/null &&
+    $g steps=4000 out="$t/o" > "$t/one" 2>/dev/null
+if [ -n "$(grep '^state_checksum=' "$t/one")" ] &&
+    [ "$(grep '^state_checksum=' "$t/log")" = "$(grep '^state_checksum=' "$t/one")" ] &&
+    [ "$(grep -c Lattice "$t/t.xyz")" -eq 5 ] && [ "$(grep -c '^[0-9]' "$t/log")" -eq 4 ]
+then ok "gibd_bulk: checkpoint + restart = one run; 5 frames, 4 thermo lines"
+else bad "gibd_bulk: checkpoint/restart/xyz/thermo output wrong"; fi
 rm -rf "$t"
 
 # help: exit 0, the usage on stdout with the common keys and the limits
-for e in first_step gibd_bulk shear_flow channel_flow hcbd_fluid hcbd_polymer hcbd_sound; do
+for h in help=1 help --help -h; do
+    o=$("$B/first_step" $h 2>/dev/null); rc=$?
+    if [ $rc -eq 0 ] && printf '%s' "$o" | grep -q "usage: first_step .*steps=10000"
+    then ok "first_step $h: usage, rc 0"
+    else bad "first_step $h: rc $rc, output: $(printf '%s' "$o" | head -n 1)"; fi
+done
+for e in gibd_bulk shear_flow channel_flow hcbd_fluid hcbd_polymer hcbd_sound; do
     for h in help=1 help --help -h; do
         o=$("$B/$e" $h 2>/dev/null); rc=$?
         if [ $rc -eq 0 ] && printf '%s' "$o" | grep -q "usage: $e" && printf '%s' "$o" | grep -q "steps >= 1000"
@@ -87,12 +98,12 @@ done
 
 # restart= refuses the keys a checkpoint would override; run keys apply
 t=$(mktemp -d)
-"$B/first_step" N=200 steps=1000 checkpoint="$t/a" >/dev/null 2>&1
-expect tau "$B/first_step" tau=0.05 restart="$t/a"
+"$B/gibd_bulk" potential=ideal N=200 steps=1000 checkpoint="$t/a" out="$t/o" >/dev/null 2>&1
+expect tau "$B/gibd_bulk" tau=0.05 restart="$t/a"
 expect gdot "$B/gibd_bulk" gdot=1 restart="$t/a"
-expect seed "$B/first_step" seed=3 restart="$t/a"
-if "$B/first_step" restart="$t/a" steps=1000 threads=2 >/dev/null 2>&1; then ok "first_step: restart= with steps and threads runs"
-else bad "first_step: restart= with steps and threads refused"; fi
+expect seed "$B/gibd_bulk" seed=3 restart="$t/a"
+if "$B/gibd_bulk" restart="$t/a" steps=1000 threads=2 out="$t/o" >/dev/null 2>&1; then ok "gibd_bulk: restart= with steps and threads runs"
+else bad "gibd_bulk: restart= with steps and threads refused"; fi
 
 # a parameter file: its keys, the command line's over them; a bad line named
 printf 'N = 200   # carriers\nsteps=1000\ntau=0.0036\n' > "$t/run.conf"
@@ -107,8 +118,8 @@ if [ "$(grep '^state_checksum=' "$t/r.txt")" = "$(grep '^state_checksum=' "$t/g.
 then ok "gibd_bulk: out/run.conf repeats the run"
 else bad "gibd_bulk: run.conf does not repeat the run"; fi
 printf 'N=200\nnot a key\n' > "$t/bad.conf"
-expect "line 2" "$B/first_step" @"$t/bad.conf"
-expect "parameter file" "$B/first_step" in="$t/missing.conf"
+expect "line 2" "$B/gibd_bulk" @"$t/bad.conf"
+expect "parameter file" "$B/gibd_bulk" in="$t/missing.conf"
 # the summary: key=value, a verdict table with units, errors and
 # expectations, key_verdict lines, and where the output went last
 if grep -q '^T_ratio=' "$t/g.txt" && grep -q '^#   T_ratio  *[0-9.]* +- [0-9.e-]* *\[kT\] *expected 1 (equipartition): ok' "$t/g.txt" &&
