@@ -225,6 +225,9 @@ static const bi_pentry bi_params[] = {
     {B_DEF, NOSET, GD(fext[1], INFINITY), HCBD_ERR_PARAM, NULL},
     {B_DEF, NOSET, GD(fext[2], -INFINITY), HCBD_ERR_PARAM, NULL},
     {B_DEF, NOSET, GI(fext_background_only, 2), HCBD_ERR_PARAM, NULL},
+    /* BD has no background for the force to drive (once silently dropped) */
+    {B_BD, GD(fext[0], 1.0), GI(fext_background_only, 1), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GD(fext[2], NAN), HCBD_ERR_PARAM, NULL},
     {B_DEF, NOSET, GD(gdot, NAN), HCBD_ERR_PARAM, NULL},
     {B_DEF, NOSET, GD(gdot, INFINITY), HCBD_ERR_PARAM, NULL},
     {B_BD, NOSET, GD(gdot, 1), HCBD_ERR_PARAM, NULL},
