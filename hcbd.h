@@ -111,11 +111,34 @@
      pairs, polymer density, transient pairs, forces, coupling); the step
      and its guard; observables; checkpoints, lifecycle, XYZ and thermo.
 
+   NAMING
+     hcbd_<thing>_<verb>, the thing first.  A world: hcbd_world_def_default,
+     hcbd_world_bytes, _init (in the caller's memory), _create (allocated),
+     _destroy; particles in and out in id order with hcbd_world_set_* /
+     hcbd_world_get_* / hcbd_world_place_*.  The calls that run or measure
+     a world take it first and say what they do: hcbd_step,
+     hcbd_temperature, hcbd_forces, hcbd_save, hcbd_xyz_write, ...  The
+     stress a run accumulates: hcbd_stress_enable / hcbd_stress_read; the
+     pair virial of one configuration: hcbd_virial_stress.  The HCBD world
+     repeats this under hcbd_hc_ (hcbd_hc_world_create, hcbd_hc_step,
+     hcbd_hc_stress_enable, ...).  Accumulators (g(r), correlators, MSD,
+     profiles, slabs): _bytes, _init, then _add or _sample to feed them and
+     _result to read them (never changing them); a correlator's series ends
+     with hcbd_mtcorr_finalize, a slab sample of per-particle adds with
+     hcbd_slabs_end_sample.  Parameters: *_default() and *_check().
+     Functions of numbers alone (kernels, the star force, Flory-Huggins)
+     are named by what they compute.  Old names kept for one version, with
+     a deprecation warning: hcbd_get_positions, hcbd_get_velocities,
+     hcbd_stress, hcbd_flux_enable, hcbd_flux_read.
+
    ERRORS
-     Every public function returns hcbd_result (HCBD_OK = 0).  On failure
+     Every call that can fail returns hcbd_result (HCBD_OK = 0).  On failure
      w->err holds the code, the step, the particle id (or -1) and a message
      naming the bad value; a refused call leaves the world as it was.  The
-     library never exits or aborts.  Run-time guards (guard_every,
+     calls that cannot fail return what they compute (a value, a count, a
+     size, a checksum: 0, NaN or an empty result for a NULL or unset
+     argument) or nothing (_destroy, _add).  The library never exits or
+     aborts.  Run-time guards (guard_every,
      guard_step, guard_walls) stop a step with the step, the particle and
      the cause; hcbd_xyz_offenders writes the offenders as an XYZ frame.
 
@@ -406,7 +429,7 @@ typedef struct hcbd_world {
     int le_on;
     double le_offset, le_vjump;
     double *lx;
-    /* shear-stress flux accumulation (hcbd_flux_enable) */
+    /* shear-stress flux accumulation (hcbd_stress_enable) */
     int flux_on;
     int64_t flux_steps;
     double flux_sum[3];
@@ -466,8 +489,8 @@ hcbd_result hcbd_step(hcbd_world *w, int nsteps);
 
 /* >>observables (cost nothing unless called) ------------------------------*/
 /* Positions (unwrapped if unwrapped != 0) and velocities, id order, 3n. */
-hcbd_result hcbd_get_positions(const hcbd_world *w, double *xyz, int unwrapped);
-hcbd_result hcbd_get_velocities(const hcbd_world *w, double *v);
+hcbd_result hcbd_world_get_positions(const hcbd_world *w, double *xyz, int unwrapped);
+hcbd_result hcbd_world_get_velocities(const hcbd_world *w, double *v);
 /* Background kinetic temperature sum m u^2 / (3 (n - 1)) of the peculiar
    velocities u (relative to the mean and, under shear, to the imposed
    profile gdot (y - Ly/2)); 0 in BD. */
@@ -476,7 +499,7 @@ double hcbd_temperature(const hcbd_world *w);
 void hcbd_momentum(const hcbd_world *w, double p[3]);
 /* Pair-virial stress of the conservative pair forces,
    s[3a+b] = -(1/V) sum_{i<j} x_ij,a F_ij,b. */
-hcbd_result hcbd_stress(hcbd_world *w, double s[9]);
+hcbd_result hcbd_virial_stress(hcbd_world *w, double s[9]);
 /* Configurational friction averages over particles, with the densities the
    next step's friction uses: out[0] = <sum_j f_ij>, out[1] = <sum_j f_ij
    r_ij^2>, out[2] = <sum_j f_ij (1 - cos k.x_ij)> averaged over k along x,
@@ -506,14 +529,14 @@ hcbd_result hcbd_config_temperature(hcbd_world *w, double out[2]);
    the bits do not depend on the storage order. */
 hcbd_result hcbd_forces(hcbd_world *w, double *f);
 /* Shear-stress flux, accumulated every step while enabled (off by default,
-   and then it costs nothing).  hcbd_flux_enable(w, 1) clears the sums and
-   starts; hcbd_flux_read gives the averages over the steps since:
+   and then it costs nothing).  hcbd_stress_enable(w, 1) clears the sums and
+   starts; hcbd_stress_read gives the averages over the steps since:
    out[0] pair forces (2016 eq. 26), out[1] background friction and noise
    exchanges, out[2] momentum carried across the Lees-Edwards boundary by
    crossing particles (MODEL 5), out[3] their sum; each as the shear stress
    S_yx = -(1/V) sum_{i<j} y_ij F_ij,x, so the viscosity is out / gdot. */
-hcbd_result hcbd_flux_enable(hcbd_world *w, int on);
-hcbd_result hcbd_flux_read(const hcbd_world *w, double out[4], int64_t *nsteps);
+hcbd_result hcbd_stress_enable(hcbd_world *w, int on);
+hcbd_result hcbd_stress_read(const hcbd_world *w, double out[4], int64_t *nsteps);
 /* Real particles found inside a wall after a step (particle-steps; never
    silently accepted, but not an error: the Gaussian repulsion is soft), and
    the last one's step and id (-1 if none). */
@@ -1083,6 +1106,38 @@ hcbd_result hcbd_slabs_init(hcbd_slabs *s, const double L[3], int nslab, int nva
 void hcbd_slabs_add(hcbd_slabs *s, double y, const double *vals);
 void hcbd_slabs_end_sample(hcbd_slabs *s);
 int64_t hcbd_slabs_result(const hcbd_slabs *s, double *out);
+
+/* >>old names, kept for one version (the compiler warns where it can) ----*/
+#if defined(__GNUC__) || defined(__clang__)
+#define HCBD_DEPRECATED(use) __attribute__((deprecated("use " use)))
+#else
+#define HCBD_DEPRECATED(use)
+#endif
+HCBD_DEPRECATED("hcbd_world_get_positions")
+static inline hcbd_result hcbd_get_positions(const hcbd_world *w, double *xyz, int unwrapped)
+{
+    return hcbd_world_get_positions(w, xyz, unwrapped);
+}
+HCBD_DEPRECATED("hcbd_world_get_velocities")
+static inline hcbd_result hcbd_get_velocities(const hcbd_world *w, double *v)
+{
+    return hcbd_world_get_velocities(w, v);
+}
+HCBD_DEPRECATED("hcbd_virial_stress")
+static inline hcbd_result hcbd_stress(hcbd_world *w, double s[9])
+{
+    return hcbd_virial_stress(w, s);
+}
+HCBD_DEPRECATED("hcbd_stress_enable")
+static inline hcbd_result hcbd_flux_enable(hcbd_world *w, int on)
+{
+    return hcbd_stress_enable(w, on);
+}
+HCBD_DEPRECATED("hcbd_stress_read")
+static inline hcbd_result hcbd_flux_read(const hcbd_world *w, double out[4], int64_t *nsteps)
+{
+    return hcbd_stress_read(w, out, nsteps);
+}
 
 #ifdef __cplusplus
 }
@@ -4011,7 +4066,7 @@ static void hcbd__flux_add(hcbd_world *w)
     w->flux_steps++;
 }
 
-hcbd_result hcbd_flux_enable(hcbd_world *w, int on)
+hcbd_result hcbd_stress_enable(hcbd_world *w, int on)
 {
     if (!w) return HCBD_ERR_NULL;
     hcbd__clear(&w->err);
@@ -4023,7 +4078,7 @@ hcbd_result hcbd_flux_enable(hcbd_world *w, int on)
     return HCBD_OK;
 }
 
-hcbd_result hcbd_flux_read(const hcbd_world *w, double out[4], int64_t *nsteps)
+hcbd_result hcbd_stress_read(const hcbd_world *w, double out[4], int64_t *nsteps)
 {
     int k;
     if (!w || !out) return HCBD_ERR_NULL;
@@ -4081,7 +4136,7 @@ hcbd_result hcbd_step(hcbd_world *w, int nsteps)
 }
 
 /* >>observables */
-hcbd_result hcbd_get_positions(const hcbd_world *w, double *xyz, int unwrapped)
+hcbd_result hcbd_world_get_positions(const hcbd_world *w, double *xyz, int unwrapped)
 {
     int i;
     if (!w || !xyz) return HCBD_ERR_NULL;
@@ -4094,7 +4149,7 @@ hcbd_result hcbd_get_positions(const hcbd_world *w, double *xyz, int unwrapped)
     return HCBD_OK;
 }
 
-hcbd_result hcbd_get_velocities(const hcbd_world *w, double *v)
+hcbd_result hcbd_world_get_velocities(const hcbd_world *w, double *v)
 {
     int i;
     if (!w || !v) return HCBD_ERR_NULL;
@@ -4204,7 +4259,7 @@ static void hcbd__energy_fn(void *c, int i, int j, double dx, double dy, double 
     s->e += hcbd__pair_energy(s->w, sqrt(r2));
 }
 
-hcbd_result hcbd_stress(hcbd_world *w, double s[9])
+hcbd_result hcbd_virial_stress(hcbd_world *w, double s[9])
 {
     hcbd__stress_ctx c;
     hcbd_result r;

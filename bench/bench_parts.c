@@ -114,7 +114,7 @@ static double time_part(int part, double scale, int *n)
     if (!melt) {
         melt = (double *)malloc(3 * sizeof(double) * N);
         if (!melt || hcbd_world_place_lattice(&w, N) != HCBD_OK || hcbd_step(&w, 300) != HCBD_OK ||
-            hcbd_get_positions(&w, melt, 0) != HCBD_OK) {
+            hcbd_world_get_positions(&w, melt, 0) != HCBD_OK) {
             fprintf(stderr, "bench_parts: melting failed: %s\n", w.err.msg);
             return -1;
         }
@@ -131,7 +131,7 @@ static double time_part(int part, double scale, int *n)
         int i;
         for (i = 0; i < N; ++i) melt[3 * i + 1] -= 1.5;
     }
-    if (part == 5) hcbd_flux_enable(&w, 1);
+    if (part == 5) hcbd_stress_enable(&w, 1);
     for (rep = 0; rep < 3; ++rep) {
         double t0 = now();
         if (hcbd_step(&w, steps) != HCBD_OK) {

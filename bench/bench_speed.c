@@ -119,7 +119,7 @@ int main(int argc, char **argv)
                     return 1;
                 }
                 r0 = w.nl.n_rebuilds;
-                if (dyn == 2) hcbd_flux_enable(&w, 1);
+                if (dyn == 2) hcbd_stress_enable(&w, 1);
                 for (rep = 0; rep < reps; ++rep) {
                     double dtm;
                     t0 = now();

@@ -234,7 +234,7 @@ static void nu_point(hcbd_pair_integrator integ, hcbd_noise noise, double ratio,
                 int i, a;
                 hcbd_friction_average(&w, NK, out);
                 mf += out[2] / (p.tau * k * k);
-                hcbd_get_positions(&w, xyz, 0);
+                hcbd_world_get_positions(&w, xyz, 0);
                 for (a = 0; a < 3; ++a) {
                     double re = 0, im = 0;
                     for (i = 0; i < N; ++i) {
@@ -295,8 +295,8 @@ static void channel_point(hcbd_pair_integrator integ, hcbd_noise noise, double r
     nu_eff = 0.8 * th.nu;
     v = (double *)malloc(2 * 3 * 406 * sizeof(double));
     xyz = v + 3 * 406;
-    hcbd_get_velocities(&w, v);
-    hcbd_get_positions(&w, xyz, 0);
+    hcbd_world_get_velocities(&w, v);
+    hcbd_world_get_positions(&w, xyz, 0);
     for (i = 0; i < 406; ++i) {
         double y = xyz[3 * i + 1];
         if (y > p.wall_thickness && y < p.L[1] - p.wall_thickness)

@@ -187,7 +187,7 @@ static void gibd_sample(void *ctx, double *out)
     const hcbd_params *p = &g->w.p;
     double P[3];
     int a;
-    hcbd_get_positions(&g->w, g->xyz, 0);
+    hcbd_world_get_positions(&g->w, g->xyz, 0);
     hcbd_momentum(&g->w, P);
     if (!g->channel) {
         out[0] = hcbd_temperature(&g->w);
@@ -196,7 +196,7 @@ static void gibd_sample(void *ctx, double *out)
         for (a = 0; a < 3; ++a) out[2] += slab_rms(g->xyz, g->w.n, a, 0, p->L[a], g->nslab) / 3;
         return;
     }
-    hcbd_get_velocities(&g->w, g->v);
+    hcbd_world_get_velocities(&g->w, g->v);
     out[0] = slab_temperature(g->xyz, g->v, g->w.n, g->w.m, p->wall_thickness,
                               p->L[1] - p->wall_thickness, g->nslab);
     out[1] = P[0] / (g->w.n * g->w.m);

@@ -231,7 +231,7 @@ int main(int argc, char **argv)
         }
     }
     if (!run_out_open(&c, &ro, &w, NULL)) return 2;
-    if (p->gdot != 0.0 && !w.flux_on) hcbd_flux_enable(&w, 1); /* a restart keeps its sums */
+    if (p->gdot != 0.0 && !w.flux_on) hcbd_stress_enable(&w, 1); /* a restart keeps its sums */
     clock_gettime(CLOCK_MONOTONIC, &t0);
     for (b = 0; b < NB; ++b) {
         double Tb = 0, mfb = 0, effb = 0, sfb = 0, fk[3] = {0, 0, 0}, skb[3] = {0, 0, 0};
@@ -246,7 +246,7 @@ int main(int argc, char **argv)
                     hcbd_transverse_current(&w, k + 1, j);
                     hcbd_mtcorr_add(&ct[b][k], j);
                 }
-                hcbd_get_velocities(&w, vel);
+                hcbd_world_get_velocities(&w, vel);
                 hcbd_mtcorr_add(&vacf, vel);
                 if (g % 10 == 0) { Tb += hcbd_temperature(&w); ++nTb; }
                 if (g % 50 == 0) {
@@ -254,7 +254,7 @@ int main(int argc, char **argv)
                     int i, a;
                     /* S(k) = |rho_k|^2 / N: with total momentum exactly
                        zero, C_t(k,0) = (kT/m)(1 - S(k)/N) */
-                    hcbd_get_positions(&w, xyz, 0);
+                    hcbd_world_get_positions(&w, xyz, 0);
                     for (k = 2; k >= 0; --k) {
                         hcbd_friction_average(&w, k + 1, out);
                         fk[k] += out[2];
@@ -276,12 +276,12 @@ int main(int argc, char **argv)
             }
             if (p->potential != HCBD_POT_IDEAL && g % 5 == 0) {
                 double st[9], o[3];
-                hcbd_stress(&w, st);
+                hcbd_virial_stress(&w, st);
                 o[0] = st[1]; o[1] = st[2]; o[2] = st[5];
                 hcbd_mtcorr_add(&gt, o);
             }
             if (g % 5 == 0) {
-                hcbd_get_positions(&w, xyz, 1);
+                hcbd_world_get_positions(&w, xyz, 1);
                 hcbd_msd_add(&msd, xyz);
             }
             if (g % 200 == 0) hcbd_rdf_sample(&rdf, &w);
@@ -620,7 +620,7 @@ int main(int argc, char **argv)
     if (p->gdot != 0.0) {
         /* shear stress / gdot for each contribution (MODEL 5) */
         double fl[4];
-        hcbd_flux_read(&w, fl, NULL);
+        hcbd_stress_read(&w, fl, NULL);
         printf("eta_particle_measured=%.6g\neta_background_measured=%.6g\n", fl[0] / p->gdot, fl[1] / p->gdot);
         printf("eta_carrier_measured=%.6g\neta_total_measured=%.6g\n", fl[2] / p->gdot, fl[3] / p->gdot);
         printf("eta_background_theory=%.6g\n", p->Rc * p->Rc * c.density * p->xip / 28);

@@ -129,12 +129,12 @@ int main(int argc, char **argv)
             }
             for (b = 0; b < NB; ++b) {
                 double fl[4];
-                hcbd_flux_enable(&w, 1);
+                hcbd_stress_enable(&w, 1);
                 if (run_steps(&c, &ro, &w, (c.steps - start) / NB) != HCBD_OK) {
                     fprintf(stderr, "shear_flow: xip = %g, gdot = %g: %s\n", xips[x], rates[r], w.err.msg);
                     return 1;
                 }
-                hcbd_flux_read(&w, fl, NULL);
+                hcbd_stress_read(&w, fl, NULL);
                 for (k = 0; k < 4; ++k) blk[k][b] = fl[k] / rates[r];
             }
             for (k = 0; k < 4; ++k) mean_err(blk[k], NB, &eta[x][k][r], &err[x][k][r]);

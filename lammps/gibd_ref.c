@@ -84,8 +84,8 @@ int main(int argc, char **argv)
         return 1;
     }
     printf("%.17g %.17g %.17g\n", fr[0], fr[1], fr[2]);
-    hcbd_get_positions(&w, x, 0);
-    hcbd_get_velocities(&w, v);
+    hcbd_world_get_positions(&w, x, 0);
+    hcbd_world_get_velocities(&w, v);
     out = fopen(argv[2], "w");
     if (!out) { fprintf(stderr, "gibd_ref: cannot write %s\n", argv[2]); return 1; }
     for (i = 0; i < n; ++i)

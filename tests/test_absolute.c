@@ -221,12 +221,12 @@ static abs_dev abs_compare_step(hcbd_world *w, double tol_x, double tol_v)
     const double m = w->gibd ? w->m : 1, gF = 0.5 * (n - 1) / w->qF;
     const double gP = w->gibd && w->qP > 0 ? 0.5 * (n - 1) / w->qP : 0;
     const double gv = (gF * w->p.dt + gP) / m, gx = gF * w->p.dt / w->p.xi + gv * w->p.dt;
-    hcbd_get_positions(w, x, 0);
-    hcbd_get_velocities(w, v);
+    hcbd_world_get_positions(w, x, 0);
+    hcbd_world_get_velocities(w, v);
     abs_ref_step(w, x, v, x1, v1, rho);
     if (!run(w, 1)) return e;
-    hcbd_get_positions(w, xa, 0);
-    hcbd_get_velocities(w, va);
+    hcbd_world_get_positions(w, xa, 0);
+    hcbd_world_get_velocities(w, va);
     for (i = 0; i < n; ++i) {
         for (c = 0; c < 3; ++c) {
             ld dx = abs_mi((ld)xa[3 * i + c] - x[3 * i + c], w->p.L[c]) - (x1[3 * i + c] - x[3 * i + c]);
@@ -278,10 +278,10 @@ void test_abs_pair_friction(void)
                 }
                 hcbd_world_set_positions(&w, 2, xyz);
                 hcbd_world_set_velocities(&w, v0);
-                hcbd_get_positions(&w, xyz, 0); /* as stored */
+                hcbd_world_get_positions(&w, xyz, 0); /* as stored */
                 if (!run(&w, 1)) return;
-                hcbd_get_velocities(&w, v1);
-                hcbd_get_positions(&w, x1, 0);
+                hcbd_world_get_velocities(&w, v1);
+                hcbd_world_get_positions(&w, x1, 0);
                 {
                     ld dd[3];
                     r = abs_sep(xyz, 0, 1, d.params.L, dd);
@@ -473,12 +473,12 @@ void test_abs_pair_noise_variance(void)
                 for (s = 0; s < NST; ++s) {
                     ld sum = 0, salt = 0;
                     hcbd_world_set_velocities(&w, zero);
-                    hcbd_get_positions(&w, xyz, 0);
+                    hcbd_world_get_positions(&w, xyz, 0);
                     /* first and last step of a block: the dimers drift by
                        ~0.015 per step against a margin of 1.3 */
                     if (s == 0 || s == NST - 1) gap = fmin(gap, abs_dimer_gap(xyz, p->L));
                     if (!run(&w, 1)) return;
-                    hcbd_get_velocities(&w, v);
+                    hcbd_world_get_velocities(&w, v);
                     for (k = 0; k < ABS_ND; ++k) {
                         ld dd[3], r = abs_sep(xyz, 2 * k, 2 * k + 1, p->L, dd);
                         ld rho = m * abs_norm(p) * (abs_W(0, p->Rc) + abs_W(r, p->Rc));
@@ -543,11 +543,11 @@ void test_abs_bd_noise_variance(void)
         hcbd_world_place_random(&w, N);
         for (s = 0; s < NS; ++s) {
             ld sum = 0, sm = 0;
-            hcbd_get_positions(&w, x0, 1);
-            if (w.gibd) hcbd_get_velocities(&w, v0);
+            hcbd_world_get_positions(&w, x0, 1);
+            if (w.gibd) hcbd_world_get_velocities(&w, v0);
             if (!run(&w, 1)) return;
-            hcbd_get_positions(&w, x1, 1);
-            if (w.gibd) hcbd_get_velocities(&w, v1);
+            hcbd_world_get_positions(&w, x1, 1);
+            if (w.gibd) hcbd_world_get_velocities(&w, v1);
             for (i = 0; i < 3 * N; ++i) {
                 ld drift = k == 2 ? 0 : (k == 1 ? v1[i] : v0[i]) * d.params.dt;
                 ld dw = (ld)x1[i] - x0[i] - drift;
@@ -573,7 +573,7 @@ void test_abs_bd_noise_variance(void)
    hcbd_star_potential and hcbd_star_force on both branches and at sigma,
    for three (f, sigma, eps); then the force a BD step applies (one step,
    kT = 0: dR = F dt/xi along the pair), hcbd_potential_energy,
-   hcbd_stress and hcbd_config_temperature of a pair at the same
+   hcbd_virial_stress and hcbd_config_temperature of a pair at the same
    distances, and nothing beyond rcut. */
 void test_abs_star_potential(void)
 {
@@ -618,7 +618,7 @@ void test_abs_star_potential(void)
                     xyz[3 + c] = 5.0 + (double)r * e[c];
                 }
                 hcbd_world_set_positions(&w, 2, xyz);
-                hcbd_get_positions(&w, xyz, 0);
+                hcbd_world_get_positions(&w, xyz, 0);
                 rr = abs_sep(xyz, 0, 1, d.params.L, dd);
                 Fr = rr < d.params.rcut ? abs_star_F(rr, f, sg, eps) : 0;
                 Vb = hcbd_potential_energy(&w);
@@ -626,7 +626,7 @@ void test_abs_star_potential(void)
                     worst_e = fmax(worst_e, (double)fabsl(Vb / abs_star_V(rr, f, sg, eps) - 1));
                 else if (Vb != 0)
                     worst_e = HUGE_VAL;
-                hcbd_stress(&w, s9);
+                hcbd_virial_stress(&w, s9);
                 for (c = 0; c < 9; ++c) {
                     ld want = -(dd[c / 3] * Fr * dd[c % 3] / rr) / (12.0L * 12 * 12);
                     worst_s = fmax(worst_s, (double)(fabsl(s9[c] - want) /
@@ -639,7 +639,7 @@ void test_abs_star_potential(void)
                     if (q[l] != 1.0) worst_l = fmax(worst_l, (double)fabsl(tc[1] / (2 * lap) - 1));
                 }
                 if (!run(&w, 1)) return;
-                hcbd_get_positions(&w, x1, 0);
+                hcbd_world_get_positions(&w, x1, 0);
                 for (c = 0; c < 3; ++c) {
                     ld want = Fr * dd[c] / rr * dt / d.params.xi; /* particle 0 */
                     ld got0 = abs_mi((ld)x1[c] - xyz[c], 12), got1 = abs_mi((ld)x1[3 + c] - xyz[3 + c], 12);
@@ -662,7 +662,7 @@ void test_abs_star_potential(void)
     /* the cubic table in r^2 (hcbd.h, kernels) promises 1e-9 */
     CHECK(worst_step[1] < (ABS_FLOAT ? 1e-4 : 1e-9), "step force (table) off by %g", worst_step[1]);
     CHECK(worst_e < (ABS_FLOAT ? 1e-5 : 1e-12), "hcbd_potential_energy off by %g", worst_e);
-    CHECK(worst_s < (ABS_FLOAT ? 1e-5 : 1e-12), "hcbd_stress off by %g", worst_s);
+    CHECK(worst_s < (ABS_FLOAT ? 1e-5 : 1e-12), "hcbd_virial_stress off by %g", worst_s);
     CHECK(worst_t < (ABS_FLOAT ? 1e-5 : 1e-12), "hcbd_config_temperature sum |F|^2 off by %g", worst_t);
     /* the lap reference is a difference quotient, good to ~1e-8 */
     CHECK(worst_l < 1e-6, "hcbd_config_temperature sum lap U off by %g", worst_l);
@@ -702,11 +702,11 @@ void test_abs_star_table(void)
                 xyz[3 + c] = 5.0 + q * sg * (c == 0 ? 0.6 : c == 1 ? 0.48 : 0.64);
             }
             hcbd_world_set_positions(&w, 2, xyz);
-            hcbd_get_positions(&w, xyz, 0);
+            hcbd_world_get_positions(&w, xyz, 0);
             rr = abs_sep(xyz, 0, 1, d.params.L, dd);
             Fr = abs_star_F(rr, f, sg, eps);
             if (!run(&w, 1)) return;
-            hcbd_get_positions(&w, x1, 0);
+            hcbd_world_get_positions(&w, x1, 0);
             for (c = 0; c < 3; ++c) {
                 ld want = Fr * dd[c] / rr * d.params.dt / d.params.xi;
                 ld got = abs_mi((ld)x1[c] - xyz[c], 12);
@@ -762,10 +762,10 @@ void test_abs_le_velocity_jump(void)
             if (zero) { v0[3] = v0[0] + (double)jump; v0[4] = v0[1]; v0[5] = v0[2]; }
             else { v0[3] = 5.0; v0[4] = -0.02; v0[5] = 0.4; }
             hcbd_world_set_velocities(&w, v0);
-            hcbd_get_velocities(&w, v0); /* as stored */
-            hcbd_get_positions(&w, xyz, 0);
+            hcbd_world_get_velocities(&w, v0); /* as stored */
+            hcbd_world_get_positions(&w, xyz, 0);
             if (!run(&w, 1)) return;
-            hcbd_get_velocities(&w, v1);
+            hcbd_world_get_velocities(&w, v1);
             /* the image of b below: x_b - s, y_b - Ly */
             dd[0] = (ld)xyz[0] - (xyz[3] - s);
             dd[1] = (ld)xyz[1] - (xyz[4] - L);
@@ -938,11 +938,11 @@ void test_abs_wall_morris_friction(void)
                 v0[3 * i + 2] = -0.55 + 0.1 * i;
             }
             hcbd_world_set_velocities(&w, v0);
-            hcbd_get_velocities(&w, v0);
-            hcbd_get_positions(&w, xyz, 0);
+            hcbd_world_get_velocities(&w, v0);
+            hcbd_world_get_positions(&w, xyz, 0);
             if (!run(&w, 1)) return;
-            hcbd_get_velocities(&w, v1);
-            hcbd_get_positions(&w, x1, 0);
+            hcbd_world_get_velocities(&w, v1);
+            hcbd_world_get_positions(&w, x1, 0);
             for (i = 0; i < n; ++i) {
                 abs_morris o;
                 ld F[3];
@@ -1008,9 +1008,9 @@ void test_abs_wall_morris_noise(void)
                 ld sum = 0, alt = 0;
                 int cnt = 0;
                 hcbd_world_set_velocities(&w, zero);
-                hcbd_get_positions(&w, xyz, 0);
+                hcbd_world_get_positions(&w, xyz, 0);
                 if (!run(&w, 1)) return;
-                hcbd_get_velocities(&w, v);
+                hcbd_world_get_velocities(&w, v);
                 for (i = 0; i < n; ++i) {
                     abs_morris o;
                     ld var, var_alt;

@@ -361,7 +361,7 @@ static int bi_make(hcbd_world *w, int kind)
         hcbd_world_destroy(w);
         return 0;
     }
-    hcbd_get_positions(w, bi_xyz, 0);
+    hcbd_world_get_positions(w, bi_xyz, 0);
     return 1;
 }
 
@@ -493,11 +493,11 @@ WF(c_check_null)
     return hcbd_params_check(NULL, bi_msg, sizeof bi_msg);
 }
 /* observables */
-WF(c_getpos_null) { NOMSG; return hcbd_get_positions(w, NULL, 0); }
-WF(c_getpos_nullw) { double x[3]; NOMSG; return hcbd_get_positions(NULL, x, 1); }
-WF(c_getvel_null) { NOMSG; return hcbd_get_velocities(w, NULL); }
-WF(c_stress_null) { (void)msg; return hcbd_stress(w, NULL); }
-WF(c_stress_nullw) { double s[9]; NOMSG; return hcbd_stress(NULL, s); }
+WF(c_getpos_null) { NOMSG; return hcbd_world_get_positions(w, NULL, 0); }
+WF(c_getpos_nullw) { double x[3]; NOMSG; return hcbd_world_get_positions(NULL, x, 1); }
+WF(c_getvel_null) { NOMSG; return hcbd_world_get_velocities(w, NULL); }
+WF(c_stress_null) { (void)msg; return hcbd_virial_stress(w, NULL); }
+WF(c_stress_nullw) { double s[9]; NOMSG; return hcbd_virial_stress(NULL, s); }
 WF(c_fric_nk0) { double o[3]; (void)msg; return hcbd_friction_average(w, 0, o); }
 WF(c_fric_nkm1) { double o[3]; (void)msg; return hcbd_friction_average(w, -1, o); }
 WF(c_fric_null) { (void)msg; return hcbd_friction_average(w, 1, NULL); }
@@ -505,10 +505,10 @@ WF(c_fric_ok) { double o[3]; (void)msg; return hcbd_friction_average(w, 1, o); }
 WF(c_tc_nk0) { double o[12]; NOMSG; return hcbd_transverse_current(w, 0, o); }
 WF(c_tc_nkm1) { double o[12]; NOMSG; return hcbd_transverse_current(w, -1, o); }
 WF(c_tc_null) { NOMSG; return hcbd_transverse_current(w, 1, NULL); }
-WF(c_flux_2) { (void)msg; return hcbd_flux_enable(w, 2); }
-WF(c_flux_m1) { (void)msg; return hcbd_flux_enable(w, -1); }
-WF(c_flux_nullw) { NOMSG; return hcbd_flux_enable(NULL, 1); }
-WF(c_fluxread_null) { NOMSG; return hcbd_flux_read(w, NULL, NULL); }
+WF(c_flux_2) { (void)msg; return hcbd_stress_enable(w, 2); }
+WF(c_flux_m1) { (void)msg; return hcbd_stress_enable(w, -1); }
+WF(c_flux_nullw) { NOMSG; return hcbd_stress_enable(NULL, 1); }
+WF(c_fluxread_null) { NOMSG; return hcbd_stress_read(w, NULL, NULL); }
 static hcbd_result bi_rdf(hcbd_world *w, double rmax, int nbins, int null_g, int null_h)
 {
     static double hist[64];
@@ -721,11 +721,11 @@ static const bi_wentry bi_calls[] = {
     {"world_create w NULL", WK_GIBD, c_create_nullw, HCBD_ERR_NULL, NULL},
     {"world_create def NULL", WK_GIBD, c_create_nulldef, HCBD_ERR_NULL, "definition"},
     {"params_check p NULL", WK_GIBD, c_check_null, HCBD_ERR_NULL, "params"},
-    {"get_positions xyz NULL", WK_GIBD, c_getpos_null, HCBD_ERR_NULL, NULL},
-    {"get_positions w NULL", WK_GIBD, c_getpos_nullw, HCBD_ERR_NULL, NULL},
+    {"world_get_positions xyz NULL", WK_GIBD, c_getpos_null, HCBD_ERR_NULL, NULL},
+    {"world_get_positions w NULL", WK_GIBD, c_getpos_nullw, HCBD_ERR_NULL, NULL},
     {"get_velocities v NULL", WK_GIBD, c_getvel_null, HCBD_ERR_NULL, NULL},
-    {"stress s NULL", WK_GIBD, c_stress_null, HCBD_ERR_NULL, "s is NULL"},
-    {"stress w NULL", WK_GIBD, c_stress_nullw, HCBD_ERR_NULL, NULL},
+    {"virial_stress s NULL", WK_GIBD, c_stress_null, HCBD_ERR_NULL, "s is NULL"},
+    {"virial_stress w NULL", WK_GIBD, c_stress_nullw, HCBD_ERR_NULL, NULL},
     {"friction_average nk = 0", WK_GIBD, c_fric_nk0, HCBD_ERR_PARAM, "nk = 0"},
     {"friction_average nk = -1", WK_GIBD, c_fric_nkm1, HCBD_ERR_PARAM, "nk = -1"},
     {"friction_average out NULL", WK_GIBD, c_fric_null, HCBD_ERR_NULL, "out is NULL"},
@@ -733,10 +733,10 @@ static const bi_wentry bi_calls[] = {
     {"transverse_current nk = 0", WK_GIBD, c_tc_nk0, HCBD_ERR_PARAM, NULL},
     {"transverse_current nk = -1", WK_GIBD, c_tc_nkm1, HCBD_ERR_PARAM, NULL},
     {"transverse_current out NULL", WK_GIBD, c_tc_null, HCBD_ERR_NULL, NULL},
-    {"flux_enable on = 2", WK_GIBD, c_flux_2, HCBD_ERR_PARAM, "on = 2"},
-    {"flux_enable on = -1", WK_GIBD, c_flux_m1, HCBD_ERR_PARAM, "on = -1"},
-    {"flux_enable w NULL", WK_GIBD, c_flux_nullw, HCBD_ERR_NULL, NULL},
-    {"flux_read out NULL", WK_GIBD, c_fluxread_null, HCBD_ERR_NULL, NULL},
+    {"stress_enable on = 2", WK_GIBD, c_flux_2, HCBD_ERR_PARAM, "on = 2"},
+    {"stress_enable on = -1", WK_GIBD, c_flux_m1, HCBD_ERR_PARAM, "on = -1"},
+    {"stress_enable w NULL", WK_GIBD, c_flux_nullw, HCBD_ERR_NULL, NULL},
+    {"stress_read out NULL", WK_GIBD, c_fluxread_null, HCBD_ERR_NULL, NULL},
     {"rdf_init rmax = 0", WK_GIBD, c_rdf_r0, HCBD_ERR_PARAM, NULL},
     {"rdf_init rmax = -1", WK_GIBD, c_rdf_rm1, HCBD_ERR_PARAM, NULL},
     {"rdf_init rmax = nan", WK_GIBD, c_rdf_rnan, HCBD_ERR_PARAM, NULL},

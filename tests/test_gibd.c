@@ -23,7 +23,7 @@ void test_density_normalisation(void)
             w.p.seed = 1000 + s;
             hcbd_world_place_random(&w, 1000);
             hcbd_friction_average(&w, 1, out);
-            hcbd_get_positions(&w, xyz, 0);
+            hcbd_world_get_positions(&w, xyz, 0);
             for (i = 0; i < 1000; ++i) {
                 double sw = w0;
                 for (j = 0; j < 1000; ++j)
@@ -79,7 +79,7 @@ void test_momentum_conservation(void)
     hcbd_momentum(&w, p0);
     if (!run(&w, steps)) return;
     hcbd_momentum(&w, p1);
-    hcbd_get_velocities(&w, v);
+    hcbd_world_get_velocities(&w, v);
     for (i = 0; i < 3 * 512; ++i) scale += w.m * fabs(v[i]);
     for (i = 0; i < 3; ++i)
         CHECK(fabs(p1[i] - p0[i]) < 1e-12 * scale, "component %d: %g -> %g (scale %g)", i, p0[i],
@@ -107,24 +107,24 @@ void test_galilean_invariance(void)
     hcbd_world_place_lattice(&a, 512);
     hcbd_world_place_lattice(&b, 512);
     run(&a, 500);
-    hcbd_get_positions(&a, ra, 1);
-    hcbd_get_velocities(&a, va);
+    hcbd_world_get_positions(&a, ra, 1);
+    hcbd_world_get_velocities(&a, va);
     hcbd_world_set_positions(&b, 512, ra);
     for (i = 0; i < 3 * 512; ++i) vb[i] = va[i] + U[i % 3];
     hcbd_world_set_velocities(&b, vb);
     /* the noise is keyed by (seed, step, ids): the same step counter gives
        the same draws */
     b.step = a.step;
-    hcbd_get_positions(&a, ra, 1);
+    hcbd_world_get_positions(&a, ra, 1);
     run(&a, steps);
     run(&b, steps);
     t = steps * d.params.dt;
     {
         double ra1[3 * 512], rb1[3 * 512];
-        hcbd_get_positions(&a, ra1, 1);
-        hcbd_get_positions(&b, rb1, 1);
-        hcbd_get_velocities(&a, va);
-        hcbd_get_velocities(&b, vb);
+        hcbd_world_get_positions(&a, ra1, 1);
+        hcbd_world_get_positions(&b, rb1, 1);
+        hcbd_world_get_velocities(&a, va);
+        hcbd_world_get_velocities(&b, vb);
         for (i = 0; i < 3 * 512; ++i) {
             double e = fabs(rb1[i] - ra1[i] - U[i % 3] * t);
             double f = fabs(vb[i] - va[i] - U[i % 3]);
@@ -152,7 +152,7 @@ static uint64_t run_hash(hcbd_world_def d, int steps)
     hcbd_world_place_lattice(&w, d.capacity);
     run(&w, steps);
     h = hcbd_state_checksum(&w);
-    hcbd_stress(&w, obs);
+    hcbd_virial_stress(&w, obs);
     hcbd_transverse_current(&w, 1, obs + 9);
     hcbd_momentum(&w, obs + 21);
     if (w.gibd) hcbd_friction_average(&w, 1, obs + 24);
@@ -287,7 +287,7 @@ void test_lagged_density(void)
         static double xyz[3 * 512];
         double w0 = hcbd_wendland(0, 2.5), nrm = 1 / (1 + w0 / 0.24), maxdev = 0;
         int i, j;
-        hcbd_get_positions(&b, xyz, 0);
+        hcbd_world_get_positions(&b, xyz, 0);
         run(&b, 1);
         for (i = 0; i < 512; ++i) {
             double sw = w0;

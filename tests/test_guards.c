@@ -16,7 +16,7 @@ void test_unstable_step_detected(void)
     d.params.dt = 1e-2;
     if (!make_world(&w, &d)) return;
     hcbd_world_place_lattice(&w, 64);
-    hcbd_get_positions(&w, xyz, 0);
+    hcbd_world_get_positions(&w, xyz, 0);
     xyz[3 * 7] = xyz[3 * 3] + 0.01; /* particle 7 almost on top of 3 */
     xyz[3 * 7 + 1] = xyz[3 * 3 + 1];
     xyz[3 * 7 + 2] = xyz[3 * 3 + 2];

@@ -91,7 +91,7 @@ static int sc_make(hcbd_world *w, int sc, int threads)
         t_fail = 1;
         return 0;
     }
-    if (sc == SC_SHEAR) hcbd_flux_enable(w, 1);
+    if (sc == SC_SHEAR) hcbd_stress_enable(w, 1);
     return 1;
 }
 
@@ -127,8 +127,8 @@ void test_checkpoint_restart_bits(void)
                 cb = hcbd_state_checksum(&b);
                 CHECK(ca == cb, "%s, %d threads: 2n steps %llx, n + save + load + n %llx",
                       sc_name[sc], t, (unsigned long long)ca, (unsigned long long)cb);
-                hcbd_flux_read(&a, fa, NULL);
-                hcbd_flux_read(&b, fb, NULL);
+                hcbd_stress_read(&a, fa, NULL);
+                hcbd_stress_read(&b, fb, NULL);
                 CHECK(!memcmp(fa, fb, sizeof fa), "%s: flux sums differ", sc_name[sc]);
                 CHECK(a.wall_pen == b.wall_pen, "%s: wall penetrations %lld vs %lld", sc_name[sc],
                       (long long)a.wall_pen, (long long)b.wall_pen);
@@ -350,8 +350,8 @@ static void frame_check(const frame *fr, const hcbd_world *w, const char *what)
     double *x = (double *)malloc((size_t)w->n * 3 * sizeof(double));
     double *v = (double *)malloc((size_t)w->n * 3 * sizeof(double));
     int k, bad = 0;
-    hcbd_get_positions(w, x, 0);
-    hcbd_get_velocities(w, v);
+    hcbd_world_get_positions(w, x, 0);
+    hcbd_world_get_velocities(w, v);
     CHECK(fr->n == w->n, "%s: %d particles, world %d", what, fr->n, w->n);
     CHECK(fr->L[0] == w->p.L[0] && fr->L[4] == w->p.L[1] && fr->L[8] == w->p.L[2] &&
               fr->L[1] == 0 && fr->L[3] == 0 && fr->L[5] == 0,

@@ -118,7 +118,7 @@ static void step_forces(hcbd_world_def d, double *xyz, double *F)
     }
     hcbd_world_set_positions(&w, N, xyz);
     run(&w, 1);
-    hcbd_get_positions(&w, x1, 1);
+    hcbd_world_get_positions(&w, x1, 1);
     for (i = 0; i < 3 * N; ++i) F[i] = (x1[i] - xyz[i]) / 1e-6;
     hcbd_world_destroy(&w);
 }
@@ -272,7 +272,7 @@ void test_gibd_coef_exported(void)
         d.params.xip = 1.7;
         if (!make_world(&w, &d)) return;
         hcbd_world_place_random(&w, N);
-        hcbd_get_positions(&w, xyz, 0);
+        hcbd_world_get_positions(&w, xyz, 0);
         CHECK(hcbd_gibd_coef_of(&d.params, &c, NULL, 0) == HCBD_OK, "coefficients");
         Rc = d.params.Rc;
         for (i = 0; i < N; ++i) {

@@ -61,7 +61,7 @@ static void compare(hcbd_world *w, const char *what)
 static void build(hcbd_world *w)
 {
     double out[9];
-    hcbd_result r = w->gibd ? hcbd_friction_average(w, 1, out) : hcbd_stress(w, out);
+    hcbd_result r = w->gibd ? hcbd_friction_average(w, 1, out) : hcbd_virial_stress(w, out);
     CHECK(r == HCBD_OK, "%s", w->err.msg);
 }
 

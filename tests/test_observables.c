@@ -170,8 +170,8 @@ void test_stress_is_strain_derivative(void)
     if (!make_world(&w, &d)) return;
     hcbd_world_place_lattice(&w, N);
     run(&w, 2000); /* a liquid configuration */
-    hcbd_get_positions(&w, xyz, 1);
-    hcbd_stress(&w, s);
+    hcbd_world_get_positions(&w, xyz, 1);
+    hcbd_virial_stress(&w, s);
     V = w.p.L[0] * w.p.L[1] * w.p.L[2];
     {
         /* energy as a function of gamma with Lees-Edwards-consistent images:
@@ -429,3 +429,32 @@ void test_rdf_blocks(void)
     CHECK(fabs(nc - th) < 4 * ec, "coordination %g +- %g vs %g", nc, ec, th);
     hcbd_world_destroy(&w);
 }
+
+/* The old names (deprecated for one version) call the new ones. */
+#if defined(__GNUC__) || defined(__clang__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wdeprecated-declarations"
+#endif
+void test_old_names(void)
+{
+    hcbd_world_def d = scene(64, 0.24);
+    hcbd_world w;
+    double a[3 * 64], b[3 * 64], s[9], t[9], f[4], g[4];
+    int64_t na, nb;
+    if (!make_world(&w, &d)) return;
+    hcbd_world_place_lattice(&w, 64);
+    CHECK(hcbd_stress_enable(&w, 1) == HCBD_OK && hcbd_step(&w, 20) == HCBD_OK, "%s", w.err.msg);
+    CHECK(hcbd_get_positions(&w, a, 1) == HCBD_OK && hcbd_world_get_positions(&w, b, 1) == HCBD_OK &&
+          !memcmp(a, b, sizeof a), "hcbd_get_positions");
+    CHECK(hcbd_get_velocities(&w, a) == HCBD_OK && hcbd_world_get_velocities(&w, b) == HCBD_OK &&
+          !memcmp(a, b, sizeof a), "hcbd_get_velocities");
+    CHECK(hcbd_stress(&w, s) == HCBD_OK && hcbd_virial_stress(&w, t) == HCBD_OK && !memcmp(s, t, sizeof s),
+          "hcbd_stress");
+    CHECK(hcbd_flux_read(&w, f, &na) == HCBD_OK && hcbd_stress_read(&w, g, &nb) == HCBD_OK &&
+          !memcmp(f, g, sizeof f) && na == 20 && nb == 20, "hcbd_flux_read");
+    CHECK(hcbd_flux_enable(&w, 2) == HCBD_ERR_PARAM, "hcbd_flux_enable passes its argument on");
+    hcbd_world_destroy(&w);
+}
+#if defined(__GNUC__) || defined(__clang__)
+#pragma GCC diagnostic pop
+#endif

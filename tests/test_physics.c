@@ -138,7 +138,7 @@ static tc_result transverse_identity(hcbd_world_def d, int nk, int nblocks, int 
                 int i, a;
                 hcbd_friction_average(&w, nk, out);
                 mf += out[2] / (d.params.tau * k * k);
-                hcbd_get_positions(&w, xyz, 0);
+                hcbd_world_get_positions(&w, xyz, 0);
                 for (a = 0; a < 3; ++a) {
                     double re = 0, im = 0;
                     for (i = 0; i < n; ++i) {
@@ -248,7 +248,7 @@ static int msd_blocks(hcbd_world *w, int steps, double vals[MSD_NB][MSD_MAXLAG],
     for (b = 0; b < MSD_NB; ++b) {
         hcbd_msd_init(&m, n, B, LEV, 0, 0, mem, bytes);
         for (s = 0; s < steps; ++s) {
-            hcbd_get_positions(w, xyz, 1);
+            hcbd_world_get_positions(w, xyz, 1);
             hcbd_msd_add(&m, xyz);
             if (!run(w, 1)) break;
         }
@@ -530,7 +530,7 @@ static gr_result gr_run(int kind, int steps, double *api_vs_test)
             double f2, lp;
             if (!run(&w, 100)) return res;
             hcbd_rdf_sample(&rdf, &w);
-            hcbd_get_positions(&w, xyz, 0);
+            hcbd_world_get_positions(&w, xyz, 0);
             tconf_terms(xyz, N, w.p.L, &f2, &lp);
             F2 += f2;
             lap += lp;

@@ -55,7 +55,7 @@ void test_le_neighbour_list(void)
             int64_t listed = 0;
             if (!make_world(&w, &d)) return;
             hcbd_world_place_random(&w, 500);
-            hcbd_get_positions(&w, xyz, 0);
+            hcbd_world_get_positions(&w, xyz, 0);
             if (away) /* squeeze y into [rlist, Ly - rlist]: nothing crosses */
                 for (i = 0; i < 500; ++i)
                     xyz[3 * i + 1] = w.nl.rlist + xyz[3 * i + 1] / w.p.L[1] * (w.p.L[1] - 2 * w.nl.rlist);
@@ -123,13 +123,13 @@ void test_le_crossing_jump(void)
             w.le_offset = keep;
         }
         hcbd_world_set_velocities(&w, v);
-        hcbd_get_positions(&w, u0, 1);
-        hcbd_flux_enable(&w, 1);
+        hcbd_world_get_positions(&w, u0, 1);
+        hcbd_stress_enable(&w, 1);
         run(&w, 1);
-        hcbd_flux_read(&w, fl, NULL);
-        hcbd_get_positions(&w, x1, 0);
-        hcbd_get_positions(&w, u1, 1);
-        hcbd_get_velocities(&w, v1);
+        hcbd_stress_read(&w, fl, NULL);
+        hcbd_world_get_positions(&w, x1, 0);
+        hcbd_world_get_positions(&w, u1, 1);
+        hcbd_world_get_velocities(&w, v1);
         {
             double s_new = s + 0.7 * w.p.L[1] * 1e-3, sg = dir ? -1.0 : 1.0;
             double xe = 3.0 + 0.3e-3 - sg * s_new, ye = dir ? w.p.L[1] - 4e-3 : 4e-3;
@@ -176,7 +176,7 @@ void test_le_list_every_step(void)
             double out[3];
             run(&w, 1);
             hcbd_friction_average(&w, 1, out); /* the list the next step will use */
-            hcbd_get_positions(&w, xyz, 0);
+            hcbd_world_get_positions(&w, xyz, 0);
             for (i = 0; i < N; ++i)
                 for (j = i + 1; j < N; ++j)
                     if (le_r2(xyz, i, j, w.p.L, w.le_offset, NULL) < 2.5 * 2.5) {
@@ -217,13 +217,13 @@ void test_le_carrier_flux_planes(void)
     A = w.p.L[0] * w.p.L[2];
     for (b = 0; b < NB; ++b) {
         double c = 0, fl[4];
-        hcbd_flux_enable(&w, 1);
-        hcbd_get_positions(&w, xyz, 1);
+        hcbd_stress_enable(&w, 1);
+        hcbd_world_get_positions(&w, xyz, 1);
         for (i = 0; i < N; ++i) y0[i] = xyz[3 * i + 1];
         for (s = 0; s < steps; ++s) {
             run(&w, 1);
-            hcbd_get_positions(&w, xyz, 1); /* unwrapped: interior planes of every image */
-            hcbd_get_velocities(&w, v);
+            hcbd_world_get_positions(&w, xyz, 1); /* unwrapped: interior planes of every image */
+            hcbd_world_get_velocities(&w, v);
             for (i = 0; i < N; ++i) {
                 double ya = y0[i], yb = xyz[3 * i + 1];
                 for (q = 1; q <= 3; ++q) {
@@ -236,7 +236,7 @@ void test_le_carrier_flux_planes(void)
                 y0[i] = yb;
             }
         }
-        hcbd_flux_read(&w, fl, NULL);
+        hcbd_stress_read(&w, fl, NULL);
         lib[b] = fl[2];
         pl[b] = -c / 3 / (A * w.p.dt * steps);
     }
@@ -271,7 +271,7 @@ void test_le_background_flux(void)
         if (!make_world(&w, &d)) return;
         hcbd_world_place_random(&w, N);
         w.le_offset = 2.0 + s;
-        hcbd_get_positions(&w, xyz, 0);
+        hcbd_world_get_positions(&w, xyz, 0);
         for (i = 0; i < N; ++i) {
             for (c = 0; c < 3; ++c) v[3 * i + c] = 0;
             v[3 * i] = 1.5 * xyz[3 * i + 1];
@@ -295,9 +295,9 @@ void test_le_background_flux(void)
                 direct += S / w.p.tau * 1.5 * dd[1] * dd[1];
             }
         direct /= V;
-        hcbd_flux_enable(&w, 1);
+        hcbd_stress_enable(&w, 1);
         run(&w, 1);
-        hcbd_flux_read(&w, flux, NULL);
+        hcbd_stress_read(&w, flux, NULL);
         CHECK(fabs(flux[1] / direct - 1) < 1e-9, "background flux %.12g vs direct %.12g", flux[1], direct);
         eta35 = Rc * Rc * 0.24 * w.p.xip / 28;
         ratio_sum += flux[1] / 1.5 / eta35;
@@ -317,13 +317,13 @@ void test_le_linear_profile(void)
     double slopes[NB], xyz[3 * N], v[3 * N], flux[4];
     int b, s, i, steps = t_quick ? 200 : 10 * (int)(100 * t_len + 0.5); /* per block */
     if (!sheared_liquid(&w, N, 2.0, 1000)) return;
-    hcbd_flux_enable(&w, 1);
+    hcbd_stress_enable(&w, 1);
     for (b = 0; b < NB; ++b) {
         double sum[NS] = {0}, cnt[NS] = {0}, sy = 0, sv = 0, syy = 0, syv = 0, n = 0;
         for (s = 0; s < steps; s += 10) {
             run(&w, 10);
-            hcbd_get_positions(&w, xyz, 0);
-            hcbd_get_velocities(&w, v);
+            hcbd_world_get_positions(&w, xyz, 0);
+            hcbd_world_get_velocities(&w, v);
             for (i = 0; i < N; ++i) {
                 int k = (int)(xyz[3 * i + 1] / w.p.L[1] * NS);
                 if (k >= NS) k = NS - 1;
@@ -340,7 +340,7 @@ void test_le_linear_profile(void)
     {
         double m, e;
         block_stats(slopes, NB, NB, &m, &e);
-        hcbd_flux_read(&w, flux, NULL);
+        hcbd_stress_read(&w, flux, NULL);
         NOTE("velocity slope %.4f +- %.4f (gdot 2)", m, e);
         NOTE("viscosity: pair 0, background %.4f, carriers %.4f, total %.4f; eq. 35 %.4f",
              flux[1] / 2, flux[2] / 2, flux[3] / 2, 2.5 * 2.5 * 0.24 / 28);
@@ -366,9 +366,9 @@ void test_le_determinism(void)
         d.params.sort = k == 3 ? 0 : 1;
         if (!make_world(&w, &d)) return;
         hcbd_world_place_lattice(&w, 512);
-        hcbd_flux_enable(&w, 1);
+        hcbd_stress_enable(&w, 1);
         run(&w, 400);
-        hcbd_flux_read(&w, f, NULL);
+        hcbd_stress_read(&w, f, NULL);
         h[k] = hcbd_state_checksum(&w);
         {
             uint64_t u;

@@ -191,7 +191,7 @@ void test_wall_morris_friction(void)
             hcbd_world_set_positions(&w, 2, xyz);
             hcbd_world_set_velocities(&w, v);
             if (!run(&w, 1)) return;
-            hcbd_get_velocities(&w, vnew);
+            hcbd_world_get_velocities(&w, vnew);
             hcbd_theory_of(&d.params, &th);
             m = w.m;
             plane = 1.5 + (mode ? th.depletion_width : 0.0);
@@ -575,9 +575,9 @@ static int le_nu(double gdot, double time, double *nu, double *err)
     hcbd_world_place_random(&w, 512);
     if (!run(&w, 5000)) return 0;
     for (b = 0; b < 10; ++b) {
-        hcbd_flux_enable(&w, 1);
+        hcbd_stress_enable(&w, 1);
         if (!run(&w, (int)(time / 10 / d.params.dt))) return 0;
-        hcbd_flux_read(&w, fl, NULL);
+        hcbd_stress_read(&w, fl, NULL);
         eta[b] = fl[3] / gdot / (0.24 * w.m);
     }
     block_stats(eta, 10, 10, nu, err);
