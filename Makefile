@@ -296,10 +296,10 @@ bench: $(B)/bench_speed $(B)/bench_hcbd
 	./$(B)/bench_speed out=out/bench
 	./$(B)/bench_hcbd out=out/bench
 
-$(B)/bench_hcbd: bench/bench_hcbd.c $(B)/hcbd_impl_hc.o $(HEADERS)
+$(B)/bench_hcbd: bench/bench_hcbd.c $(B)/hcbd_impl_hc.o $(HEADERS) bench/bench_common.h
 	$(CC) $(HC_CFLAGS) $< $(B)/hcbd_impl_hc.o -o $@ $(LDLIBS)
 
-$(B)/bench_speed: bench/bench_speed.c $(B)/hcbd_impl.o $(HEADERS)
+$(B)/bench_speed: bench/bench_speed.c $(B)/hcbd_impl.o $(HEADERS) bench/bench_common.h
 	$(CC) $(ALL_CFLAGS) $< $(B)/hcbd_impl.o -o $@ $(LDLIBS)
 
 # Work-precision: run time per unit of simulated time against the error
@@ -316,23 +316,23 @@ bench-wp-table1: $(B)/wp_table1
 	@if command -v gnuplot >/dev/null 2>&1; then cd bench/results && gnuplot ../wp_table1.gp; \
 	 else echo "gnuplot not found: skipped bench/results/wp_table1.png (bench/wp_table1.gp draws it)"; fi
 
-$(B)/wp_table1: bench/wp_table1.c $(B)/hcbd_impl_hc.o $(HEADERS)
+$(B)/wp_table1: bench/wp_table1.c $(B)/hcbd_impl_hc.o $(HEADERS) bench/bench_common.h
 	$(CC) $(HC_CFLAGS) $< $(B)/hcbd_impl_hc.o -o $@ $(LDLIBS)
 
 # Refits of hcbd_polymer's flow curves: build/carreau_refit out/hcbd_polymer/flowcurve.csv
 $(B)/carreau_refit: bench/carreau_refit.c $(B)/hcbd_impl_hc.o $(HEADERS)
 	$(CC) $(HC_CFLAGS) $< $(B)/hcbd_impl_hc.o -o $@ $(LDLIBS)
 
-$(B)/bench_wp: bench/bench_wp.c $(B)/hcbd_impl.o $(HEADERS)
+$(B)/bench_wp: bench/bench_wp.c $(B)/hcbd_impl.o $(HEADERS) bench/bench_common.h
 	$(CC) $(ALL_CFLAGS) $< $(B)/hcbd_impl.o -o $@ $(LDLIBS)
 
-$(B)/bench_wp_float: bench/bench_wp.c hcbd_impl.c $(HEADERS) | $(B)
+$(B)/bench_wp_float: bench/bench_wp.c hcbd_impl.c $(HEADERS) bench/bench_common.h | $(B)
 	$(CC) $(ALL_CFLAGS) -DHCBD_REAL=float $< hcbd_impl.c -o $@ $(LDLIBS)
 
-$(B)/bench_wp_hcbd: bench/bench_wp_hcbd.c $(B)/hcbd_impl_hc.o $(HEADERS)
+$(B)/bench_wp_hcbd: bench/bench_wp_hcbd.c $(B)/hcbd_impl_hc.o $(HEADERS) bench/bench_common.h
 	$(CC) $(HC_CFLAGS) $< $(B)/hcbd_impl_hc.o -o $@ $(LDLIBS)
 
-$(B)/bench_wp_hcbd_float: bench/bench_wp_hcbd.c hcbd_impl.c $(HEADERS) | $(B)
+$(B)/bench_wp_hcbd_float: bench/bench_wp_hcbd.c hcbd_impl.c $(HEADERS) bench/bench_common.h | $(B)
 	$(CC) $(HC_CFLAGS) -DHCBD_REAL=float $< hcbd_impl.c -o $@ $(LDLIBS)
 
 # Stability map: the largest dt before a guard or a 10 % temperature error,
@@ -340,10 +340,10 @@ $(B)/bench_wp_hcbd_float: bench/bench_wp_hcbd.c hcbd_impl.c $(HEADERS) | $(B)
 bench-stability: $(B)/bench_stability $(B)/bench_stability_hcbd
 	bench/stability.sh out/bench
 
-$(B)/bench_stability: bench/stability.c $(B)/hcbd_impl.o $(HEADERS)
+$(B)/bench_stability: bench/stability.c $(B)/hcbd_impl.o $(HEADERS) bench/bench_common.h
 	$(CC) $(ALL_CFLAGS) $< $(B)/hcbd_impl.o -o $@ $(LDLIBS)
 
-$(B)/bench_stability_hcbd: bench/stability.c $(B)/hcbd_impl_hc.o $(HEADERS)
+$(B)/bench_stability_hcbd: bench/stability.c $(B)/hcbd_impl_hc.o $(HEADERS) bench/bench_common.h
 	$(CC) $(HC_CFLAGS) $< $(B)/hcbd_impl_hc.o -o $@ $(LDLIBS)
 
 # Cost of each optional part of a scene, on and off, in all three builds.
@@ -352,13 +352,13 @@ bench-parts: $(B)/bench_parts $(B)/bench_parts_gibd $(B)/bench_parts_hcbd
 	./$(B)/bench_parts out=out/bench
 	./$(B)/bench_parts_hcbd out=out/bench
 
-$(B)/bench_parts: bench/bench_parts.c $(B)/hcbd_impl.o $(HEADERS)
+$(B)/bench_parts: bench/bench_parts.c $(B)/hcbd_impl.o $(HEADERS) bench/bench_common.h
 	$(CC) $(ALL_CFLAGS) $< $(B)/hcbd_impl.o -o $@ $(LDLIBS)
 
-$(B)/bench_parts_gibd: bench/bench_parts.c hcbd_impl.c $(HEADERS) | $(B)
+$(B)/bench_parts_gibd: bench/bench_parts.c hcbd_impl.c $(HEADERS) bench/bench_common.h | $(B)
 	$(CC) $(WARN) $(FP) $(CFLAGS) $(OMPFLAG) -DHCBD_MODEL=HCBD_MODEL_GIBD $< hcbd_impl.c -o $@ $(LDLIBS)
 
-$(B)/bench_parts_hcbd: bench/bench_parts.c $(B)/hcbd_impl_hc.o $(HEADERS)
+$(B)/bench_parts_hcbd: bench/bench_parts.c $(B)/hcbd_impl_hc.o $(HEADERS) bench/bench_common.h
 	$(CC) $(HC_CFLAGS) $< $(B)/hcbd_impl_hc.o -o $@ $(LDLIBS)
 
 # Soak: each model for PSTEPS particle-steps (bench/soak.c); drift of the
@@ -367,10 +367,10 @@ PSTEPS ?= 1e7
 bench-soak: $(B)/bench_soak $(B)/bench_soak_hcbd
 	./$(B)/bench_soak psteps=$(PSTEPS) out=out/bench; s=$$?; ./$(B)/bench_soak_hcbd psteps=$(PSTEPS) out=out/bench && exit $$s
 
-$(B)/bench_soak: bench/soak.c $(B)/hcbd_impl.o $(HEADERS)
+$(B)/bench_soak: bench/soak.c $(B)/hcbd_impl.o $(HEADERS) bench/bench_common.h
 	$(CC) $(ALL_CFLAGS) $< $(B)/hcbd_impl.o -o $@ $(LDLIBS)
 
-$(B)/bench_soak_hcbd: bench/soak.c $(B)/hcbd_impl_hc.o $(HEADERS)
+$(B)/bench_soak_hcbd: bench/soak.c $(B)/hcbd_impl_hc.o $(HEADERS) bench/bench_common.h
 	$(CC) $(HC_CFLAGS) $< $(B)/hcbd_impl_hc.o -o $@ $(LDLIBS)
 
 # Side by side with LAMMPS (skipped with a message when lmp is missing).

@@ -20,23 +20,9 @@
    within 2h + skin) next to each row.
 
    usage: bench_hcbd [Nmax=512000] [threads=2] [scenes=all] [out=out/bench] */
-#define _POSIX_C_SOURCE 200809L /* clock_gettime, mkdir under -std=c99 */
-#include "../hcbd.h"
-#include <math.h>
-#include <stdio.h>
-#include <stdlib.h>
-#include <string.h>
-#include <time.h>
-#include <sys/stat.h>
+#include "bench_common.h"
 
 static const double PI = 3.14159265358979323846;
-
-static double now(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return t.tv_sec + 1e-9 * t.tv_nsec;
-}
 
 typedef struct {
     double t, pairs; /* seconds per step, fluid half-list pairs per blob */
@@ -181,14 +167,7 @@ int main(int argc, char **argv)
         }
     }
     if (maxth < 1) maxth = 1;
-    mkdir("out", 0755);
-    mkdir(out, 0755);
-    snprintf(path, sizeof path, "%s/speed_hcbd.csv", out);
-    csv = fopen(path, "w");
-    if (!csv) {
-        fprintf(stderr, "bench_hcbd: cannot write %s\n", path);
-        return 1;
-    }
+    if (!(csv = bench_csv("bench_hcbd", out, "speed_hcbd.csv", path, sizeof path))) return 1;
     fprintf(csv, "scene,N_fluid,N_polymer,threads,ns_per_particle_step,ns_per_fluid_step,"
                  "ns_per_polymer_step,pairs_per_particle,checksum\n");
     printf("%-12s %8s %8s %7s %16s %12s %12s %8s %18s\n", "scene", "fluid", "polymer", "threads",

@@ -14,21 +14,7 @@
 
    usage: bench_parts [out=out/bench] [scale=1] (scale multiplies the
    number of steps timed) */
-#define _POSIX_C_SOURCE 200809L /* clock_gettime, mkdir under -std=c99 */
-#include "../hcbd.h"
-#include <math.h>
-#include <stdio.h>
-#include <stdlib.h>
-#include <string.h>
-#include <time.h>
-#include <sys/stat.h>
-
-static double now(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return t.tv_sec + 1e-9 * t.tv_nsec;
-}
+#include "bench_common.h"
 
 #if HCBD_MODEL == HCBD_MODEL_HCBD
 static const char *build = "hcbd";
@@ -160,13 +146,10 @@ int main(int argc, char **argv)
             return 2;
         }
     }
-    mkdir("out", 0755);
-    mkdir(out, 0755);
-    snprintf(path, sizeof path, "%s/parts_%s.csv", out, build);
-    csv = fopen(path, "w");
-    if (!csv) {
-        fprintf(stderr, "bench_parts: cannot write %s\n", path);
-        return 1;
+    {
+        char name[64];
+        snprintf(name, sizeof name, "parts_%s.csv", build);
+        if (!(csv = bench_csv("bench_parts", out, name, path, sizeof path))) return 1;
     }
     fprintf(csv, "build,part,ns_per_particle_step,over_first_row\n");
     printf("| build | scene | ns/particle-step | x first row |\n|---|---|---:|---:|\n");

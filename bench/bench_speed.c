@@ -21,21 +21,7 @@
    usage: bench_speed [Nmax=262144] [threads=2] [out=out/bench]
                       [noise=gauss|uniform] [scenes=bd,gibd,...] [skin=0.6]
                       [pair=shardlow|euler] [brownian=lm|euler] */
-#define _POSIX_C_SOURCE 200809L /* clock_gettime, mkdir under -std=c99 */
-#include "../hcbd.h"
-#include <math.h>
-#include <stdio.h>
-#include <stdlib.h>
-#include <string.h>
-#include <time.h>
-#include <sys/stat.h>
-
-static double now(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return t.tv_sec + 1e-9 * t.tv_nsec;
-}
+#include "bench_common.h"
 
 int main(int argc, char **argv)
 {
@@ -66,14 +52,9 @@ int main(int argc, char **argv)
         }
     }
     if (maxth < 1) maxth = 1;
-    mkdir("out", 0755);
-    mkdir(out, 0755);
-    snprintf(path, sizeof path, "%s/speed%s.csv", out, noise == HCBD_NOISE_UNIFORM ? "_uniform" : "");
-    csv = fopen(path, "w");
-    if (!csv) {
-        fprintf(stderr, "bench_speed: cannot write %s\n", path);
-        return 1;
-    }
+    csv = bench_csv("bench_speed", out, noise == HCBD_NOISE_UNIFORM ? "speed_uniform.csv" : "speed.csv",
+                    path, sizeof path);
+    if (!csv) return 1;
     fprintf(csv, "scene,N,artificial,threads,ns_per_particle_step,steps,rebuilds_per_100_steps,"
                  "pairs_per_particle,noise,checksum\n");
     printf("%-8s %8s %6s %7s %14s %10s %10s %18s\n", "scene", "N", "artif.", "threads",

@@ -38,14 +38,7 @@
 
    usage: bench_wp [quick=0|1] [out=out/bench] [time=1] [seed=1]
           time scales all simulated times (quick=1: ~30 s smoke run) */
-#define _POSIX_C_SOURCE 200809L /* clock_gettime, mkdir under -std=c99 */
-#include "../hcbd.h"
-#include <math.h>
-#include <stdio.h>
-#include <stdlib.h>
-#include <string.h>
-#include <time.h>
-#include <sys/stat.h>
+#include "bench_common.h"
 
 #define PI 3.14159265358979323846
 #define MAXPT 256
@@ -66,13 +59,6 @@ static unsigned long long seed0 = 1;
 static const char *prec;
 static double equil_arg = -1;
 static int only = 0; /* 1 temperature, 2 nu, 3 channel; 0 all */
-
-static double now(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return t.tv_sec + 1e-9 * t.tv_nsec;
-}
 
 /* hcbd_step, timed: only the stepping counts as cost */
 static int step(hcbd_world *w, int n)
@@ -432,9 +418,6 @@ int main(int argc, char **argv)
     if (quick) tscale *= 0.15;
     ratios = quick ? ratios_quick : ratios_full;
     nr = quick ? 3 : 6;
-    mkdir("out", 0755);
-    mkdir(out, 0755);
-    snprintf(path, sizeof path, "%s/%s", out, sizeof(hcbd_real) == sizeof(float) ? "wp_float.csv" : "wp.csv");
     printf("bench_wp: %s build, %s, one thread, cost = hcbd_step seconds per unit simulated time%s\n", prec,
            HCBD_MODEL == HCBD_MODEL_WALLED ? "GI-BD and walled channel" : "GI-BD only", quick ? " (quick)" : "");
     fflush(stdout);
@@ -454,11 +437,9 @@ int main(int argc, char **argv)
             for (r = 0; r < nr && ratios[r] <= 20; ++r)
                 channel_point((hcbd_pair_integrator)ii, (hcbd_noise)nn, ratios[r], 1.0 * tscale);
 #endif
-    csv = fopen(path, "w");
-    if (!csv) {
-        fprintf(stderr, "bench_wp: cannot write %s\n", path);
-        return 1;
-    }
+    csv = bench_csv("bench_wp", out, sizeof(hcbd_real) == sizeof(float) ? "wp_float.csv" : "wp.csv", path,
+                    sizeof path);
+    if (!csv) return 1;
     fprintf(csv, "model,metric,integrator,precision,noise,dt,h,substeps,seconds_per_time_unit,error,error_err,config\n");
     for (k = 0; k < npts; ++k) {
         const point *q = &pts[k];

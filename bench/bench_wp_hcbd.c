@@ -47,14 +47,7 @@
    seconds_per_time_unit,error,error_err,config
    usage: bench_wp_hcbd [quick=0|1] [out=out/bench]
           [only=temperature|nu|poiseuille|solution] */
-#define _POSIX_C_SOURCE 200809L /* clock_gettime, mkdir under -std=c99 */
-#include "../hcbd.h"
-#include <math.h>
-#include <stdio.h>
-#include <stdlib.h>
-#include <string.h>
-#include <time.h>
-#include <sys/stat.h>
+#include "bench_common.h"
 
 #define PI_ 3.14159265358979323846
 #define A_LAT 1.6119919540164696 /* (4 pi / 3)^(1/3): nbar = 3/(4 pi) */
@@ -75,13 +68,6 @@ static int nrows = 0;
 static int quick = 0;
 static double tscale = 1.0; /* quick=1 shortens every run */
 static char only[32] = "";   /* only=temperature|nu|poiseuille|solution */
-
-static double now(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return t.tv_sec + 1e-9 * t.tv_nsec;
-}
 
 /* timed stepping: wall seconds and simulated time of the measured worlds */
 static double t_wall, t_sim;
@@ -537,14 +523,9 @@ int main(int argc, char **argv)
     }
     for (k = 0; k < NMELT; ++k) free(melt_xyz[k]);
 
-    mkdir("out", 0755);
-    mkdir(out, 0755);
-    snprintf(path, sizeof path, "%s/wp_hcbd%s.csv", out, sizeof(hcbd_real) == 4 ? "_float" : "");
-    csv = fopen(path, "w");
-    if (!csv) {
-        fprintf(stderr, "bench_wp_hcbd: cannot write %s\n", path);
-        return 1;
-    }
+    csv = bench_csv("bench_wp_hcbd", out, sizeof(hcbd_real) == 4 ? "wp_hcbd_float.csv" : "wp_hcbd.csv",
+                    path, sizeof path);
+    if (!csv) return 1;
     fprintf(csv, "model,metric,integrator,precision,noise,dt,h,substeps,seconds_per_time_unit,"
                  "error,error_err,config\n");
     for (k = 0; k < nrows; ++k) {

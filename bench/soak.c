@@ -35,15 +35,8 @@
    usage: soak [psteps=1e7] [model=all|bulk|channel|hcbd] [threads=1]
                [blocks=40] [equil=scene default] [nsig=4] [out=DIR]
    Exit status 0 only if every verdict passes. */
-#define _POSIX_C_SOURCE 200809L /* clock_gettime, mkdir under -std=c99 */
-#include "../hcbd.h"
+#include "bench_common.h"
 #include <errno.h>
-#include <math.h>
-#include <stdio.h>
-#include <stdlib.h>
-#include <string.h>
-#include <sys/stat.h>
-#include <time.h>
 
 #define MAXOBS 4
 #define MAXSLAB 64
@@ -85,13 +78,6 @@ typedef struct stats {
     double inflate; /* the errors above are the raw block errors times this */
     int nblk;
 } stats;
-
-static double now(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return t.tv_sec + 1e-9 * t.tv_nsec;
-}
 
 /* Largest component of the momentum change since p0, over scale. */
 static double momentum_change(const double p[3], const double p0[3], double scale)

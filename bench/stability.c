@@ -31,23 +31,9 @@
 
    usage: bench_stability [steps=N] [quick=1] [threads=1] [out=out/bench]
    Writes out/stability.csv (walled) or out/stability_hcbd.csv (HCBD). */
-#define _POSIX_C_SOURCE 200809L /* clock_gettime, mkdir under -std=c99 */
-#include "../hcbd.h"
-#include <math.h>
-#include <stdio.h>
-#include <stdlib.h>
-#include <string.h>
-#include <time.h>
-#include <sys/stat.h>
+#include "bench_common.h"
 
 #define MAXT 32
-
-static double now(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return t.tv_sec + 1e-9 * t.tv_nsec;
-}
 
 typedef struct scene {
     const char *name;
@@ -543,15 +529,9 @@ int main(int argc, char **argv)
         }
     }
     if (threads < 1) threads = 1;
-    mkdir("out", 0755);
-    mkdir(out, 0755);
-    snprintf(path, sizeof path, "%s/stability%s.csv", out,
-             HCBD_MODEL == HCBD_MODEL_HCBD ? "_hcbd" : "");
-    csv = fopen(path, "w");
-    if (!csv) {
-        fprintf(stderr, "bench_stability: cannot write %s\n", path);
-        return 1;
-    }
+    csv = bench_csv("bench_stability", out, HCBD_MODEL == HCBD_MODEL_HCBD ? "stability_hcbd.csv" : "stability.csv",
+                    path, sizeof path);
+    if (!csv) return 1;
     fprintf(csv, "model,scene,param,integrator,substeps,binding_limit,predicted_dt,"
                  "dt_temperature_10pct,dt_fail,fail_code,ratio_fail_over_predicted,guard_first,"
                  "accuracy_limit,accuracy_dt,ratio_t10_over_accuracy,trials,unstable_runs,"

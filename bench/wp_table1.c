@@ -28,13 +28,7 @@
    usage: wp_table1 [C=5] [L=10] [Wi=0.3,1,3] [cfg=50/5,50/1,...] [startup=1]
                     [blocks=2] [threads=2] [seed=1] [out=bench/results]
    Writes OUT/wp_table1.csv. */
-#define _POSIX_C_SOURCE 200809L /* clock_gettime under -std=c99 */
-#include "../hcbd.h"
-#include <math.h>
-#include <stdio.h>
-#include <stdlib.h>
-#include <string.h>
-#include <time.h>
+#include "bench_common.h"
 
 #define PI 3.14159265358979323846
 #define MAXCFG 16
@@ -51,13 +45,6 @@ typedef struct {
     double wall;
     int ok;
 } result;
-
-static double now(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return t.tv_sec + 1e-9 * t.tv_nsec;
-}
 
 static void mean_err(const double *x, int n, double *m, double *e)
 {
