@@ -34,9 +34,8 @@ int main(int argc, char **argv)
         else if (!strncmp(arg, "tau=", 4) && num) def.params.tau = v; /* create checks the value */
         else return fprintf(stderr, "first_step: bad argument '%s'\n%s", arg, usage), 2;
     }
-    /* the box follows from N and the density */
-    if (hcbd_world_def_set_density(&def, N, 0.24) != HCBD_OK || hcbd_world_create(&w, &def) != HCBD_OK)
-        return fprintf(stderr, "first_step: %s\n", w.err.msg), 2;
+    hcbd_world_def_set_density(&def, N, 0.24); /* the box follows; create names a bad value */
+    if (hcbd_world_create(&w, &def) != HCBD_OK) return fprintf(stderr, "first_step: %s\n", w.err.msg), 2;
     if (hcbd_world_place_random(&w, N) != HCBD_OK || hcbd_step(&w, 2000) != HCBD_OK)
         return fprintf(stderr, "first_step: %s\n", w.err.msg), 1; /* 2000 steps forget the start */
     k = 2 * 3.14159265358979 / w.p.L[0];
