@@ -103,9 +103,9 @@
      and storage; wall passes (artificial particles, Morris pairs); box and
      minimum image (Lees-Edwards); neighbour search (cells, half and cross
      Verlet lists); pair passes (density, forces and Euler exchanges, exact
-     pair sweep); integrator and step; observables (g(r), correlators,
-     Carreau fit, MSD, profiles, slabs); guard; checkpoints; world kinds
-     (lifecycle); XYZ and thermo.  Then the HCBD world, in one section on
+     pair sweep); integrator, run-time guard and step; observables (g(r),
+     correlators, Carreau fit, MSD, profiles, slabs); checkpoints; world
+     kinds (lifecycle); XYZ and thermo.  Then the HCBD world, in one section on
      top of that engine: its kernels; parameters and units; storage;
      set-up; lists and pair passes (fluid density, exact sweep or Euler
      pairs, polymer density, transient pairs, forces, coupling); the step
@@ -4088,7 +4088,47 @@ hcbd_result hcbd_stress_read(const hcbd_world *w, double out[4], int64_t *nsteps
     return HCBD_OK;
 }
 
-static hcbd_result hcbd__guard(hcbd_world *w);
+/* >>run-time guard: the whole state, in id order so the particle reported
+   is the lowest offending id whatever the storage. */
+static hcbd_result hcbd__guard(hcbd_world *w)
+{
+    const double L0 = w->p.L[0], L1 = w->p.L[1], L2 = w->p.L[2];
+    int k;
+    for (k = 0; k < w->n; ++k) {
+        const int i = w->slot[k];
+        const double x = w->x[i], y = w->y[i], z = w->z[i];
+        if (!(isfinite(x) && isfinite(y) && isfinite(z)))
+            return hcbd__fail(&w->err, HCBD_ERR_NONFINITE, w->step, k,
+                              "guard at step %lld: particle %d has position (%g, %g, %g)",
+                              (long long)w->step, k, x, y, z);
+        if (w->gibd && !(isfinite(w->vx[i]) && isfinite(w->vy[i]) && isfinite(w->vz[i])))
+            return hcbd__fail(&w->err, HCBD_ERR_NONFINITE, w->step, k,
+                              "guard at step %lld: particle %d has velocity (%g, %g, %g)",
+                              (long long)w->step, k, (double)w->vx[i], (double)w->vy[i],
+                              (double)w->vz[i]);
+        /* images within int32 with room for another box per step */
+        if (!(x >= 0 && x < L0 && y >= 0 && y < L1 && z >= 0 && z < L2) ||
+            w->ix[i] < -0x3FFFFFFF || w->ix[i] > 0x3FFFFFFF || w->iy[i] < -0x3FFFFFFF ||
+            w->iy[i] > 0x3FFFFFFF || w->iz[i] < -0x3FFFFFFF || w->iz[i] > 0x3FFFFFFF ||
+            !isfinite(w->lx[i]))
+            return hcbd__fail(&w->err, HCBD_ERR_OUTSIDE, w->step, k,
+                              "guard at step %lld: particle %d at (%.17g, %.17g, %.17g), "
+                              "images (%d, %d, %d), is outside the box [0, %g) x [0, %g) "
+                              "x [0, %g) or its image count is near overflow",
+                              (long long)w->step, k, x, y, z, (int)w->ix[i], (int)w->iy[i],
+                              (int)w->iz[i], L0, L1, L2);
+        if (w->walls && w->p.guard_walls && (y < w->wall_lo || y > w->wall_hi))
+            return hcbd__fail(&w->err, HCBD_ERR_WALL, w->step, k,
+                              "guard at step %lld: particle %d at y = %.17g is inside a "
+                              "wall (the channel is %g <= y <= %g)",
+                              (long long)w->step, k, y, w->wall_lo, w->wall_hi);
+        if (w->gibd && w->rho_valid && !(w->rho[i] > 0 && isfinite(w->rho[i])))
+            return hcbd__fail(&w->err, HCBD_ERR_NONFINITE, w->step, k,
+                              "guard at step %lld: particle %d has density %g",
+                              (long long)w->step, k, (double)w->rho[i]);
+    }
+    return HCBD_OK;
+}
 
 hcbd_result hcbd_step(hcbd_world *w, int nsteps)
 {
@@ -5272,48 +5312,6 @@ int64_t hcbd_slabs_result(const hcbd_slabs *s, double *out)
         for (c = 0; c < nv; ++c) hcbd__block_stat(t[0], t[4 + 2 * c], t[5 + 2 * c], &o[3 + 2 * c], &o[4 + 2 * c]);
     }
     return s->nblocks;
-}
-
-/* >>run-time guard: the whole state, in id order so the particle reported
-   is the lowest offending id whatever the storage. */
-static hcbd_result hcbd__guard(hcbd_world *w)
-{
-    const double L0 = w->p.L[0], L1 = w->p.L[1], L2 = w->p.L[2];
-    int k;
-    for (k = 0; k < w->n; ++k) {
-        const int i = w->slot[k];
-        const double x = w->x[i], y = w->y[i], z = w->z[i];
-        if (!(isfinite(x) && isfinite(y) && isfinite(z)))
-            return hcbd__fail(&w->err, HCBD_ERR_NONFINITE, w->step, k,
-                              "guard at step %lld: particle %d has position (%g, %g, %g)",
-                              (long long)w->step, k, x, y, z);
-        if (w->gibd && !(isfinite(w->vx[i]) && isfinite(w->vy[i]) && isfinite(w->vz[i])))
-            return hcbd__fail(&w->err, HCBD_ERR_NONFINITE, w->step, k,
-                              "guard at step %lld: particle %d has velocity (%g, %g, %g)",
-                              (long long)w->step, k, (double)w->vx[i], (double)w->vy[i],
-                              (double)w->vz[i]);
-        /* images within int32 with room for another box per step */
-        if (!(x >= 0 && x < L0 && y >= 0 && y < L1 && z >= 0 && z < L2) ||
-            w->ix[i] < -0x3FFFFFFF || w->ix[i] > 0x3FFFFFFF || w->iy[i] < -0x3FFFFFFF ||
-            w->iy[i] > 0x3FFFFFFF || w->iz[i] < -0x3FFFFFFF || w->iz[i] > 0x3FFFFFFF ||
-            !isfinite(w->lx[i]))
-            return hcbd__fail(&w->err, HCBD_ERR_OUTSIDE, w->step, k,
-                              "guard at step %lld: particle %d at (%.17g, %.17g, %.17g), "
-                              "images (%d, %d, %d), is outside the box [0, %g) x [0, %g) "
-                              "x [0, %g) or its image count is near overflow",
-                              (long long)w->step, k, x, y, z, (int)w->ix[i], (int)w->iy[i],
-                              (int)w->iz[i], L0, L1, L2);
-        if (w->walls && w->p.guard_walls && (y < w->wall_lo || y > w->wall_hi))
-            return hcbd__fail(&w->err, HCBD_ERR_WALL, w->step, k,
-                              "guard at step %lld: particle %d at y = %.17g is inside a "
-                              "wall (the channel is %g <= y <= %g)",
-                              (long long)w->step, k, y, w->wall_lo, w->wall_hi);
-        if (w->gibd && w->rho_valid && !(w->rho[i] > 0 && isfinite(w->rho[i])))
-            return hcbd__fail(&w->err, HCBD_ERR_NONFINITE, w->step, k,
-                              "guard at step %lld: particle %d has density %g",
-                              (long long)w->step, k, (double)w->rho[i]);
-    }
-    return HCBD_OK;
 }
 
 /* >>checkpoint: a header of seven little-endian 64-bit words (magic,
