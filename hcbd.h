@@ -99,10 +99,10 @@
    CONTENTS (implementation; each ">>" banner below opens one of these)
      errors; parameters and their checks; random numbers; kernels (Wendland,
      star potential and its force table); GI-BD equations; fixed-point pair
-     sums; walls (repulsion, depletion); theory and stability limits; world
-     and storage; wall passes (artificial particles, Morris pairs); box and
-     minimum image (Lees-Edwards); neighbour search (cells, half and cross
-     Verlet lists); pair passes (density, forces and Euler exchanges, exact
+     sums; walls (repulsion, depletion); theory and stability limits; box
+     and minimum image (Lees-Edwards); world and storage; wall passes
+     (artificial particles, Morris pairs); neighbour search (cells, half and
+     cross Verlet lists); pair passes (density, forces and Euler exchanges, exact
      pair sweep); integrator, run-time guard and step; observables (g(r),
      correlators, Carreau fit, MSD, profiles, slabs); checkpoints; world
      kinds (lifecycle); XYZ and thermo.  Then the HCBD world, in one section on
@@ -2215,6 +2215,90 @@ hcbd_result hcbd_stability(const hcbd_params *p, hcbd_limit *out, int *n)
     return HCBD_OK;
 }
 
+/* >>box and minimum image (Lees-Edwards), ahead of everything that places
+   or pairs particles.  hcbd__delta_box is the one routine every pair pass
+   uses: the minimum-image displacement d = x_i - x_j of a pair from its
+   raw coordinate differences, and the returned image index k of j: k = +1
+   when the nearest image of j is in the box above (shifted by +offset in
+   x, its velocity variable by +gdot Ly), -1 below, 0 inside.  Without
+   shear k is always 0. */
+/* A coordinate put back into [0, L), the images crossed counted in img. */
+static inline void hcbd__wrap(double L, double *x, int32_t *img)
+{
+    if (*x >= 0.0 && *x < L) return;
+    if (*x >= L && *x < 2.0 * L) { /* the step loop's case: one box at most */
+        *x -= L;
+        *img += 1;
+    } else if (*x < 0.0 && *x >= -L) {
+        *x += L;
+        *img -= 1;
+    } else {
+        double k = floor(*x / L);
+        *x -= k * L;
+        *img += (int32_t)k;
+    }
+    if (*x >= L) { *x -= L; *img += 1; } /* round-off of x - kL */
+    if (*x < 0) *x = 0;
+}
+
+/* Minimum image of a difference of two wrapped coordinates (|d| < L). */
+static inline double hcbd__mi(double d, double L)
+{
+    double h = 0.5 * L;
+    return d > h ? d - L : (d < -h ? d + L : d);
+}
+
+typedef struct hcbd__box {
+    double L[3], offset;
+    int le;
+} hcbd__box;
+
+/* Hot loops copy the box into a local: a store into a pair buffer could
+   otherwise alias w->p.L and force a reload at every pair. */
+static inline hcbd__box hcbd__box_make(const double L[3], double offset, int le)
+{
+    hcbd__box b;
+    b.L[0] = L[0]; b.L[1] = L[1]; b.L[2] = L[2];
+    b.offset = offset;
+    b.le = le;
+    return b;
+}
+
+static inline hcbd__box hcbd__box_of(const hcbd_world *w)
+{
+    return hcbd__box_make(w->p.L, w->le_offset, w->le_on);
+}
+
+static inline int hcbd__delta_box(const hcbd__box *b, double dx, double dy, double dz, double d[3])
+{
+    int k = 0;
+    const double Ly = b->L[1];
+    if (dy > 0.5 * Ly) {
+        dy -= Ly;
+        k = 1;
+    } else if (dy < -0.5 * Ly) {
+        dy += Ly;
+        k = -1;
+    }
+    if (k && b->le) {
+        double Lx = b->L[0];
+        dx -= k * b->offset; /* now in (-2 Lx, 2 Lx) */
+        dx -= Lx * floor(dx / Lx + 0.5);
+    } else {
+        dx = hcbd__mi(dx, b->L[0]);
+    }
+    d[0] = dx;
+    d[1] = dy;
+    d[2] = hcbd__mi(dz, b->L[2]);
+    return b->le ? k : 0;
+}
+
+static inline int hcbd__delta(const hcbd_world *w, double dx, double dy, double dz, double d[3])
+{
+    hcbd__box b = hcbd__box_of(w);
+    return hcbd__delta_box(&b, dx, dy, dz, d);
+}
+
 /* >>world and storage: the block layout, init and particle set-up */
 static void hcbd__take(char *base, size_t *off, size_t bytes, void **out)
 {
@@ -2492,31 +2576,6 @@ hcbd_result hcbd_world_init(hcbd_world *w, const hcbd_world_def *def, void *mem,
     w->n = 0;
     w->live = HCBD__LIVE;
     return HCBD_OK;
-}
-
-static inline void hcbd__wrap(double L, double *x, int32_t *img)
-{
-    if (*x >= 0.0 && *x < L) return;
-    if (*x >= L && *x < 2.0 * L) { /* the step loop's case: one box at most */
-        *x -= L;
-        *img += 1;
-    } else if (*x < 0.0 && *x >= -L) {
-        *x += L;
-        *img -= 1;
-    } else {
-        double k = floor(*x / L);
-        *x -= k * L;
-        *img += (int32_t)k;
-    }
-    if (*x >= L) { *x -= L; *img += 1; } /* round-off of x - kL */
-    if (*x < 0) *x = 0;
-}
-
-/* Minimum image of a difference of two wrapped coordinates (|d| < L). */
-static inline double hcbd__mi(double d, double L)
-{
-    double h = 0.5 * L;
-    return d > h ? d - L : (d < -h ? d + L : d);
 }
 
 /* Position source for the shared set-up path: the caller's array, a
@@ -2860,62 +2919,6 @@ int64_t hcbd_wall_penetrations(const hcbd_world *w, int64_t *last_step, int *las
     if (last_step) *last_step = w ? w->wall_pen_step : -1;
     if (last_id) *last_id = w ? w->wall_pen_id : -1;
     return w ? w->wall_pen : 0;
-}
-
-/* >>box and minimum image (Lees-Edwards).  The one routine every pair
-   pass uses: the minimum-image displacement d = x_i - x_j of a pair from
-   its raw coordinate differences, and the returned image index k of j: k = +1 when the nearest image of j
-   is in the box above (shifted by +offset in x, its velocity variable by
-   +gdot Ly), -1 below, 0 inside.  Without shear k is always 0. */
-typedef struct hcbd__box {
-    double L[3], offset;
-    int le;
-} hcbd__box;
-
-/* Hot loops copy the box into a local: a store into a pair buffer could
-   otherwise alias w->p.L and force a reload at every pair. */
-static inline hcbd__box hcbd__box_make(const double L[3], double offset, int le)
-{
-    hcbd__box b;
-    b.L[0] = L[0]; b.L[1] = L[1]; b.L[2] = L[2];
-    b.offset = offset;
-    b.le = le;
-    return b;
-}
-
-static inline hcbd__box hcbd__box_of(const hcbd_world *w)
-{
-    return hcbd__box_make(w->p.L, w->le_offset, w->le_on);
-}
-
-static inline int hcbd__delta_box(const hcbd__box *b, double dx, double dy, double dz, double d[3])
-{
-    int k = 0;
-    const double Ly = b->L[1];
-    if (dy > 0.5 * Ly) {
-        dy -= Ly;
-        k = 1;
-    } else if (dy < -0.5 * Ly) {
-        dy += Ly;
-        k = -1;
-    }
-    if (k && b->le) {
-        double Lx = b->L[0];
-        dx -= k * b->offset; /* now in (-2 Lx, 2 Lx) */
-        dx -= Lx * floor(dx / Lx + 0.5);
-    } else {
-        dx = hcbd__mi(dx, b->L[0]);
-    }
-    d[0] = dx;
-    d[1] = dy;
-    d[2] = hcbd__mi(dz, b->L[2]);
-    return b->le ? k : 0;
-}
-
-static inline int hcbd__delta(const hcbd_world *w, double dx, double dy, double dz, double d[3])
-{
-    hcbd__box b = hcbd__box_of(w);
-    return hcbd__delta_box(&b, dx, dy, dz, d);
 }
 
 /* >>neighbour search: cells, half and cross Verlet lists, their rebuild */
