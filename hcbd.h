@@ -99,10 +99,10 @@
    CONTENTS (implementation; each ">>" banner below opens one of these)
      errors; parameters and their checks; random numbers; kernels (Wendland,
      star potential and its force table); GI-BD equations; fixed-point pair
-     sums; walls (repulsion, depletion); theory and stability limits; box
-     and minimum image (Lees-Edwards); world and storage; wall passes
-     (artificial particles, Morris pairs); neighbour search (cells, half and
-     cross Verlet lists); pair passes (density, forces and Euler exchanges, exact
+     sums; box and minimum image (Lees-Edwards); walls (repulsion,
+     depletion, artificial particles, Morris pairs); theory and stability
+     limits; world and storage; neighbour search (cells, half and cross
+     Verlet lists); pair passes (density, forces and Euler exchanges, exact
      pair sweep); integrator, run-time guard and step; observables (g(r),
      correlators, Carreau fit, MSD, profiles, slabs); checkpoints; world
      kinds (lifecycle); XYZ and thermo.  Then the HCBD world, in one section on
@@ -2025,7 +2025,93 @@ static void hcbd__zero64(int64_t *a, int n)
 
 #define HCBD__ALIGN 64
 
-/* >>walls (MODEL 4): the repulsion and the depletion width */
+/* >>box and minimum image (Lees-Edwards), ahead of everything that places
+   or pairs particles.  hcbd__delta_box is the one routine every pair pass
+   uses: the minimum-image displacement d = x_i - x_j of a pair from its
+   raw coordinate differences, and the returned image index k of j: k = +1
+   when the nearest image of j is in the box above (shifted by +offset in
+   x, its velocity variable by +gdot Ly), -1 below, 0 inside.  Without
+   shear k is always 0. */
+/* A coordinate put back into [0, L), the images crossed counted in img. */
+static inline void hcbd__wrap(double L, double *x, int32_t *img)
+{
+    if (*x >= 0.0 && *x < L) return;
+    if (*x >= L && *x < 2.0 * L) { /* the step loop's case: one box at most */
+        *x -= L;
+        *img += 1;
+    } else if (*x < 0.0 && *x >= -L) {
+        *x += L;
+        *img -= 1;
+    } else {
+        double k = floor(*x / L);
+        *x -= k * L;
+        *img += (int32_t)k;
+    }
+    if (*x >= L) { *x -= L; *img += 1; } /* round-off of x - kL */
+    if (*x < 0) *x = 0;
+}
+
+/* Minimum image of a difference of two wrapped coordinates (|d| < L). */
+static inline double hcbd__mi(double d, double L)
+{
+    double h = 0.5 * L;
+    return d > h ? d - L : (d < -h ? d + L : d);
+}
+
+typedef struct hcbd__box {
+    double L[3], offset;
+    int le;
+} hcbd__box;
+
+/* Hot loops copy the box into a local: a store into a pair buffer could
+   otherwise alias w->p.L and force a reload at every pair. */
+static inline hcbd__box hcbd__box_make(const double L[3], double offset, int le)
+{
+    hcbd__box b;
+    b.L[0] = L[0]; b.L[1] = L[1]; b.L[2] = L[2];
+    b.offset = offset;
+    b.le = le;
+    return b;
+}
+
+static inline hcbd__box hcbd__box_of(const hcbd_world *w)
+{
+    return hcbd__box_make(w->p.L, w->le_offset, w->le_on);
+}
+
+static inline int hcbd__delta_box(const hcbd__box *b, double dx, double dy, double dz, double d[3])
+{
+    int k = 0;
+    const double Ly = b->L[1];
+    if (dy > 0.5 * Ly) {
+        dy -= Ly;
+        k = 1;
+    } else if (dy < -0.5 * Ly) {
+        dy += Ly;
+        k = -1;
+    }
+    if (k && b->le) {
+        double Lx = b->L[0];
+        dx -= k * b->offset; /* now in (-2 Lx, 2 Lx) */
+        dx -= Lx * floor(dx / Lx + 0.5);
+    } else {
+        dx = hcbd__mi(dx, b->L[0]);
+    }
+    d[0] = dx;
+    d[1] = dy;
+    d[2] = hcbd__mi(dz, b->L[2]);
+    return b->le ? k : 0;
+}
+
+static inline int hcbd__delta(const hcbd_world *w, double dx, double dy, double dz, double d[3])
+{
+    hcbd__box b = hcbd__box_of(w);
+    return hcbd__delta_box(&b, dx, dy, dz, d);
+}
+
+/* >>walls (MODEL 4): every wall piece of the engine, here: the repulsion and
+   the depletion width, then the passes of the walled build (artificial
+   particles, Morris pairs) */
 double hcbd_wall_potential(const hcbd_params *p, double y, double *fy)
 {
     double e = 0.0, f = 0.0, Ly, planes[2];
@@ -2059,6 +2145,170 @@ static double hcbd__depletion(const hcbd_params *p)
         s += c * (1.0 - exp(-hcbd_wall_potential(p, y, NULL) / p->kT));
     }
     return s * h / (3.0 * n);
+}
+
+/* Artificial particles: round(n# x wall volume), only for GI-BD (their job
+   is friction), binned into x-z columns at least Rc wide (one column along
+   an axis with fewer than 3, so no column is visited twice). */
+static int hcbd__art_count(const hcbd_params *p, int acol[2])
+{
+    double n;
+    int d;
+    acol[0] = acol[1] = 1;
+    if (!HCBD__WALLS || p->wall_thickness <= 0 || p->dynamics != HCBD_DYN_GIBD) return 0;
+    for (d = 0; d < 2; ++d) {
+        double k = floor(p->L[2 * d] / p->Rc);
+        acol[d] = k < 3.0 ? 1 : (k > 256.0 ? 256 : (int)k);
+    }
+    n = floor(p->density * p->L[0] * 2.0 * p->wall_thickness * p->L[2] + 0.5);
+    return n > (double)(INT32_MAX / 4) ? INT32_MAX / 4 : (int)n;
+}
+
+/* Wall passes: artificial particles are redrawn every step from a
+   counter-based stream keyed by (seed, step), uniform in the wall slab
+   [-t, t) of the periodic y axis, and sorted into x-z columns. */
+static void hcbd__art_pos(const hcbd_world *w, uint64_t *g, double r[3])
+{
+    r[0] = hcbd__u01(hcbd_splitmix64(g)) * w->p.L[0];
+    r[1] = (2.0 * hcbd__u01(hcbd_splitmix64(g)) - 1.0) * w->p.wall_thickness;
+    if (r[1] < 0.0) r[1] += w->p.L[1];
+    r[2] = hcbd__u01(hcbd_splitmix64(g)) * w->p.L[2];
+}
+
+static int hcbd__art_col(const hcbd_world *w, double x, double z)
+{
+    int cx = (int)(x * w->acol[0] / w->p.L[0]), cz = (int)(z * w->acol[1] / w->p.L[2]);
+    if (cx >= w->acol[0]) cx = w->acol[0] - 1;
+    if (cz >= w->acol[1]) cz = w->acol[1] - 1;
+    return cx * w->acol[1] + cz;
+}
+
+/* Counting sort in two passes over the same stream, so no scratch. */
+static void hcbd__wall_draw(hcbd_world *w)
+{
+    const int ncol = w->acol[0] * w->acol[1];
+    const uint64_t key = hcbd__mix64(w->wall_key ^ hcbd__mix64((uint64_t)w->step));
+    uint64_t g = key;
+    int k, c;
+    for (c = 0; c <= ncol; ++c) w->acol_start[c] = 0;
+    for (k = 0; k < w->n_art; ++k) {
+        double r[3];
+        hcbd__art_pos(w, &g, r);
+        w->acol_start[hcbd__art_col(w, r[0], r[2]) + 1]++;
+    }
+    for (c = 0; c < ncol; ++c) {
+        w->acol_start[c + 1] += w->acol_start[c];
+        w->acol_of[c] = w->acol_start[c];
+    }
+    g = key;
+    for (k = 0; k < w->n_art; ++k) {
+        double r[3];
+        int32_t q;
+        hcbd__art_pos(w, &g, r);
+        q = w->acol_of[hcbd__art_col(w, r[0], r[2])]++;
+        w->ax[q] = (hcbd_real)r[0]; w->ay[q] = (hcbd_real)r[1]; w->az[q] = (hcbd_real)r[2];
+    }
+}
+
+/* The (up to 9) columns within Rc of x, z. */
+static int hcbd__art_cols(const hcbd_world *w, double x, double z, int cols[9])
+{
+    int c = hcbd__art_col(w, x, z), cx = c / w->acol[1], cz = c % w->acol[1];
+    int nx = w->acol[0] < 3 ? 1 : 3, nz = w->acol[1] < 3 ? 1 : 3, a, b, k = 0;
+    for (a = 0; a < nx; ++a)
+        for (b = 0; b < nz; ++b) {
+            int ux = nx == 1 ? 0 : (cx + a - 1 + w->acol[0]) % w->acol[0];
+            int uz = nz == 1 ? 0 : (cz + b - 1 + w->acol[1]) % w->acol[1];
+            cols[k++] = ux * w->acol[1] + uz;
+        }
+    return k;
+}
+
+static int hcbd__near_wall(const hcbd_world *w, double y)
+{
+    return y < w->wall_lo + w->p.Rc || y > w->wall_hi - w->p.Rc;
+}
+
+/* Sum of the weights of the artificial particles around (x, y, z): they
+   count in the real particles' densities (MODEL 4). */
+static double hcbd__art_wsum(const hcbd_world *w, double x, double y, double z)
+{
+    const double Rc2 = w->p.Rc * w->p.Rc, invRc = 1.0 / w->p.Rc;
+    double s = 0.0;
+    int cols[9], nc = hcbd__art_cols(w, x, z, cols), c;
+    for (c = 0; c < nc; ++c) {
+        int32_t k;
+        for (k = w->acol_start[cols[c]]; k < w->acol_start[cols[c] + 1]; ++k) {
+            double dx = hcbd__mi(x - w->ax[k], w->p.L[0]), dy = hcbd__mi(y - w->ay[k], w->p.L[1]);
+            double dz = hcbd__mi(z - w->az[k], w->p.L[2]), r2 = dx * dx + dy * dy + dz * dz;
+            if (r2 < Rc2) {
+                double q = sqrt(r2) * invRc, a = 1.0 - q;
+                s += hcbd__weight(w->cw, q, a);
+            }
+        }
+    }
+    return s;
+}
+
+/* Friction and noise of the artificial particles on real particle i (Morris
+   et al. 1997, MODEL 4): the artificial particle B takes the velocity with
+   v_i - v_B = beta (v_i - v_wall), beta = min(beta_max, 1 + d_B/d_A), both
+   distances from the interface between them (the Morris plane); the noise
+   carries sqrt(beta) so the pair keeps its fluctuation-dissipation balance.
+   The wall absorbs the momentum. */
+static void hcbd__morris(hcbd_world *w, int i, uint64_t key, double P[3], int exact)
+{
+    const double Rc2 = w->p.Rc * w->p.Rc, invRc = 1.0 / w->p.Rc;
+    const double cs = w->cf * w->m * w->m * w->p.dt / w->p.tau, two_kT = 2.0 * w->p.kT;
+    const double bmax = w->p.wall_beta_max, m = w->m, inv_m = w->inv_m;
+    const double xi = w->x[i], yi = w->y[i], zi = w->z[i], iri = w->inv_rho[i];
+    const uint64_t idk = (uint64_t)(uint32_t)w->id[i] << 32;
+    double v[3];
+    int cols[9], nc = hcbd__art_cols(w, xi, zi, cols), c, d;
+    v[0] = w->vx[i]; v[1] = w->vy[i]; v[2] = w->vz[i];
+    for (c = 0; c < nc; ++c) {
+        int32_t k;
+        for (k = w->acol_start[cols[c]]; k < w->acol_start[cols[c] + 1]; ++k) {
+            double dx = hcbd__mi(xi - w->ax[k], w->p.L[0]), dy = hcbd__mi(yi - w->ay[k], w->p.L[1]);
+            double dz = hcbd__mi(zi - w->az[k], w->p.L[2]), r2 = dx * dx + dy * dy + dz * dz;
+            double q, a, sdt, dA, dB, vw[3] = {0, 0, 0}, beta, nb, z3[3] = {0, 0, 0};
+            if (r2 >= Rc2) continue;
+            q = sqrt(r2) * invRc;
+            a = 1.0 - q;
+            sdt = hcbd__sdt(cs, iri, w->art_inv_rho, a);
+            if (dy > 0.0) { /* B below i: behind the bottom interface */
+                dA = yi - w->morris_lo;
+                dB = w->morris_lo - (yi - dy);
+                vw[0] = w->p.wall_vx[0];
+            } else {
+                dA = w->morris_hi - yi;
+                dB = (yi - dy) - w->morris_hi;
+                vw[0] = w->p.wall_vx[1];
+            }
+            beta = (dA > 0.0 && dB >= 0.0) ? 1.0 + dB / dA : bmax;
+            if (beta > bmax) beta = bmax;
+            nb = w->p.wall_noise_beta ? 1.0 : 1.0 / beta; /* noise variance factor */
+            if (two_kT > 0.0) hcbd__noise3(w, hcbd__mix64(key ^ idk ^ (uint64_t)k), z3);
+            if (exact) {
+                /* the wall is a reservoir: v - v_wall relaxes at the rate
+                   beta sdt / (m dt), solved over the step */
+                const double om = -expm1(-beta * sdt * inv_m);
+                const double b = sqrt(0.5 * two_kT * m * om * (2.0 - om) * nb);
+                for (d = 0; d < 3; ++d) v[d] += (-m * om * (v[d] - vw[d]) + b * z3[d]) * inv_m;
+            } else {
+                const double b = sqrt(two_kT * sdt * beta * nb);
+                for (d = 0; d < 3; ++d) P[d] += -beta * sdt * (v[d] - vw[d]) + b * z3[d];
+            }
+        }
+    }
+    if (exact) { w->vx[i] = (hcbd_real)v[0]; w->vy[i] = (hcbd_real)v[1]; w->vz[i] = (hcbd_real)v[2]; }
+}
+
+int64_t hcbd_wall_penetrations(const hcbd_world *w, int64_t *last_step, int *last_id)
+{
+    if (last_step) *last_step = w ? w->wall_pen_step : -1;
+    if (last_id) *last_id = w ? w->wall_pen_id : -1;
+    return w ? w->wall_pen : 0;
 }
 
 /* >>theory and stability limits (hcbd_theory_of, hcbd_stability) */
@@ -2215,90 +2465,6 @@ hcbd_result hcbd_stability(const hcbd_params *p, hcbd_limit *out, int *n)
     return HCBD_OK;
 }
 
-/* >>box and minimum image (Lees-Edwards), ahead of everything that places
-   or pairs particles.  hcbd__delta_box is the one routine every pair pass
-   uses: the minimum-image displacement d = x_i - x_j of a pair from its
-   raw coordinate differences, and the returned image index k of j: k = +1
-   when the nearest image of j is in the box above (shifted by +offset in
-   x, its velocity variable by +gdot Ly), -1 below, 0 inside.  Without
-   shear k is always 0. */
-/* A coordinate put back into [0, L), the images crossed counted in img. */
-static inline void hcbd__wrap(double L, double *x, int32_t *img)
-{
-    if (*x >= 0.0 && *x < L) return;
-    if (*x >= L && *x < 2.0 * L) { /* the step loop's case: one box at most */
-        *x -= L;
-        *img += 1;
-    } else if (*x < 0.0 && *x >= -L) {
-        *x += L;
-        *img -= 1;
-    } else {
-        double k = floor(*x / L);
-        *x -= k * L;
-        *img += (int32_t)k;
-    }
-    if (*x >= L) { *x -= L; *img += 1; } /* round-off of x - kL */
-    if (*x < 0) *x = 0;
-}
-
-/* Minimum image of a difference of two wrapped coordinates (|d| < L). */
-static inline double hcbd__mi(double d, double L)
-{
-    double h = 0.5 * L;
-    return d > h ? d - L : (d < -h ? d + L : d);
-}
-
-typedef struct hcbd__box {
-    double L[3], offset;
-    int le;
-} hcbd__box;
-
-/* Hot loops copy the box into a local: a store into a pair buffer could
-   otherwise alias w->p.L and force a reload at every pair. */
-static inline hcbd__box hcbd__box_make(const double L[3], double offset, int le)
-{
-    hcbd__box b;
-    b.L[0] = L[0]; b.L[1] = L[1]; b.L[2] = L[2];
-    b.offset = offset;
-    b.le = le;
-    return b;
-}
-
-static inline hcbd__box hcbd__box_of(const hcbd_world *w)
-{
-    return hcbd__box_make(w->p.L, w->le_offset, w->le_on);
-}
-
-static inline int hcbd__delta_box(const hcbd__box *b, double dx, double dy, double dz, double d[3])
-{
-    int k = 0;
-    const double Ly = b->L[1];
-    if (dy > 0.5 * Ly) {
-        dy -= Ly;
-        k = 1;
-    } else if (dy < -0.5 * Ly) {
-        dy += Ly;
-        k = -1;
-    }
-    if (k && b->le) {
-        double Lx = b->L[0];
-        dx -= k * b->offset; /* now in (-2 Lx, 2 Lx) */
-        dx -= Lx * floor(dx / Lx + 0.5);
-    } else {
-        dx = hcbd__mi(dx, b->L[0]);
-    }
-    d[0] = dx;
-    d[1] = dy;
-    d[2] = hcbd__mi(dz, b->L[2]);
-    return b->le ? k : 0;
-}
-
-static inline int hcbd__delta(const hcbd_world *w, double dx, double dy, double dz, double d[3])
-{
-    hcbd__box b = hcbd__box_of(w);
-    return hcbd__delta_box(&b, dx, dy, dz, d);
-}
-
 /* >>world and storage: the block layout, init and particle set-up */
 static void hcbd__take(char *base, size_t *off, size_t bytes, void **out)
 {
@@ -2362,23 +2528,6 @@ static int64_t hcbd__auto_pairs(const hcbd_world_def *def)
     double per = 0.5 * (double)def->capacity / V * (4.0 / 3.0) * HCBD__PI * rl * rl * rl;
     if (!hcbd__needs_pairs(p)) return 0;
     return (int64_t)(1.6 * per * def->capacity) + 8 * (int64_t)def->capacity;
-}
-
-/* Artificial particles: round(n# x wall volume), only for GI-BD (their job
-   is friction), binned into x-z columns at least Rc wide (one column along
-   an axis with fewer than 3, so no column is visited twice). */
-static int hcbd__art_count(const hcbd_params *p, int acol[2])
-{
-    double n;
-    int d;
-    acol[0] = acol[1] = 1;
-    if (!HCBD__WALLS || p->wall_thickness <= 0 || p->dynamics != HCBD_DYN_GIBD) return 0;
-    for (d = 0; d < 2; ++d) {
-        double k = floor(p->L[2 * d] / p->Rc);
-        acol[d] = k < 3.0 ? 1 : (k > 256.0 ? 256 : (int)k);
-    }
-    n = floor(p->density * p->L[0] * 2.0 * p->wall_thickness * p->L[2] + 0.5);
-    return n > (double)(INT32_MAX / 4) ? INT32_MAX / 4 : (int)n;
 }
 
 /* One function sizes the block and (with base != NULL) assigns pointers, so
@@ -2772,153 +2921,6 @@ hcbd_result hcbd_world_set_velocities(hcbd_world *w, const double *v)
         w->vz[s] = (hcbd_real)v[3 * i + 2];
     }
     return HCBD_OK;
-}
-
-/* >>wall passes: artificial particles are redrawn every step from a
-   counter-based stream keyed by (seed, step), uniform in the wall slab
-   [-t, t) of the periodic y axis, and sorted into x-z columns. */
-static void hcbd__art_pos(const hcbd_world *w, uint64_t *g, double r[3])
-{
-    r[0] = hcbd__u01(hcbd_splitmix64(g)) * w->p.L[0];
-    r[1] = (2.0 * hcbd__u01(hcbd_splitmix64(g)) - 1.0) * w->p.wall_thickness;
-    if (r[1] < 0.0) r[1] += w->p.L[1];
-    r[2] = hcbd__u01(hcbd_splitmix64(g)) * w->p.L[2];
-}
-
-static int hcbd__art_col(const hcbd_world *w, double x, double z)
-{
-    int cx = (int)(x * w->acol[0] / w->p.L[0]), cz = (int)(z * w->acol[1] / w->p.L[2]);
-    if (cx >= w->acol[0]) cx = w->acol[0] - 1;
-    if (cz >= w->acol[1]) cz = w->acol[1] - 1;
-    return cx * w->acol[1] + cz;
-}
-
-/* Counting sort in two passes over the same stream, so no scratch. */
-static void hcbd__wall_draw(hcbd_world *w)
-{
-    const int ncol = w->acol[0] * w->acol[1];
-    const uint64_t key = hcbd__mix64(w->wall_key ^ hcbd__mix64((uint64_t)w->step));
-    uint64_t g = key;
-    int k, c;
-    for (c = 0; c <= ncol; ++c) w->acol_start[c] = 0;
-    for (k = 0; k < w->n_art; ++k) {
-        double r[3];
-        hcbd__art_pos(w, &g, r);
-        w->acol_start[hcbd__art_col(w, r[0], r[2]) + 1]++;
-    }
-    for (c = 0; c < ncol; ++c) {
-        w->acol_start[c + 1] += w->acol_start[c];
-        w->acol_of[c] = w->acol_start[c];
-    }
-    g = key;
-    for (k = 0; k < w->n_art; ++k) {
-        double r[3];
-        int32_t q;
-        hcbd__art_pos(w, &g, r);
-        q = w->acol_of[hcbd__art_col(w, r[0], r[2])]++;
-        w->ax[q] = (hcbd_real)r[0]; w->ay[q] = (hcbd_real)r[1]; w->az[q] = (hcbd_real)r[2];
-    }
-}
-
-/* The (up to 9) columns within Rc of x, z. */
-static int hcbd__art_cols(const hcbd_world *w, double x, double z, int cols[9])
-{
-    int c = hcbd__art_col(w, x, z), cx = c / w->acol[1], cz = c % w->acol[1];
-    int nx = w->acol[0] < 3 ? 1 : 3, nz = w->acol[1] < 3 ? 1 : 3, a, b, k = 0;
-    for (a = 0; a < nx; ++a)
-        for (b = 0; b < nz; ++b) {
-            int ux = nx == 1 ? 0 : (cx + a - 1 + w->acol[0]) % w->acol[0];
-            int uz = nz == 1 ? 0 : (cz + b - 1 + w->acol[1]) % w->acol[1];
-            cols[k++] = ux * w->acol[1] + uz;
-        }
-    return k;
-}
-
-static int hcbd__near_wall(const hcbd_world *w, double y)
-{
-    return y < w->wall_lo + w->p.Rc || y > w->wall_hi - w->p.Rc;
-}
-
-/* Sum of the weights of the artificial particles around (x, y, z): they
-   count in the real particles' densities (MODEL 4). */
-static double hcbd__art_wsum(const hcbd_world *w, double x, double y, double z)
-{
-    const double Rc2 = w->p.Rc * w->p.Rc, invRc = 1.0 / w->p.Rc;
-    double s = 0.0;
-    int cols[9], nc = hcbd__art_cols(w, x, z, cols), c;
-    for (c = 0; c < nc; ++c) {
-        int32_t k;
-        for (k = w->acol_start[cols[c]]; k < w->acol_start[cols[c] + 1]; ++k) {
-            double dx = hcbd__mi(x - w->ax[k], w->p.L[0]), dy = hcbd__mi(y - w->ay[k], w->p.L[1]);
-            double dz = hcbd__mi(z - w->az[k], w->p.L[2]), r2 = dx * dx + dy * dy + dz * dz;
-            if (r2 < Rc2) {
-                double q = sqrt(r2) * invRc, a = 1.0 - q;
-                s += hcbd__weight(w->cw, q, a);
-            }
-        }
-    }
-    return s;
-}
-
-/* Friction and noise of the artificial particles on real particle i (Morris
-   et al. 1997, MODEL 4): the artificial particle B takes the velocity with
-   v_i - v_B = beta (v_i - v_wall), beta = min(beta_max, 1 + d_B/d_A), both
-   distances from the interface between them (the Morris plane); the noise
-   carries sqrt(beta) so the pair keeps its fluctuation-dissipation balance.
-   The wall absorbs the momentum. */
-static void hcbd__morris(hcbd_world *w, int i, uint64_t key, double P[3], int exact)
-{
-    const double Rc2 = w->p.Rc * w->p.Rc, invRc = 1.0 / w->p.Rc;
-    const double cs = w->cf * w->m * w->m * w->p.dt / w->p.tau, two_kT = 2.0 * w->p.kT;
-    const double bmax = w->p.wall_beta_max, m = w->m, inv_m = w->inv_m;
-    const double xi = w->x[i], yi = w->y[i], zi = w->z[i], iri = w->inv_rho[i];
-    const uint64_t idk = (uint64_t)(uint32_t)w->id[i] << 32;
-    double v[3];
-    int cols[9], nc = hcbd__art_cols(w, xi, zi, cols), c, d;
-    v[0] = w->vx[i]; v[1] = w->vy[i]; v[2] = w->vz[i];
-    for (c = 0; c < nc; ++c) {
-        int32_t k;
-        for (k = w->acol_start[cols[c]]; k < w->acol_start[cols[c] + 1]; ++k) {
-            double dx = hcbd__mi(xi - w->ax[k], w->p.L[0]), dy = hcbd__mi(yi - w->ay[k], w->p.L[1]);
-            double dz = hcbd__mi(zi - w->az[k], w->p.L[2]), r2 = dx * dx + dy * dy + dz * dz;
-            double q, a, sdt, dA, dB, vw[3] = {0, 0, 0}, beta, nb, z3[3] = {0, 0, 0};
-            if (r2 >= Rc2) continue;
-            q = sqrt(r2) * invRc;
-            a = 1.0 - q;
-            sdt = hcbd__sdt(cs, iri, w->art_inv_rho, a);
-            if (dy > 0.0) { /* B below i: behind the bottom interface */
-                dA = yi - w->morris_lo;
-                dB = w->morris_lo - (yi - dy);
-                vw[0] = w->p.wall_vx[0];
-            } else {
-                dA = w->morris_hi - yi;
-                dB = (yi - dy) - w->morris_hi;
-                vw[0] = w->p.wall_vx[1];
-            }
-            beta = (dA > 0.0 && dB >= 0.0) ? 1.0 + dB / dA : bmax;
-            if (beta > bmax) beta = bmax;
-            nb = w->p.wall_noise_beta ? 1.0 : 1.0 / beta; /* noise variance factor */
-            if (two_kT > 0.0) hcbd__noise3(w, hcbd__mix64(key ^ idk ^ (uint64_t)k), z3);
-            if (exact) {
-                /* the wall is a reservoir: v - v_wall relaxes at the rate
-                   beta sdt / (m dt), solved over the step */
-                const double om = -expm1(-beta * sdt * inv_m);
-                const double b = sqrt(0.5 * two_kT * m * om * (2.0 - om) * nb);
-                for (d = 0; d < 3; ++d) v[d] += (-m * om * (v[d] - vw[d]) + b * z3[d]) * inv_m;
-            } else {
-                const double b = sqrt(two_kT * sdt * beta * nb);
-                for (d = 0; d < 3; ++d) P[d] += -beta * sdt * (v[d] - vw[d]) + b * z3[d];
-            }
-        }
-    }
-    if (exact) { w->vx[i] = (hcbd_real)v[0]; w->vy[i] = (hcbd_real)v[1]; w->vz[i] = (hcbd_real)v[2]; }
-}
-
-int64_t hcbd_wall_penetrations(const hcbd_world *w, int64_t *last_step, int *last_id)
-{
-    if (last_step) *last_step = w ? w->wall_pen_step : -1;
-    if (last_id) *last_id = w ? w->wall_pen_id : -1;
-    return w ? w->wall_pen : 0;
 }
 
 /* >>neighbour search: cells, half and cross Verlet lists, their rebuild */
