@@ -374,6 +374,32 @@ typedef struct hcbd__zig {
     double r[256];
 } hcbd__zig;
 
+/* What both worlds keep alike, embedded in each as w->core: the box's
+   Lees-Edwards state, the Verlet skin, the fixed-point scales of the pair
+   sums, the stress accumulation (hcbd_stress_enable, hcbd_hc_stress_enable),
+   the Gaussian table and the memory block.  The public face of a world (p,
+   err, step) stays a member of its own, since C99 has no anonymous members:
+   w.err and w.step read as before.  The functions written once for both
+   worlds (lifecycle, threads, checkpoint wrappers, stress, temperature and
+   momentum, the guard's position and velocity scan) take the core, the
+   error and step, and a species view (hcbd__vset). */
+#define HCBD__NSTRESS 10 /* the most stress parts a world accumulates */
+typedef struct hcbd__core {
+    /* Lees-Edwards: offset s of the image above, velocity jump gdot L[1] */
+    int le_on;
+    double le_offset, le_vjump;
+    double skin;
+    /* pair sums in 64-bit fixed point: value = sum / q, |term| < lim */
+    double qF, qW, limF;
+    int stress_on;
+    int64_t stress_steps;
+    double stress_sum[HCBD__NSTRESS];
+    hcbd__zig *zig;
+    uint64_t live;        /* HCBD__LIVE while initialised: loaders replace
+                             a live world only once the new one is built */
+    void *mem;            /* the block _create allocated (NULL after _init) */
+} hcbd__core;
+
 /* Cells and a half Verlet list of one set of particles, the machinery both
    worlds share.  Cells: z slowest, at least rlist wide; perm lists the
    slots cell by cell.  Owner = the lower id, partners (slots) in
@@ -402,8 +428,9 @@ typedef struct hcbd_world {
     hcbd_error err;
     int capacity, n;
     int64_t step;
+    hcbd__core core;
     /* derived constants */
-    double m, inv_m, w0, cw, cf, rho_norm, cutmax, skin;
+    double m, inv_m, w0, cw, cf, rho_norm, cutmax;
     hcbd_star_coef star;
     int has_pairs, has_fext, has_noise, gibd, shardlow;
     /* per-particle arrays (struct of arrays), storage order */
@@ -413,9 +440,10 @@ typedef struct hcbd_world {
     int32_t *ix, *iy, *iz;       /* periodic images crossed (unwrapped pos.)  */
     int32_t *id, *slot;          /* slot -> id, id -> slot                    */
     /* pair sums in 64-bit fixed point (scratch of one step): force, momentum
-       exchange, weight; value = sum / q (see hcbd__fixed_scales) */
+       exchange, weight; value = sum / q (see hcbd__fixed_scales; the force
+       and weight scales are in the core) */
     int64_t *aF[3], *aP[3], *aW;
-    double qF, qP, qW, limF, limP;
+    double qP, limP;
     hcbd__nlist nl;              /* cells and the half neighbour list         */
     int sw_n[2];                 /* rows of the exact pair sweep (y, z)       */
     int32_t *sw_start;
@@ -424,15 +452,10 @@ typedef struct hcbd_world {
     double *pr2;
     int pr2_ok;
     double step_limit;
-    /* Lees-Edwards: offset s of the image above, its drift since the list
-       build, per-particle x shifts applied at crossings (unwrapped x) */
-    int le_on;
-    double le_offset, le_vjump;
+    /* Lees-Edwards: per-particle x shifts applied at crossings (unwrapped
+       x); the offset is in the core */
     double *lx;
-    /* shear-stress flux accumulation (hcbd_stress_enable) */
-    int flux_on;
-    int64_t flux_steps;
-    double flux_sum[3];
+    /* per-particle parts of the shear-stress flux (hcbd_stress_enable) */
     hcbd_real *fl_p, *fl_b, *fl_c;
     /* walls: interfaces, Morris planes, artificial particles of this step
        sorted into x-z columns, real particles found inside a wall */
@@ -449,12 +472,8 @@ typedef struct hcbd_world {
     double tab_inv_dr;
     double *star_tab, star_u0, star_ih; /* cubic pieces of F/r in r^2 */
     int star_kmax;
-    hcbd__zig *zig;
     uint64_t seed_key, bd_key;
     int rho_current, rho_valid;
-    uint64_t live;        /* HCBD__LIVE while initialised: loaders replace
-                             a live world only once the new one is built */
-    void *owned_mem;
 } hcbd_world;
 
 size_t hcbd_world_bytes(const hcbd_world_def *def);
@@ -875,9 +894,10 @@ typedef struct hcbd_hc_world {
     hcbd_error err;
     int fcap, pcap, pair_cap, nf, np;
     int64_t step;
+    hcbd__core core;
     /* derived */
-    double m, inv_m, m4c, rpA, cs, le_offset, le_vjump;
-    int le_on, transient, has_fc, noise_f, noise_p;
+    double m, inv_m, m4c, rpA, cs;
+    int transient, has_fc, noise_f, noise_p;
     uint64_t key_fpair, key_lambda, key_poly;
     /* fluid blobs, id order */
     hcbd_real *fx, *fy, *fz, *fvx, *fvy, *fvz;
@@ -928,22 +948,12 @@ typedef struct hcbd_hc_world {
        block and fine cell, the slots fine cell by fine cell and then block
        by block, and the starts of both */
     int32_t *sw_blk, *sw_list, *sw_start, *sw_fine, *sw_tmp, *sw_fstart;
-    double skin;
     /* the fluid's pair sums of one step in 64-bit fixed point (see
-       hcbd__fix): weights and pair forces */
+       hcbd__fix): weights and pair forces (their scales in the core) */
     int64_t *aW, *aF[3];
-    double qW, qF, limF;
     int dens_bad;                /* the first blob with n/nbar outside (1/3, 3) */
     uint64_t kick_key;           /* pair-noise key of the fluid step        */
-    /* stress accumulation (hcbd_hc_stress_enable) */
-    int stress_on;
-    int64_t stress_steps;
-    double stress_sum[HCBD_HC_NSTRESS];
-    hcbd__zig *zig;
     int ready;                   /* densities, pairs and forces are current */
-    uint64_t live;        /* HCBD__LIVE while initialised: loaders replace
-                             a live world only once the new one is built */
-    void *owned_mem;
 } hcbd_hc_world;
 
 size_t hcbd_hc_world_bytes(const hcbd_hc_def *def);
@@ -1635,10 +1645,10 @@ static inline double hcbd__normal(const hcbd__zig *z, hcbd__gen *g)
 double hcbd_rng_normal(const hcbd_world *w, hcbd_rng *r)
 {
     hcbd__gen g;
-    if (!w || !w->zig || !r) return NAN;
+    if (!w || !w->core.zig || !r) return NAN;
     g.xo = r;
     g.sm = 0;
-    return hcbd__normal(w->zig, &g);
+    return hcbd__normal(w->core.zig, &g);
 }
 
 static uint64_t hcbd__step_key(const hcbd_world *w, int64_t s)
@@ -1694,7 +1704,7 @@ static inline double hcbd__normal_at(const hcbd__zig *zig, uint64_t key)
 /* the GI-BD world's noise (hcbd_params.noise) */
 static inline void hcbd__noise3(const hcbd_world *w, uint64_t key, double *z3)
 {
-    hcbd__deviates3(w->zig, w->p.noise, key, z3);
+    hcbd__deviates3(w->core.zig, w->p.noise, key, z3);
 }
 
 /* Brownian displacement noise of particle id at step s: counter based, so
@@ -1712,7 +1722,7 @@ static inline uint64_t hcbd__bd_step_key(const hcbd_world *w, int64_t s)
 void hcbd_particle_normals(const hcbd_world *w, int64_t s, int32_t id, double out[3])
 {
     if (!out) return;
-    if (!w || !w->zig) {
+    if (!w || !w->core.zig) {
         out[0] = out[1] = out[2] = NAN;
         return;
     }
@@ -1723,7 +1733,7 @@ void hcbd_pair_normals(const hcbd_world *w, int64_t s, int32_t a, int32_t b,
                        double out[3])
 {
     if (!out) return;
-    if (!w || !w->zig) {
+    if (!w || !w->core.zig) {
         out[0] = out[1] = out[2] = NAN;
         return;
     }
@@ -2011,11 +2021,11 @@ static double hcbd__fix_scale(double B)
 static void hcbd__fixed_scales(hcbd_world *w)
 {
     const double reach = 8.0 * w->cutmax / w->p.dt;
-    w->limF = reach * w->p.xi;
+    w->core.limF = reach * w->p.xi;
     w->limP = reach * w->m;
-    w->qF = hcbd__fix_scale(w->limF);
+    w->core.qF = hcbd__fix_scale(w->core.limF);
     w->qP = w->gibd ? hcbd__fix_scale(w->limP) : 0.0;
-    w->qW = hcbd__fix_scale(w->cw);
+    w->core.qW = hcbd__fix_scale(w->cw);
 }
 
 static void hcbd__zero64(int64_t *a, int n)
@@ -2076,7 +2086,7 @@ static inline hcbd__box hcbd__box_make(const double L[3], double offset, int le)
 
 static inline hcbd__box hcbd__box_of(const hcbd_world *w)
 {
-    return hcbd__box_make(w->p.L, w->le_offset, w->le_on);
+    return hcbd__box_make(w->p.L, w->core.le_offset, w->core.le_on);
 }
 
 static inline int hcbd__delta_box(const hcbd__box *b, double dx, double dy, double dz, double d[3])
@@ -2544,7 +2554,7 @@ static size_t hcbd__layout(const hcbd_world_def *def, hcbd_world *w, char *base)
     int gibd = (hcbd__cells(p, nc), p->dynamics == HCBD_DYN_GIBD), pot = p->potential != HCBD_POT_IDEAL;
     int acol[2], nart = hcbd__art_count(p, acol);
     size_t A = (size_t)nart, ncol = (size_t)acol[0] * (size_t)acol[1], Q = sizeof(int64_t);
-    hcbd__take(base, &off, sizeof(hcbd__zig), (void **)&t->zig);
+    hcbd__take(base, &off, sizeof(hcbd__zig), (void **)&t->core.zig);
 #define HCBD__ARR(ptr, bytes) hcbd__take(base, &off, (bytes), (void **)&(t->ptr))
     HCBD__ARR(x, N * R); HCBD__ARR(y, N * R); HCBD__ARR(z, N * R);
     hcbd__nl_take(base, &off, &t->nl, N, nc, mp);
@@ -2674,8 +2684,8 @@ hcbd_result hcbd_world_init(hcbd_world *w, const hcbd_world_def *def, void *mem,
     w->cf = gc.cf;
     w->rho_norm = gc.rho_norm;
     w->cutmax = hcbd__cutmax(p);
-    w->skin = hcbd__skin(p);
-    w->nl.rlist = w->cutmax + w->skin;
+    w->core.skin = hcbd__skin(p);
+    w->nl.rlist = w->cutmax + w->core.skin;
     /* List validity is checked before every force evaluation, so a long
        step never misses a pair; a step longer than half the interaction
        range jumps through neighbours and means dt is unstable. */
@@ -2687,8 +2697,8 @@ hcbd_result hcbd_world_init(hcbd_world *w, const hcbd_world_def *def, void *mem,
     w->has_fext = p->fext[0] != 0.0 || p->fext[1] != 0.0 || p->fext[2] != 0.0;
     w->has_noise = p->kT > 0.0;
     w->shardlow = w->gibd && p->pair_integrator == HCBD_PAIR_SHARDLOW;
-    w->le_on = p->gdot != 0.0;
-    w->le_vjump = p->gdot * p->L[1];
+    w->core.le_on = p->gdot != 0.0;
+    w->core.le_vjump = p->gdot * p->L[1];
     w->walls = HCBD__WALLS && p->wall_thickness > 0;
     w->fext_dr = w->has_fext && !p->fext_background_only;
     if (w->walls) {
@@ -2721,9 +2731,9 @@ hcbd_result hcbd_world_init(hcbd_world *w, const hcbd_world_def *def, void *mem,
         w->p.table_V = w->tab_V;
     }
     if (w->star_tab) hcbd__star_table_build(w);
-    hcbd__zig_init(w->zig);
+    hcbd__zig_init(w->core.zig);
     w->n = 0;
-    w->live = HCBD__LIVE;
+    w->core.live = HCBD__LIVE;
     return HCBD_OK;
 }
 
@@ -2847,7 +2857,7 @@ static hcbd_result hcbd__set_particles(hcbd_world *w, int n, hcbd__src *src)
         }
     }
     for (i = 0; i < n; ++i) w->lx[i] = 0.0;
-    w->le_offset = 0.0;
+    w->core.le_offset = 0.0;
     w->nl.le_drift = 0.0;
     if (w->gibd)
         for (i = 0; i < n; ++i) {
@@ -3239,7 +3249,7 @@ static hcbd_result hcbd__ensure_list(hcbd_world *w)
     /* two particles close in by 2 disp_max; across the sheared boundary the
        offset drift adds to that, and a particle that crossed since the
        build is measured with today's offset (error <= drift): 3 drift */
-    if (w->nl.list_valid && 2.0 * w->nl.disp_max + 3.0 * w->nl.le_drift <= w->skin) return HCBD_OK;
+    if (w->nl.list_valid && 2.0 * w->nl.disp_max + 3.0 * w->nl.le_drift <= w->core.skin) return HCBD_OK;
     return hcbd__rebuild(w);
 }
 
@@ -3465,7 +3475,7 @@ static int hcbd__density_owners(void *ctx, int q0, int q1)
     hcbd__dens_ctx d;
     d.w = w;
     d.invRc = 1.0 / w->p.Rc;
-    d.cwq = w->cw * w->qW;
+    d.cwq = w->cw * w->core.qW;
     return hcbd__traverse(&T, w->nl.perm, q0, q1, &d, hcbd__ev_zero, hcbd__dens_pairs, hcbd__dens_end);
 }
 
@@ -3473,7 +3483,7 @@ static int hcbd__density_owners(void *ctx, int q0, int q1)
 static void hcbd__density_finish(hcbd_world *w)
 {
     const int n = w->n, nt = w->p.threads;
-    const double inv_q = 1.0 / w->qW;
+    const double inv_q = 1.0 / w->core.qW;
     int i;
     (void)nt;
     HCBD__OMP(omp parallel for num_threads(nt) schedule(static))
@@ -3519,14 +3529,14 @@ HCBD__INLINE hcbd__force_ctx hcbd__force_ctx_of(hcbd_world *w, const int pot, co
     f.gibd = fric || lag;
     f.noise = w->has_noise;
     f.table = w->star_tab != NULL;
-    f.vle = w->le_vjump;
+    f.vle = w->core.le_vjump;
     f.rc2 = w->p.rcut * w->p.rcut;
     f.Rc2 = w->p.Rc * w->p.Rc;
     f.invRc = 1.0 / w->p.Rc;
     f.cs = w->cf * w->m * w->m * w->p.dt / w->p.tau;
     f.two_kT = 2.0 * w->p.kT;
-    f.cwq = w->cw * w->qW;
-    f.qF = w->qF; f.qP = w->qP; f.limF = w->limF; f.limP = w->limP;
+    f.cwq = w->cw * w->core.qW;
+    f.qF = w->core.qF; f.qP = w->qP; f.limF = w->core.limF; f.limP = w->limP;
     f.skey = hcbd__step_key(w, w->step);
     f.box = hcbd__box_of(w);
     return f;
@@ -3656,7 +3666,7 @@ static int hcbd__forces_any(void *ctx, int q0, int q1)
 {
     hcbd_world *w = (hcbd_world *)ctx;
     return hcbd__forces_run(w, q0, q1, w->p.potential != HCBD_POT_IDEAL, w->gibd && !w->shardlow,
-                            w->gibd && w->p.lagged_density, w->flux_on, 0);
+                            w->gibd && w->p.lagged_density, w->core.stress_on, 0);
 }
 
 /* dens: the density of this step is summed in the same pass (the
@@ -3671,10 +3681,10 @@ static hcbd_result hcbd__forces(hcbd_world *w, int dens)
     }
     if (w->gibd && (w->p.lagged_density || dens)) hcbd__zero64(w->aW, n);
     /* the exact sweep that follows takes the pairs' r^2 from this pass */
-    w->pr2_ok = dens && w->pr2 && !w->le_on;
+    w->pr2_ok = dens && w->pr2 && !w->core.le_on;
     {
         const int pot = w->p.potential != HCBD_POT_IDEAL, fric = w->gibd && !w->shardlow;
-        const int plain = !w->flux_on && !(w->gibd && w->p.lagged_density) && pot;
+        const int plain = !w->core.stress_on && !(w->gibd && w->p.lagged_density) && pot;
         bad = hcbd__owners(w, dens ? hcbd__forces_dens : plain && !fric ? hcbd__forces_pot
                               : plain ? hcbd__forces_gibd : hcbd__forces_any);
     }
@@ -3686,7 +3696,7 @@ static hcbd_result hcbd__forces(hcbd_world *w, int dens)
                           "momentum exchange beyond %g (the fixed-point range of the "
                           "pair sums: a move of 8 cut-offs in one step), or a non-finite "
                           "one; particles overlap or dt = %g is too long",
-                          (long long)w->step, bad, w->limF, w->limP, w->p.dt);
+                          (long long)w->step, bad, w->core.limF, w->limP, w->p.dt);
     }
     return HCBD_OK;
 }
@@ -3806,7 +3816,7 @@ HCBD__INLINE int hcbd__sweep_end(void *ctx, int i, hcbd__acc *a)
     hcbd_world *w = s->w;
     w->vx[i] = (hcbd_real)a->r[0]; w->vy[i] = (hcbd_real)a->r[1]; w->vz[i] = (hcbd_real)a->r[2];
     if (HCBD__WALLS && s->wkey && hcbd__near_wall(w, w->y[i])) hcbd__morris(w, i, s->wkey, NULL, 1);
-    if (w->flux_on) w->fl_b[i] = (hcbd_real)a->r[3];
+    if (w->core.stress_on) w->fl_b[i] = (hcbd_real)a->r[3];
     return INT_MAX;
 }
 
@@ -3850,12 +3860,12 @@ static void hcbd__shardlow(hcbd_world *w)
         if (w->pr2_ok) T.r2in = w->pr2;
         w->pr2_ok = 0;
         s.w = w;
-        s.m = w->m; s.inv_m = w->inv_m; s.kT = w->p.kT; s.vle = w->le_vjump;
+        s.m = w->m; s.inv_m = w->inv_m; s.kT = w->p.kT; s.vle = w->core.le_vjump;
         s.invRc = 1.0 / w->p.Rc;
         s.cs = w->cf * w->m * w->m * w->p.dt / w->p.tau;
         s.skey = skey; s.wkey = wkey;
         s.noise = w->has_noise;
-        s.flux = w->flux_on;
+        s.flux = w->core.stress_on;
         HCBD__OMP(omp parallel num_threads(nt))
         {
             int col;
@@ -3896,13 +3906,13 @@ static hcbd_result hcbd__integrate(hcbd_world *w)
     const uint64_t wkey = morris ? hcbd__mix64(w->wall_pair_key ^ hcbd__mix64((uint64_t)w->step)) : 0;
     int64_t npen = 0;
     int pen_id = INT_MAX;
-    const int le = w->le_on, flux = w->flux_on;
-    const double vle = w->le_vjump, m = w->m;
+    const int le = w->core.le_on, flux = w->core.stress_on;
+    const double vle = w->core.le_vjump, m = w->m;
     /* positions at t + dt are remapped with the offset of t + dt */
-    const double s_new = w->le_offset + w->p.gdot * L1 * dt;
+    const double s_new = w->core.le_offset + w->p.gdot * L1 * dt;
     const hcbd__box box = hcbd__box_of(w);
-    const double iqF = pot ? 1.0 / w->qF : 0.0, iqP = fric ? 1.0 / w->qP : 0.0;
-    const double iqW = lag ? 1.0 / w->qW : 0.0;
+    const double iqF = pot ? 1.0 / w->core.qF : 0.0, iqP = fric ? 1.0 / w->qP : 0.0;
+    const double iqW = lag ? 1.0 / w->core.qW : 0.0;
     const uint64_t bkey = hcbd__bd_step_key(w, w->step);
     /* Leimkuhler-Matthews: this step's deviate and the next one's, each
        drawn from its counter, so a restart or a changed dt needs no
@@ -4031,7 +4041,7 @@ static hcbd_result hcbd__integrate(hcbd_world *w)
         w->wall_pen_id = pen_id;
     }
     if (le) {
-        w->le_offset = s_new - L0 * floor(s_new / L0);
+        w->core.le_offset = s_new - L0 * floor(s_new / L0);
         w->nl.le_drift += fabs(w->p.gdot * L1 * dt);
     }
     if (bad_nan != INT_MAX)
@@ -4063,65 +4073,116 @@ static void hcbd__flux_add(hcbd_world *w)
             sp += w->fl_p[i];
             if (w->gibd) sb += w->fl_b[i];
         }
-        if (w->le_on) sc += w->fl_c[i];
+        if (w->core.le_on) sc += w->fl_c[i];
     }
-    w->flux_sum[0] -= sp / V;
-    w->flux_sum[1] -= sb / (V * dt);
-    w->flux_sum[2] -= sc / (w->p.L[0] * w->p.L[2] * dt);
-    w->flux_steps++;
+    w->core.stress_sum[0] -= sp / V;
+    w->core.stress_sum[1] -= sb / (V * dt);
+    w->core.stress_sum[2] -= sc / (w->p.L[0] * w->p.L[2] * dt);
+    w->core.stress_steps++;
+}
+
+/* The stress a run accumulates, in the core of either world: the mean of
+   nparts sums over the steps since it was enabled */
+static hcbd_result hcbd__stress_enable(hcbd__core *c, hcbd_error *e, int64_t step, int on)
+{
+    int k;
+    hcbd__clear(e);
+    if (on != 0 && on != 1) return hcbd__fail(e, HCBD_ERR_PARAM, step, -1, "on = %d is not 0 or 1", on);
+    c->stress_on = on;
+    c->stress_steps = 0;
+    for (k = 0; k < HCBD__NSTRESS; ++k) c->stress_sum[k] = 0.0;
+    return HCBD_OK;
+}
+
+static void hcbd__stress_read(const hcbd__core *c, double *out, int nparts, int64_t *nsteps)
+{
+    int k;
+    for (k = 0; k < nparts; ++k)
+        out[k] = c->stress_steps ? c->stress_sum[k] / (double)c->stress_steps : 0.0;
+    if (nsteps) *nsteps = c->stress_steps;
 }
 
 hcbd_result hcbd_stress_enable(hcbd_world *w, int on)
 {
     if (!w) return HCBD_ERR_NULL;
-    hcbd__clear(&w->err);
-    if (on != 0 && on != 1)
-        return hcbd__fail(&w->err, HCBD_ERR_PARAM, w->step, -1, "on = %d is not 0 or 1", on);
-    w->flux_on = on;
-    w->flux_steps = 0;
-    w->flux_sum[0] = w->flux_sum[1] = w->flux_sum[2] = 0.0;
-    return HCBD_OK;
+    return hcbd__stress_enable(&w->core, &w->err, w->step, on);
 }
 
 hcbd_result hcbd_stress_read(const hcbd_world *w, double out[4], int64_t *nsteps)
 {
-    int k;
     if (!w || !out) return HCBD_ERR_NULL;
-    for (k = 0; k < 3; ++k) out[k] = w->flux_steps ? w->flux_sum[k] / (double)w->flux_steps : 0.0;
+    hcbd__stress_read(&w->core, out, 3, nsteps);
     out[3] = out[0] + out[1] + out[2];
-    if (nsteps) *nsteps = w->flux_steps;
     return HCBD_OK;
 }
 
 /* >>run-time guard: the whole state, in id order so the particle reported
    is the lowest offending id whatever the storage. */
+/* A species of either world as the shared checks and observables read it:
+   n particles, slot[k] the storage index of id k (NULL: stored by id),
+   positions, velocities (vx NULL: none) and the mass. */
+typedef struct hcbd__vset {
+    int n;
+    const int32_t *slot;
+    const hcbd_real *x, *y, *z, *vx, *vy, *vz;
+    double m;
+} hcbd__vset;
+
+static inline int hcbd__vslot(const hcbd__vset *s, int k) { return s->slot ? s->slot[k] : k; }
+
+/* The checks every particle of every world passes: finite position and
+   velocity, inside the box.  what and id name it in the message. */
+static hcbd_result hcbd__guard_one(hcbd_error *e, int64_t step, const hcbd__vset *s, int k,
+                                   const double L[3], const char *what, int id)
+{
+    const int i = hcbd__vslot(s, k);
+    const double x = s->x[i], y = s->y[i], z = s->z[i];
+    if (!(isfinite(x) && isfinite(y) && isfinite(z)))
+        return hcbd__fail(e, HCBD_ERR_NONFINITE, step, id,
+                          "guard at step %lld: %s %d has position (%g, %g, %g)",
+                          (long long)step, what, k, x, y, z);
+    if (s->vx && !(isfinite(s->vx[i]) && isfinite(s->vy[i]) && isfinite(s->vz[i])))
+        return hcbd__fail(e, HCBD_ERR_NONFINITE, step, id,
+                          "guard at step %lld: %s %d has velocity (%g, %g, %g)",
+                          (long long)step, what, k, (double)s->vx[i], (double)s->vy[i],
+                          (double)s->vz[i]);
+    if (!(x >= 0 && x < L[0] && y >= 0 && y < L[1] && z >= 0 && z < L[2]))
+        return hcbd__fail(e, HCBD_ERR_OUTSIDE, step, id,
+                          "guard at step %lld: %s %d at (%.17g, %.17g, %.17g) is outside the "
+                          "box [0, %g) x [0, %g) x [0, %g)",
+                          (long long)step, what, k, x, y, z, L[0], L[1], L[2]);
+    return HCBD_OK;
+}
+
+static hcbd__vset hcbd__vset_of(const hcbd_world *w)
+{
+    hcbd__vset s;
+    s.n = w->n;
+    s.slot = w->slot;
+    s.x = w->x; s.y = w->y; s.z = w->z;
+    s.vx = w->gibd ? w->vx : NULL; s.vy = w->vy; s.vz = w->vz;
+    s.m = w->m;
+    return s;
+}
+
 static hcbd_result hcbd__guard(hcbd_world *w)
 {
-    const double L0 = w->p.L[0], L1 = w->p.L[1], L2 = w->p.L[2];
+    const hcbd__vset vs = hcbd__vset_of(w);
+    hcbd_result r;
     int k;
     for (k = 0; k < w->n; ++k) {
         const int i = w->slot[k];
-        const double x = w->x[i], y = w->y[i], z = w->z[i];
-        if (!(isfinite(x) && isfinite(y) && isfinite(z)))
-            return hcbd__fail(&w->err, HCBD_ERR_NONFINITE, w->step, k,
-                              "guard at step %lld: particle %d has position (%g, %g, %g)",
-                              (long long)w->step, k, x, y, z);
-        if (w->gibd && !(isfinite(w->vx[i]) && isfinite(w->vy[i]) && isfinite(w->vz[i])))
-            return hcbd__fail(&w->err, HCBD_ERR_NONFINITE, w->step, k,
-                              "guard at step %lld: particle %d has velocity (%g, %g, %g)",
-                              (long long)w->step, k, (double)w->vx[i], (double)w->vy[i],
-                              (double)w->vz[i]);
+        const double y = w->y[i];
+        if ((r = hcbd__guard_one(&w->err, w->step, &vs, k, w->p.L, "particle", k)) != HCBD_OK)
+            return r;
         /* images within int32 with room for another box per step */
-        if (!(x >= 0 && x < L0 && y >= 0 && y < L1 && z >= 0 && z < L2) ||
-            w->ix[i] < -0x3FFFFFFF || w->ix[i] > 0x3FFFFFFF || w->iy[i] < -0x3FFFFFFF ||
+        if (w->ix[i] < -0x3FFFFFFF || w->ix[i] > 0x3FFFFFFF || w->iy[i] < -0x3FFFFFFF ||
             w->iy[i] > 0x3FFFFFFF || w->iz[i] < -0x3FFFFFFF || w->iz[i] > 0x3FFFFFFF ||
             !isfinite(w->lx[i]))
             return hcbd__fail(&w->err, HCBD_ERR_OUTSIDE, w->step, k,
-                              "guard at step %lld: particle %d at (%.17g, %.17g, %.17g), "
-                              "images (%d, %d, %d), is outside the box [0, %g) x [0, %g) "
-                              "x [0, %g) or its image count is near overflow",
-                              (long long)w->step, k, x, y, z, (int)w->ix[i], (int)w->iy[i],
-                              (int)w->iz[i], L0, L1, L2);
+                              "guard at step %lld: particle %d has images (%d, %d, %d) near "
+                              "overflow or x shift %g", (long long)w->step, k, (int)w->ix[i],
+                              (int)w->iy[i], (int)w->iz[i], w->lx[i]);
         if (w->walls && w->p.guard_walls && (y < w->wall_lo || y > w->wall_hi))
             return hcbd__fail(&w->err, HCBD_ERR_WALL, w->step, k,
                               "guard at step %lld: particle %d at y = %.17g is inside a "
@@ -4158,16 +4219,16 @@ hcbd_result hcbd_step(hcbd_world *w, int nsteps)
         }
         const int dens = w->gibd && hcbd__density_stale(w);
         const int fuse = dens && w->shardlow && w->p.potential != HCBD_POT_IDEAL &&
-                         !w->p.lagged_density && !w->flux_on;
+                         !w->p.lagged_density && !w->core.stress_on;
         if (dens && !fuse) hcbd__density(w);
         if (w->has_pairs && !(w->shardlow && w->p.potential == HCBD_POT_IDEAL &&
-                              !w->p.lagged_density && !w->flux_on)) {
+                              !w->p.lagged_density && !w->core.stress_on)) {
             r = hcbd__forces(w, fuse);
             if (r != HCBD_OK) return r;
         }
         if (w->shardlow) hcbd__shardlow(w);
         r = hcbd__integrate(w);
-        if (r == HCBD_OK && w->flux_on) hcbd__flux_add(w);
+        if (r == HCBD_OK && w->core.stress_on) hcbd__flux_add(w);
         if (r == HCBD_OK && w->p.guard_walls && w->wall_pen_step == w->step)
             r = hcbd__fail(&w->err, HCBD_ERR_WALL, w->step, w->wall_pen_id,
                            "step %lld: particle %d entered a wall (guard_walls = 1)",
@@ -4207,41 +4268,59 @@ hcbd_result hcbd_world_get_velocities(const hcbd_world *w, double *v)
     return HCBD_OK;
 }
 
-void hcbd_momentum(const hcbd_world *w, double p[3])
+/* Momentum and temperature of a species, summed in id order (storage
+   order changes no bit).  The temperature takes the peculiar velocities:
+   relative to the mean and, under shear, to the imposed profile
+   gdot (y - Ly/2). */
+static void hcbd__momentum(const hcbd__vset *s, double p[3])
 {
     int k;
+    p[0] = p[1] = p[2] = 0.0;
+    for (k = 0; s->vx && k < s->n; ++k) {
+        const int i = hcbd__vslot(s, k);
+        p[0] += s->m * s->vx[i];
+        p[1] += s->m * s->vy[i];
+        p[2] += s->m * s->vz[i];
+    }
+}
+
+static double hcbd__temperature(const hcbd__vset *s, double gdot, double Ly)
+{
+    double u[3] = {0, 0, 0}, sum = 0.0;
+    int k, d;
+    if (!s->vx || s->n < 2) return 0.0;
+    for (k = 0; k < s->n; ++k) {
+        const int i = hcbd__vslot(s, k);
+        u[0] += s->vx[i] - gdot * (s->y[i] - 0.5 * Ly);
+        u[1] += s->vy[i];
+        u[2] += s->vz[i];
+    }
+    for (d = 0; d < 3; ++d) u[d] /= s->n;
+    for (k = 0; k < s->n; ++k) {
+        const int i = hcbd__vslot(s, k);
+        double a = s->vx[i] - gdot * (s->y[i] - 0.5 * Ly) - u[0];
+        double b = s->vy[i] - u[1], c = s->vz[i] - u[2];
+        sum += a * a + b * b + c * c;
+    }
+    return s->m * sum / (3.0 * (s->n - 1));
+}
+
+void hcbd_momentum(const hcbd_world *w, double p[3])
+{
+    hcbd__vset s;
     if (!p) return;
     p[0] = p[1] = p[2] = 0.0;
-    if (!w || !w->gibd) return;
-    for (k = 0; k < w->n; ++k) { /* id order: storage order changes no bit */
-        int i = w->slot[k];
-        p[0] += w->m * w->vx[i];
-        p[1] += w->m * w->vy[i];
-        p[2] += w->m * w->vz[i];
-    }
+    if (!w) return;
+    s = hcbd__vset_of(w);
+    hcbd__momentum(&s, p);
 }
 
 double hcbd_temperature(const hcbd_world *w)
 {
-    double u[3] = {0, 0, 0}, s = 0.0;
-    int k, d;
-    if (!w || !w->gibd || w->n < 2) return 0.0;
-    /* peculiar velocities: relative to the mean and, under shear, to the
-       imposed profile gdot (y - Ly/2) */
-    for (k = 0; k < w->n; ++k) {
-        int i = w->slot[k];
-        u[0] += w->vx[i] - w->p.gdot * (w->y[i] - 0.5 * w->p.L[1]);
-        u[1] += w->vy[i];
-        u[2] += w->vz[i];
-    }
-    for (d = 0; d < 3; ++d) u[d] /= w->n;
-    for (k = 0; k < w->n; ++k) {
-        int i = w->slot[k];
-        double a = w->vx[i] - w->p.gdot * (w->y[i] - 0.5 * w->p.L[1]) - u[0];
-        double b = w->vy[i] - u[1], c = w->vz[i] - u[2];
-        s += a * a + b * b + c * c;
-    }
-    return w->m * s / (3.0 * (w->n - 1));
+    hcbd__vset s;
+    if (!w) return 0.0;
+    s = hcbd__vset_of(w);
+    return hcbd__temperature(&s, w->p.gdot, w->p.L[1]);
 }
 
 /* Calls fn for every pair within rmax (<= the list's guaranteed range) once,
@@ -4536,7 +4615,7 @@ uint64_t hcbd_state_checksum(const hcbd_world *w)
     int i;
     if (!w) return 0;
     h = hcbd__hash(h, &w->step, sizeof w->step);
-    h = hcbd__hash(h, &w->le_offset, sizeof w->le_offset);
+    h = hcbd__hash(h, &w->core.le_offset, sizeof w->core.le_offset);
     for (i = 0; i < w->n; ++i) {
         int s = w->slot[i];
         h = hcbd__hash(h, &w->x[s], sizeof(hcbd_real));
@@ -5625,18 +5704,31 @@ static void hcbd__ck_params(hcbd__ck *c, hcbd_params *p)
     hcbd__ck_f64(c, &p->guard_step);
 }
 
+/* What both worlds' states begin with: the step, the Lees-Edwards offset
+   and the stress accumulation (nparts sums) */
+static void hcbd__ck_core(hcbd__ck *c, int64_t *step, hcbd__core *k, int nparts)
+{
+    int d;
+    hcbd__ck_i64(c, step);
+    hcbd__ck_f64(c, &k->le_offset);
+    hcbd__ck_int(c, &k->stress_on);
+    hcbd__ck_i64(c, &k->stress_steps);
+    for (d = 0; d < nparts; ++d) hcbd__ck_f64(c, &k->stress_sum[d]);
+}
+
+/* A loaded core's own values in range (x offset within the box edge) */
+static int hcbd__core_valid(const hcbd__core *k, double Lx)
+{
+    return !(k->stress_on & ~1) && k->le_offset >= 0 && k->le_offset < Lx;
+}
+
 /* Everything after the definition, per particle in id order (map = slot
    when writing; a loaded world is stored in id order). */
 static void hcbd__ck_state(hcbd__ck *c, hcbd_world *w)
 {
     const int32_t *map = c->in ? NULL : w->slot;
     const int n = w->n;
-    int d;
-    hcbd__ck_i64(c, &w->step);
-    hcbd__ck_f64(c, &w->le_offset);
-    hcbd__ck_int(c, &w->flux_on);
-    hcbd__ck_i64(c, &w->flux_steps);
-    for (d = 0; d < 3; ++d) hcbd__ck_f64(c, &w->flux_sum[d]);
+    hcbd__ck_core(c, &w->step, &w->core, 3);
     hcbd__ck_i64(c, &w->wall_pen);
     hcbd__ck_i64(c, &w->wall_pen_step);
     hcbd__ck_int(c, &w->wall_pen_id);
@@ -5743,9 +5835,9 @@ static hcbd_result hcbd__ck_load(hcbd_world *w, const void *buf, size_t size)
     w->nl.le_drift = 0.0;
     /* a checksum-valid file from elsewhere may still hold nonsense */
     r = hcbd__guard(w);
-    if (r == HCBD_OK && ((w->flux_on & ~1) || !(w->le_offset >= 0 && w->le_offset < w->p.L[0])))
-        r = hcbd__fail(&w->err, HCBD_ERR_FORMAT, -1, -1, "flux_on = %d, le_offset = %g",
-                       w->flux_on, w->le_offset);
+    if (r == HCBD_OK && !hcbd__core_valid(&w->core, w->p.L[0]))
+        r = hcbd__fail(&w->err, HCBD_ERR_FORMAT, -1, -1, "stress_on = %d, le_offset = %g",
+                       w->core.stress_on, w->core.le_offset);
     /* the artificial wall particles of the saved step, for observables
        called before the next step draws its own */
     if (r == HCBD_OK && HCBD__WALLS && w->n_art > 0) {
@@ -5765,10 +5857,19 @@ static hcbd_result hcbd__ck_load(hcbd_world *w, const void *buf, size_t size)
    wrappers of both worlds, written once over a description of each world
    type (its size, where its shared fields sit, its model's functions). */
 typedef void (*hcbd__walk_fn)(hcbd__ck *c, void *w);
+/* Where a world keeps what the shared functions touch: its public error,
+   step and thread count, and its core. */
+typedef struct hcbd__self {
+    hcbd_error *err;
+    int64_t *step;
+    int *threads;
+    hcbd__core *core;
+} hcbd__self;
 typedef struct hcbd__kind {
-    size_t size, o_err, o_step, o_live, o_owned, o_threads; /* sizeof, offsetof */
+    size_t size;             /* sizeof the world                             */
     uint64_t tag;            /* checkpoint world kind (HCBD__CK_*)             */
     const char *size_fn;     /* the checkpoint size function a message names  */
+    hcbd__self (*self)(void *w);
     hcbd_result (*check)(const void *def, char *msg, size_t n);
     size_t (*bytes)(const void *def);
     hcbd_result (*init)(void *w, const void *def, void *mem, size_t bytes);
@@ -5776,8 +5877,6 @@ typedef struct hcbd__kind {
     hcbd_result (*load)(void *w, const void *buf, size_t size); /* into a
                                 zeroed world; may fail leaving it live      */
 } hcbd__kind;
-
-#define HCBD__AT(T, k, w, o) ((T *)(void *)((char *)(w) + (k)->o))
 
 /* scratch room for a world of either kind while a load builds it aside */
 typedef union hcbd__any_world {
@@ -5789,28 +5888,28 @@ typedef union hcbd__any_world {
 
 static hcbd_result hcbd__create(const hcbd__kind *k, void *w, const void *def)
 {
-    hcbd_error *e;
+    hcbd__self s;
     size_t need;
     void *mem;
     hcbd_result r;
     if (!w) return HCBD_ERR_NULL;
     memset(w, 0, k->size);
-    e = HCBD__AT(hcbd_error, k, w, o_err);
-    hcbd__clear(e);
-    r = k->check(def, e->msg, sizeof e->msg);
+    s = k->self(w);
+    hcbd__clear(s.err);
+    r = k->check(def, s.err->msg, sizeof s.err->msg);
     if (r != HCBD_OK) {
-        e->code = r;
+        s.err->code = r;
         return r;
     }
     need = k->bytes(def);
     if (!(mem = HCBD_MALLOC(need)))
-        return hcbd__fail(e, HCBD_ERR_MEMORY, -1, -1, "malloc of %zu bytes failed", need);
+        return hcbd__fail(s.err, HCBD_ERR_MEMORY, -1, -1, "malloc of %zu bytes failed", need);
     r = k->init(w, def, mem, need);
     if (r != HCBD_OK) {
         HCBD_FREE(mem);
         return r;
     }
-    *HCBD__AT(void *, k, w, o_owned) = mem;
+    s.core->mem = mem;
     return HCBD_OK;
 }
 
@@ -5818,7 +5917,7 @@ static void hcbd__destroy(const hcbd__kind *k, void *w)
 {
     void *mem;
     if (!w) return;
-    mem = *HCBD__AT(void *, k, w, o_owned);
+    mem = k->self(w).core->mem;
     if (mem) HCBD_FREE(mem);
     /* a destroyed world has no particles and no arrays to touch */
     memset(w, 0, k->size);
@@ -5826,14 +5925,14 @@ static void hcbd__destroy(const hcbd__kind *k, void *w)
 
 static hcbd_result hcbd__set_threads(const hcbd__kind *k, void *w, int threads)
 {
-    hcbd_error *e;
+    hcbd__self s;
     if (!w) return HCBD_ERR_NULL;
-    e = HCBD__AT(hcbd_error, k, w, o_err);
-    hcbd__clear(e);
+    s = k->self(w);
+    hcbd__clear(s.err);
     if (threads < 1 || threads > 1024)
-        return hcbd__fail(e, HCBD_ERR_PARAM, *HCBD__AT(int64_t, k, w, o_step), -1,
+        return hcbd__fail(s.err, HCBD_ERR_PARAM, *s.step, -1,
                           "threads = %d is invalid (need 1..1024)", threads);
-    *HCBD__AT(int, k, w, o_threads) = threads;
+    *s.threads = threads;
     return HCBD_OK;
 }
 
@@ -5849,17 +5948,15 @@ static size_t hcbd__ck_size(const hcbd__kind *k, const void *w)
 static hcbd_result hcbd__ck_put(const hcbd__kind *k, void *w, void *buf, size_t size)
 {
     hcbd__ck c;
-    hcbd_error *e;
-    int64_t step;
+    hcbd__self s;
     size_t need;
     if (!w) return HCBD_ERR_NULL;
-    e = HCBD__AT(hcbd_error, k, w, o_err);
-    step = *HCBD__AT(int64_t, k, w, o_step);
+    s = k->self(w);
     need = hcbd__ck_size(k, w);
-    hcbd__clear(e);
-    if (!buf) return hcbd__fail(e, HCBD_ERR_NULL, step, -1, "checkpoint buffer is NULL");
+    hcbd__clear(s.err);
+    if (!buf) return hcbd__fail(s.err, HCBD_ERR_NULL, *s.step, -1, "checkpoint buffer is NULL");
     if (size < need)
-        return hcbd__fail(e, HCBD_ERR_MEMORY, step, -1,
+        return hcbd__fail(s.err, HCBD_ERR_MEMORY, *s.step, -1,
                           "checkpoint buffer of %zu bytes is smaller than the %zu bytes "
                           "%s asks for", size, need, k->size_fn);
     memset(&c, 0, sizeof c);
@@ -5876,16 +5973,17 @@ static hcbd_result hcbd__ck_put(const hcbd__kind *k, void *w, void *buf, size_t 
    initialised, or destroyed) is zeroed and carries the error. */
 static hcbd_result hcbd__adopt(const hcbd__kind *k, void *w, void *t, hcbd_result r)
 {
-    const hcbd_error e = *HCBD__AT(hcbd_error, k, t, o_err);
-    const int live = *HCBD__AT(uint64_t, k, w, o_live) == HCBD__LIVE;
+    const hcbd__self ts = k->self(t);
+    const hcbd_error e = *ts.err;
+    const int live = k->self(w).core->live == HCBD__LIVE;
     if (r == HCBD_OK) {
         if (live) hcbd__destroy(k, w);
         memcpy(w, t, k->size);
         return r;
     }
-    if (*HCBD__AT(uint64_t, k, t, o_live) == HCBD__LIVE) hcbd__destroy(k, t);
+    if (ts.core->live == HCBD__LIVE) hcbd__destroy(k, t);
     if (!live) memset(w, 0, k->size);
-    *HCBD__AT(hcbd_error, k, w, o_err) = e;
+    *k->self(w).err = e;
     return r;
 }
 
@@ -5898,21 +5996,19 @@ static hcbd_result hcbd__ck_get(const hcbd__kind *k, void *w, const void *buf, s
 
 static hcbd_result hcbd__save(const hcbd__kind *k, void *w, const char *path)
 {
-    hcbd_error *e;
-    int64_t step;
+    hcbd__self s;
     unsigned char *b;
     size_t n;
     hcbd_result r;
     if (!w) return HCBD_ERR_NULL;
-    e = HCBD__AT(hcbd_error, k, w, o_err);
-    step = *HCBD__AT(int64_t, k, w, o_step);
-    hcbd__clear(e);
-    if (!path) return hcbd__fail(e, HCBD_ERR_NULL, step, -1, "path is NULL");
+    s = k->self(w);
+    hcbd__clear(s.err);
+    if (!path) return hcbd__fail(s.err, HCBD_ERR_NULL, *s.step, -1, "path is NULL");
     n = hcbd__ck_size(k, w);
     if (!(b = (unsigned char *)HCBD_MALLOC(n)))
-        return hcbd__fail(e, HCBD_ERR_MEMORY, step, -1, "malloc of %zu bytes failed", n);
+        return hcbd__fail(s.err, HCBD_ERR_MEMORY, *s.step, -1, "malloc of %zu bytes failed", n);
     r = hcbd__ck_put(k, w, b, n);
-    if (r == HCBD_OK) r = hcbd__save_file(e, b, n, path);
+    if (r == HCBD_OK) r = hcbd__save_file(s.err, b, n, path);
     HCBD_FREE(b);
     return r;
 }
@@ -5920,12 +6016,13 @@ static hcbd_result hcbd__save(const hcbd__kind *k, void *w, const char *path)
 static hcbd_result hcbd__load(const hcbd__kind *k, void *w, const char *path)
 {
     hcbd__any_world t;
-    hcbd_error *e = HCBD__AT(hcbd_error, k, &t, o_err);
+    hcbd_error *e;
     unsigned char *b;
     size_t n;
     hcbd_result r;
     if (!w) return HCBD_ERR_NULL;
     memset(&t, 0, sizeof t);
+    e = k->self(&t).err;
     if (!path) {
         r = hcbd__fail(e, HCBD_ERR_NULL, -1, -1, "path is NULL");
     } else if ((r = hcbd__read_file(e, path, &b, &n)) == HCBD_OK) {
@@ -5958,11 +6055,19 @@ static hcbd_result hcbd__bd_load(void *w, const void *buf, size_t size)
     return hcbd__ck_load((hcbd_world *)w, buf, size);
 }
 
+static hcbd__self hcbd__bd_self(void *v)
+{
+    hcbd_world *w = (hcbd_world *)v;
+    hcbd__self s;
+    s.err = &w->err;
+    s.step = &w->step;
+    s.threads = &w->p.threads;
+    s.core = &w->core;
+    return s;
+}
+
 static const hcbd__kind hcbd__kind_bd = {
-    sizeof(hcbd_world), offsetof(hcbd_world, err), offsetof(hcbd_world, step),
-    offsetof(hcbd_world, live), offsetof(hcbd_world, owned_mem),
-    offsetof(hcbd_world, p) + offsetof(hcbd_params, threads), HCBD__CK_WORLD,
-    "hcbd_checkpoint_size", hcbd__bd_check, hcbd__bd_bytes, hcbd__bd_init, hcbd__ck_walk,
+    sizeof(hcbd_world), HCBD__CK_WORLD, "hcbd_checkpoint_size", hcbd__bd_self, hcbd__bd_check, hcbd__bd_bytes, hcbd__bd_init, hcbd__ck_walk,
     hcbd__bd_load};
 
 hcbd_result hcbd_world_create(hcbd_world *w, const hcbd_world_def *def)
@@ -6024,7 +6129,7 @@ static hcbd_result hcbd__xyz(const hcbd_world *w, FILE *f, const int *ids, int n
     if (nids < 0 || nids > w->n) return HCBD_ERR_PARAM;
     for (k = 0; ids && k < nids; ++k)
         if (ids[k] < 0 || ids[k] >= w->n) return HCBD_ERR_PARAM;
-    hcbd__xyz_head(f, nids, w->p.L, (double)w->step * w->p.dt, w->step, w->le_offset, extra);
+    hcbd__xyz_head(f, nids, w->p.L, (double)w->step * w->p.dt, w->step, w->core.le_offset, extra);
     for (k = 0; k < nids; ++k) {
         const int id = ids ? ids[k] : k, i = w->slot[id];
         hcbd__xyz_atom(f, "S", w->x[i], w->y[i], w->z[i], w->gibd ? (double)w->vx[i] : 0.0,
@@ -6478,9 +6583,9 @@ static void hcbd__hc_fixed_scales(hcbd_hc_world *w)
 {
     const hcbd_hc_params *p = &w->p;
     const double dt_f = p->dt / p->substeps;
-    w->qW = hcbd__fix_scale(1.0 / (HCBD__PI * p->h * p->h * p->h));
-    w->limF = 16.0 * p->h * w->m / (dt_f * dt_f);
-    w->qF = hcbd__fix_scale(w->limF);
+    w->core.qW = hcbd__fix_scale(1.0 / (HCBD__PI * p->h * p->h * p->h));
+    w->core.limF = 16.0 * p->h * w->m / (dt_f * dt_f);
+    w->core.qF = hcbd__fix_scale(w->core.limF);
 }
 
 /* Room of the three lists, from the densest mean the capacities or nbar
@@ -6543,7 +6648,7 @@ static size_t hcbd__hc_layout(const hcbd_hc_def *def, hcbd_hc_world *t, char *ba
     HCBD__HA(pair_b, npc * I); HCBD__HA(pair_b2, npc * I);
     HCBD__HA(pair_l, npc * R); HCBD__HA(pair_l2, npc * R);
     HCBD__HA(pair_eq, npc * R); HCBD__HA(pair_eq2, npc * R);
-    HCBD__HA(zig, sizeof(hcbd__zig));
+    HCBD__HA(core.zig, sizeof(hcbd__zig));
     HCBD__HA(aW, nf * Q);
     for (d = 0; d < 3; ++d) HCBD__HA(aF[d], nf * Q);
     hcbd__hc_rooms(def, mp);
@@ -6625,8 +6730,8 @@ hcbd_result hcbd_hc_world_init(hcbd_hc_world *w, const hcbd_hc_def *def, void *m
     w->m = p->rho / p->nbar;
     w->inv_m = 1.0 / w->m;
     w->cs = sqrt(7.0 * p->P0 / p->rho);
-    w->le_on = p->gdot != 0;
-    w->le_vjump = p->gdot * p->L[1];
+    w->core.le_on = p->gdot != 0;
+    w->core.le_vjump = p->gdot * p->L[1];
     w->transient = p->alpha > 0;
     w->has_fc = p->p_kuhn > 0;
     w->noise_f = p->fluctuations && p->kT > 0;
@@ -6634,12 +6739,12 @@ hcbd_result hcbd_hc_world_init(hcbd_hc_world *w, const hcbd_hc_def *def, void *m
     w->key_fpair = hcbd__mix64(p->seed ^ hcbd__mix64(HCBD__STREAM_FPAIR));
     w->key_lambda = hcbd__mix64(p->seed ^ hcbd__mix64(HCBD__STREAM_LAMBDA));
     w->key_poly = hcbd__mix64(p->seed ^ hcbd__mix64(HCBD__STREAM_POLY));
-    w->skin = hcbd__hc_skin(p);
-    w->lf.rlist = 2.0 * p->h + w->skin;
-    w->lp.rlist = w->lx.rlist = p->rc + w->skin;
+    w->core.skin = hcbd__hc_skin(p);
+    w->lf.rlist = 2.0 * p->h + w->core.skin;
+    w->lp.rlist = w->lx.rlist = p->rc + w->core.skin;
     hcbd__hc_fixed_scales(w);
-    hcbd__zig_init(w->zig);
-    w->live = HCBD__LIVE;
+    hcbd__zig_init(w->core.zig);
+    w->core.live = HCBD__LIVE;
     return HCBD_OK;
 }
 
@@ -6670,7 +6775,7 @@ static hcbd_result hcbd__hc_fluid_finish(hcbd_hc_world *w, int n, const double *
     w->nf = n;
     w->np = 0;
     w->step = 0;
-    w->le_offset = 0;
+    w->core.le_offset = 0;
     w->npairs = 0;
     w->ready = 0;
     if (v) {
@@ -6689,7 +6794,7 @@ static hcbd_result hcbd__hc_fluid_finish(hcbd_hc_world *w, int n, const double *
         for (i = 0; i < n; ++i) {
             double u[3];
             for (d = 0; d < 3; ++d) {
-                u[d] = s > 0 ? s * hcbd__normal(w->zig, &gen) : 0.0;
+                u[d] = s > 0 ? s * hcbd__normal(w->core.zig, &gen) : 0.0;
                 mom[d] += u[d];
             }
             w->fvx[i] = (hcbd_real)u[0];
@@ -6884,7 +6989,7 @@ hcbd_result hcbd_hc_place_polymers_random(hcbd_hc_world *w, int n)
    transpose, each particle summing its own partners in increasing id. */
 static inline hcbd__box hcbd__hc_box(const hcbd_hc_world *w)
 {
-    return hcbd__box_make(w->p.L, w->le_offset, w->le_on);
+    return hcbd__box_make(w->p.L, w->core.le_offset, w->core.le_on);
 }
 
 /* poly 1: the polymers (id order); 0: the fluid in id order; 2: the
@@ -6959,7 +7064,7 @@ static hcbd_result hcbd__hc_lists(hcbd_hc_world *w, int64_t step)
     const int nt = w->p.threads;
     int bad, most = 0, i, a;
     int32_t *cur = w->scratch;
-    if (w->lf.list_valid && w->lx.list_valid && 2.0 * dm + 3.0 * w->lf.le_drift <= w->skin) {
+    if (w->lf.list_valid && w->lx.list_valid && 2.0 * dm + 3.0 * w->lf.le_drift <= w->core.skin) {
         hcbd__hc_sync(w);
         return HCBD_OK;
     }
@@ -7075,7 +7180,7 @@ static int hcbd__hc_dens_owners(void *ctx, int q0, int q1)
     hcbd__hc_dens_ctx d;
     d.w = w;
     d.ih = 1.0 / h;
-    d.cq = w->qW / (4.0 * HCBD__PI * h * h * h);
+    d.cq = w->core.qW / (4.0 * HCBD__PI * h * h * h);
     return hcbd__traverse(&T, w->lf.perm, q0, q1, &d, hcbd__ev_zero, hcbd__hc_dens_pairs,
                           hcbd__hc_dens_end);
 }
@@ -7084,7 +7189,7 @@ static int hcbd__hc_dens_owners(void *ctx, int q0, int q1)
 static void hcbd__hc_fluid_density(hcbd_hc_world *w)
 {
     const int n = w->nf, nt = w->p.threads;
-    const double h = w->p.h, w0 = 1.0 / (HCBD__PI * h * h * h), inv_q = 1.0 / w->qW;
+    const double h = w->p.h, w0 = 1.0 / (HCBD__PI * h * h * h), inv_q = 1.0 / w->core.qW;
     const double inv_nbar = 1.0 / w->p.nbar, P0 = w->p.P0;
     int i, bad = INT_MAX;
     (void)nt;
@@ -7135,7 +7240,7 @@ static hcbd__hc_poly_ctx hcbd__hc_poly_ctx_of(hcbd_hc_world *w)
     c.cap = (size_t)w->pair_cap;
     c.tr = w->transient;
     c.fc = w->has_fc;
-    c.stress = w->stress_on;
+    c.stress = w->core.stress_on;
     return c;
 }
 
@@ -7474,9 +7579,9 @@ static int hcbd__hc_interp(hcbd_hc_world *w)
     s.sg = w->p.sigma;
     s.A = hcbd__rapid_A(s.sg, s.rc);
     s.inv_xi = 1.0 / w->p.xi;
-    s.vj = w->le_vjump;
+    s.vj = w->core.le_vjump;
     s.shep = w->p.coupling == HCBD_COUPLE_SHEPARD;
-    s.stress = w->stress_on;
+    s.stress = w->core.stress_on;
     HCBD__OMP(omp parallel num_threads(nt) reduction(min:bad))
     {
         int64_t lo, hi;
@@ -7610,7 +7715,7 @@ HCBD__INLINE void hcbd__hc_sweep_pairs(void *ctx, int i, const hcbd__near *c, in
         if (s->noise) {
             const double b = sqrt(0.5 * s->kT * m * om[t] * (2.0 - om[t]));
             double z3[3];
-            hcbd__deviates3(w->zig, HCBD_NOISE_GAUSS, hcbd__pair_key(s->skey, idi, fid[j]), z3);
+            hcbd__deviates3(w->core.zig, HCBD_NOISE_GAUSS, hcbd__pair_key(s->skey, idi, fid[j]), z3);
             P[0] += b * z3[0];
             P[1] += b * z3[1];
             P[2] += b * z3[2];
@@ -7646,7 +7751,7 @@ static int hcbd__hc_fluid_shardlow(hcbd_hc_world *w, double dt, uint64_t skey)
 {
     const int n = w->nf, nt = w->p.threads;
     const double *L = w->p.L;
-    const double s = w->le_on ? w->le_offset - L[0] * floor(w->le_offset / L[0] + 0.5) : 0.0;
+    const double s = w->core.le_on ? w->core.le_offset - L[0] * floor(w->core.le_offset / L[0] + 0.5) : 0.0;
     const double t = s / L[1];
     const double h = w->p.h;
     const hcbd__trav T = hcbd__hc_trav_f(w, 2.0 * h);
@@ -7665,12 +7770,12 @@ static int hcbd__hc_fluid_shardlow(hcbd_hc_world *w, double dt, uint64_t skey)
     sc.dt = dt;
     sc.ih = 1.0 / h;
     sc.c1h = 1.0 / (4.0 * HCBD__PI * h * h * h * h * h);
-    sc.m = w->m; sc.inv_m = w->inv_m; sc.kT = w->p.kT; sc.vj = w->le_vjump;
+    sc.m = w->m; sc.inv_m = w->inv_m; sc.kT = w->p.kT; sc.vj = w->core.le_vjump;
     sc.rate0 = 2.0 * dt * w->inv_m * 2.0 * w->p.eta;
-    sc.qF = w->qF; sc.lim = w->limF;
+    sc.qF = w->core.qF; sc.lim = w->core.limF;
     sc.skey = skey;
     sc.noise = w->noise_f;
-    sc.stress = w->stress_on;
+    sc.stress = w->core.stress_on;
     nblk = hcbd__hc_sweep_blocks(&w->p, t, nb, nc, NULL);
     nfine = hcbd__hc_fine_cells(&w->p, nfc);
     f[0] = nb[0] / L[0]; f[1] = nb[1] / L[1]; f[2] = nb[2] / L[2];
@@ -7788,7 +7893,7 @@ HCBD__INLINE void hcbd__hc_kick_pairs(void *ctx, int i, const hcbd__near *c, int
         if (s->stress) a->r[6] += d[1] * Fv0;
         if (s->noise) {
             double zz[3], sf = s->sn * sqrt(f);
-            hcbd__deviates3(w->zig, HCBD_NOISE_GAUSS, hcbd__pair_key(s->skey, fid[i], fid[j]), zz);
+            hcbd__deviates3(w->core.zig, HCBD_NOISE_GAUSS, hcbd__pair_key(s->skey, fid[i], fid[j]), zz);
             F[0] += sf * zz[0];
             F[1] += sf * zz[1];
             F[2] += sf * zz[2];
@@ -7826,8 +7931,8 @@ HCBD__INLINE int hcbd__hc_kick_run(hcbd_hc_world *w, int q0, int q1, const int n
     s.c1h = 1.0 / (4.0 * HCBD__PI * h * h * h * h * h);
     s.two_eta = 2.0 * w->p.eta;
     s.sn = noise ? sqrt(2.0 * w->p.kT / dt) : 0.0;
-    s.vj = w->le_vjump;
-    s.qF = w->qF; s.lim = w->limF;
+    s.vj = w->core.le_vjump;
+    s.qF = w->core.qF; s.lim = w->core.limF;
     s.skey = w->kick_key;
     s.noise = noise; s.stress = stress;
     return hcbd__traverse(&T, w->lf.perm, q0, q1, &s, hcbd__hc_kick_begin, hcbd__hc_kick_pairs,
@@ -7847,7 +7952,7 @@ static int hcbd__hc_kick_vn(void *c, int q0, int q1)
 static int hcbd__hc_kick_any(void *c, int q0, int q1)
 {
     hcbd_hc_world *w = (hcbd_hc_world *)c;
-    return hcbd__hc_kick_run(w, q0, q1, w->noise_f, w->stress_on);
+    return hcbd__hc_kick_run(w, q0, q1, w->noise_f, w->core.stress_on);
 }
 
 /* Fluid velocities of t + dt (MODEL 6) into the scratch velocities: the
@@ -7858,7 +7963,7 @@ static int hcbd__hc_fluid_kick(hcbd_hc_world *w, double dt, uint64_t skey)
 {
     const int n = w->nf, nt = w->p.threads, rp = w->p.reverse_poiseuille;
     const int exact = w->p.pair_integrator == HCBD_PAIR_SHARDLOW;
-    const double dt_m = dt * w->inv_m, inv_q = 1.0 / w->qF;
+    const double dt_m = dt * w->inv_m, inv_q = 1.0 / w->core.qF;
     const double gx = w->p.g[0], gy = w->p.g[1], gz = w->p.g[2], half = 0.5 * w->p.L[1];
     double gmean = 0;
     int i, d, bad;
@@ -7873,7 +7978,7 @@ static int hcbd__hc_fluid_kick(hcbd_hc_world *w, double dt, uint64_t skey)
     w->kick_key = skey;
     bad = exact ? hcbd__hc_fluid_shardlow(w, dt, skey)
                 : hcbd__nl_owners(&w->lf, n, nt, w,
-                                  w->stress_on ? hcbd__hc_kick_any
+                                  w->core.stress_on ? hcbd__hc_kick_any
                                   : w->noise_f ? hcbd__hc_kick_vn
                                                : hcbd__hc_kick_v);
     HCBD__OMP(omp parallel for num_threads(nt) schedule(static))
@@ -7908,7 +8013,7 @@ static void hcbd__hc_lambda_update(hcbd_hc_world *w)
         int k;
         for (k = 0; k < w->pair_n[a]; ++k) {
             double x = eq[k] + (l[k] - eq[k]) * e;
-            if (noise) x += s * hcbd__normal_at(w->zig, hcbd__pair_key(skey, a, b[k]));
+            if (noise) x += s * hcbd__normal_at(w->core.zig, hcbd__pair_key(skey, a, b[k]));
             l[k] = (hcbd_real)x;
         }
     }
@@ -7924,7 +8029,7 @@ static inline int hcbd__hc_move(const hcbd_hc_world *w, double s_new, double *x,
     if (*y >= L[1]) { *y -= L[1]; k = 1; }
     else if (*y < 0) { *y += L[1]; k = -1; }
     if (*y >= L[1] || *y < 0) *y = 0; /* round-off of y - L */
-    if (k && w->le_on) *x -= k * s_new;
+    if (k && w->core.le_on) *x -= k * s_new;
     *x -= L[0] * floor(*x / L[0]);
     if (*x >= L[0]) *x = 0;
     *z -= L[2] * floor(*z / L[2]);
@@ -7941,10 +8046,10 @@ static inline int hcbd__hc_move(const hcbd_hc_world *w, double s_new, double *x,
 static int hcbd__hc_drift(hcbd_hc_world *w, double dt_f, int fluid, int poly, int *why)
 {
     const int nf = fluid ? w->nf : 0, np = poly ? w->np : 0, nt = w->p.threads, noise = w->noise_p;
-    const double dt = w->p.dt, lim_f = 0.5 * w->p.h, lim_p = 0.25 * w->p.rc, vj = w->le_vjump;
+    const double dt = w->p.dt, lim_f = 0.5 * w->p.h, lim_p = 0.25 * w->p.rc, vj = w->core.le_vjump;
     const double sdr = sqrt(2.0 * w->p.kT * dt / w->p.xi);
-    const double s_new = fluid ? fmod(w->le_offset + w->p.gdot * w->p.L[1] * dt_f, w->p.L[0])
-                               : w->le_offset;
+    const double s_new = fluid ? fmod(w->core.le_offset + w->p.gdot * w->p.L[1] * dt_f, w->p.L[0])
+                               : w->core.le_offset;
     const uint64_t skey = hcbd__mix64(w->key_poly ^ hcbd__mix64((uint64_t)w->step));
     hcbd__box box = hcbd__hc_box(w);
     double dm_f = 0, dm_p = 0;
@@ -7983,7 +8088,7 @@ static int hcbd__hc_drift(hcbd_hc_world *w, double dt_f, int fluid, int poly, in
         dr[2] = w->puz[i] * dt;
         if (noise) {
             double z3[3];
-            hcbd__deviates3(w->zig, HCBD_NOISE_GAUSS, hcbd__mix64(skey ^ (uint64_t)(uint32_t)i), z3);
+            hcbd__deviates3(w->core.zig, HCBD_NOISE_GAUSS, hcbd__mix64(skey ^ (uint64_t)(uint32_t)i), z3);
             dr[0] += sdr * z3[0];
             dr[1] += sdr * z3[1];
             dr[2] += sdr * z3[2];
@@ -8008,7 +8113,7 @@ static int hcbd__hc_drift(hcbd_hc_world *w, double dt_f, int fluid, int poly, in
     if (fluid) w->lf.le_drift += fabs(w->p.gdot * w->p.L[1] * dt_f);
     if (sqrt(dm_f) > w->lf.disp_max) w->lf.disp_max = sqrt(dm_f);
     if (sqrt(dm_p) > w->lp.disp_max) w->lp.disp_max = sqrt(dm_p);
-    w->le_offset = s_new;
+    w->core.le_offset = s_new;
     if (nan_f != INT_MAX) { *why = 0; return nan_f; }
     if (nan_p != INT_MAX) { *why = 1; return nan_p; }
     if (bad_f != INT_MAX) { *why = 2; return bad_f; }
@@ -8074,17 +8179,33 @@ static void hcbd__hc_stress_add(hcbd_hc_world *w)
     s[HCBD_HC_S_FLUID] = s[0] + s[1] + s[2] + s[3];
     s[HCBD_HC_S_POLYMER] = s[5] + s[6];
     s[HCBD_HC_S_TOTAL] = s[HCBD_HC_S_FLUID] + s[HCBD_HC_S_POLYMER] + s[HCBD_HC_S_INTERACTION];
-    for (k = 0; k < HCBD_HC_NSTRESS; ++k) w->stress_sum[k] -= s[k] * inv_V;
-    w->stress_steps++;
+    for (k = 0; k < HCBD_HC_NSTRESS; ++k) w->core.stress_sum[k] -= s[k] * inv_V;
+    w->core.stress_steps++;
 }
 
 /* >>HCBD: the step and its guard */
+/* The fluid (poly 0) or the polymers (1, no velocities of their own) as a
+   species view */
+static hcbd__vset hcbd__hc_vset(const hcbd_hc_world *w, int poly)
+{
+    hcbd__vset s;
+    s.n = poly ? w->np : w->nf;
+    s.slot = NULL;
+    s.x = poly ? w->px : w->fx; s.y = poly ? w->py : w->fy; s.z = poly ? w->pz : w->fz;
+    s.vx = poly ? NULL : w->fvx; s.vy = w->fvy; s.vz = w->fvz;
+    s.m = w->m;
+    return s;
+}
+
+
 /* The run-time guard (guard_every): positions inside the box, finite
    velocities and pair variables. */
 static hcbd_result hcbd__hc_guard(hcbd_hc_world *w)
 {
     const double *L = w->p.L;
     const int nt = w->p.threads;
+    const hcbd__vset fs = hcbd__hc_vset(w, 0), ps = hcbd__hc_vset(w, 1);
+    hcbd_result r;
     int i, k, f0 = INT_MAX, p0 = INT_MAX;
     (void)nt;
     /* the first offending blob and polymer, found on all threads; the
@@ -8104,24 +8225,12 @@ static hcbd_result hcbd__hc_guard(hcbd_hc_world *w)
             bad |= !isfinite(w->pair_l[(size_t)i * w->pair_cap + kk]);
         if (bad && i < p0) p0 = i;
     }
-    for (i = f0; i < w->nf; ++i) {
-        const double x = w->fx[i], y = w->fy[i], z = w->fz[i];
-        if (!(isfinite(w->fvx[i]) && isfinite(w->fvy[i]) && isfinite(w->fvz[i])))
-            return hcbd__fail(&w->err, HCBD_ERR_NONFINITE, w->step, i,
-                              "guard at step %lld: fluid blob %d has velocity (%g, %g, %g)",
-                              (long long)w->step, i, (double)w->fvx[i], (double)w->fvy[i],
-                              (double)w->fvz[i]);
-        if (!(x >= 0 && x < L[0] && y >= 0 && y < L[1] && z >= 0 && z < L[2]))
-            return hcbd__fail(&w->err, HCBD_ERR_OUTSIDE, w->step, i,
-                              "guard at step %lld: fluid blob %d at (%.17g, %.17g, %.17g) is "
-                              "outside the box", (long long)w->step, i, x, y, z);
-    }
+    for (i = f0; i < w->nf; ++i)
+        if ((r = hcbd__guard_one(&w->err, w->step, &fs, i, L, "fluid blob", i)) != HCBD_OK)
+            return r;
     for (i = p0; i < w->np; ++i) {
-        const double x = w->px[i], y = w->py[i], z = w->pz[i];
-        if (!(x >= 0 && x < L[0] && y >= 0 && y < L[1] && z >= 0 && z < L[2]))
-            return hcbd__fail(&w->err, HCBD_ERR_OUTSIDE, w->step, w->nf + i,
-                              "guard at step %lld: polymer %d at (%.17g, %.17g, %.17g) is "
-                              "outside the box", (long long)w->step, i, x, y, z);
+        if ((r = hcbd__guard_one(&w->err, w->step, &ps, i, L, "polymer", w->nf + i)) != HCBD_OK)
+            return r;
         for (k = 0; w->transient && k < w->pair_n[i]; ++k)
             if (!isfinite(w->pair_l[(size_t)i * w->pair_cap + k]))
                 return hcbd__fail(&w->err, HCBD_ERR_NONFINITE, w->step, w->nf + i,
@@ -8166,9 +8275,9 @@ hcbd_result hcbd_hc_step(hcbd_hc_world *w, int nsteps)
                 return hcbd__fail(&w->err, HCBD_ERR_UNSTABLE, w->step, bad,
                                   "fluid blob %d has a pair force beyond %g (the fixed-point "
                                   "range: a move of 16 h in one step); dt = %g is too long",
-                                  bad, w->limF, dt_f);
+                                  bad, w->core.limF, dt_f);
             if (k == nsub - 1) {
-                if (w->stress_on) hcbd__hc_stress_add(w);
+                if (w->core.stress_on) hcbd__hc_stress_add(w);
                 if (w->transient && w->np > 0) hcbd__hc_lambda_update(w);
             }
             bad = hcbd__hc_drift(w, dt_f, 1, nsub == 1, &why);
@@ -8229,34 +8338,20 @@ hcbd_result hcbd_hc_set_lambda(hcbd_hc_world *w, int a, int b, double lambda)
 
 double hcbd_hc_temperature(const hcbd_hc_world *w)
 {
-    double mean[3] = {0, 0, 0}, s = 0;
-    int i;
-    if (!w || w->nf < 2) return 0.0;
-    for (i = 0; i < w->nf; ++i) {
-        mean[0] += w->fvx[i] - w->p.gdot * (w->fy[i] - 0.5 * w->p.L[1]);
-        mean[1] += w->fvy[i];
-        mean[2] += w->fvz[i];
-    }
-    for (i = 0; i < 3; ++i) mean[i] /= w->nf;
-    for (i = 0; i < w->nf; ++i) {
-        double u0 = w->fvx[i] - w->p.gdot * (w->fy[i] - 0.5 * w->p.L[1]) - mean[0];
-        double u1 = w->fvy[i] - mean[1], u2 = w->fvz[i] - mean[2];
-        s += u0 * u0 + u1 * u1 + u2 * u2;
-    }
-    return w->m * s / (3.0 * (w->nf - 1));
+    hcbd__vset s;
+    if (!w) return 0.0;
+    s = hcbd__hc_vset(w, 0);
+    return hcbd__temperature(&s, w->p.gdot, w->p.L[1]);
 }
 
 void hcbd_hc_momentum(const hcbd_hc_world *w, double p[3])
 {
-    int i;
+    hcbd__vset s;
     if (!p) return;
     p[0] = p[1] = p[2] = 0.0;
     if (!w) return;
-    for (i = 0; i < w->nf; ++i) {
-        p[0] += w->m * w->fvx[i];
-        p[1] += w->m * w->fvy[i];
-        p[2] += w->m * w->fvz[i];
-    }
+    s = hcbd__hc_vset(w, 0);
+    hcbd__momentum(&s, p);
 }
 
 hcbd_result hcbd_hc_transverse_current(const hcbd_hc_world *w, int nk, double out[12])
@@ -8301,26 +8396,18 @@ hcbd_result hcbd_hc_density_range(const hcbd_hc_world *w, double out[3])
 
 hcbd_result hcbd_hc_stress_enable(hcbd_hc_world *w, int on)
 {
-    int k;
+    hcbd_result r;
     if (!w) return HCBD_ERR_NULL;
-    hcbd__clear(&w->err);
-    if (on != 0 && on != 1)
-        return hcbd__fail(&w->err, HCBD_ERR_PARAM, w->step, -1, "on = %d is not 0 or 1", on);
-    w->stress_on = on;
-    w->stress_steps = 0;
-    for (k = 0; k < HCBD_HC_NSTRESS; ++k) w->stress_sum[k] = 0.0;
-    w->ready = 0; /* the next step's passes must fill the accumulators */
-    return HCBD_OK;
+    r = hcbd__stress_enable(&w->core, &w->err, w->step, on);
+    if (r == HCBD_OK) w->ready = 0; /* the next step's passes must fill the accumulators */
+    return r;
 }
 
 hcbd_result hcbd_hc_stress_read(const hcbd_hc_world *w, double out[HCBD_HC_NSTRESS],
                                 int64_t *nsteps)
 {
-    int k;
     if (!w || !out) return HCBD_ERR_NULL;
-    for (k = 0; k < HCBD_HC_NSTRESS; ++k)
-        out[k] = w->stress_steps ? w->stress_sum[k] / (double)w->stress_steps : 0.0;
-    if (nsteps) *nsteps = w->stress_steps;
+    hcbd__stress_read(&w->core, out, HCBD_HC_NSTRESS, nsteps);
     return HCBD_OK;
 }
 
@@ -8333,7 +8420,7 @@ uint64_t hcbd_hc_state_checksum(const hcbd_hc_world *w)
     nf = (size_t)w->nf;
     np = (size_t)w->np;
     h = hcbd__hash(h, &w->step, sizeof w->step);
-    h = hcbd__hash(h, &w->le_offset, sizeof w->le_offset);
+    h = hcbd__hash(h, &w->core.le_offset, sizeof w->core.le_offset);
     h = hcbd__hash(h, w->fx, nf * R); h = hcbd__hash(h, w->fy, nf * R); h = hcbd__hash(h, w->fz, nf * R);
     h = hcbd__hash(h, w->fvx, nf * R); h = hcbd__hash(h, w->fvy, nf * R); h = hcbd__hash(h, w->fvz, nf * R);
     h = hcbd__hash(h, w->px, np * R); h = hcbd__hash(h, w->py, np * R); h = hcbd__hash(h, w->pz, np * R);
@@ -8372,11 +8459,7 @@ static void hcbd__ck_hc_params(hcbd__ck *c, hcbd_hc_params *p)
 static void hcbd__ck_hc_state(hcbd__ck *c, hcbd_hc_world *w)
 {
     int a, k;
-    hcbd__ck_i64(c, &w->step);
-    hcbd__ck_f64(c, &w->le_offset);
-    hcbd__ck_int(c, &w->stress_on);
-    hcbd__ck_i64(c, &w->stress_steps);
-    for (k = 0; k < HCBD_HC_NSTRESS; ++k) hcbd__ck_f64(c, &w->stress_sum[k]);
+    hcbd__ck_core(c, &w->step, &w->core, HCBD_HC_NSTRESS);
     hcbd__ck_i64(c, &w->n_created);
     hcbd__ck_i64(c, &w->n_coincident);
     hcbd__ck_int(c, &w->ready);
@@ -8459,8 +8542,7 @@ static hcbd_result hcbd__hc_ck_load(hcbd_hc_world *w, const void *buf, size_t si
     hcbd__ck_hc_state(&c, w);
     ready = w->ready;
     w->ready = 0;
-    if (c.bad || c.off != c.size || (ready & ~1) || (w->stress_on & ~1) ||
-        !(w->le_offset >= 0 && w->le_offset < w->p.L[0]))
+    if (c.bad || c.off != c.size || (ready & ~1) || !hcbd__core_valid(&w->core, w->p.L[0]))
         return hcbd__ck_bad(&w->err, &c,
                             c.bad ? "ends inside, or holds invalid, particle state"
                             : c.off != c.size ? "has trailing bytes" : "has a bad flag");
@@ -8503,11 +8585,19 @@ static hcbd_result hcbd__hc_load(void *w, const void *buf, size_t size)
     return hcbd__hc_ck_load((hcbd_hc_world *)w, buf, size);
 }
 
+static hcbd__self hcbd__hc_self(void *v)
+{
+    hcbd_hc_world *w = (hcbd_hc_world *)v;
+    hcbd__self s;
+    s.err = &w->err;
+    s.step = &w->step;
+    s.threads = &w->p.threads;
+    s.core = &w->core;
+    return s;
+}
+
 static const hcbd__kind hcbd__kind_hc = {
-    sizeof(hcbd_hc_world), offsetof(hcbd_hc_world, err), offsetof(hcbd_hc_world, step),
-    offsetof(hcbd_hc_world, live), offsetof(hcbd_hc_world, owned_mem),
-    offsetof(hcbd_hc_world, p) + offsetof(hcbd_hc_params, threads), HCBD__CK_HC,
-    "hcbd_hc_checkpoint_size", hcbd__hc_check, hcbd__hc_bytes, hcbd__hc_init,
+    sizeof(hcbd_hc_world), HCBD__CK_HC, "hcbd_hc_checkpoint_size", hcbd__hc_self, hcbd__hc_check, hcbd__hc_bytes, hcbd__hc_init,
     hcbd__ck_hc_walk, hcbd__hc_load};
 
 hcbd_result hcbd_hc_world_create(hcbd_hc_world *w, const hcbd_hc_def *def)
@@ -8551,7 +8641,7 @@ hcbd_result hcbd_hc_xyz_write(const hcbd_hc_world *w, FILE *f)
 {
     int i;
     if (!w || !f) return HCBD_ERR_NULL;
-    hcbd__xyz_head(f, w->nf + w->np, w->p.L, (double)w->step * w->p.dt, w->step, w->le_offset, "");
+    hcbd__xyz_head(f, w->nf + w->np, w->p.L, (double)w->step * w->p.dt, w->step, w->core.le_offset, "");
     for (i = 0; i < w->nf; ++i)
         hcbd__xyz_atom(f, "F", w->fx[i], w->fy[i], w->fz[i], w->fvx[i], w->fvy[i], w->fvz[i], i);
     /* polymer ids follow the fluid's so a frame's ids are unique */

@@ -231,7 +231,7 @@ int main(int argc, char **argv)
         }
     }
     if (!run_out_open(&c, &ro, &w, NULL)) return 2;
-    if (p->gdot != 0.0 && !w.flux_on) hcbd_stress_enable(&w, 1); /* a restart keeps its sums */
+    if (p->gdot != 0.0 && !w.core.stress_on) hcbd_stress_enable(&w, 1); /* a restart keeps its sums */
     clock_gettime(CLOCK_MONOTONIC, &t0);
     for (b = 0; b < NB; ++b) {
         double Tb = 0, mfb = 0, effb = 0, sfb = 0, fk[3] = {0, 0, 0}, skb[3] = {0, 0, 0};

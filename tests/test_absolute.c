@@ -218,7 +218,7 @@ static abs_dev abs_compare_step(hcbd_world *w, double tol_x, double tol_v)
     int i, c, n = w->n;
     /* the step sums pair terms on a fixed-point grid of 1/q (hcbd.h, pair
        sums): each of a particle's n - 1 terms is off by at most 1/(2q) */
-    const double m = w->gibd ? w->m : 1, gF = 0.5 * (n - 1) / w->qF;
+    const double m = w->gibd ? w->m : 1, gF = 0.5 * (n - 1) / w->core.qF;
     const double gP = w->gibd && w->qP > 0 ? 0.5 * (n - 1) / w->qP : 0;
     const double gv = (gF * w->p.dt + gP) / m, gx = gF * w->p.dt / w->p.xi + gv * w->p.dt;
     hcbd_world_get_positions(w, x, 0);
@@ -756,7 +756,7 @@ void test_abs_le_velocity_jump(void)
             xyz[0] = 4.0; xyz[1] = 0.3; xyz[2] = 5.0;
             xyz[3] = 4.5 + s; xyz[4] = L - 0.4; xyz[5] = 5.5;
             hcbd_world_set_positions(&w, 2, xyz);
-            w.le_offset = s;
+            w.core.le_offset = s;
             jump = (ld)gdot * L;
             v0[0] = 0.8; v0[1] = 0.05; v0[2] = -0.3;
             if (zero) { v0[3] = v0[0] + (double)jump; v0[4] = v0[1]; v0[5] = v0[2]; }

@@ -332,7 +332,7 @@ static void bi_param_table(void)
             snprintf(n2, sizeof n2, "hcbd_world_create %s", name);
             r = hcbd_world_create(&w, &d);
             bi_judge(n2, t->want, want, r, w.err.msg,
-                     r != HCBD_OK && w.owned_mem ? "memory kept" : NULL);
+                     r != HCBD_OK && w.core.mem ? "memory kept" : NULL);
             if (r == HCBD_OK) hcbd_world_destroy(&w);
             snprintf(n2, sizeof n2, "hcbd_world_bytes %s", name);
             bi_judge(n2, HCBD_OK, NULL, hcbd_world_bytes(&d) == 0 ? HCBD_OK : HCBD_ERR_STATE,

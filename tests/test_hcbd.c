@@ -359,7 +359,7 @@ void test_hc_lees_edwards_two_species(void)
         for (ky = -1; ky <= 1; ++ky)
             for (kx = -2; kx <= 2; ++kx)
                 for (kz = -1; kz <= 1; ++kz) {
-                    double x = w.fx[i] + kx * Lx + ky * w.le_offset, y = w.fy[i] + ky * Ly,
+                    double x = w.fx[i] + kx * Lx + ky * w.core.le_offset, y = w.fy[i] + ky * Ly,
                            z = w.fz[i] + kz * d.params.L[2];
                     double r = sqrt((x - poly[0]) * (x - poly[0]) + (y - poly[1]) * (y - poly[1]) +
                                     (z - poly[2]) * (z - poly[2]));
@@ -379,7 +379,7 @@ void test_hc_lees_edwards_two_species(void)
     {
         double vx_new, x_expect;
         hc_run(&w, 1);
-        s = w.le_offset;
+        s = w.core.le_offset;
         /* blob 0's velocity of t + dt, before the jump, from the step itself:
            its x moved by v dt, then by -s at the crossing */
         CHECK(w.fy[0] < 0.01, "blob 0 crossed (y = %g)", w.fy[0]);

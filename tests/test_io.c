@@ -360,8 +360,8 @@ static void frame_check(const frame *fr, const hcbd_world *w, const char *what)
     CHECK(!strcmp(fr->pbc, "T T T"), "%s: pbc %s", what, fr->pbc);
     CHECK(fr->step == w->step && fr->time == w->step * w->p.dt, "%s: step %lld time %g", what,
           fr->step, fr->time);
-    CHECK(fr->le_offset == w->le_offset, "%s: le_offset %.17g vs %.17g", what, fr->le_offset,
-          w->le_offset);
+    CHECK(fr->le_offset == w->core.le_offset, "%s: le_offset %.17g vs %.17g", what, fr->le_offset,
+          w->core.le_offset);
     for (k = 0; k < fr->n && k < w->n && bad < 5; ++k) {
         int d, ok = fr->id[k] == k && !strcmp(fr->sp[k], "S");
         for (d = 0; d < 3; ++d)
@@ -391,7 +391,7 @@ void test_xyz_frame_fields(void)
     CHECK(read_frame(f, &fr, 512), "frame does not parse");
     frame_check(&fr, &w, "library frame");
     fclose(f);
-    CHECK(w.le_offset != 0.0, "the sheared scene should have a nonzero offset");
+    CHECK(w.core.le_offset != 0.0, "the sheared scene should have a nonzero offset");
     /* the thermo line has as many fields as its header, and they are the
        world's numbers */
     {

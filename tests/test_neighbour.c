@@ -145,8 +145,8 @@ void test_box_too_small(void)
     /* the automatic skin shrinks to what the box holds, down to 0 */
     d.params.skin = HCBD_AUTO;
     r = hcbd_world_create(&w, &d);
-    CHECK(r == HCBD_OK && w.skin > 0.34 && w.skin < 0.35, "auto skin in L = 5.7: %s, skin %g",
-          hcbd_result_name(r), r == HCBD_OK ? w.skin : -1.0);
+    CHECK(r == HCBD_OK && w.core.skin > 0.34 && w.core.skin < 0.35, "auto skin in L = 5.7: %s, skin %g",
+          hcbd_result_name(r), r == HCBD_OK ? w.core.skin : -1.0);
     if (r == HCBD_OK) hcbd_world_destroy(&w);
     d.params.L[1] = 4.99;
     r = hcbd_world_create(&w, &d);

@@ -60,7 +60,7 @@ void test_le_neighbour_list(void)
                 for (i = 0; i < 500; ++i)
                     xyz[3 * i + 1] = w.nl.rlist + xyz[3 * i + 1] / w.p.L[1] * (w.p.L[1] - 2 * w.nl.rlist);
             hcbd_world_set_positions(&w, 500, xyz);
-            w.le_offset = offsets[o];
+            w.core.le_offset = offsets[o];
             hcbd_friction_average(&w, 1, out); /* builds the list */
             for (i = 0; i < 500; ++i) {
                 int32_t p;
@@ -116,11 +116,11 @@ void test_le_crossing_jump(void)
         v[0] = 0.3; v[1] = vy; v[2] = 0.0; v[3] = v[4] = v[5] = 0.0;
         hcbd_world_set_velocities(&w, v);
         run(&w, 10); /* the offset moves away from 0 (particle 0 crosses once) */
-        s = w.le_offset;
+        s = w.core.le_offset;
         {
-            double keep = w.le_offset;
+            double keep = w.core.le_offset;
             hcbd_world_set_positions(&w, 2, xyz);
-            w.le_offset = keep;
+            w.core.le_offset = keep;
         }
         hcbd_world_set_velocities(&w, v);
         hcbd_world_get_positions(&w, u0, 1);
@@ -179,7 +179,7 @@ void test_le_list_every_step(void)
             hcbd_world_get_positions(&w, xyz, 0);
             for (i = 0; i < N; ++i)
                 for (j = i + 1; j < N; ++j)
-                    if (le_r2(xyz, i, j, w.p.L, w.le_offset, NULL) < 2.5 * 2.5) {
+                    if (le_r2(xyz, i, j, w.p.L, w.core.le_offset, NULL) < 2.5 * 2.5) {
                         int32_t p, si = w.slot[i], ok = 0;
                         for (p = w.nl.nb_start[si]; p < w.nl.nb_start[si + 1]; ++p)
                             if (w.id[w.nl.nb_j[p]] == j) ok = 1;
@@ -270,7 +270,7 @@ void test_le_background_flux(void)
         d.params.seed = 40 + s;
         if (!make_world(&w, &d)) return;
         hcbd_world_place_random(&w, N);
-        w.le_offset = 2.0 + s;
+        w.core.le_offset = 2.0 + s;
         hcbd_world_get_positions(&w, xyz, 0);
         for (i = 0; i < N; ++i) {
             for (c = 0; c < 3; ++c) v[3 * i + c] = 0;
@@ -282,13 +282,13 @@ void test_le_background_flux(void)
         for (i = 0; i < N; ++i) {
             double sw = w0;
             for (j = 0; j < N; ++j)
-                if (j != i) sw += hcbd_wendland(sqrt(le_r2(xyz, i, j, w.p.L, w.le_offset, NULL)), Rc);
+                if (j != i) sw += hcbd_wendland(sqrt(le_r2(xyz, i, j, w.p.L, w.core.le_offset, NULL)), Rc);
             rho[i] = w.m * nrm * sw;
         }
         direct = 0;
         for (i = 0; i < N; ++i)
             for (j = i + 1; j < N; ++j) {
-                double dd[3], r = sqrt(le_r2(xyz, i, j, w.p.L, w.le_offset, dd)), S;
+                double dd[3], r = sqrt(le_r2(xyz, i, j, w.p.L, w.core.le_offset, dd)), S;
                 if (r >= Rc) continue;
                 S = 15 / (2 * 3.14159265358979323846 * Rc * Rc * Rc) * w.m * w.m * (1 / rho[i] + 1 / rho[j]) *
                     pow(1 - r / Rc, 3);
