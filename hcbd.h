@@ -26,8 +26,9 @@
                    Lees-Edwards shear, body forces.
                    HCBD_MODEL_WALLED: all of that plus solid walls (2016:
                    artificial particles, Morris no-slip velocities, wall
-                   repulsion or reflection).  The GI-BD build compiles no
-                   wall code and rejects wall parameters.
+                   repulsion or reflection), set in params.wall
+                   (hcbd_wall_params).  The other builds compile no wall
+                   code and have no params.wall.
                    HCBD_MODEL_HCBD: the GI-BD API plus the 2018 model, a
                    world of SPH fluid blobs and RaPiD polymer blobs
                    (hcbd_hc_world, hcbd_hc_step; no wall code).
@@ -97,19 +98,21 @@
      taken where the papers are ambiguous, and what was measured.
 
    CONTENTS (implementation; each ">>" banner below opens one of these)
-     errors; parameters and their checks; random numbers; kernels (Wendland,
-     star potential and its force table); GI-BD equations; fixed-point pair
-     sums; box and minimum image (Lees-Edwards); walls (repulsion,
-     depletion, artificial particles, Morris pairs); theory and stability
-     limits; world and storage; neighbour search (cells, half and cross
-     Verlet lists); pair passes (density, forces and Euler exchanges, exact
-     pair sweep); integrator, run-time guard and step; observables (g(r),
-     correlators, Carreau fit, MSD, profiles, slabs); checkpoints; world
-     kinds (lifecycle); XYZ and thermo.  Then the HCBD world, in one section on
-     top of that engine: its kernels; parameters and units; storage;
-     set-up; lists and pair passes (fluid density, exact sweep or Euler
-     pairs, polymer density, transient pairs, forces, coupling); the step
-     and its guard; observables; checkpoints, lifecycle, XYZ and thermo.
+     errors; parameters and their checks (a table row per field); random
+     numbers; kernels (Wendland, star potential and its force table); GI-BD
+     equations; fixed-point pair sums; box and minimum image (Lees-Edwards);
+     walls (repulsion, depletion, artificial particles, Morris pairs: the
+     walled build only); theory and stability limits; world and storage;
+     neighbour search (cells, half and cross Verlet lists); pair passes
+     (density, forces and Euler exchanges, exact pair sweep); integrator,
+     run-time guard and step; observables (g(r), correlators, Carreau fit,
+     MSD, profiles, slabs); checkpoints; world kinds (lifecycle); XYZ and
+     thermo.  Then the HCBD world, in one section on top of that engine:
+     its kernels; parameters and units; storage; set-up; lists and pair
+     passes (fluid density, exact sweep or Euler pairs, polymer density,
+     transient pairs, forces, coupling); the step and its guard;
+     observables; checkpoints, lifecycle, XYZ and thermo.  Both worlds
+     embed one hcbd__core (w->core) and share the code written over it.
 
    NAMING
      hcbd_<thing>_<verb>, the thing first.  A world: hcbd_world_def_default,
@@ -139,7 +142,7 @@
      size, a checksum: 0, NaN or an empty result for a NULL or unset
      argument) or nothing (_destroy, _add).  The library never exits or
      aborts.  Run-time guards (guard_every,
-     guard_step, guard_walls) stop a step with the step, the particle and
+     guard_step, wall.guard) stop a step with the step, the particle and
      the cause; hcbd_xyz_offenders writes the offenders as an XYZ frame.
 
    RESTART AND OUTPUT
@@ -195,7 +198,7 @@ typedef enum hcbd_result {
                                 precision (HCBD_REAL)                       */
     HCBD_ERR_OVERLAP = 13,   /* two particles closer than min_distance      */
     HCBD_ERR_OUTSIDE = 14,   /* a particle outside the box (run-time guard) */
-    HCBD_ERR_WALL = 15       /* a particle inside a wall, with guard_walls  */
+    HCBD_ERR_WALL = 15       /* a particle inside a wall, with wall.guard   */
 } hcbd_result;
 
 const char *hcbd_result_name(hcbd_result r);
@@ -270,6 +273,27 @@ typedef enum hcbd_wall_mode {
 
 #define HCBD_AUTO (-1)
 
+/* Walls normal to y (MODEL 4), params.wall of the walled build (the other
+   builds have the type, for checkpoints, but no such member).  thickness > 0 fills y < t and
+   y >= L[1] - t with artificial particles redrawn every step; the channel
+   lies between the interfaces y = t and L[1] - t. */
+typedef struct hcbd_wall_params {
+    double thickness;
+    double vx[2];         /* x velocity of the bottom and top wall          */
+    double beta_max;      /* Morris cap of 1 + d_B/d_A (1.5)                */
+    hcbd_wall_mode mode;
+    double a, b;          /* repulsion a exp(-b r^2): 300 kT, 2 sigma^-2    */
+    double plane;         /* depth of the repulsion plane in the wall (1.2) */
+    double shift;         /* HCBD_WALL_NOSLIP: Morris plane this far in
+                             front of the interface; HCBD_AUTO: the
+                             Boltzmann depletion width                      */
+    int noise_beta;       /* 1: Morris noise scaled by sqrt(beta) as the
+                             fluctuation-dissipation theorem needs; 0 only
+                             to show what breaks without it                 */
+    int guard;            /* 1: a particle found inside a wall stops the
+                             run (HCBD_ERR_WALL); 0 only counts it       */
+} hcbd_wall_params;
+
 typedef struct hcbd_params {
     double L[3];          /* box edges (periodic)                            */
     double dt;            /* time step                                       */
@@ -306,21 +330,9 @@ typedef struct hcbd_params {
                              (GI-BD only: refused with classical BD)       */
     double gdot;          /* Lees-Edwards shear rate (flow x, gradient y);
                              0 switches it off.  GI-BD only.                 */
-    /* Walls normal to y (HCBD_MODEL_WALLED; MODEL 4).  wall_thickness > 0
-       fills y < t and y >= L[1] - t with artificial particles redrawn every
-       step; the channel lies between the interfaces y = t and L[1] - t.  */
-    double wall_thickness;
-    double wall_vx[2];    /* x velocity of the bottom and top wall          */
-    double wall_beta_max; /* Morris cap of 1 + d_B/d_A (1.5)                */
-    hcbd_wall_mode wall_mode;
-    double wall_a, wall_b;/* repulsion a exp(-b r^2): 300 kT, 2 sigma^-2    */
-    double wall_plane;    /* depth of the repulsion plane in the wall (1.2) */
-    double wall_shift;    /* HCBD_WALL_NOSLIP: Morris plane this far in
-                             front of the interface; HCBD_AUTO: the
-                             Boltzmann depletion width                      */
-    int wall_noise_beta;  /* 1: Morris noise scaled by sqrt(beta) as the
-                             fluctuation-dissipation theorem needs; 0 only
-                             to show what breaks without it                 */
+#if HCBD_MODEL == HCBD_MODEL_WALLED
+    hcbd_wall_params wall; /* the walls (only in the walled build)         */
+#endif
     double skin;          /* Verlet skin; HCBD_AUTO: 0.6 (the fastest of
                              0.4-1.0 for BD and GI-BD stars, README), less
                              where the box is too small for it           */
@@ -336,8 +348,6 @@ typedef struct hcbd_params {
                              inside a wall, densities); 0 never.  Each
                              moved particle's displacement and finiteness
                              are checked every step regardless.          */
-    int guard_walls;      /* 1: a particle found inside a wall stops the
-                             run (HCBD_ERR_WALL); 0 only counts it       */
     double guard_step;    /* largest displacement in one step before
                              HCBD_ERR_UNSTABLE; HCBD_AUTO: half the
                              interaction range (a smaller value, e.g. the
@@ -563,7 +573,9 @@ int64_t hcbd_wall_penetrations(const hcbd_world *w, int64_t *last_step, int *las
 /* Wall repulsion on a particle at height y (MODEL 4, every plane at its
    minimum-image distance): returns the energy, *fy the force (may be NULL).
    0 without Gaussian walls. */
+#if HCBD_MODEL == HCBD_MODEL_WALLED
 double hcbd_wall_potential(const hcbd_params *p, double y, double *fy);
+#endif
 
 /* Mean-field predictions for a channel or a sheared bulk (MODEL 3, 4):
    nu = Rc^2/(28 tau), eta_inf = nu n# m (2016 eq. 35), the channel width
@@ -1198,6 +1210,29 @@ static inline hcbd_result hcbd_flux_read(const hcbd_world *w, double out[4], int
 #define HCBD__STREAM_BROWNIAN 0x6ULL
 /* The GI-BD build compiles the wall branches away. */
 #define HCBD__WALLS (HCBD_MODEL == HCBD_MODEL_WALLED)
+/* the wall thickness, 0 in the builds without walls */
+static hcbd_wall_params hcbd__wall_default(void)
+{
+    hcbd_wall_params q;
+    memset(&q, 0, sizeof q);
+    q.beta_max = 1.5;
+    q.mode = HCBD_WALL_GAUSS;
+    q.a = 300.0;
+    q.b = 2.0;
+    q.plane = 1.2;
+    q.shift = HCBD_AUTO;
+    q.noise_beta = 1;
+    return q;
+}
+#if HCBD__WALLS
+static double hcbd__wall_t(const hcbd_params *p) { return p->wall.thickness; }
+#else
+static double hcbd__wall_t(const hcbd_params *p)
+{
+    (void)p;
+    return 0.0;
+}
+#endif
 
 #ifdef __cplusplus
 extern "C" {
@@ -1283,20 +1318,14 @@ hcbd_params hcbd_params_default(void)
     p.table_r0 = 0.0;
     p.skin = HCBD_AUTO;
     p.gdot = 0.0;
-    p.wall_thickness = 0.0;
-    p.wall_beta_max = 1.5;
-    p.wall_mode = HCBD_WALL_GAUSS;
-    p.wall_a = 300.0;
-    p.wall_b = 2.0;
-    p.wall_plane = 1.2;
-    p.wall_shift = HCBD_AUTO;
-    p.wall_noise_beta = 1;
+#if HCBD__WALLS
+    p.wall = hcbd__wall_default();
+#endif
     p.sort = 1;
     p.seed = 1;
     p.threads = 1;
     p.min_distance = 0.0;
     p.guard_every = 1;
-    p.guard_walls = 0;
     p.guard_step = HCBD_AUTO;
     return p;
 }
@@ -1315,7 +1344,7 @@ hcbd_result hcbd_world_def_set_density(hcbd_world_def *def, int n, double densit
     double *L, t, open, s;
     if (!def) return HCBD_ERR_NULL;
     L = def->params.L;
-    t = HCBD__WALLS ? 2.0 * def->params.wall_thickness : 0.0;
+    t = 2.0 * hcbd__wall_t(&def->params);
     open = L[0] * (L[1] - t) * L[2];
     def->capacity = n;
     def->params.density = density;
@@ -1370,66 +1399,176 @@ static hcbd_result hcbd__param_fail(char *msg, size_t n, const char *field,
             return hcbd__param_fail(msg, msg_size, field, (double)(val), #cond); \
     } while (0)
 
+/* Parameter checks, one table row per field: where it is, when it applies
+   (a condition bit), its range and what it is; hcbd__check_rows names the
+   first bad field, its value and the rule.  What relates two fields (tau
+   against dt, a plane inside its wall, the box against the interaction
+   range) is code after the rows. */
+enum {
+    HCBD__GT = 1,     /* value > lo (else >= lo)                    */
+    HCBD__LT = 2,     /* value < hi (else <= hi)                    */
+    HCBD__OR_AUTO = 4,/* HCBD_AUTO also accepted                    */
+    HCBD__ONE_OF = 8  /* integer: lo or hi, nothing between         */
+};
+typedef struct hcbd__prow {
+    const char *name;
+    size_t off;
+    char kind;        /* 'd' double (finite), 'i' int or enum        */
+    unsigned when;    /* the condition bit under which it applies   */
+    unsigned flags;
+    double lo, hi;
+    const char *what;
+} hcbd__prow;
+typedef char hcbd__enums_are_ints[sizeof(hcbd_dynamics) == sizeof(int) ? 1 : -1];
+#define HCBD__INF HUGE_VAL
+#define HCBD__ROWD(T, f, when, flags, lo, hi, what) {#f, offsetof(T, f), 'd', when, flags, lo, hi, what}
+#define HCBD__ROWI(T, f, when, flags, lo, hi, what) {#f, offsetof(T, f), 'i', when, flags, lo, hi, what}
+
+static hcbd_result hcbd__check_rows(const void *p, const hcbd__prow *rows, size_t n,
+                                    unsigned mask, char *msg, size_t msg_size)
+{
+    size_t k;
+    for (k = 0; k < n; ++k) {
+        const hcbd__prow *r = &rows[k];
+        const char *at = (const char *)p + r->off;
+        double v;
+        int ok;
+        char rule[96];
+        if (!(r->when & mask)) continue;
+        if (r->kind == 'd') {
+            memcpy(&v, at, sizeof v);
+        } else {
+            int iv;
+            memcpy(&iv, at, sizeof iv);
+            v = iv;
+        }
+        if (r->flags & HCBD__ONE_OF)
+            ok = v == r->lo || v == r->hi;
+        else
+            ok = (r->kind != 'd' || isfinite(v)) && ((r->flags & HCBD__GT) ? v > r->lo : v >= r->lo) &&
+                 ((r->flags & HCBD__LT) ? v < r->hi : v <= r->hi);
+        if ((r->flags & HCBD__OR_AUTO) && v == HCBD_AUTO) ok = 1;
+        if (ok) continue;
+        if (!msg || !msg_size) return HCBD_ERR_PARAM;
+        if (r->flags & HCBD__ONE_OF) {
+            snprintf(rule, sizeof rule, "%g or %g", r->lo, r->hi);
+        } else {
+            int m = snprintf(rule, sizeof rule, "%s", r->kind == 'd' ? "finite" : "an integer");
+            if (r->lo > -HCBD__INF)
+                m += snprintf(rule + m, sizeof rule - (size_t)m, ", %s %g",
+                              (r->flags & HCBD__GT) ? ">" : ">=", r->lo);
+            if (r->hi < HCBD__INF && r->hi < INT_MAX)
+                m += snprintf(rule + m, sizeof rule - (size_t)m, ", %s %g",
+                              (r->flags & HCBD__LT) ? "<" : "<=", r->hi);
+            if (r->flags & HCBD__OR_AUTO) snprintf(rule + m, sizeof rule - (size_t)m, ", or HCBD_AUTO");
+        }
+        snprintf(msg, msg_size, "parameter %s = %.17g is invalid (%s: need %s)", r->name, v,
+                 r->what, rule);
+        return HCBD_ERR_PARAM;
+    }
+    return HCBD_OK;
+}
+
+/* The conditions of hcbd_params' rows */
+enum {
+    HCBD__ALL = 1, HCBD__IF_GIBD = 2, HCBD__IF_2016 = 4, HCBD__IF_STAR = 8, HCBD__IF_POT = 16,
+    HCBD__IF_TABLE = 32, HCBD__IF_WALLS = 64, HCBD__IF_GAUSS = 128, HCBD__IF_NOSLIP = 256,
+    HCBD__IF_WALL_GIBD = 512
+};
+#define HCBD__P_D(f, when, flags, lo, hi, what) HCBD__ROWD(hcbd_params, f, when, flags, lo, hi, what)
+#define HCBD__P_I(f, when, flags, lo, hi, what) HCBD__ROWI(hcbd_params, f, when, flags, lo, hi, what)
+static const hcbd__prow hcbd__params_rows[] = {
+    HCBD__P_D(L[0], HCBD__ALL, HCBD__GT | HCBD__LT, 0, 1e12, "box edge"),
+    HCBD__P_D(L[1], HCBD__ALL, HCBD__GT | HCBD__LT, 0, 1e12, "box edge"),
+    HCBD__P_D(L[2], HCBD__ALL, HCBD__GT | HCBD__LT, 0, 1e12, "box edge"),
+    HCBD__P_D(fext[0], HCBD__ALL, 0, -HCBD__INF, HCBD__INF, "body force"),
+    HCBD__P_D(fext[1], HCBD__ALL, 0, -HCBD__INF, HCBD__INF, "body force"),
+    HCBD__P_D(fext[2], HCBD__ALL, 0, -HCBD__INF, HCBD__INF, "body force"),
+    HCBD__P_D(dt, HCBD__ALL, HCBD__GT, 0, HCBD__INF, "time step"),
+    HCBD__P_D(kT, HCBD__ALL, 0, 0, HCBD__INF, "thermal energy"),
+    HCBD__P_D(xi, HCBD__ALL, HCBD__GT, 0, HCBD__INF, "particle friction"),
+    HCBD__P_I(dynamics, HCBD__ALL, 0, HCBD_DYN_GIBD, HCBD_DYN_BD, "hcbd_dynamics"),
+    HCBD__P_I(potential, HCBD__ALL, 0, HCBD_POT_IDEAL, HCBD_POT_TABLE, "hcbd_potential"),
+    HCBD__P_I(noise, HCBD__ALL, 0, HCBD_NOISE_GAUSS, HCBD_NOISE_UNIFORM, "hcbd_noise"),
+    HCBD__P_I(pair_integrator, HCBD__ALL, 0, HCBD_PAIR_EULER, HCBD_PAIR_SHARDLOW, "hcbd_pair_integrator"),
+    HCBD__P_I(brownian, HCBD__ALL, 0, HCBD_BROWNIAN_EULER, HCBD_BROWNIAN_LM, "hcbd_brownian_integrator"),
+    HCBD__P_D(xip, HCBD__IF_GIBD, HCBD__GT, 0, HCBD__INF, "background friction"),
+    HCBD__P_D(tau, HCBD__IF_GIBD, HCBD__GT, 0, HCBD__INF, "background relaxation time"),
+    HCBD__P_D(Rc, HCBD__IF_GIBD, HCBD__GT, 0, HCBD__INF, "weight function range"),
+    HCBD__P_I(density_norm, HCBD__IF_GIBD, HCBD__ONE_OF, 2014, 2016, "density normalisation"),
+    HCBD__P_D(density, HCBD__IF_2016, HCBD__GT, 0, HCBD__INF, "nominal number density"),
+    HCBD__P_I(lagged_density, HCBD__ALL, 0, 0, 1, "lagged densities (2014)"),
+    HCBD__P_D(f, HCBD__IF_STAR, HCBD__GT, 0, HCBD__INF, "star arms"),
+    HCBD__P_D(sigma, HCBD__IF_STAR, HCBD__GT, 0, HCBD__INF, "star core size"),
+    HCBD__P_D(star_eps, HCBD__IF_STAR, 0, 0, HCBD__INF, "star energy unit"),
+    HCBD__P_D(rcut, HCBD__IF_POT, HCBD__GT, 0, HCBD__INF, "potential cut-off"),
+    HCBD__P_I(table_n, HCBD__IF_TABLE, 0, 2, INT_MAX, "table points"),
+    HCBD__P_D(table_r0, HCBD__IF_TABLE, 0, 0, HCBD__INF, "table start"),
+    HCBD__P_D(skin, HCBD__ALL, HCBD__OR_AUTO, 0, HCBD__INF, "Verlet skin"),
+    HCBD__P_D(gdot, HCBD__ALL, 0, -HCBD__INF, HCBD__INF, "shear rate"),
+    HCBD__P_I(fext_background_only, HCBD__ALL, 0, 0, 1, "background-only body force"),
+#if HCBD__WALLS
+    HCBD__P_D(wall.thickness, HCBD__ALL, 0, 0, HCBD__INF, "wall thickness"),
+    HCBD__P_D(wall.vx[0], HCBD__IF_WALLS, 0, -HCBD__INF, HCBD__INF, "bottom wall velocity"),
+    HCBD__P_D(wall.vx[1], HCBD__IF_WALLS, 0, -HCBD__INF, HCBD__INF, "top wall velocity"),
+    HCBD__P_D(wall.beta_max, HCBD__IF_WALLS, 0, 1, HCBD__INF, "Morris cap"),
+    HCBD__P_I(wall.mode, HCBD__IF_WALLS, 0, HCBD_WALL_GAUSS, HCBD_WALL_NOSLIP, "hcbd_wall_mode"),
+    HCBD__P_I(wall.noise_beta, HCBD__IF_WALLS, 0, 0, 1, "Morris noise scaled by sqrt(beta)"),
+    HCBD__P_D(wall.a, HCBD__IF_GAUSS, 0, 0, HCBD__INF, "wall repulsion strength"),
+    HCBD__P_D(wall.b, HCBD__IF_GAUSS, HCBD__GT, 0, HCBD__INF, "wall repulsion decay"),
+    HCBD__P_D(wall.plane, HCBD__IF_GAUSS, 0, 0, HCBD__INF, "repulsion plane depth"),
+    HCBD__P_D(wall.shift, HCBD__IF_NOSLIP, HCBD__OR_AUTO, 0, HCBD__INF, "Morris plane shift"),
+    HCBD__P_D(density, HCBD__IF_WALL_GIBD, HCBD__GT, 0, HCBD__INF,
+             "the artificial particles' number density"),
+    HCBD__P_I(wall.guard, HCBD__ALL, 0, 0, 1, "stop at a wall entry"),
+#endif
+    HCBD__P_I(sort, HCBD__ALL, 0, 0, 1, "re-sort at rebuilds"),
+    HCBD__P_I(force_table, HCBD__ALL, 0, 0, 1, "star force table"),
+    HCBD__P_I(threads, HCBD__ALL, 0, 1, 1024, "OpenMP threads"),
+    HCBD__P_D(min_distance, HCBD__ALL, 0, 0, HCBD__INF, "closest set-up distance"),
+    HCBD__P_I(guard_every, HCBD__ALL, 0, 0, INT_MAX, "guard interval"),
+    HCBD__P_D(guard_step, HCBD__ALL, HCBD__GT | HCBD__OR_AUTO, 0, HCBD__INF, "largest step"),
+};
+#undef HCBD__P_D
+#undef HCBD__P_I
+
 hcbd_result hcbd_params_check(const hcbd_params *p, char *msg, size_t msg_size)
 {
+    unsigned mask = HCBD__ALL;
+    hcbd_result r;
     int d;
-    static const char *Lname[3] = {"L[0]", "L[1]", "L[2]"};
-    static const char *Fname[3] = {"fext[0]", "fext[1]", "fext[2]"};
     if (!p) {
         if (msg && msg_size) snprintf(msg, msg_size, "params is NULL");
         return HCBD_ERR_NULL;
     }
-    for (d = 0; d < 3; ++d) {
-        HCBD__CHECK(isfinite(p->L[d]) && p->L[d] > 0 && p->L[d] < 1e12, Lname[d], p->L[d]);
-        HCBD__CHECK(isfinite(p->fext[d]), Fname[d], p->fext[d]);
+    if (p->dynamics == HCBD_DYN_GIBD) mask |= HCBD__IF_GIBD;
+    if (p->dynamics == HCBD_DYN_GIBD && p->density_norm == 2016) mask |= HCBD__IF_2016;
+    if (p->potential == HCBD_POT_STAR) mask |= HCBD__IF_STAR;
+    if (p->potential != HCBD_POT_IDEAL) mask |= HCBD__IF_POT;
+    if (p->potential == HCBD_POT_TABLE) mask |= HCBD__IF_TABLE;
+#if HCBD__WALLS
+    if (p->wall.thickness > 0) {
+        mask |= HCBD__IF_WALLS;
+        if (p->wall.mode != HCBD_WALL_REFLECT) mask |= HCBD__IF_GAUSS;
+        if (p->wall.mode == HCBD_WALL_NOSLIP) mask |= HCBD__IF_NOSLIP;
+        if (p->dynamics == HCBD_DYN_GIBD) mask |= HCBD__IF_WALL_GIBD;
     }
-    HCBD__CHECK(isfinite(p->dt) && p->dt > 0, "dt", p->dt);
-    HCBD__CHECK(isfinite(p->kT) && p->kT >= 0, "kT", p->kT);
-    HCBD__CHECK(isfinite(p->xi) && p->xi > 0, "xi", p->xi);
-    HCBD__CHECK(p->dynamics == HCBD_DYN_GIBD || p->dynamics == HCBD_DYN_BD,
-                "dynamics", (int)p->dynamics);
-    HCBD__CHECK(p->potential == HCBD_POT_IDEAL || p->potential == HCBD_POT_STAR ||
-                p->potential == HCBD_POT_TABLE, "potential", (int)p->potential);
-    HCBD__CHECK(p->noise == HCBD_NOISE_GAUSS || p->noise == HCBD_NOISE_UNIFORM,
-                "noise", (int)p->noise);
-    HCBD__CHECK(p->pair_integrator == HCBD_PAIR_EULER || p->pair_integrator == HCBD_PAIR_SHARDLOW,
-                "pair_integrator", (int)p->pair_integrator);
-    HCBD__CHECK(p->brownian == HCBD_BROWNIAN_EULER || p->brownian == HCBD_BROWNIAN_LM, "brownian",
-                (int)p->brownian);
-    if (p->dynamics == HCBD_DYN_GIBD) {
-        HCBD__CHECK(isfinite(p->xip) && p->xip > 0, "xip", p->xip);
-        HCBD__CHECK(isfinite(p->tau) && p->tau > 0, "tau", p->tau);
-        /* Explicit Euler friction overshoots for tau < dt; 2014 eq. 27 asks
-           tau >= 10 dt for accuracy, which stays the caller's trade-off.
-           The exact pair solution has no such limit. */
-        if (p->pair_integrator == HCBD_PAIR_EULER) HCBD__CHECK(p->tau >= p->dt, "tau", p->tau);
-        HCBD__CHECK(isfinite(p->Rc) && p->Rc > 0, "Rc", p->Rc);
-        HCBD__CHECK(p->density_norm == 2014 || p->density_norm == 2016,
-                    "density_norm", p->density_norm);
-        if (p->density_norm == 2016)
-            HCBD__CHECK(isfinite(p->density) && p->density > 0, "density",
-                        p->density);
+#endif
+    if (p->potential == HCBD_POT_TABLE && (!p->table_F || !p->table_V)) {
+        if (msg && msg_size) snprintf(msg, msg_size, "parameter table_F or table_V is NULL");
+        return HCBD_ERR_NULL;
     }
-    HCBD__CHECK(p->lagged_density == 0 || p->lagged_density == 1, "lagged_density",
-                p->lagged_density);
-    if (p->potential == HCBD_POT_STAR) {
-        HCBD__CHECK(isfinite(p->f) && p->f > 0, "f", p->f);
-        HCBD__CHECK(isfinite(p->sigma) && p->sigma > 0, "sigma", p->sigma);
-        HCBD__CHECK(isfinite(p->star_eps) && p->star_eps >= 0, "star_eps",
-                    p->star_eps);
-    }
-    if (p->potential != HCBD_POT_IDEAL)
-        HCBD__CHECK(isfinite(p->rcut) && p->rcut > 0, "rcut", p->rcut);
+    r = hcbd__check_rows(p, hcbd__params_rows, sizeof hcbd__params_rows / sizeof *hcbd__params_rows,
+                         mask, msg, msg_size);
+    if (r != HCBD_OK) return r;
+    /* Explicit Euler friction overshoots for tau < dt; 2014 eq. 27 asks
+       tau >= 10 dt for accuracy, which stays the caller's trade-off.  The
+       exact pair solution has no such limit. */
+    if (p->dynamics == HCBD_DYN_GIBD && p->pair_integrator == HCBD_PAIR_EULER)
+        HCBD__CHECK(p->tau >= p->dt, "tau", p->tau);
     if (p->potential == HCBD_POT_TABLE) {
         int k;
-        if (!p->table_F || !p->table_V) {
-            if (msg && msg_size)
-                snprintf(msg, msg_size, "parameter table_F or table_V is NULL");
-            return HCBD_ERR_NULL;
-        }
-        HCBD__CHECK(p->table_n >= 2, "table_n", p->table_n);
-        HCBD__CHECK(isfinite(p->table_r0) && p->table_r0 >= 0 &&
-                    p->table_r0 < p->rcut, "table_r0", p->table_r0);
+        HCBD__CHECK(p->table_r0 < p->rcut, "table_r0", p->table_r0);
         for (k = 0; k < p->table_n; ++k)
             if (!isfinite(p->table_F[k]) || !isfinite(p->table_V[k])) {
                 const int F = !isfinite(p->table_F[k]);
@@ -1439,8 +1578,6 @@ hcbd_result hcbd_params_check(const hcbd_params *p, char *msg, size_t msg_size)
                 return HCBD_ERR_PARAM;
             }
     }
-    HCBD__CHECK(p->skin == HCBD_AUTO || (isfinite(p->skin) && p->skin >= 0), "skin", p->skin);
-    HCBD__CHECK(isfinite(p->gdot), "gdot", p->gdot);
     if (p->gdot != 0.0) {
         HCBD__CHECK(p->dynamics == HCBD_DYN_GIBD, "gdot", p->gdot);
         /* the offset may move by less than a box edge per step */
@@ -1456,24 +1593,15 @@ hcbd_result hcbd_params_check(const hcbd_params *p, char *msg, size_t msg_size)
                 return HCBD_ERR_BOX;
             }
     }
-    HCBD__CHECK(p->fext_background_only == 0 || p->fext_background_only == 1,
-                "fext_background_only", p->fext_background_only);
     /* classical BD has no background velocity for the force to drive */
     HCBD__CHECK(!p->fext_background_only || p->dynamics == HCBD_DYN_GIBD,
                 "fext_background_only", p->fext_background_only);
-    HCBD__CHECK(isfinite(p->wall_thickness) && p->wall_thickness >= 0, "wall_thickness",
-                p->wall_thickness);
-    if (p->wall_thickness > 0) {
-        double t = p->wall_thickness, cut = hcbd__cutmax(p);
-        if (!HCBD__WALLS) {
-            if (msg && msg_size)
-                snprintf(msg, msg_size, "parameter wall_thickness = %.17g needs a build "
-                         "with HCBD_MODEL=HCBD_MODEL_WALLED", t);
-            return HCBD_ERR_PARAM;
-        }
+#if HCBD__WALLS
+    if (p->wall.thickness > 0) {
+        const double t = p->wall.thickness, cut = hcbd__cutmax(p);
         if (2.0 * t >= p->L[1]) {
             if (msg && msg_size)
-                snprintf(msg, msg_size, "wall_thickness = %.17g leaves no channel: the "
+                snprintf(msg, msg_size, "wall.thickness = %.17g leaves no channel: the "
                          "two walls (2 x %.17g) fill the box height L[1] = %.17g",
                          t, t, p->L[1]);
             return HCBD_ERR_BOX;
@@ -1482,7 +1610,7 @@ hcbd_result hcbd_params_check(const hcbd_params *p, char *msg, size_t msg_size)
            interact through it */
         if (2.0 * t < cut) {
             if (msg && msg_size)
-                snprintf(msg, msg_size, "wall_thickness = %.17g is too thin: y is "
+                snprintf(msg, msg_size, "wall.thickness = %.17g is too thin: y is "
                          "periodic, so the two walls (2 x %.17g) must be at least the "
                          "interaction range %.17g thick", t, t, cut);
             return HCBD_ERR_BOX;
@@ -1491,38 +1619,13 @@ hcbd_result hcbd_params_check(const hcbd_params *p, char *msg, size_t msg_size)
                     p->gdot);
         HCBD__CHECK(p->lagged_density == 0,
                     "lagged_density (not available with walls)", p->lagged_density);
-        HCBD__CHECK(isfinite(p->wall_vx[0]), "wall_vx[0]", p->wall_vx[0]);
-        HCBD__CHECK(isfinite(p->wall_vx[1]), "wall_vx[1]", p->wall_vx[1]);
-        HCBD__CHECK(isfinite(p->wall_beta_max) && p->wall_beta_max >= 1.0,
-                    "wall_beta_max", p->wall_beta_max);
-        HCBD__CHECK(p->wall_mode == HCBD_WALL_GAUSS || p->wall_mode == HCBD_WALL_REFLECT ||
-                    p->wall_mode == HCBD_WALL_NOSLIP, "wall_mode", (int)p->wall_mode);
-        HCBD__CHECK(p->wall_noise_beta == 0 || p->wall_noise_beta == 1,
-                    "wall_noise_beta", p->wall_noise_beta);
-        if (p->wall_mode != HCBD_WALL_REFLECT) {
-            HCBD__CHECK(isfinite(p->wall_a) && p->wall_a >= 0, "wall_a", p->wall_a);
-            HCBD__CHECK(isfinite(p->wall_b) && p->wall_b > 0, "wall_b", p->wall_b);
-            HCBD__CHECK(isfinite(p->wall_plane) && p->wall_plane >= 0 &&
-                        p->wall_plane <= t, "wall_plane", p->wall_plane);
-        }
-        if (p->wall_mode == HCBD_WALL_NOSLIP)
-            HCBD__CHECK(p->wall_shift == HCBD_AUTO ||
-                        (isfinite(p->wall_shift) && p->wall_shift >= 0 &&
-                         p->wall_shift < 0.25 * (p->L[1] - 2.0 * t)),
-                        "wall_shift", p->wall_shift);
-        if (p->dynamics == HCBD_DYN_GIBD)
-            HCBD__CHECK(isfinite(p->density) && p->density > 0,
-                        "density (the artificial particles' number density)", p->density);
+        if (p->wall.mode != HCBD_WALL_REFLECT)
+            HCBD__CHECK(p->wall.plane <= t, "wall.plane", p->wall.plane);
+        if (p->wall.mode == HCBD_WALL_NOSLIP)
+            HCBD__CHECK(p->wall.shift == HCBD_AUTO || p->wall.shift < 0.25 * (p->L[1] - 2.0 * t),
+                        "wall.shift", p->wall.shift);
     }
-    HCBD__CHECK(p->sort == 0 || p->sort == 1, "sort", p->sort);
-    HCBD__CHECK(p->force_table == 0 || p->force_table == 1, "force_table", p->force_table);
-    HCBD__CHECK(p->threads >= 1 && p->threads <= 1024, "threads", p->threads);
-    HCBD__CHECK(isfinite(p->min_distance) && p->min_distance >= 0, "min_distance",
-                p->min_distance);
-    HCBD__CHECK(p->guard_every >= 0, "guard_every", p->guard_every);
-    HCBD__CHECK(p->guard_walls == 0 || p->guard_walls == 1, "guard_walls", p->guard_walls);
-    HCBD__CHECK(p->guard_step == HCBD_AUTO || (isfinite(p->guard_step) && p->guard_step > 0),
-                "guard_step", p->guard_step);
+#endif
     if (hcbd__needs_pairs(p)) {
         double rl = hcbd__cutmax(p) + hcbd__skin(p);
         for (d = 0; d < 3; ++d)
@@ -2122,21 +2225,22 @@ static inline int hcbd__delta(const hcbd_world *w, double dx, double dy, double 
 /* >>walls (MODEL 4): every wall piece of the engine, here: the repulsion and
    the depletion width, then the passes of the walled build (artificial
    particles, Morris pairs) */
+#if HCBD__WALLS
 double hcbd_wall_potential(const hcbd_params *p, double y, double *fy)
 {
     double e = 0.0, f = 0.0, Ly, planes[2];
     int k;
     if (fy) *fy = 0.0;
-    if (!p || p->wall_thickness <= 0 || p->wall_mode == HCBD_WALL_REFLECT) return 0.0;
+    if (!p || p->wall.thickness <= 0 || p->wall.mode == HCBD_WALL_REFLECT) return 0.0;
     Ly = p->L[1];
-    planes[0] = p->wall_thickness - p->wall_plane;
-    planes[1] = Ly - p->wall_thickness + p->wall_plane;
+    planes[0] = p->wall.thickness - p->wall.plane;
+    planes[1] = Ly - p->wall.thickness + p->wall.plane;
     for (k = 0; k < 2; ++k) {
         double s = y - planes[k], x;
         s -= Ly * floor(s / Ly + 0.5); /* every plane at its minimum image */
-        x = p->wall_a * exp(-p->wall_b * s * s);
+        x = p->wall.a * exp(-p->wall.b * s * s);
         e += x;
-        f += 2.0 * p->wall_b * s * x;
+        f += 2.0 * p->wall.b * s * x;
     }
     if (fy) *fy = f;
     return e;
@@ -2147,9 +2251,9 @@ double hcbd_wall_potential(const hcbd_params *p, double y, double *fy)
 static double hcbd__depletion(const hcbd_params *p)
 {
     const int n = 4096;
-    double a = p->wall_thickness, h = 0.5 * p->L[1] - a, s = 0.0;
+    double a = p->wall.thickness, h = 0.5 * p->L[1] - a, s = 0.0;
     int k;
-    if (p->wall_thickness <= 0 || p->wall_mode == HCBD_WALL_REFLECT || p->kT <= 0) return 0.0;
+    if (p->wall.thickness <= 0 || p->wall.mode == HCBD_WALL_REFLECT || p->kT <= 0) return 0.0;
     for (k = 0; k <= n; ++k) {
         double y = a + h * k / n, c = (k == 0 || k == n) ? 1.0 : (k % 2 ? 4.0 : 2.0);
         s += c * (1.0 - exp(-hcbd_wall_potential(p, y, NULL) / p->kT));
@@ -2165,12 +2269,12 @@ static int hcbd__art_count(const hcbd_params *p, int acol[2])
     double n;
     int d;
     acol[0] = acol[1] = 1;
-    if (!HCBD__WALLS || p->wall_thickness <= 0 || p->dynamics != HCBD_DYN_GIBD) return 0;
+    if (!HCBD__WALLS || p->wall.thickness <= 0 || p->dynamics != HCBD_DYN_GIBD) return 0;
     for (d = 0; d < 2; ++d) {
         double k = floor(p->L[2 * d] / p->Rc);
         acol[d] = k < 3.0 ? 1 : (k > 256.0 ? 256 : (int)k);
     }
-    n = floor(p->density * p->L[0] * 2.0 * p->wall_thickness * p->L[2] + 0.5);
+    n = floor(p->density * p->L[0] * 2.0 * p->wall.thickness * p->L[2] + 0.5);
     return n > (double)(INT32_MAX / 4) ? INT32_MAX / 4 : (int)n;
 }
 
@@ -2180,7 +2284,7 @@ static int hcbd__art_count(const hcbd_params *p, int acol[2])
 static void hcbd__art_pos(const hcbd_world *w, uint64_t *g, double r[3])
 {
     r[0] = hcbd__u01(hcbd_splitmix64(g)) * w->p.L[0];
-    r[1] = (2.0 * hcbd__u01(hcbd_splitmix64(g)) - 1.0) * w->p.wall_thickness;
+    r[1] = (2.0 * hcbd__u01(hcbd_splitmix64(g)) - 1.0) * w->p.wall.thickness;
     if (r[1] < 0.0) r[1] += w->p.L[1];
     r[2] = hcbd__u01(hcbd_splitmix64(g)) * w->p.L[2];
 }
@@ -2270,7 +2374,7 @@ static void hcbd__morris(hcbd_world *w, int i, uint64_t key, double P[3], int ex
 {
     const double Rc2 = w->p.Rc * w->p.Rc, invRc = 1.0 / w->p.Rc;
     const double cs = w->cf * w->m * w->m * w->p.dt / w->p.tau, two_kT = 2.0 * w->p.kT;
-    const double bmax = w->p.wall_beta_max, m = w->m, inv_m = w->inv_m;
+    const double bmax = w->p.wall.beta_max, m = w->m, inv_m = w->inv_m;
     const double xi = w->x[i], yi = w->y[i], zi = w->z[i], iri = w->inv_rho[i];
     const uint64_t idk = (uint64_t)(uint32_t)w->id[i] << 32;
     double v[3];
@@ -2289,15 +2393,15 @@ static void hcbd__morris(hcbd_world *w, int i, uint64_t key, double P[3], int ex
             if (dy > 0.0) { /* B below i: behind the bottom interface */
                 dA = yi - w->morris_lo;
                 dB = w->morris_lo - (yi - dy);
-                vw[0] = w->p.wall_vx[0];
+                vw[0] = w->p.wall.vx[0];
             } else {
                 dA = w->morris_hi - yi;
                 dB = (yi - dy) - w->morris_hi;
-                vw[0] = w->p.wall_vx[1];
+                vw[0] = w->p.wall.vx[1];
             }
             beta = (dA > 0.0 && dB >= 0.0) ? 1.0 + dB / dA : bmax;
             if (beta > bmax) beta = bmax;
-            nb = w->p.wall_noise_beta ? 1.0 : 1.0 / beta; /* noise variance factor */
+            nb = w->p.wall.noise_beta ? 1.0 : 1.0 / beta; /* noise variance factor */
             if (two_kT > 0.0) hcbd__noise3(w, hcbd__mix64(key ^ idk ^ (uint64_t)k), z3);
             if (exact) {
                 /* the wall is a reservoir: v - v_wall relaxes at the rate
@@ -2313,6 +2417,77 @@ static void hcbd__morris(hcbd_world *w, int i, uint64_t key, double P[3], int ex
     }
     if (exact) { w->vx[i] = (hcbd_real)v[0]; w->vy[i] = (hcbd_real)v[1]; w->vz[i] = (hcbd_real)v[2]; }
 }
+
+/* The world's wall state from the parameters (at init) */
+static void hcbd__walls_init(hcbd_world *w, const hcbd_params *p)
+{
+    w->walls = p->wall.thickness > 0;
+    if (w->walls) {
+        double h = 0.0;
+        w->has_gauss = p->wall.mode != HCBD_WALL_REFLECT && p->wall.a > 0;
+        w->has_refl = p->wall.mode == HCBD_WALL_REFLECT;
+        w->wall_lo = p->wall.thickness;
+        w->wall_hi = p->L[1] - p->wall.thickness;
+        if (p->wall.mode == HCBD_WALL_NOSLIP)
+            h = p->wall.shift == HCBD_AUTO ? hcbd__depletion(p) : p->wall.shift;
+        w->morris_lo = w->wall_lo + h;
+        w->morris_hi = w->wall_hi - h;
+        /* an artificial particle's density is that of an ideal bulk,
+           m n# (2016) or m (n# + w(0)) (2014) */
+        if (w->gibd)
+            w->art_inv_rho = 1.0 / (w->m * (p->density_norm == 2016 ? p->density
+                                                                     : p->density + w->w0));
+    }
+    w->wall_pen_step = -1;
+    w->wall_pen_id = -1;
+    w->wall_key = hcbd__mix64(p->seed ^ hcbd__mix64(HCBD__STREAM_WALL));
+    w->wall_pair_key = hcbd__mix64(p->seed ^ hcbd__mix64(HCBD__STREAM_WALL_PAIR));
+}
+
+/* wall.guard of the walled build's parameters */
+static int hcbd__wall_guard(const hcbd_world *w) { return w->walls && w->p.wall.guard; }
+
+/* The wall's force on a particle at height y */
+static double hcbd__wall_fy(const hcbd_world *w, double y)
+{
+    double fy;
+    hcbd_wall_potential(&w->p, y, &fy);
+    return fy;
+}
+#else
+/* Without walls: nothing to draw, no wall near, no force.  The step's calls
+   to these sit behind w->walls, w->n_art and w->has_gauss, all 0. */
+static int hcbd__art_count(const hcbd_params *p, int acol[2])
+{
+    (void)p;
+    acol[0] = acol[1] = 1;
+    return 0;
+}
+static double hcbd__depletion(const hcbd_params *p)
+{
+    (void)p;
+    return 0.0;
+}
+static void hcbd__walls_init(hcbd_world *w, const hcbd_params *p)
+{
+    (void)p;
+    w->wall_pen_step = -1;
+    w->wall_pen_id = -1;
+}
+static inline void hcbd__wall_draw(hcbd_world *w) { (void)w; }
+static inline int hcbd__near_wall(const hcbd_world *w, double y) { (void)w; (void)y; return 0; }
+static inline double hcbd__art_wsum(const hcbd_world *w, double x, double y, double z)
+{
+    (void)w; (void)x; (void)y; (void)z;
+    return 0.0;
+}
+static inline void hcbd__morris(hcbd_world *w, int i, uint64_t key, double P[3], int exact)
+{
+    (void)w; (void)i; (void)key; (void)P; (void)exact;
+}
+static inline int hcbd__wall_guard(const hcbd_world *w) { (void)w; return 0; }
+static inline double hcbd__wall_fy(const hcbd_world *w, double y) { (void)w; (void)y; return 0.0; }
+#endif
 
 int64_t hcbd_wall_penetrations(const hcbd_world *w, int64_t *last_step, int *last_id)
 {
@@ -2334,7 +2509,7 @@ hcbd_result hcbd_theory_of(const hcbd_params *p, hcbd_theory *t)
     t->nu = p->Rc * p->Rc / (28.0 * p->tau);
     t->m = p->xip * p->tau;
     t->eta_inf = t->nu * p->density * t->m;
-    t->width = p->L[1] - 2.0 * p->wall_thickness;
+    t->width = p->L[1] - 2.0 * hcbd__wall_t(p);
     t->g = p->fext[0] / t->m;
     t->v_max = t->g * t->width * t->width / (8.0 * t->nu);
     t->re_max = p->sigma * fabs(t->v_max) / t->nu;
@@ -2699,28 +2874,8 @@ hcbd_result hcbd_world_init(hcbd_world *w, const hcbd_world_def *def, void *mem,
     w->shardlow = w->gibd && p->pair_integrator == HCBD_PAIR_SHARDLOW;
     w->core.le_on = p->gdot != 0.0;
     w->core.le_vjump = p->gdot * p->L[1];
-    w->walls = HCBD__WALLS && p->wall_thickness > 0;
     w->fext_dr = w->has_fext && !p->fext_background_only;
-    if (w->walls) {
-        double h = 0.0;
-        w->has_gauss = p->wall_mode != HCBD_WALL_REFLECT && p->wall_a > 0;
-        w->has_refl = p->wall_mode == HCBD_WALL_REFLECT;
-        w->wall_lo = p->wall_thickness;
-        w->wall_hi = p->L[1] - p->wall_thickness;
-        if (p->wall_mode == HCBD_WALL_NOSLIP)
-            h = p->wall_shift == HCBD_AUTO ? hcbd__depletion(p) : p->wall_shift;
-        w->morris_lo = w->wall_lo + h;
-        w->morris_hi = w->wall_hi - h;
-        /* an artificial particle's density is that of an ideal bulk,
-           m n# (2016) or m (n# + w(0)) (2014) */
-        if (w->gibd)
-            w->art_inv_rho = 1.0 / (w->m * (p->density_norm == 2016 ? p->density
-                                                                     : p->density + w->w0));
-    }
-    w->wall_pen_step = -1;
-    w->wall_pen_id = -1;
-    w->wall_key = hcbd__mix64(p->seed ^ hcbd__mix64(HCBD__STREAM_WALL));
-    w->wall_pair_key = hcbd__mix64(p->seed ^ hcbd__mix64(HCBD__STREAM_WALL_PAIR));
+    hcbd__walls_init(w, p);
     w->seed_key = hcbd__mix64(p->seed ^ hcbd__mix64(HCBD__STREAM_PAIR));
     w->bd_key = hcbd__mix64(p->seed ^ hcbd__mix64(HCBD__STREAM_BROWNIAN));
     if (p->potential == HCBD_POT_TABLE) {
@@ -3934,9 +4089,7 @@ static hcbd_result hcbd__integrate(hcbd_world *w)
         if (fric)
             for (d = 0; d < 3; ++d) P[d] = (double)w->aP[d][i] * iqP;
         if (gauss) {
-            double fw;
-            hcbd_wall_potential(&w->p, w->y[i], &fw);
-            F[1] += fw;
+            F[1] += hcbd__wall_fy(w, w->y[i]);
         }
         if (morris && hcbd__near_wall(w, w->y[i])) hcbd__morris(w, i, wkey, P, 0);
         /* G: the body force when it drives only the background */
@@ -4183,7 +4336,7 @@ static hcbd_result hcbd__guard(hcbd_world *w)
                               "guard at step %lld: particle %d has images (%d, %d, %d) near "
                               "overflow or x shift %g", (long long)w->step, k, (int)w->ix[i],
                               (int)w->iy[i], (int)w->iz[i], w->lx[i]);
-        if (w->walls && w->p.guard_walls && (y < w->wall_lo || y > w->wall_hi))
+        if (hcbd__wall_guard(w) && (y < w->wall_lo || y > w->wall_hi))
             return hcbd__fail(&w->err, HCBD_ERR_WALL, w->step, k,
                               "guard at step %lld: particle %d at y = %.17g is inside a "
                               "wall (the channel is %g <= y <= %g)",
@@ -4229,9 +4382,9 @@ hcbd_result hcbd_step(hcbd_world *w, int nsteps)
         if (w->shardlow) hcbd__shardlow(w);
         r = hcbd__integrate(w);
         if (r == HCBD_OK && w->core.stress_on) hcbd__flux_add(w);
-        if (r == HCBD_OK && w->p.guard_walls && w->wall_pen_step == w->step)
+        if (r == HCBD_OK && hcbd__wall_guard(w) && w->wall_pen_step == w->step)
             r = hcbd__fail(&w->err, HCBD_ERR_WALL, w->step, w->wall_pen_id,
-                           "step %lld: particle %d entered a wall (guard_walls = 1)",
+                           "step %lld: particle %d entered a wall (wall.guard = 1)",
                            (long long)w->step, w->wall_pen_id);
         w->step++;
         if (r == HCBD_OK && w->p.guard_every > 0 && w->step % w->p.guard_every == 0)
@@ -4465,20 +4618,22 @@ hcbd_result hcbd_config_temperature(hcbd_world *w, double out[2])
         if ((r = hcbd__for_pairs(w, w->p.rcut, hcbd__tconf_fn, &t)) != HCBD_OK) return r;
         for (i = 0; i < w->n; ++i) {
             double F = t.acc[i];
-            if (t.c == 1 && HCBD__WALLS && w->has_gauss) {
+#if HCBD__WALLS
+            if (t.c == 1 && w->has_gauss) {
                 /* phi = a e^(-b s^2) per plane: F = 2 b s phi, phi'' = (4 b^2 s^2 - 2 b) phi */
                 const double Ly = w->p.L[1];
-                const double planes[2] = {w->p.wall_thickness - w->p.wall_plane,
-                                          Ly - w->p.wall_thickness + w->p.wall_plane};
+                const double planes[2] = {w->p.wall.thickness - w->p.wall.plane,
+                                          Ly - w->p.wall.thickness + w->p.wall.plane};
                 int k;
                 for (k = 0; k < 2; ++k) {
                     double sk = w->y[i] - planes[k], ph;
                     sk -= Ly * floor(sk / Ly + 0.5);
-                    ph = w->p.wall_a * exp(-w->p.wall_b * sk * sk);
-                    F += 2.0 * w->p.wall_b * sk * ph;
-                    out[1] += (4.0 * w->p.wall_b * w->p.wall_b * sk * sk - 2.0 * w->p.wall_b) * ph;
+                    ph = w->p.wall.a * exp(-w->p.wall.b * sk * sk);
+                    F += 2.0 * w->p.wall.b * sk * ph;
+                    out[1] += (4.0 * w->p.wall.b * w->p.wall.b * sk * sk - 2.0 * w->p.wall.b) * ph;
                 }
             }
+#endif
             out[0] += F * F;
         }
     }
@@ -4513,9 +4668,7 @@ hcbd_result hcbd_forces(hcbd_world *w, double *f)
         (r = hcbd__for_pairs(w, w->p.rcut, hcbd__force_fn, &t)) != HCBD_OK)
         return r;
     for (k = 0; HCBD__WALLS && w->has_gauss && k < w->n; ++k) {
-        double fy = 0.0;
-        hcbd_wall_potential(&w->p, w->y[w->slot[k]], &fy);
-        f[3 * k + 1] += fy;
+        f[3 * k + 1] += hcbd__wall_fy(w, w->y[w->slot[k]]);
     }
     return HCBD_OK;
 }
@@ -5670,6 +5823,11 @@ static hcbd_result hcbd__read_file(hcbd_error *e, const char *path, unsigned cha
 
 static void hcbd__ck_params(hcbd__ck *c, hcbd_params *p)
 {
+#if HCBD__WALLS
+    hcbd_wall_params *wp = &p->wall;
+#else
+    hcbd_wall_params dflt = hcbd__wall_default(), *wp = &dflt;
+#endif
     int d;
     for (d = 0; d < 3; ++d) hcbd__ck_f64(c, &p->L[d]);
     hcbd__ck_f64(c, &p->dt); hcbd__ck_f64(c, &p->kT); hcbd__ck_f64(c, &p->xi);
@@ -5687,21 +5845,23 @@ static void hcbd__ck_params(hcbd__ck *c, hcbd_params *p)
     for (d = 0; d < 3; ++d) hcbd__ck_f64(c, &p->fext[d]);
     hcbd__ck_int(c, &p->fext_background_only);
     hcbd__ck_f64(c, &p->gdot);
-    hcbd__ck_f64(c, &p->wall_thickness);
-    hcbd__ck_f64(c, &p->wall_vx[0]); hcbd__ck_f64(c, &p->wall_vx[1]);
-    hcbd__ck_f64(c, &p->wall_beta_max);
-    HCBD__CK_ENUM(c, p->wall_mode, hcbd_wall_mode);
-    hcbd__ck_f64(c, &p->wall_a); hcbd__ck_f64(c, &p->wall_b);
-    hcbd__ck_f64(c, &p->wall_plane); hcbd__ck_f64(c, &p->wall_shift);
-    hcbd__ck_int(c, &p->wall_noise_beta);
+    hcbd__ck_f64(c, &wp->thickness);
+    hcbd__ck_f64(c, &wp->vx[0]); hcbd__ck_f64(c, &wp->vx[1]);
+    hcbd__ck_f64(c, &wp->beta_max);
+    HCBD__CK_ENUM(c, wp->mode, hcbd_wall_mode);
+    hcbd__ck_f64(c, &wp->a); hcbd__ck_f64(c, &wp->b);
+    hcbd__ck_f64(c, &wp->plane); hcbd__ck_f64(c, &wp->shift);
+    hcbd__ck_int(c, &wp->noise_beta);
     hcbd__ck_f64(c, &p->skin);
     hcbd__ck_int(c, &p->sort);
     hcbd__ck_int(c, &p->force_table);
     hcbd__ck_u64(c, &p->seed);
     hcbd__ck_int(c, &p->threads);
     hcbd__ck_f64(c, &p->min_distance);
-    hcbd__ck_int(c, &p->guard_every); hcbd__ck_int(c, &p->guard_walls);
+    hcbd__ck_int(c, &p->guard_every); hcbd__ck_int(c, &wp->guard);
     hcbd__ck_f64(c, &p->guard_step);
+    /* a build without walls keeps the slots (same format) and holds defaults there */
+    if (!HCBD__WALLS && c->in && wp->thickness != 0.0) c->bad = 1;
 }
 
 /* What both worlds' states begin with: the step, the Lees-Edwards offset
@@ -6033,76 +6193,55 @@ static hcbd_result hcbd__load(const hcbd__kind *k, void *w, const char *path)
     return hcbd__adopt(k, w, &t, r);
 }
 
-/* The GI-BD world's kind and its public lifecycle, thread and checkpoint
-   functions. */
-static hcbd_result hcbd__bd_check(const void *def, char *msg, size_t n)
-{
-    return hcbd__check_def((const hcbd_world_def *)def, msg, n);
-}
+/* One world type's kind and its public lifecycle, thread and checkpoint
+   functions, all of them one-line calls of the shared code above:
+   K names the kind, W and D the world and definition types, check, bytes,
+   init, walk and load its own functions, tag its checkpoint kind, then the
+   public names (create, destroy, threads, checkpoint size/save/load, file
+   save/load). */
+#define HCBD__WORLD_KIND(K, W, D, check, bytes, init, walk, load, tag, create, destroy,      \
+                         set_threads, ck_size, ck_save, ck_load, save, load_file)            \
+    static hcbd_result K##_check(const void *def, char *msg, size_t n)                     \
+    {                                                                                      \
+        return check((const D *)def, msg, n);                                              \
+    }                                                                                      \
+    static size_t K##_bytes(const void *def) { return bytes((const D *)def); }             \
+    static hcbd_result K##_init(void *w, const void *def, void *mem, size_t n)             \
+    {                                                                                      \
+        return init((W *)w, (const D *)def, mem, n);                                       \
+    }                                                                                      \
+    static hcbd_result K##_load(void *w, const void *buf, size_t n)                        \
+    {                                                                                      \
+        return load((W *)w, buf, n);                                                       \
+    }                                                                                      \
+    static hcbd__self K##_self(void *v)                                                    \
+    {                                                                                      \
+        W *w = (W *)v;                                                                     \
+        hcbd__self s;                                                                      \
+        s.err = &w->err;                                                                   \
+        s.step = &w->step;                                                                 \
+        s.threads = &w->p.threads;                                                         \
+        s.core = &w->core;                                                                 \
+        return s;                                                                          \
+    }                                                                                      \
+    static const hcbd__kind K = {sizeof(W), tag, #ck_size, K##_self, K##_check,            \
+                                 K##_bytes, K##_init, walk, K##_load};                      \
+    hcbd_result create(W *w, const D *def) { return hcbd__create(&K, w, def); }            \
+    void destroy(W *w) { hcbd__destroy(&K, w); }                                           \
+    hcbd_result set_threads(W *w, int n) { return hcbd__set_threads(&K, w, n); }           \
+    size_t ck_size(const W *w) { return hcbd__ck_size(&K, w); }                            \
+    hcbd_result ck_save(W *w, void *buf, size_t n) { return hcbd__ck_put(&K, w, buf, n); } \
+    hcbd_result ck_load(W *w, const void *buf, size_t n)                                   \
+    {                                                                                      \
+        return hcbd__ck_get(&K, w, buf, n);                                                \
+    }                                                                                      \
+    hcbd_result save(W *w, const char *path) { return hcbd__save(&K, w, path); }           \
+    hcbd_result load_file(W *w, const char *path) { return hcbd__load(&K, w, path); }
 
-static size_t hcbd__bd_bytes(const void *def)
-{
-    return hcbd_world_bytes((const hcbd_world_def *)def);
-}
-
-static hcbd_result hcbd__bd_init(void *w, const void *def, void *mem, size_t bytes)
-{
-    return hcbd_world_init((hcbd_world *)w, (const hcbd_world_def *)def, mem, bytes);
-}
-
-static hcbd_result hcbd__bd_load(void *w, const void *buf, size_t size)
-{
-    return hcbd__ck_load((hcbd_world *)w, buf, size);
-}
-
-static hcbd__self hcbd__bd_self(void *v)
-{
-    hcbd_world *w = (hcbd_world *)v;
-    hcbd__self s;
-    s.err = &w->err;
-    s.step = &w->step;
-    s.threads = &w->p.threads;
-    s.core = &w->core;
-    return s;
-}
-
-static const hcbd__kind hcbd__kind_bd = {
-    sizeof(hcbd_world), HCBD__CK_WORLD, "hcbd_checkpoint_size", hcbd__bd_self, hcbd__bd_check, hcbd__bd_bytes, hcbd__bd_init, hcbd__ck_walk,
-    hcbd__bd_load};
-
-hcbd_result hcbd_world_create(hcbd_world *w, const hcbd_world_def *def)
-{
-    return hcbd__create(&hcbd__kind_bd, w, def);
-}
-
-void hcbd_world_destroy(hcbd_world *w) { hcbd__destroy(&hcbd__kind_bd, w); }
-
-hcbd_result hcbd_set_threads(hcbd_world *w, int threads)
-{
-    return hcbd__set_threads(&hcbd__kind_bd, w, threads);
-}
-
-size_t hcbd_checkpoint_size(const hcbd_world *w) { return hcbd__ck_size(&hcbd__kind_bd, w); }
-
-hcbd_result hcbd_checkpoint_save(hcbd_world *w, void *buf, size_t size)
-{
-    return hcbd__ck_put(&hcbd__kind_bd, w, buf, size);
-}
-
-hcbd_result hcbd_checkpoint_load(hcbd_world *w, const void *buf, size_t size)
-{
-    return hcbd__ck_get(&hcbd__kind_bd, w, buf, size);
-}
-
-hcbd_result hcbd_save(hcbd_world *w, const char *path)
-{
-    return hcbd__save(&hcbd__kind_bd, w, path);
-}
-
-hcbd_result hcbd_load(hcbd_world *w, const char *path)
-{
-    return hcbd__load(&hcbd__kind_bd, w, path);
-}
+HCBD__WORLD_KIND(hcbd__kind_bd, hcbd_world, hcbd_world_def, hcbd__check_def, hcbd_world_bytes,
+                 hcbd_world_init, hcbd__ck_walk, hcbd__ck_load, HCBD__CK_WORLD, hcbd_world_create,
+                 hcbd_world_destroy, hcbd_set_threads, hcbd_checkpoint_size, hcbd_checkpoint_save,
+                 hcbd_checkpoint_load, hcbd_save, hcbd_load)
 
 /* >>extended XYZ and thermo lines */
 static void hcbd__xyz_head(FILE *f, int n, const double L[3], double time, int64_t step,
@@ -6373,48 +6512,59 @@ hcbd_hc_def hcbd_hc_def_default(void)
     return d;
 }
 
+#define HCBD__H_D(f, flags, lo, hi, what) HCBD__ROWD(hcbd_hc_params, f, HCBD__ALL, flags, lo, hi, what)
+#define HCBD__H_I(f, flags, lo, hi, what) HCBD__ROWI(hcbd_hc_params, f, HCBD__ALL, flags, lo, hi, what)
+static const hcbd__prow hcbd__hc_params_rows[] = {
+    HCBD__H_D(L[0], HCBD__GT, 0, HCBD__INF, "box edge"),
+    HCBD__H_D(L[1], HCBD__GT, 0, HCBD__INF, "box edge"),
+    HCBD__H_D(L[2], HCBD__GT, 0, HCBD__INF, "box edge"),
+    HCBD__H_D(dt, HCBD__GT, 0, HCBD__INF, "time step"),
+    HCBD__H_D(kT, 0, 0, HCBD__INF, "thermal energy"),
+    HCBD__H_D(rho, HCBD__GT, 0, HCBD__INF, "fluid mass density"),
+    HCBD__H_D(nbar, HCBD__GT, 0, HCBD__INF, "fluid blob number density"),
+    HCBD__H_D(eta, 0, 0, HCBD__INF, "shear viscosity"),
+    HCBD__H_D(P0, 0, 0, HCBD__INF, "Tait pressure coefficient"),
+    HCBD__H_D(h, HCBD__GT, 0, HCBD__INF, "M4 support"),
+    HCBD__H_I(fluctuations, 0, 0, 1, "thermal fluctuations switch"),
+    HCBD__H_D(g[0], 0, -HCBD__INF, HCBD__INF, "body force"),
+    HCBD__H_D(g[1], 0, -HCBD__INF, HCBD__INF, "body force"),
+    HCBD__H_D(g[2], 0, -HCBD__INF, HCBD__INF, "body force"),
+    HCBD__H_I(reverse_poiseuille, 0, 0, 1, "reverse Poiseuille switch"),
+    HCBD__H_D(gdot, 0, -HCBD__INF, HCBD__INF, "shear rate"),
+    HCBD__H_D(xi, HCBD__GT, 0, HCBD__INF, "polymer friction"),
+    HCBD__H_D(rc, HCBD__GT, 0, HCBD__INF, "RaPiD kernel range"),
+    HCBD__H_D(sigma, HCBD__GT, 0, HCBD__INF, "RaPiD kernel core"),
+    HCBD__H_D(alpha, 0, 0, HCBD__INF, "transient strength"),
+    HCBD__H_D(tau_lambda, HCBD__GT, 0, HCBD__INF, "pair variable relaxation time"),
+    HCBD__H_D(p_kuhn, 0, 0, HCBD__INF, "Kuhn segments per blob"),
+    HCBD__H_D(n_max, HCBD__GT, 0, HCBD__INF, "melt number density"),
+    HCBD__H_D(chi, 0, -HCBD__INF, HCBD__INF, "Flory-Huggins chi"),
+    HCBD__H_I(coupling, 0, HCBD_COUPLE_SHEPARD, HCBD_COUPLE_RAW, "hcbd_coupling"),
+    HCBD__H_I(pair_integrator, 0, HCBD_PAIR_EULER, HCBD_PAIR_SHARDLOW, "hcbd_pair_integrator"),
+    HCBD__H_I(substeps, 0, 1, 1000, "fluid steps per polymer step"),
+    HCBD__H_I(threads, 0, 1, 1024, "OpenMP threads"),
+    HCBD__H_I(guard_every, 0, 0, INT_MAX, "guard interval"),
+};
+#undef HCBD__H_D
+#undef HCBD__H_I
+
 hcbd_result hcbd_hc_params_check(const hcbd_hc_params *p, char *msg, size_t msg_size)
 {
-    static const char *Ln[3] = {"L[0]", "L[1]", "L[2]"}, *gn[3] = {"g[0]", "g[1]", "g[2]"};
     int d;
     double reach;
+    hcbd_result r;
     if (!p) {
         if (msg && msg_size) snprintf(msg, msg_size, "params is NULL");
         return HCBD_ERR_NULL;
     }
-    for (d = 0; d < 3; ++d) HCBD__CHECK(p->L[d] > 0 && isfinite(p->L[d]), Ln[d], p->L[d]);
-    HCBD__CHECK(p->dt > 0 && isfinite(p->dt), "dt", p->dt);
-    HCBD__CHECK(p->kT >= 0 && isfinite(p->kT), "kT", p->kT);
-    HCBD__CHECK(p->rho > 0 && isfinite(p->rho), "rho", p->rho);
-    HCBD__CHECK(p->nbar > 0 && isfinite(p->nbar), "nbar", p->nbar);
-    HCBD__CHECK(p->eta >= 0 && isfinite(p->eta), "eta", p->eta);
-    HCBD__CHECK(p->P0 >= 0 && isfinite(p->P0), "P0", p->P0);
-    HCBD__CHECK(p->h > 0 && isfinite(p->h), "h", p->h);
-    HCBD__CHECK(p->fluctuations == 0 || p->fluctuations == 1, "fluctuations",
-                (double)p->fluctuations);
-    for (d = 0; d < 3; ++d) HCBD__CHECK(isfinite(p->g[d]), gn[d], p->g[d]);
-    HCBD__CHECK(p->reverse_poiseuille == 0 || p->reverse_poiseuille == 1,
-                "reverse_poiseuille", (double)p->reverse_poiseuille);
-    HCBD__CHECK(isfinite(p->gdot), "gdot", p->gdot);
-    HCBD__CHECK(!(p->gdot != 0 && p->reverse_poiseuille), "gdot",
-                p->gdot);
+    r = hcbd__check_rows(p, hcbd__hc_params_rows,
+                         sizeof hcbd__hc_params_rows / sizeof *hcbd__hc_params_rows, HCBD__ALL,
+                         msg, msg_size);
+    if (r != HCBD_OK) return r;
+    HCBD__CHECK(!(p->gdot != 0 && p->reverse_poiseuille), "gdot", p->gdot);
     /* the offset may move by less than a box edge per step */
     HCBD__CHECK(fabs(p->gdot * p->L[1] * p->dt) < p->L[0], "gdot", p->gdot);
-    HCBD__CHECK(p->xi > 0 && isfinite(p->xi), "xi", p->xi);
-    HCBD__CHECK(p->rc > 0 && isfinite(p->rc), "rc", p->rc);
-    HCBD__CHECK(p->sigma > 0 && p->sigma < p->rc, "sigma", p->sigma);
-    HCBD__CHECK(p->alpha >= 0 && isfinite(p->alpha), "alpha", p->alpha);
-    HCBD__CHECK(p->tau_lambda > 0 && isfinite(p->tau_lambda), "tau_lambda", p->tau_lambda);
-    HCBD__CHECK(p->p_kuhn >= 0 && isfinite(p->p_kuhn), "p_kuhn", p->p_kuhn);
-    HCBD__CHECK(p->n_max > 0 && isfinite(p->n_max), "n_max", p->n_max);
-    HCBD__CHECK(isfinite(p->chi), "chi", p->chi);
-    HCBD__CHECK(p->coupling == HCBD_COUPLE_SHEPARD || p->coupling == HCBD_COUPLE_RAW,
-                "coupling", (double)(int)p->coupling);
-    HCBD__CHECK(p->pair_integrator == HCBD_PAIR_EULER || p->pair_integrator == HCBD_PAIR_SHARDLOW,
-                "pair_integrator", (double)(int)p->pair_integrator);
-    HCBD__CHECK(p->substeps >= 1 && p->substeps <= 1000, "substeps", (double)p->substeps);
-    HCBD__CHECK(p->threads >= 1 && p->threads <= 1024, "threads", (double)p->threads);
-    HCBD__CHECK(p->guard_every >= 0, "guard_every", (double)p->guard_every);
+    HCBD__CHECK(p->sigma < p->rc, "sigma", p->sigma);
     reach = 2.0 * p->h > p->rc ? 2.0 * p->h : p->rc;
     for (d = 0; d < 3; ++d)
         if (p->L[d] < 2.0 * reach) {
@@ -8563,79 +8713,11 @@ static hcbd_result hcbd__hc_ck_load(hcbd_hc_world *w, const void *buf, size_t si
     return HCBD_OK;
 }
 
-/* The HCBD world's kind and its public lifecycle, thread and checkpoint
-   functions. */
-static hcbd_result hcbd__hc_check(const void *def, char *msg, size_t n)
-{
-    return hcbd__hc_check_def((const hcbd_hc_def *)def, msg, n);
-}
-
-static size_t hcbd__hc_bytes(const void *def)
-{
-    return hcbd_hc_world_bytes((const hcbd_hc_def *)def);
-}
-
-static hcbd_result hcbd__hc_init(void *w, const void *def, void *mem, size_t bytes)
-{
-    return hcbd_hc_world_init((hcbd_hc_world *)w, (const hcbd_hc_def *)def, mem, bytes);
-}
-
-static hcbd_result hcbd__hc_load(void *w, const void *buf, size_t size)
-{
-    return hcbd__hc_ck_load((hcbd_hc_world *)w, buf, size);
-}
-
-static hcbd__self hcbd__hc_self(void *v)
-{
-    hcbd_hc_world *w = (hcbd_hc_world *)v;
-    hcbd__self s;
-    s.err = &w->err;
-    s.step = &w->step;
-    s.threads = &w->p.threads;
-    s.core = &w->core;
-    return s;
-}
-
-static const hcbd__kind hcbd__kind_hc = {
-    sizeof(hcbd_hc_world), HCBD__CK_HC, "hcbd_hc_checkpoint_size", hcbd__hc_self, hcbd__hc_check, hcbd__hc_bytes, hcbd__hc_init,
-    hcbd__ck_hc_walk, hcbd__hc_load};
-
-hcbd_result hcbd_hc_world_create(hcbd_hc_world *w, const hcbd_hc_def *def)
-{
-    return hcbd__create(&hcbd__kind_hc, w, def);
-}
-
-void hcbd_hc_world_destroy(hcbd_hc_world *w) { hcbd__destroy(&hcbd__kind_hc, w); }
-
-hcbd_result hcbd_hc_set_threads(hcbd_hc_world *w, int threads)
-{
-    return hcbd__set_threads(&hcbd__kind_hc, w, threads);
-}
-
-size_t hcbd_hc_checkpoint_size(const hcbd_hc_world *w)
-{
-    return hcbd__ck_size(&hcbd__kind_hc, w);
-}
-
-hcbd_result hcbd_hc_checkpoint_save(hcbd_hc_world *w, void *buf, size_t size)
-{
-    return hcbd__ck_put(&hcbd__kind_hc, w, buf, size);
-}
-
-hcbd_result hcbd_hc_checkpoint_load(hcbd_hc_world *w, const void *buf, size_t size)
-{
-    return hcbd__ck_get(&hcbd__kind_hc, w, buf, size);
-}
-
-hcbd_result hcbd_hc_save(hcbd_hc_world *w, const char *path)
-{
-    return hcbd__save(&hcbd__kind_hc, w, path);
-}
-
-hcbd_result hcbd_hc_load(hcbd_hc_world *w, const char *path)
-{
-    return hcbd__load(&hcbd__kind_hc, w, path);
-}
+HCBD__WORLD_KIND(hcbd__kind_hc, hcbd_hc_world, hcbd_hc_def, hcbd__hc_check_def,
+                 hcbd_hc_world_bytes, hcbd_hc_world_init, hcbd__ck_hc_walk, hcbd__hc_ck_load,
+                 HCBD__CK_HC, hcbd_hc_world_create, hcbd_hc_world_destroy, hcbd_hc_set_threads,
+                 hcbd_hc_checkpoint_size, hcbd_hc_checkpoint_save, hcbd_hc_checkpoint_load,
+                 hcbd_hc_save, hcbd_hc_load)
 
 hcbd_result hcbd_hc_xyz_write(const hcbd_hc_world *w, FILE *f)
 {

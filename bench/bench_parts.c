@@ -88,7 +88,7 @@ static double time_part(int part, double scale, int *n)
     if (part == 4) d.params.gdot = 5.0;
     if (part == 6) { /* walls added outside the liquid's box */
         d.params.L[1] = L + 3.0;
-        d.params.wall_thickness = 1.5;
+        d.params.wall.thickness = 1.5;
     }
     if (part == 7) d.params.dynamics = HCBD_DYN_BD;
     d.params.threads = 1;

@@ -85,7 +85,7 @@ int main(int argc, char **argv)
                 if (dyn == 2) d.params.gdot = 5.0;
                 if (dyn == 3) { /* 2016 sec. IV C */
                     d.params.L[1] = L + 3.0;
-                    d.params.wall_thickness = 1.5;
+                    d.params.wall.thickness = 1.5;
                     d.params.tau = 3e-3;
                     d.params.fext[0] = 133.4 * d.params.xip * d.params.tau;
                 }

@@ -266,9 +266,9 @@ static void channel_point(hcbd_pair_integrator integ, hcbd_noise noise, double r
     double *v, *xyz, nu_eff;
     int i;
     p.L[0] = p.L[1] = p.L[2] = 13.0;
-    p.wall_thickness = 1.5;
-    p.wall_mode = HCBD_WALL_NOSLIP;
-    p.wall_beta_max = 5.0;
+    p.wall.thickness = 1.5;
+    p.wall.mode = HCBD_WALL_NOSLIP;
+    p.wall.beta_max = 5.0;
     p.xip = 1.5;
     p.fext[0] = grav * p.xip * p.tau;
     hcbd_theory_of(&p, &th);
@@ -285,8 +285,8 @@ static void channel_point(hcbd_pair_integrator integ, hcbd_noise noise, double r
     hcbd_world_get_positions(&w, xyz, 0);
     for (i = 0; i < 406; ++i) {
         double y = xyz[3 * i + 1];
-        if (y > p.wall_thickness && y < p.L[1] - p.wall_thickness)
-            v[3 * i] += grav / (2 * nu_eff) * (y - p.wall_thickness) * (p.L[1] - p.wall_thickness - y);
+        if (y > p.wall.thickness && y < p.L[1] - p.wall.thickness)
+            v[3 * i] += grav / (2 * nu_eff) * (y - p.wall.thickness) * (p.L[1] - p.wall.thickness - y);
     }
     hcbd_world_set_velocities(&w, v);
     free(v);
@@ -310,8 +310,8 @@ static void channel_point(hcbd_pair_integrator integ, hcbd_noise noise, double r
         return;
     }
     hcbd_profile_result(&pr, out);
-    lo = p.wall_thickness;
-    hi = p.L[1] - p.wall_thickness;
+    lo = p.wall.thickness;
+    hi = p.L[1] - p.wall.thickness;
     yc = 0.5 * (lo + hi);
     /* slabs whose centres lie in the channel; weighted fit of A q(y) */
     for (s = 0; s < NSLAB; ++s) {

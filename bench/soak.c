@@ -183,10 +183,10 @@ static void gibd_sample(void *ctx, double *out)
         return;
     }
     hcbd_world_get_velocities(&g->w, g->v);
-    out[0] = slab_temperature(g->xyz, g->v, g->w.n, g->w.m, p->wall_thickness,
-                              p->L[1] - p->wall_thickness, g->nslab);
+    out[0] = slab_temperature(g->xyz, g->v, g->w.n, g->w.m, p->wall.thickness,
+                              p->L[1] - p->wall.thickness, g->nslab);
     out[1] = P[0] / (g->w.n * g->w.m);
-    out[2] = slab_rms(g->xyz, g->w.n, 1, p->wall_thickness, p->L[1] - p->wall_thickness, g->nslab);
+    out[2] = slab_rms(g->xyz, g->w.n, 1, p->wall.thickness, p->L[1] - p->wall.thickness, g->nslab);
 }
 
 #if HCBD_MODEL == HCBD_MODEL_WALLED
@@ -266,11 +266,11 @@ static int scene_channel(sim *s, const opts *o, double steps)
     p->L[0] = p->L[1] = p->L[2] = 13.0;
     p->tau = 3e-3;
     p->potential = HCBD_POT_STAR;
-    p->wall_thickness = 1.5;
-    p->wall_mode = HCBD_WALL_GAUSS;
+    p->wall.thickness = 1.5;
+    p->wall.mode = HCBD_WALL_GAUSS;
     p->fext[0] = 133.4 * p->xip * p->tau; /* F = m g */
     p->threads = o->threads;
-    n = (int)floor(0.24 * p->L[0] * (p->L[1] - 2 * p->wall_thickness) * p->L[2] + 0.5);
+    n = (int)floor(0.24 * p->L[0] * (p->L[1] - 2 * p->wall.thickness) * p->L[2] + 0.5);
     def.capacity = n;
     if (!(g = gibd_alloc(&def, n, 1, 20))) return 0;
     gibd_hooks(s, g);

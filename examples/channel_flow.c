@@ -156,12 +156,12 @@ int main(int argc, char **argv)
     snprintf(c.out, sizeof c.out, "out/channel_flow");
     if (!parse_args(argc, argv, &c, own_key, usage)) return c.help ? 0 : 2;
     p = &c.def.params;
-    p->wall_thickness = wall_t;
-    p->wall_mode = (hcbd_wall_mode)wall_mode;
+    p->wall.thickness = wall_t;
+    p->wall.mode = (hcbd_wall_mode)wall_mode;
     /* the no-slip mode needs a firmer grip on the particles next to the
        Morris plane than the paper's cap (README) */
-    p->wall_beta_max = beta_max > 0 ? beta_max : (wall_mode == HCBD_WALL_NOSLIP ? 5.0 : 1.5);
-    p->wall_shift = shift;
+    p->wall.beta_max = beta_max > 0 ? beta_max : (wall_mode == HCBD_WALL_NOSLIP ? 5.0 : 1.5);
+    p->wall.shift = shift;
     p->fext_background_only = bg_only;
     c.N = (int)floor(c.density * p->L[0] * (p->L[1] - 2 * wall_t) * p->L[2] + 0.5);
     c.def.capacity = c.N < 2 ? 2 : c.N;
@@ -219,8 +219,8 @@ int main(int argc, char **argv)
                 progress(&c, r * c.steps + start + 10 * (k + 1), nxip * c.steps, &t0);
         }
         hcbd_profile_result(&prof, out);
-        lo = p->wall_thickness;
-        hi = p->L[1] - p->wall_thickness;
+        lo = p->wall.thickness;
+        hi = p->L[1] - p->wall.thickness;
         /* central fifth of the channel: bulk density and temperature */
         for (s = 0; s < nslab; ++s) {
             double y = out[8 * s];
@@ -318,7 +318,7 @@ int main(int argc, char **argv)
            time xi sigma^2 / kT, so velocity in kT / (xi sigma).  The walls
            are shaded; the channel is lo < y < hi.  g is the same for every
            xi' and so is the Newtonian profile (nu does not depend on xi') */
-        const double lo = p->wall_thickness, hi = p->L[1] - p->wall_thickness;
+        const double lo = p->wall.thickness, hi = p->L[1] - p->wall.thickness;
         static const char *lab[3] = {"number density  n " GP_SIGMA "^3", "v_x / (kT/" GP_XI GP_SIGMA ")", "T / kT"};
         static const char *sub[3] = {"(a) density", "(b) mean background velocity; lines: parabola fits to the "
                                      "slabs > 1 " GP_SIGMA " from the walls", "(c) temperature (velocity variance)"};

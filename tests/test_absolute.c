@@ -822,7 +822,7 @@ static hcbd_world_def abs_channel(int n)
 {
     hcbd_world_def d = hcbd_world_def_default();
     d.params.L[0] = d.params.L[1] = d.params.L[2] = 13.0;
-    d.params.wall_thickness = 1.5;
+    d.params.wall.thickness = 1.5;
     d.params.potential = HCBD_POT_IDEAL;
     d.params.tau = 1e-2;
     d.params.dt = 1e-3;
@@ -836,12 +836,12 @@ static ld abs_wall_F(const hcbd_params *p, ld y)
 {
     ld pl[2], F = 0;
     int k;
-    if (p->wall_mode == HCBD_WALL_REFLECT) return 0;
-    pl[0] = p->wall_thickness - p->wall_plane;
-    pl[1] = p->L[1] - p->wall_thickness + p->wall_plane;
+    if (p->wall.mode == HCBD_WALL_REFLECT) return 0;
+    pl[0] = p->wall.thickness - p->wall.plane;
+    pl[1] = p->L[1] - p->wall.thickness + p->wall.plane;
     for (k = 0; k < 2; ++k) {
         ld s = abs_mi(y - pl[k], p->L[1]);
-        F += 2 * p->wall_a * p->wall_b * s * expl(-p->wall_b * s * s);
+        F += 2 * p->wall.a * p->wall.b * s * expl(-p->wall.b * s * s);
     }
     return F;
 }
@@ -857,7 +857,7 @@ typedef struct { ld ksum, knb, vw; int capped, free_; } abs_morris;
 static int abs_morris_of(const hcbd_world *w, const double *x, int i, abs_morris *o)
 {
     const hcbd_params *p = &w->p;
-    const ld m = (ld)p->xip * p->tau, Rc = p->Rc, t = p->wall_thickness, L = p->L[1];
+    const ld m = (ld)p->xip * p->tau, Rc = p->Rc, t = p->wall.thickness, L = p->L[1];
     const ld rhoB = p->density_norm == 2016 ? m * p->density : m * (p->density + abs_W(0, Rc));
     ld rho = abs_W(0, Rc);
     int k, j, q, nn, near[256];
@@ -893,10 +893,10 @@ static int abs_morris_of(const hcbd_world *w, const double *x, int i, abs_morris
         yA = x[3 * i + 1];
         yB = yA - dy;
         if (r >= Rc) continue;
-        if (dy > 0) { dA = yA - t; dB = t - yB; o->vw = p->wall_vx[0]; }
-        else { dA = (L - t) - yA; dB = yB - (L - t); o->vw = p->wall_vx[1]; }
+        if (dy > 0) { dA = yA - t; dB = t - yB; o->vw = p->wall.vx[0]; }
+        else { dA = (L - t) - yA; dB = yB - (L - t); o->vw = p->wall.vx[1]; }
         beta = 1 + dB / dA;
-        if (beta > p->wall_beta_max) { beta = p->wall_beta_max; ++o->capped; }
+        if (beta > p->wall.beta_max) { beta = p->wall.beta_max; ++o->capped; }
         else ++o->free_;
         kB = beta * abs_f(r, Rc, m, rho, rhoB) * p->dt / p->tau;
         o->ksum += kB;
@@ -924,9 +924,9 @@ void test_abs_wall_morris_friction(void)
             p->kT = 0;
             p->xi = 4.0;
             p->xip = 0.8;
-            p->wall_vx[0] = 0.3;
-            p->wall_vx[1] = -0.8;
-            p->wall_beta_max = c2 ? 3.0 : 1.5;
+            p->wall.vx[0] = 0.3;
+            p->wall.vx[1] = -0.8;
+            p->wall.beta_max = c2 ? 3.0 : 1.5;
             p->density_norm = c2 ? 2014 : 2016;
             p->pair_integrator = integ ? HCBD_PAIR_SHARDLOW : HCBD_PAIR_EULER;
             m = (ld)p->xip * p->tau;
@@ -976,7 +976,7 @@ void test_abs_wall_morris_friction(void)
    (2 kT/m) sum_B k_B (Euler) or kT/m (1 - exp(-2 sum_B k_B)) (Shardlow),
    beta_max = 3 with the particles 0.05-0.55 from the interface, so most
    pairs are capped and sqrt(beta) changes the noise by up to 1.7.  With
-   wall_noise_beta = 0 (Euler) the variance follows sum_B k_B / beta
+   wall.noise_beta = 0 (Euler) the variance follows sum_B k_B / beta
    instead, and differs from the sqrt(beta) one by many errors. */
 void test_abs_wall_morris_noise(void)
 {
@@ -995,9 +995,9 @@ void test_abs_wall_morris_noise(void)
             p->kT = 1.0;
             p->xi = 50.0;
             p->xip = 1.0;
-            p->wall_mode = HCBD_WALL_REFLECT;
-            p->wall_beta_max = 3.0;
-            p->wall_noise_beta = cs == 2 ? 0 : 1;
+            p->wall.mode = HCBD_WALL_REFLECT;
+            p->wall.beta_max = 3.0;
+            p->wall.noise_beta = cs == 2 ? 0 : 1;
             p->pair_integrator = cs == 1 ? HCBD_PAIR_SHARDLOW : HCBD_PAIR_EULER;
             p->seed = 300 + b;
             m = (ld)p->xip * p->tau;
@@ -1036,7 +1036,7 @@ void test_abs_wall_morris_noise(void)
         if (cs == 1) {
             NOTE("Shardlow: <v^2>/(kT/m (1 - exp(-2 sum k_B))) = %.4f +- %.4f", mean, err);
         } else {
-            NOTE("Euler, wall_noise_beta %d: <v^2>/predicted = %.4f +- %.4f; against the %s "
+            NOTE("Euler, wall.noise_beta %d: <v^2>/predicted = %.4f +- %.4f; against the %s "
                  "prediction %.4f", cs == 2 ? 0 : 1, mean, err, cs == 2 ? "sqrt(beta)" : "unscaled", am);
             CHECK(fabs(am - 1) > 10 * err, "sqrt(beta) not resolved: %g vs %g +- %g", am, mean, err);
         }

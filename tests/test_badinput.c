@@ -134,8 +134,10 @@ static hcbd_world_def bi_base(int base)
         d.params.table_r0 = 0.5;
     }
     if (base == B_SHEAR) d.params.gdot = 1.0;
-    if (base == B_WALL || base == B_NOSLIP) d.params.wall_thickness = 2.0;
-    if (base == B_NOSLIP) d.params.wall_mode = HCBD_WALL_NOSLIP;
+#if HCBD_MODEL == HCBD_MODEL_WALLED
+    if (base == B_WALL || base == B_NOSLIP) d.params.wall.thickness = 2.0;
+    if (base == B_NOSLIP) d.params.wall.mode = HCBD_WALL_NOSLIP;
+#endif
     return d;
 }
 
@@ -248,44 +250,42 @@ static const bi_pentry bi_params[] = {
     {B_DEF, NOSET, GD(min_distance, NAN), HCBD_ERR_PARAM, NULL},
     {B_DEF, NOSET, GD(min_distance, INFINITY), HCBD_ERR_PARAM, NULL},
     {B_DEF, NOSET, GI(guard_every, -1), HCBD_ERR_PARAM, NULL},
-    {B_DEF, NOSET, GI(guard_walls, 2), HCBD_ERR_PARAM, NULL},
-    {B_DEF, NOSET, GI(guard_walls, -1), HCBD_ERR_PARAM, NULL},
     {B_DEF, NOSET, GD(guard_step, 0), HCBD_ERR_PARAM, NULL},
     {B_DEF, NOSET, GD(guard_step, -2), HCBD_ERR_PARAM, NULL},
     {B_DEF, NOSET, GD(guard_step, NAN), HCBD_ERR_PARAM, NULL},
     {B_DEF, NOSET, GD(guard_step, INFINITY), HCBD_ERR_PARAM, NULL},
     /* walls */
-    {B_DEF, NOSET, GD(wall_thickness, NAN), HCBD_ERR_PARAM, NULL},
-    {B_DEF, NOSET, GD(wall_thickness, -1), HCBD_ERR_PARAM, NULL},
-    {B_DEF, NOSET, GD(wall_thickness, INFINITY), HCBD_ERR_PARAM, NULL},
-#if HCBD_MODEL != HCBD_MODEL_WALLED
-    {B_DEF, NOSET, GD(wall_thickness, 2), HCBD_ERR_PARAM, "wall_thickness = 2|HCBD_MODEL_WALLED"},
-#else
-    {B_WALL, NOSET, GD(wall_thickness, 7), HCBD_ERR_BOX, NULL},   /* 2 t > L[1] */
-    {B_WALL, NOSET, GD(wall_thickness, 6.5), HCBD_ERR_BOX, NULL}, /* 2 t > L[1] */
-    {B_WALL, NOSET, GD(wall_thickness, 1), HCBD_ERR_BOX, NULL},   /* 2 t < Rc */
+#if HCBD_MODEL == HCBD_MODEL_WALLED
+    {B_DEF, NOSET, GI(wall.guard, 2), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GI(wall.guard, -1), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GD(wall.thickness, NAN), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GD(wall.thickness, -1), HCBD_ERR_PARAM, NULL},
+    {B_DEF, NOSET, GD(wall.thickness, INFINITY), HCBD_ERR_PARAM, NULL},
+    {B_WALL, NOSET, GD(wall.thickness, 7), HCBD_ERR_BOX, NULL},   /* 2 t > L[1] */
+    {B_WALL, NOSET, GD(wall.thickness, 6.5), HCBD_ERR_BOX, NULL}, /* 2 t > L[1] */
+    {B_WALL, NOSET, GD(wall.thickness, 1), HCBD_ERR_BOX, NULL},   /* 2 t < Rc */
     {B_WALL, NOSET, GD(gdot, 1), HCBD_ERR_PARAM, "gdot|= 1"},
     {B_WALL, NOSET, GI(lagged_density, 1), HCBD_ERR_PARAM, "lagged_density|= 1"},
-    {B_WALL, NOSET, GD(wall_vx[0], NAN), HCBD_ERR_PARAM, NULL},
-    {B_WALL, NOSET, GD(wall_vx[1], INFINITY), HCBD_ERR_PARAM, NULL},
-    {B_WALL, NOSET, GD(wall_beta_max, 0.5), HCBD_ERR_PARAM, NULL},
-    {B_WALL, NOSET, GD(wall_beta_max, NAN), HCBD_ERR_PARAM, NULL},
-    {B_WALL, NOSET, GD(wall_beta_max, INFINITY), HCBD_ERR_PARAM, NULL},
-    {B_WALL, NOSET, GE(wall_mode, 3), HCBD_ERR_PARAM, NULL},
-    {B_WALL, NOSET, GE(wall_mode, -1), HCBD_ERR_PARAM, NULL},
-    {B_WALL, NOSET, GI(wall_noise_beta, 2), HCBD_ERR_PARAM, NULL},
-    {B_WALL, NOSET, GD(wall_a, -1), HCBD_ERR_PARAM, NULL},
-    {B_WALL, NOSET, GD(wall_a, NAN), HCBD_ERR_PARAM, NULL},
-    {B_WALL, NOSET, GD(wall_b, 0), HCBD_ERR_PARAM, NULL},
-    {B_WALL, NOSET, GD(wall_b, NAN), HCBD_ERR_PARAM, NULL},
-    {B_WALL, NOSET, GD(wall_plane, -1), HCBD_ERR_PARAM, NULL},
-    {B_WALL, NOSET, GD(wall_plane, 3), HCBD_ERR_PARAM, NULL}, /* deeper than the wall */
-    {B_WALL, NOSET, GD(wall_plane, NAN), HCBD_ERR_PARAM, NULL},
-    {B_NOSLIP, NOSET, GD(wall_shift, -2), HCBD_ERR_PARAM, NULL},
-    {B_NOSLIP, NOSET, GD(wall_shift, 3), HCBD_ERR_PARAM, NULL}, /* > channel / 4 */
-    {B_NOSLIP, NOSET, GD(wall_shift, NAN), HCBD_ERR_PARAM, NULL},
+    {B_WALL, NOSET, GD(wall.vx[0], NAN), HCBD_ERR_PARAM, NULL},
+    {B_WALL, NOSET, GD(wall.vx[1], INFINITY), HCBD_ERR_PARAM, NULL},
+    {B_WALL, NOSET, GD(wall.beta_max, 0.5), HCBD_ERR_PARAM, NULL},
+    {B_WALL, NOSET, GD(wall.beta_max, NAN), HCBD_ERR_PARAM, NULL},
+    {B_WALL, NOSET, GD(wall.beta_max, INFINITY), HCBD_ERR_PARAM, NULL},
+    {B_WALL, NOSET, GE(wall.mode, 3), HCBD_ERR_PARAM, NULL},
+    {B_WALL, NOSET, GE(wall.mode, -1), HCBD_ERR_PARAM, NULL},
+    {B_WALL, NOSET, GI(wall.noise_beta, 2), HCBD_ERR_PARAM, NULL},
+    {B_WALL, NOSET, GD(wall.a, -1), HCBD_ERR_PARAM, NULL},
+    {B_WALL, NOSET, GD(wall.a, NAN), HCBD_ERR_PARAM, NULL},
+    {B_WALL, NOSET, GD(wall.b, 0), HCBD_ERR_PARAM, NULL},
+    {B_WALL, NOSET, GD(wall.b, NAN), HCBD_ERR_PARAM, NULL},
+    {B_WALL, NOSET, GD(wall.plane, -1), HCBD_ERR_PARAM, NULL},
+    {B_WALL, NOSET, GD(wall.plane, 3), HCBD_ERR_PARAM, NULL}, /* deeper than the wall */
+    {B_WALL, NOSET, GD(wall.plane, NAN), HCBD_ERR_PARAM, NULL},
+    {B_NOSLIP, NOSET, GD(wall.shift, -2), HCBD_ERR_PARAM, NULL},
+    {B_NOSLIP, NOSET, GD(wall.shift, 3), HCBD_ERR_PARAM, NULL}, /* > channel / 4 */
+    {B_NOSLIP, NOSET, GD(wall.shift, NAN), HCBD_ERR_PARAM, NULL},
     {B_WALL, GI(density_norm, 2014), GD(density, 0), HCBD_ERR_PARAM, "density|= 0"},
-    {B_WALL, NOSET, GI(guard_walls, 2), HCBD_ERR_PARAM, NULL},
+    {B_WALL, NOSET, GI(wall.guard, 2), HCBD_ERR_PARAM, NULL},
     {B_WALL, NOSET, GD(L[1], 4), HCBD_ERR_BOX, NULL},
 #endif
     /* the definition */

@@ -73,12 +73,13 @@ static uint64_t golden_run(int sc, int threads, int *skip)
         if (sc == G_GIBD_EULER) p->pair_integrator = HCBD_PAIR_EULER;
         if (sc == G_BD) p->dynamics = HCBD_DYN_BD;
         if (sc == G_WALLS) {
-            if (HCBD_MODEL != HCBD_MODEL_WALLED) {
-                *skip = 1;
-                return 0;
-            }
+#if HCBD_MODEL != HCBD_MODEL_WALLED
+            *skip = 1;
+            return 0;
+#else
+            p->wall.thickness = 1.5;
+#endif
             p->potential = HCBD_POT_IDEAL;
-            p->wall_thickness = 1.5;
             p->fext[0] = 20.0;
             p->L[1] = 13.0;
             p->tau = 3e-3;

@@ -80,8 +80,11 @@ static int sc_make(hcbd_world *w, int sc, int threads)
         p->table_r0 = 0.5;
     }
     if (sc == SC_WALLS) {
-        if (!WALLS_BUILD) return 0;
-        p->wall_thickness = 2.0;
+#if !WALLS_BUILD
+        return 0;
+#else
+        p->wall.thickness = 2.0;
+#endif
         p->fext[0] = 5.0;
         p->L[1] = 16.0;
     }
@@ -499,15 +502,17 @@ void test_runtime_guards(void)
     CHECK(r == HCBD_ERR_UNSTABLE && strstr(w.err.msg, "guard_step"), "guard_step: %s: %s",
           hcbd_result_name(r), w.err.msg);
     hcbd_world_destroy(&w);
-    if (WALLS_BUILD) {
-        /* a particle pushed into the wall, with guard_walls on */
+#if WALLS_BUILD
+    {
+        /* a particle pushed into the wall, with wall.guard on */
         if (!sc_make(&w, SC_WALLS, 1)) return;
-        w.p.guard_walls = 1;
+        w.p.wall.guard = 1;
         run(&w, 1);
-        w.y[w.slot[9]] = (hcbd_real)(0.5 * w.p.wall_thickness);
+        w.y[w.slot[9]] = (hcbd_real)(0.5 * w.p.wall.thickness);
         r = hcbd_step(&w, 1);
         CHECK(r == HCBD_ERR_WALL && w.err.id == 9, "wall: %s id %lld: %s", hcbd_result_name(r),
               (long long)w.err.id, w.err.msg);
         hcbd_world_destroy(&w);
     }
+#endif
 }

@@ -204,7 +204,7 @@ void test_set_density(void)
     d.params.L[1] = 20;
     d.params.L[2] = 5;
 #if HCBD_MODEL == HCBD_MODEL_WALLED
-    d.params.wall_thickness = 1.5;
+    d.params.wall.thickness = 1.5;
     t = 3.0;
 #endif
     CHECK(hcbd_world_def_set_density(&d, 1000, 0.24) == HCBD_OK, "set_density refused a good scene");

@@ -7,20 +7,23 @@
    runs in both. */
 #include "test.h"
 
-/* The GI-BD build rejects walls by name; the walled build accepts them. */
+/* Only the walled build has wall parameters (params.wall): it accepts
+   walls; in the other builds the channel is the whole box. */
 void test_model_switch(void)
 {
     hcbd_world_def d = hcbd_world_def_default();
+    hcbd_theory t;
     char msg[256];
     hcbd_result r;
     d.params.L[1] = 13.0;
-    d.params.wall_thickness = 1.5;
-    r = hcbd_params_check(&d.params, msg, sizeof msg);
 #if HCBD_MODEL == HCBD_MODEL_WALLED
-    CHECK(r == HCBD_OK, "walled build rejected walls: %s", msg);
-#else
-    CHECK(r == HCBD_ERR_PARAM && strstr(msg, "HCBD_MODEL_WALLED"), "GI-BD build: %s", msg);
+    d.params.wall.thickness = 1.5;
 #endif
+    r = hcbd_params_check(&d.params, msg, sizeof msg);
+    CHECK(r == HCBD_OK, "walls rejected: %s", msg);
+    CHECK(hcbd_theory_of(&d.params, &t) == HCBD_OK &&
+              t.width == (HCBD_MODEL == HCBD_MODEL_WALLED ? 10.0 : 13.0),
+          "channel width %g", t.width);
 }
 
 #if HCBD_MODEL == HCBD_MODEL_WALLED
@@ -30,7 +33,7 @@ static hcbd_world_def channel(void)
 {
     hcbd_world_def d = hcbd_world_def_default();
     d.params.L[0] = d.params.L[1] = d.params.L[2] = 13.0;
-    d.params.wall_thickness = 1.5;
+    d.params.wall.thickness = 1.5;
     d.params.tau = 3e-3;
     d.params.potential = HCBD_POT_IDEAL;
     d.capacity = 406;
@@ -43,25 +46,25 @@ void test_wall_bad_inputs(void)
     hcbd_world w;
     double xyz[6] = {1, 5, 1, 2, 0.7, 2};
     hcbd_result r;
-    d.params.wall_thickness = 6.5; /* 2 t = L[1]: no channel */
+    d.params.wall.thickness = 6.5; /* 2 t = L[1]: no channel */
     r = hcbd_world_create(&w, &d);
-    CHECK(r == HCBD_ERR_BOX && strstr(w.err.msg, "wall_thickness = 6.5"), "thick: %s", w.err.msg);
-    d.params.wall_thickness = 1.2; /* 2 t < Rc with periodic y */
+    CHECK(r == HCBD_ERR_BOX && strstr(w.err.msg, "wall.thickness = 6.5"), "thick: %s", w.err.msg);
+    d.params.wall.thickness = 1.2; /* 2 t < Rc with periodic y */
     r = hcbd_world_create(&w, &d);
-    CHECK(r == HCBD_ERR_BOX && strstr(w.err.msg, "wall_thickness = 1.2") &&
+    CHECK(r == HCBD_ERR_BOX && strstr(w.err.msg, "wall.thickness = 1.2") &&
           strstr(w.err.msg, "periodic"), "thin: %s", w.err.msg);
     d = channel();
-    d.params.wall_beta_max = 0.9;
+    d.params.wall.beta_max = 0.9;
     r = hcbd_world_create(&w, &d);
-    CHECK(r == HCBD_ERR_PARAM && strstr(w.err.msg, "wall_beta_max = 0.9"), "beta: %s", w.err.msg);
+    CHECK(r == HCBD_ERR_PARAM && strstr(w.err.msg, "wall.beta_max = 0.9"), "beta: %s", w.err.msg);
     d = channel();
     d.params.gdot = 1.0;
     r = hcbd_world_create(&w, &d);
     CHECK(r == HCBD_ERR_PARAM && strstr(w.err.msg, "gdot"), "walls + shear: %s", w.err.msg);
     d = channel();
-    d.params.wall_mode = (hcbd_wall_mode)7;
+    d.params.wall.mode = (hcbd_wall_mode)7;
     r = hcbd_world_create(&w, &d);
-    CHECK(r == HCBD_ERR_PARAM && strstr(w.err.msg, "wall_mode = 7"), "mode: %s", w.err.msg);
+    CHECK(r == HCBD_ERR_PARAM && strstr(w.err.msg, "wall.mode = 7"), "mode: %s", w.err.msg);
     /* a sheared bulk whose offset would move by more than a box per step,
        in either direction */
     d = hcbd_world_def_default();
@@ -132,7 +135,7 @@ void test_wall_artificial_particles(void)
     if (!make_world(&w, &d)) return;
     CHECK(w.n_art == 122, "artificial particles: %d, want round(0.24 x 13 x 3 x 13) = 122", w.n_art);
     d.params.kT = 0; /* no noise and no forces: the two real particles stay put */
-    d.params.wall_mode = HCBD_WALL_REFLECT;
+    d.params.wall.mode = HCBD_WALL_REFLECT;
     hcbd_world_destroy(&w);
     if (!make_world(&w, &d)) return;
     hcbd_world_set_positions(&w, 2, xyz);
@@ -181,9 +184,9 @@ void test_wall_morris_friction(void)
             d.capacity = 2;
             d.params.kT = 0;
             d.params.pair_integrator = HCBD_PAIR_EULER; /* the explicit Morris sum below */
-            d.params.wall_vx[0] = 0.2;
-            d.params.wall_vx[1] = -0.7;
-            d.params.wall_mode = mode ? HCBD_WALL_NOSLIP : HCBD_WALL_GAUSS;
+            d.params.wall.vx[0] = 0.2;
+            d.params.wall.vx[1] = -0.7;
+            d.params.wall.mode = mode ? HCBD_WALL_NOSLIP : HCBD_WALL_GAUSS;
             /* a distance from the Morris plane where some pairs hit the cap */
             if (mode) xyz[1] = 2.6;
             if (side) xyz[1] = 13.0 - xyz[1];
@@ -253,7 +256,7 @@ static int temperature_profile(double dt, int noise_beta, hcbd_pair_integrator i
     /* the slab temperature is the background's: its bias is the pair
        step's, measured here with the displacement the papers use */
     d.params.brownian = HCBD_BROWNIAN_EULER;
-    d.params.wall_noise_beta = noise_beta;
+    d.params.wall.noise_beta = noise_beta;
     if (!make_world(&w, &d)) return 0;
     hcbd_world_place_lattice(&w, 406);
     if (!run(&w, (int)(0.5 / dt))) return 0;
@@ -429,8 +432,8 @@ void test_wall_determinism(void)
             hcbd_world_def d = channel();
             hcbd_world w;
             d.params.potential = HCBD_POT_STAR;
-            d.params.wall_mode = (hcbd_wall_mode)mode;
-            d.params.wall_vx[1] = 3.0;
+            d.params.wall.mode = (hcbd_wall_mode)mode;
+            d.params.wall.vx[1] = 3.0;
             d.params.fext[0] = 0.4;
             d.params.threads = k == 1 ? 2 : 1;
             d.params.sort = k != 2;
@@ -497,8 +500,8 @@ static int channel_run(hcbd_wall_mode mode, double beta_max, double time, double
     d.params.xip = 1.5;
     d.params.dt = 2e-4;
     d.params.fext[0] = grav * d.params.xip * d.params.tau;
-    d.params.wall_mode = mode;
-    d.params.wall_beta_max = beta_max;
+    d.params.wall.mode = mode;
+    d.params.wall.beta_max = beta_max;
     block = (int)(time / d.params.dt) / (10 * NSUB) * (10 * NSUB) / 200;
     steps = (int)(time * len / d.params.dt) / (10 * NSUB) * (10 * NSUB);
     if (!make_world(&w, &d)) return 0;
@@ -708,7 +711,7 @@ void test_wall_penetration(void)
         int s, i, got_id, last_id = -1;
         int steps = pass ? (t_quick ? 2000 : (int)(30000 * t_len)) : 500;
         double deepest = 0;
-        if (pass == 0) d.params.wall_a = 3.0; /* 3 kT plane, ideal particles */
+        if (pass == 0) d.params.wall.a = 3.0; /* 3 kT plane, ideal particles */
         else {
             d.params.potential = HCBD_POT_STAR;
             d.params.fext[0] = 133.4 * d.params.xip * d.params.tau;
