@@ -785,6 +785,14 @@ hcbd_result hcbd_gibd_coef_of(const hcbd_params *p, hcbd_gibd_coef *c, char *msg
 double hcbd_gibd_weight(const hcbd_gibd_coef *c, double r);
 double hcbd_gibd_density(const hcbd_gibd_coef *c, double wsum);
 double hcbd_gibd_sdt(const hcbd_gibd_coef *c, double r, double inv_rho_i, double inv_rho_j);
+/* The exact pair step (HCBD_PAIR_SHARDLOW) of one pair, as the world's
+   sweep makes it: with sdt = hcbd_gibd_sdt(...) and the pair's unit noise z
+   (hcbd_noise_pair, i the lower id), u = v_i - v_j relaxes as
+   u' = u e + sqrt(2 kT/m (1 - e^2)) z, e = exp(-2 sdt/m); v_i and v_j are
+   updated in place by +-(m/2)(u' - u)/m.  The caller sweeps the pairs in
+   an order of its own (the world's: MODEL 13.1). */
+void hcbd_gibd_pair_exact(const hcbd_gibd_coef *c, double kT, double sdt, const double z[3],
+                          double vi[3], double vj[3]);
 
 /* >>kernels (exported for tests and users) --------------------------------*/
 double hcbd_wendland(double r, double Rc);
@@ -1897,6 +1905,7 @@ double hcbd_wendland_dr(double r, double Rc)
                dp_ij = (m/2)(u' - u), u = v_i - v_j (Shardlow 2003)
    The helpers take the coefficient first so that every caller rounds the
    same way. */
+static inline double hcbd__one_minus_exp_series(double x);
 static inline double hcbd__weight(double cw, double q, double a)
 {
     return cw * a * a * a * a * (4.0 * q + 1.0);
@@ -1942,6 +1951,20 @@ double hcbd_gibd_sdt(const hcbd_gibd_coef *c, double r, double inv_rho_i, double
 {
     const double q = r / c->Rc;
     return q < 1.0 ? hcbd__sdt(c->cs, inv_rho_i, inv_rho_j, 1.0 - q) : 0.0;
+}
+
+void hcbd_gibd_pair_exact(const hcbd_gibd_coef *c, double kT, double sdt, const double z[3],
+                          double vi[3], double vj[3])
+{
+    const double m = c->m, inv_m = 1.0 / m, x = 2.0 * sdt * inv_m;
+    const double om = x < 0.125 ? hcbd__one_minus_exp_series(x) : -expm1(-x);
+    const double b = sqrt(0.5 * kT * m * om * (2.0 - om)), h = 0.5 * m * om;
+    int d;
+    for (d = 0; d < 3; ++d) {
+        const double P = -h * (vi[d] - vj[d]) + b * z[d];
+        vi[d] += P * inv_m;
+        vj[d] -= P * inv_m;
+    }
 }
 
 double hcbd_star_potential(double r, double f, double sigma, double eps)

@@ -1,23 +1,45 @@
 // fix gibd: one GI-BD step per LAMMPS step, in final_integrate (after the
 // pair forces of the positions x(t)).  The background velocity of MODEL 2
 // is LAMMPS's own v: it travels with the atoms, to ghosts (comm_modify vel
-// yes) and into restart files.  Per step, with all right-hand sides at t
-// (the papers' Euler scheme, hcbd's HCBD_PAIR_EULER):
-//   rho_i  = hcbd_gibd_density(sum_j w(r_ij))            full list, owned i
+// yes) and into restart files.  Per step, densities of x(t):
+//   rho_i  = hcbd_gibd_density(sum_j w(r_ij))            owned i, ghosts get 1/rho
+// then, with `pair exact` (the default, hcbd's HCBD_PAIR_SHARDLOW): every
+// pair's friction and noise solved exactly in turn (hcbd_gibd_pair_exact),
+// in the order hcbd's world sweeps them, then kick before drift:
+//   v_i += F_i dt / m;  x_i += F_i dt / xi + dW_i + v_i dt
+// or, with `pair euler` (the papers' scheme, O(dt/tau) too hot), every
+// right-hand side of t:
 //   dp_ij  = sdt (v_j - v_i) + sqrt(2 kT sdt) zeta_ij     sdt = S_ij dt / tau
-//   x_i   += v_i dt + F_i dt / xi + sqrt(2 kT dt / xi) zeta_i
+//   x_i   += v_i dt + F_i dt / xi + dW_i
 //   v_i   += F_i dt / m + sum_j dp_ij / m,                m = xi' tau
+// dW_i = sqrt(2 kT dt / xi) zeta_i (brownian euler) or, by default, the
+// Leimkuhler-Matthews sqrt(2 kT dt / xi) (zeta_i(t) + zeta_i(t + dt)) / 2
+// (brownian lm), as hcbd's HCBD_BROWNIAN_LM.
+//
+// The exact sweep's order is hcbd's (MODEL 13.1): rows of y-z cells at
+// least Rc wide (a multiple of 3 along each axis, or one), measured from
+// the atom of tag 1, spanning all x; a pair belongs to the row of its lower
+// tag; the nine colours (y row mod 3, z row mod 3) run in turn, owners by
+// increasing tag within a row and partners by increasing tag.  Positions,
+// tags and the box set it, never the ranks: each rank sweeps the rows whose
+// corner lies in its subdomain (so `processors 1 * *`), on one copy of
+// every atom it holds (atom_modify map), from positions wrapped by the
+// atom's owner (the same bits on every rank); after each colour the
+// velocities a rank changed go back to their owners and the ghosts are
+// refreshed.  1, 2, 4 ranks: the same bits.
+//
 // With fric N, on every N-th step, the fix's global vector holds
 // hcbd_friction_average (nk = 1) of the configuration the step starts from
 // (at a run's first step, by setup(), of that step's configuration):
 // <sum_j f_ij>, <sum_j f_ij r_ij^2>, <sum_j f_ij (1 - cos k.x_ij)>, f_ij =
 // S_ij / m, k = 2 pi / L_d averaged over d; nu_meanfield = [3] / (tau k^2).
-// Each pair is evaluated once (a half list, newton on), its noise keyed by
-// (seed, step, lower tag - 1, higher tag - 1; +zeta on the atom of the lower
-// tag) and added to both atoms, ghosts included, in 64-bit fixed point; the
-// ghosts' sums go back to their owners (reverse communication).  Integer
-// sums do not depend on the order of the pairs or on which rank holds
-// them, and dp_ji = -dp_ij exactly conserves momentum.
+// The density weights (and the Euler exchanges) are summed once per pair
+// (a half list, newton on), its noise keyed by (seed, step, lower tag - 1,
+// higher tag - 1; +zeta on the atom of the lower tag) and added to both
+// atoms, ghosts included, in 64-bit fixed point; the ghosts' sums go back
+// to their owners (reverse communication).  Integer sums do not depend on
+// the order of the pairs or on which rank holds them, and dp_ji = -dp_ij
+// exactly conserves momentum.
 #include "fix_gibd.h"
 
 #include "atom.h"
@@ -33,6 +55,10 @@
 #include "pair.h"
 #include "update.h"
 
+#include "atom_vec.h"
+#include "utils.h"
+
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -51,13 +77,12 @@ static double number(Error *error, const char *key, const char *v)
 }
 
 FixGIBD::FixGIBD(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), list(nullptr), inv_rho(nullptr), acc(nullptr), nmax(0), nacc(1), wscale(0),
-    vscale(0), fric_every(0), fric{0, 0, 0}
+    Fix(lmp, narg, arg), list(nullptr), inv_rho(nullptr), acc(nullptr), xw(nullptr), touched(nullptr),
+    nmax(0), nacc(1), cmode(FWD_RHO), wscale(0), vscale(0), fric_every(0), fric{0, 0, 0}, exact(1),
+    lm(1), ny(1), nz(1), ncell{1, 1, 1}
 {
   p = hcbd_params_default();
   p.potential = HCBD_POT_IDEAL; // the conservative forces are LAMMPS's pair style
-  p.pair_integrator = HCBD_PAIR_EULER; // what final_integrate does (the papers' scheme)
-  p.brownian = HCBD_BROWNIAN_EULER;    // and its Brownian displacement
   if (narg % 2 == 0) error->all(FLERR, "fix gibd: keyword {} has no value", arg[narg - 1]);
   for (int k = 3; k + 1 < narg; k += 2) {
     const char *key = arg[k], *v = arg[k + 1];
@@ -81,6 +106,14 @@ FixGIBD::FixGIBD(LAMMPS *lmp, int narg, char **arg) :
       if (!strcmp(v, "gauss")) p.noise = HCBD_NOISE_GAUSS;
       else if (!strcmp(v, "uniform")) p.noise = HCBD_NOISE_UNIFORM;
       else error->all(FLERR, "fix gibd: noise = {} is not gauss or uniform", v);
+    } else if (!strcmp(key, "pair")) {
+      if (!strcmp(v, "exact")) exact = 1;
+      else if (!strcmp(v, "euler")) exact = 0;
+      else error->all(FLERR, "fix gibd: pair = {} is not exact or euler", v);
+    } else if (!strcmp(key, "brownian")) {
+      if (!strcmp(v, "lm")) lm = 1;
+      else if (!strcmp(v, "euler")) lm = 0;
+      else error->all(FLERR, "fix gibd: brownian = {} is not lm or euler", v);
     } else if (!strcmp(key, "fric")) {
       char *end;
       long e = strtol(v, &end, 10);
@@ -91,12 +124,14 @@ FixGIBD::FixGIBD(LAMMPS *lmp, int narg, char **arg) :
       error->all(FLERR, "fix gibd: unknown keyword {}", key);
     }
   }
+  p.pair_integrator = exact ? HCBD_PAIR_SHARDLOW : HCBD_PAIR_EULER;
+  p.brownian = lm ? HCBD_BROWNIAN_LM : HCBD_BROWNIAN_EULER;
   if (igroup != 0) error->all(FLERR, "fix gibd: the group must be all (densities sum over every atom)");
   // the fixed-point grid of the pair sums is scaled by the thermal speed
   if (!(p.kT > 0)) error->all(FLERR, "fix gibd: kT = {} must be positive (no deterministic GI-BD here)", p.kT);
   time_integrate = 1;
-  comm_forward = 1;
-  comm_reverse = 3;
+  comm_forward = 3;
+  comm_reverse = 4;
   if (fric_every) {
     vector_flag = 1;
     size_vector = 3;
@@ -109,6 +144,8 @@ FixGIBD::~FixGIBD()
 {
   memory->destroy(inv_rho);
   memory->destroy(acc);
+  memory->destroy(xw);
+  memory->destroy(touched);
 }
 
 int FixGIBD::setmask()
@@ -133,6 +170,39 @@ void FixGIBD::init()
     if (std::fabs(atom->mass[t] / c.m - 1) > 1e-12)
       error->all(FLERR, "fix gibd: atom type {} has mass {}, GI-BD needs xip tau = {}", t, atom->mass[t], c.m);
   hcbd_noise_stream_init(&ns, p.seed, p.noise);
+  if (exact) {
+    // the rows of hcbd's world (hcbd__sweep_rows)
+    int n[2];
+    for (int d = 0; d < 2; ++d) {
+      const double k = std::floor(p.L[d + 1] / p.Rc);
+      n[d] = k >= 3.0 ? 3 * (int) ((k > 768.0 ? 768.0 : k) / 3.0) : 1;
+    }
+    ny = n[0];
+    nz = n[1];
+    for (int d = 0; d < 3; ++d) {
+      if (p.L[d] < 2.0 * p.Rc)
+        error->all(FLERR, "fix gibd: pair exact needs box edges of at least 2 Rc (L[{}] = {})", d, p.L[d]);
+      ncell[d] = std::max(1, std::min(1024, (int) std::floor(p.L[d] / p.Rc)));
+    }
+    if (atom->map_style == Atom::MAP_NONE)
+      error->all(FLERR, "fix gibd: pair exact needs an atom map (atom_modify map array before the box)");
+    if (comm->nprocs > 1) {
+      if (comm->style != 0 || comm->procgrid[0] != 1)
+        error->all(FLERR, "fix gibd: pair exact needs processors 1 * * (the sweep's rows span x; "
+                          "or pair euler)");
+      if (comm->mode != 0) error->all(FLERR, "fix gibd: pair exact needs comm_modify mode single");
+      // a rank sweeps the rows whose corner is in its subdomain: a row and
+      // its partners reach a row and Rc beyond it, atoms move skin/2
+      // between neighbour-list builds
+      const double need = std::max(p.L[1] / ny, p.L[2] / nz) + p.Rc + 0.5 * neighbor->skin;
+      if (comm->cutghostuser < need) {
+        comm->cutghostuser = need * (1.0 + 1e-9);
+        if (comm->me == 0)
+          utils::logmesg(lmp, "fix gibd: ghost cutoff raised to {:.6g} for the exact pair sweep "
+                              "(a row {:.6g} + Rc + skin/2)\n", comm->cutghostuser, need - p.Rc - 0.5 * neighbor->skin);
+      }
+    }
+  }
   // fixed point: weights below w(0) ~ 1/Rc^3 each; a velocity change below
   // the thermal speed sqrt(kT/m) per pair: 2^20 of either still fits
   wscale = std::ldexp(1.0, 40 - std::ilogb(c.cw + 1e-300));
@@ -163,18 +233,26 @@ template <class F> static void each_pair(NeighList *list, double **x, double Rc,
   }
 }
 
+void FixGIBD::grow()
+{
+  if (atom->nmax <= nmax) return;
+  memory->destroy(inv_rho);
+  memory->destroy(acc);
+  memory->destroy(xw);
+  memory->destroy(touched);
+  nmax = atom->nmax;
+  memory->create(inv_rho, nmax, "gibd:inv_rho");
+  memory->create(acc, 3 * nmax, "gibd:acc");
+  memory->create(xw, 3 * nmax, "gibd:xw");
+  memory->create(touched, nmax, "gibd:touched");
+}
+
 // 1 / rho of owned and ghost atoms from the positions of now
 void FixGIBD::densities()
 {
   const int nall = atom->nlocal + atom->nghost;
 
-  if (atom->nmax > nmax) {
-    memory->destroy(inv_rho);
-    memory->destroy(acc);
-    nmax = atom->nmax;
-    memory->create(inv_rho, nmax, "gibd:inv_rho");
-    memory->create(acc, 3 * nmax, "gibd:acc");
-  }
+  grow();
   std::memset(acc, 0, sizeof(int64_t) * nall);
   each_pair(list, atom->x, p.Rc, [this](int i, int j, double, double, double, double r2) {
     const int64_t w = llrint(hcbd_gibd_weight(&c, std::sqrt(r2)) * wscale);
@@ -182,9 +260,11 @@ void FixGIBD::densities()
     acc[j] += w;
   });
   nacc = 1;
+  cmode = REV_ACC;
   comm->reverse_comm_fix(this, 1);
   for (int i = 0; i < atom->nlocal; ++i) inv_rho[i] = 1.0 / hcbd_gibd_density(&c, (double) acc[i] / wscale);
-  comm->forward_comm_fix(this);
+  cmode = FWD_RHO;
+  comm->forward_comm_fix(this, 1);
 }
 
 // fric: hcbd_friction_average (nk = 1) of the positions and densities of now
@@ -212,20 +292,17 @@ void FixGIBD::setup(int)
   friction_averages();
 }
 
-void FixGIBD::final_integrate()
+// the papers' Euler pair step: every velocity change from the velocities
+// of t, summed in fixed point into acc (owned atoms, after the reverse
+// communication)
+void FixGIBD::euler_pairs(int64_t step)
 {
-  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
-  const double dt = p.dt, m = c.m;
-  const double bd = std::sqrt(2.0 * p.kT * dt / p.xi), two_kT = 2.0 * p.kT;
-  const int64_t step = update->ntimestep - 1; // hcbd's step counter: the step being made
-  double **x = atom->x, **v = atom->v, **f = atom->f;
+  const int nall = atom->nlocal + atom->nghost;
+  const double m = c.m, two_kT = 2.0 * p.kT;
+  double **v = atom->v;
   const tagint *tag = atom->tag;
-
-  densities();
-  if (fric_every && update->ntimestep % fric_every == 0) friction_averages();
-  // every velocity change from the velocities of t, then the updates
   std::memset(acc, 0, sizeof(int64_t) * 3 * nall);
-  each_pair(list, x, p.Rc, [&](int i, int j, double, double, double, double r2) {
+  each_pair(list, atom->x, p.Rc, [&](int i, int j, double, double, double, double r2) {
     const int32_t ti = (int32_t) (tag[i] - 1), tj = (int32_t) (tag[j] - 1);
     const double sdt = hcbd_gibd_sdt(&c, std::sqrt(r2), inv_rho[i], inv_rho[j]);
     const double amp = (ti < tj ? 1.0 : -1.0) * std::sqrt(two_kT * sdt);
@@ -238,37 +315,257 @@ void FixGIBD::final_integrate()
     }
   });
   nacc = 3;
+  cmode = REV_ACC;
   comm->reverse_comm_fix(this, 3);
-  for (int i = 0; i < nlocal; ++i) {
-    double z[3];
-    hcbd_noise_particle(&ns, step, (int32_t) (tag[i] - 1), z);
+}
+
+// minimum image of a difference of canonical coordinates
+static inline double min_image(double d, double L)
+{
+  return d - L * std::floor(d / L + 0.5);
+}
+
+// The exact sweep's plan for this step: the rows, this rank's owners by
+// colour, row and tag, and every owner's partners by tag, from the
+// canonical positions xw (the same bits on every rank).  One copy of each
+// atom takes part: atom->map's (the owned one where there is one).
+void FixGIBD::sweep_plan()
+{
+  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
+  const tagint *tag = atom->tag;
+  const double *L = p.L, Rc2 = p.Rc * p.Rc;
+  // rows are measured from the atom of tag 1, as hcbd's from id 0
+  double a0[2] = {-1.0, -1.0}, o[2];
+  const int i1 = atom->map(1);
+  if (i1 >= 0 && i1 < nlocal) {
+    a0[0] = xw[3 * i1 + 1];
+    a0[1] = xw[3 * i1 + 2];
+  }
+  MPI_Allreduce(a0, o, 2, MPI_DOUBLE, MPI_MAX, world);
+  const double fy = ny / L[1], fz = nz / L[2];
+  const double lo[2] = {domain->sublo[1] - domain->boxlo[1], domain->sublo[2] - domain->boxlo[2]};
+  const double hi[2] = {domain->subhi[1] - domain->boxlo[1], domain->subhi[2] - domain->boxlo[2]};
+  const int ncells = ncell[0] * ncell[1] * ncell[2];
+  cell_of.assign(nall, -1);
+  cell_start.assign(ncells + 1, 0);
+  key.clear();
+  for (int k = 0; k < nall; ++k) {
+    if (atom->map(tag[k]) != k) continue; // another copy of the atom takes part
+    const double *r = xw + 3 * k;
+    int cc[3];
+    for (int d = 0; d < 3; ++d) cc[d] = std::min(ncell[d] - 1, (int) (r[d] * ncell[d] / L[d]));
+    cell_of[k] = (cc[2] * ncell[1] + cc[1]) * ncell[0] + cc[0];
+    cell_start[cell_of[k] + 1]++;
+    // the atom's row, as hcbd__shardlow finds it
+    const double yy = r[1] - o[0], zz = r[2] - o[1];
+    int a = (int) ((yy < 0 ? yy + L[1] : yy) * fy), b = (int) ((zz < 0 ? zz + L[2] : zz) * fz);
+    if (a > ny - 1) a = ny - 1;
+    if (b > nz - 1) b = nz - 1;
+    // the row's corner, and so the row, is this rank's when it lies here
+    double cy = o[0] + a / fy, cz = o[1] + b / fz;
+    if (cy >= L[1]) cy -= L[1];
+    if (cz >= L[2]) cz -= L[2];
+    if (comm->procgrid[1] > 1 && !(cy >= lo[0] && cy < hi[0])) continue;
+    if (comm->procgrid[2] > 1 && !(cz >= lo[1] && cz < hi[1])) continue;
+    const long long colour = (a % 3) + 3 * (b % 3), row = (long long) b * ny + a;
+    key.push_back((((colour << 24) + row) << 32) + (long long) tag[k]);
+  }
+  for (int q = 0; q < ncells; ++q) cell_start[q + 1] += cell_start[q];
+  cell_atom.resize(cell_start[ncells]);
+  {
+    std::vector<int> fill(cell_start.begin(), cell_start.end() - 1);
+    for (int k = 0; k < nall; ++k)
+      if (cell_of[k] >= 0) cell_atom[fill[cell_of[k]]++] = k;
+  }
+  std::sort(key.begin(), key.end());
+  own.resize(key.size());
+  col_start.assign(10, 0);
+  for (size_t q = 0; q < key.size(); ++q) {
+    own[q] = atom->map((tagint) (key[q] & 0xFFFFFFFFLL));
+    col_start[(int) (key[q] >> 56) + 1]++;
+  }
+  for (int q = 0; q < 9; ++q) col_start[q + 1] += col_start[q];
+  // partners: higher tags within Rc, by tag
+  int off[3][3], noff[3];
+  for (int d = 0; d < 3; ++d) {
+    noff[d] = ncell[d] >= 3 ? 3 : ncell[d];
+    for (int e = 0; e < noff[d]; ++e) off[d][e] = noff[d] == 3 ? e - 1 : e;
+  }
+  part_start.assign(own.size() + 1, 0);
+  part.clear();
+  part_r2.clear();
+  std::vector<std::pair<tagint, int>> cand;
+  std::vector<double> cr2(nall);
+  for (size_t q = 0; q < own.size(); ++q) {
+    const int i = own[q];
+    const double *ri = xw + 3 * i;
+    const int ci = cell_of[i], cx = ci % ncell[0], cy = (ci / ncell[0]) % ncell[1], cz = ci / (ncell[0] * ncell[1]);
+    cand.clear();
+    for (int ez = 0; ez < noff[2]; ++ez)
+      for (int ey = 0; ey < noff[1]; ++ey)
+        for (int ex = 0; ex < noff[0]; ++ex) {
+          const int gx = noff[0] == 3 ? (cx + off[0][ex] + ncell[0]) % ncell[0] : off[0][ex];
+          const int gy = noff[1] == 3 ? (cy + off[1][ey] + ncell[1]) % ncell[1] : off[1][ey];
+          const int gz = noff[2] == 3 ? (cz + off[2][ez] + ncell[2]) % ncell[2] : off[2][ez];
+          const int g = (gz * ncell[1] + gy) * ncell[0] + gx;
+          for (int t = cell_start[g]; t < cell_start[g + 1]; ++t) {
+            const int j = cell_atom[t];
+            if (tag[j] <= tag[i]) continue;
+            const double dx = min_image(ri[0] - xw[3 * j], L[0]), dy = min_image(ri[1] - xw[3 * j + 1], L[1]),
+                         dz = min_image(ri[2] - xw[3 * j + 2], L[2]), r2 = dx * dx + dy * dy + dz * dz;
+            if (r2 < Rc2) {
+              cand.emplace_back(tag[j], j);
+              cr2[j] = r2;
+            }
+          }
+        }
+    std::sort(cand.begin(), cand.end());
+    for (auto &pj : cand) {
+      part.push_back(pj.second);
+      part_r2.push_back(cr2[pj.second]);
+    }
+    part_start[q + 1] = (int) part.size();
+  }
+}
+
+// hcbd's exact pair sweep (HCBD_PAIR_SHARDLOW) on this rank's rows, colour
+// by colour; the velocities a colour changed on ghost copies go back to
+// their owners, and the ghosts are refreshed before the next colour
+void FixGIBD::sweep(int64_t step)
+{
+  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
+  double **x = atom->x, **v = atom->v;
+  const tagint *tag = atom->tag;
+  for (int i = 0; i < nlocal; ++i)
     for (int d = 0; d < 3; ++d) {
-      x[i][d] += v[i][d] * dt + f[i][d] * dt / p.xi + bd * z[d];
-      v[i][d] += f[i][d] * dt / m + (double) acc[3 * i + d] / vscale;
+      // the owner wraps, so that every copy carries the same bits
+      double u = x[i][d] - domain->boxlo[d];
+      if (u < 0.0) u += p.L[d];
+      else if (u >= p.L[d]) u -= p.L[d];
+      if (!(u >= 0.0 && u < p.L[d])) u = 0.0;
+      xw[3 * i + d] = u;
+    }
+  cmode = FWD_XW;
+  comm->forward_comm_fix(this, 3);
+  sweep_plan();
+  for (int col = 0; col < 9; ++col) {
+    std::memset(touched, 0, sizeof(int) * nall);
+    for (int q = col_start[col]; q < col_start[col + 1]; ++q) {
+      const int i = own[q];
+      const int32_t ti = (int32_t) (tag[i] - 1);
+      for (int t = part_start[q]; t < part_start[q + 1]; ++t) {
+        const int j = part[t];
+        const double sdt = hcbd_gibd_sdt(&c, std::sqrt(part_r2[t]), inv_rho[i], inv_rho[j]);
+        double z[3];
+        hcbd_noise_pair(&ns, step, ti, (int32_t) (tag[j] - 1), z);
+        hcbd_gibd_pair_exact(&c, p.kT, sdt, z, v[i], v[j]);
+        touched[j] = 1;
+      }
+      touched[i] = 1;
+    }
+    if (comm->nprocs == 1) continue; // every copy that takes part is owned
+    cmode = REV_V;
+    comm->reverse_comm_fix(this, 4);
+    if (col < 8) {
+      cmode = FWD_V;
+      comm->forward_comm_fix(this, 3);
+    }
+  }
+}
+
+void FixGIBD::final_integrate()
+{
+  const int nlocal = atom->nlocal;
+  const double dt = p.dt, m = c.m, dt_xi = dt / p.xi, dt_m = dt * (1.0 / m);
+  const double bd = std::sqrt(2.0 * p.kT * dt / p.xi), sdz = lm ? 0.5 * bd : bd;
+  const int64_t step = update->ntimestep - 1; // hcbd's step counter: the step being made
+  double **x = atom->x, **v = atom->v, **f = atom->f;
+  const tagint *tag = atom->tag;
+
+  densities();
+  if (fric_every && update->ntimestep % fric_every == 0) friction_averages();
+  if (exact) sweep(step);
+  else euler_pairs(step);
+  for (int i = 0; i < nlocal; ++i) {
+    const int32_t id = (int32_t) (tag[i] - 1);
+    double z[3];
+    hcbd_noise_particle(&ns, step, id, z);
+    if (lm) {
+      double z1[3];
+      hcbd_noise_particle(&ns, step + 1, id, z1);
+      for (int d = 0; d < 3; ++d) z[d] += z1[d];
+    }
+    if (exact) {
+      // kick before drift, as hcbd's world after its sweep
+      for (int d = 0; d < 3; ++d) {
+        v[i][d] += f[i][d] * dt_m;
+        x[i][d] += f[i][d] * dt_xi + sdz * z[d] + v[i][d] * dt;
+      }
+    } else {
+      for (int d = 0; d < 3; ++d) {
+        x[i][d] += v[i][d] * dt + f[i][d] * dt / p.xi + sdz * z[d];
+        v[i][d] += f[i][d] * dt / m + (double) acc[3 * i + d] / vscale;
+      }
     }
   }
 }
 
 int FixGIBD::pack_forward_comm(int n, int *slist, double *buf, int, int *)
 {
-  for (int k = 0; k < n; ++k) buf[k] = inv_rho[slist[k]];
-  return n;
+  if (cmode == FWD_RHO) {
+    for (int k = 0; k < n; ++k) buf[k] = inv_rho[slist[k]];
+    return n;
+  }
+  const double *src = cmode == FWD_XW ? xw : nullptr;
+  double **v = atom->v;
+  for (int k = 0; k < n; ++k)
+    for (int d = 0; d < 3; ++d) buf[3 * k + d] = src ? src[3 * slist[k] + d] : v[slist[k]][d];
+  return 3 * n;
 }
 
 void FixGIBD::unpack_forward_comm(int n, int first, double *buf)
 {
-  for (int k = 0; k < n; ++k) inv_rho[first + k] = buf[k];
+  if (cmode == FWD_RHO) {
+    for (int k = 0; k < n; ++k) inv_rho[first + k] = buf[k];
+    return;
+  }
+  double **v = atom->v;
+  for (int k = 0; k < n; ++k)
+    for (int d = 0; d < 3; ++d) {
+      if (cmode == FWD_XW) xw[3 * (first + k) + d] = buf[3 * k + d];
+      else v[first + k][d] = buf[3 * k + d];
+    }
 }
 
-// the ghosts' fixed-point sums travel as the bits of doubles
+// the ghosts' fixed-point sums travel as the bits of doubles; in the
+// sweep, a velocity the colour set travels with a flag, and the owner
+// takes it (one copy of an atom takes part in a colour)
 int FixGIBD::pack_reverse_comm(int n, int first, double *buf)
 {
+  if (cmode == REV_V) {
+    double **v = atom->v;
+    for (int k = 0; k < n; ++k) {
+      buf[4 * k] = touched[first + k];
+      for (int d = 0; d < 3; ++d) buf[4 * k + 1 + d] = v[first + k][d];
+    }
+    return 4 * n;
+  }
   std::memcpy(buf, acc + (size_t) nacc * first, sizeof(int64_t) * nacc * n);
   return nacc * n;
 }
 
 void FixGIBD::unpack_reverse_comm(int n, int *slist, double *buf)
 {
+  if (cmode == REV_V) {
+    double **v = atom->v;
+    for (int k = 0; k < n; ++k)
+      if (buf[4 * k] != 0.0) {
+        const int i = slist[k];
+        touched[i] = 1;
+        for (int d = 0; d < 3; ++d) v[i][d] = buf[4 * k + 1 + d];
+      }
+    return;
+  }
   for (int k = 0; k < n; ++k)
     for (int d = 0; d < nacc; ++d) {
       int64_t q;
@@ -284,5 +581,7 @@ double FixGIBD::compute_vector(int n)
 
 double FixGIBD::memory_usage()
 {
-  return nmax * (sizeof(double) + 3.0 * sizeof(int64_t));
+  return nmax * (4.0 * sizeof(double) + 3.0 * sizeof(int64_t) + sizeof(int)) +
+         sizeof(int) * (own.size() + part.size() + cell_atom.size() + cell_of.size()) +
+         sizeof(double) * part_r2.size();
 }

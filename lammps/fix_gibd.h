@@ -13,6 +13,8 @@ FixStyle(gibd,FixGIBD);
 #include "fix.h"
 #include "hcbd.h"
 
+#include <vector>
+
 namespace LAMMPS_NS {
 
 class FixGIBD : public Fix {
@@ -32,8 +34,14 @@ class FixGIBD : public Fix {
   double memory_usage() override;
 
  private:
+  enum { FWD_RHO, FWD_XW, FWD_V, REV_ACC, REV_V };
+  void grow();
   void densities();
   void friction_averages();
+  void euler_pairs(int64_t step);
+  void sweep_plan();
+  void sweep(int64_t step);
+  void check_sweep_ghosts();
   hcbd_params p;            // the model's parameters (dt and box from LAMMPS)
   hcbd_gibd_coef c;         // its pair coefficients (hcbd_gibd_coef_of)
   hcbd_noise_stream ns;     // pair and Brownian noise keyed by (seed, step, ids)
@@ -41,10 +49,22 @@ class FixGIBD : public Fix {
   double *inv_rho;          // 1 / rho of owned and ghost atoms
   int64_t *acc;             // fixed-point pair sums of owned and ghost atoms:
                             // nacc per atom (1: weights, 3: velocity changes)
-  int nmax, nacc;
+  double *xw;               // canonical positions in [0, L), the owners' bits
+  int *touched;             // atoms whose velocity this colour of the sweep set
+  int nmax, nacc, cmode;    // cmode: what the next communication carries
   double wscale, vscale;    // fixed-point scales of the density and velocity sums
   int fric_every;           // keyword fric: friction averages every this many steps
   double fric[3];           // the last ones (compute_vector)
+  int exact;                // pair exact (default): hcbd's exact pair sweep; 0: Euler
+  int lm;                   // brownian lm (default): Leimkuhler-Matthews; 0: Euler
+  int ny, nz;               // the sweep's rows along y and z, as hcbd's world's
+  // this step's sweep on this rank: owners (local indices) by colour, row
+  // and tag, each colour from col_start; each owner's partners (local
+  // index, r^2) by tag from part_start
+  std::vector<int> own, col_start, part_start, part, cell_start, cell_atom, cell_of;
+  std::vector<double> part_r2;
+  std::vector<long long> key;
+  int ncell[3];
 };
 
 }    // namespace LAMMPS_NS

@@ -1,13 +1,14 @@
-/* gibd_ref: hcbd's own GI-BD world (the papers' Euler pair step) advanced
-   from the atoms of a LAMMPS dump, for make test-lammps to compare fix gibd
-   with, atom by atom.  Usage:
+/* gibd_ref: hcbd's own GI-BD world advanced from the atoms of a LAMMPS
+   dump, for make test-lammps to compare fix gibd with, atom by atom.  Usage:
      gibd_ref IN OUT steps dt tau xi xip kT Rc density norm seed noise f sigma eps rcut
+              pair brownian
    IN: write_dump custom id x y z vx vy vz, sorted by id (tags 1..n); OUT:
    "id x y z vx vy vz" after `steps` steps, wrapped into the box; stdout:
    the pair energy and hcbd_friction_average (nk = 1) of IN, then that of
    the configuration the last step starts from (fix gibd's vector, fric).  f = 0:
    ideal carriers; otherwise the star potential (2014 eq. 28, from the
-   formula, not the force table).  noise: gauss or uniform. */
+   formula, not the force table).  noise: gauss or uniform; pair: exact
+   (HCBD_PAIR_SHARDLOW, the world's sweep) or euler; brownian: lm or euler. */
 #define HCBD_IMPLEMENTATION
 #include "hcbd.h"
 
@@ -24,8 +25,9 @@ int main(int argc, char **argv)
     double lo[3], hi[3], fr[3], *x, *v;
     int n = 0, i, d, steps;
     FILE *in, *out;
-    if (argc != 18) {
-        fprintf(stderr, "usage: gibd_ref IN OUT steps dt tau xi xip kT Rc density norm seed noise f sigma eps rcut\n");
+    if (argc != 20) {
+        fprintf(stderr, "usage: gibd_ref IN OUT steps dt tau xi xip kT Rc density norm seed noise f sigma eps "
+                        "rcut pair brownian\n");
         return 2;
     }
     in = fopen(argv[1], "r");
@@ -66,8 +68,8 @@ int main(int argc, char **argv)
     p->star_eps = atof(argv[16]);
     p->rcut = atof(argv[17]);
     p->force_table = 0;
-    p->pair_integrator = HCBD_PAIR_EULER;
-    p->brownian = HCBD_BROWNIAN_EULER;
+    p->pair_integrator = strcmp(argv[18], "euler") ? HCBD_PAIR_SHARDLOW : HCBD_PAIR_EULER;
+    p->brownian = strcmp(argv[19], "euler") ? HCBD_BROWNIAN_LM : HCBD_BROWNIAN_EULER;
     if (hcbd_world_create(&w, &def) != HCBD_OK || hcbd_world_set_positions(&w, n, x) != HCBD_OK ||
         hcbd_world_set_velocities(&w, v) != HCBD_OK) {
         fprintf(stderr, "gibd_ref: %s\n", w.err.msg);
