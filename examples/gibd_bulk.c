@@ -34,6 +34,8 @@
 
 #define PI 3.14159265358979323846
 
+static double coord_r = NAN; /* coord_r: a fixed radius for the coordination */
+
 static void usage(FILE *f)
 {
     fprintf(f,
@@ -45,6 +47,7 @@ static void usage(FILE *f)
             "  potential=star|ideal  dynamics=gibd|bd  density_norm=2014|2016\n"
             "  lagged=0|1 noise=gauss|uniform pair=shardlow|euler\n"
             "  brownian=lm|euler seed steps threads out\n"
+            "  coord_r=r           the coordination within r (default: g(r)'s first minimum)\n"
             "  xyz=FILE xyz_every=k  extended XYZ frames (OVITO) every k steps\n"
             "  thermo_every=k      a thermo line every k steps\n"
             "  checkpoint=FILE     save the world at the end; restart=FILE  start from\n"
@@ -55,6 +58,11 @@ static int own_key(config *c, const char *key, const char *v)
 {
     double d;
     if (!strcmp(key, "preset")) return check_preset(c, v);
+    if (!strcmp(key, "coord_r")) {
+        if (!parse_double(c, key, v, &d)) return 0;
+        coord_r = d;
+        return 1;
+    }
     if (!strcmp(key, "gdot")) {
         if (!parse_double(c, key, v, &d)) return 0;
         c->def.params.gdot = d;
@@ -328,7 +336,8 @@ int main(int argc, char **argv)
             fclose(f);
         }
         /* an ideal gas has no shell (its g(r) is 1 within the noise) */
-        rdf_min = p->potential == HCBD_POT_IDEAL ? NAN : first_minimum(r, g, NRDF);
+        rdf_min = isfinite(coord_r) ? coord_r
+                  : p->potential == HCBD_POT_IDEAL ? NAN : first_minimum(r, g, NRDF);
         if (isfinite(rdf_min)) hcbd_rdf_coordination(&rdf, rdf_min, &coord, &coord_err);
     }
     {

@@ -143,7 +143,7 @@ nu_initial() {
 }
 
 # hcbd's run of the scene: T, nu_initial and the MSD at t = 0.15 with block errors
-"$root/build/gibd_bulk" potential=ideal pair=euler brownian=euler N=500 steps=40000 threads=1 out="$t/hcbd" > "$t/hcbd.txt" 2>/dev/null
+"$root/build/gibd_bulk" potential=ideal N=500 steps=40000 threads=1 out="$t/hcbd" > "$t/hcbd.txt" 2>/dev/null
 hT=$(awk -F= '$1 == "T_ratio" { print $2 }' "$t/hcbd.txt")
 heT=$(awk -F= '$1 == "T_ratio_err" { print $2 }' "$t/hcbd.txt")
 hN=$(awk -F= '$1 == "nu_initial" { print $2 }' "$t/hcbd.txt")
@@ -187,12 +187,35 @@ for np in 1 2 4; do
     else bad "$np ranks: nu_initial $N +- $eN, hcbd's $hN +- $heN"; fi
     if within "$T" "$eT" "$hT" "$heT"; then ok "$np ranks: temperature agrees with hcbd's"
     else bad "$np ranks: temperature $T +- $eT, hcbd's $hT +- $heT"; fi
+    # the exact sweep has no O(dt/tau) excess (the Euler pair step's is
+    # 1.3 % here, ten of these errors): kT itself within four errors
+    if within "$T" "$eT" 1 0; then ok "$np ranks: temperature is kT ($T +- $eT)"
+    else bad "$np ranks: temperature $T +- $eT is not kT = 1"; fi
     if within "$M" "$eM" "$hM" "$heM"; then ok "$np ranks: MSD(0.15) agrees with hcbd's"
     else bad "$np ranks: MSD(0.15) $M +- $eM, hcbd's $hM +- $heM"; fi
     # N m sqrt(kT/m) ~ 30: round-off over the run is far below 1e-9
     if awk -v p="$P" 'BEGIN { exit !(p != "" && p < 1e-9) }'; then ok "$np ranks: total momentum stays zero (max $P)"
     else bad "$np ranks: total momentum drifts to $P"; fi
 done
+
+# statics: the 2014 star scene (512 stars, f = 128, n# = 0.24) under fix
+# gibd's exact sweep (2 ranks) has the structure of Brownian dynamics
+# (hcbd's BD world, Leimkuhler-Matthews steps): the coordination within
+# r = 2.3 (near g(r)'s first minimum) within four combined block errors
+"$root/build/gibd_bulk" dynamics=bd N=512 steps=40000 threads=2 coord_r=2.3 out="$t/bd" > "$t/bd.txt" 2>/dev/null
+bC=$(awk -F= '$1 == "coordination" { print $2 }' "$t/bd.txt")
+beC=$(awk -F= '$1 == "coordination_err" { print $2 }' "$t/bd.txt")
+if $MPI -np 2 "$lmp" -in "$root/lammps/in.gibd_star" -var plugin "$plug" -var steps 21000 -var rmin 2.3 \
+    -log "$t/star.log" -screen none > /dev/null 2>&1; then
+    # f_cav averages 1000 steps; blocks of 2000 after the first 5000
+    read -r C eC < <(awk '/^ *Step/ { f = 1; next } /^Loop/ { f = 0 } f && $1 > 5000 { x[++m] = $6 }
+        END { n = int(m / 2); for (k = 1; k <= n; ++k) { b[k] = (x[2 * k - 1] + x[2 * k]) / 2; s += b[k] }
+              s /= n; for (k = 1; k <= n; ++k) v += (b[k] - s) ^ 2
+              printf "%.6g %.3g\n", s, sqrt(v / (n * (n - 1))) }' "$t/star.log")
+    echo "    stars: coordination within 2.3: fix gibd $C +- $eC, hcbd's BD $bC +- $beC"
+    if within "$C" "$eC" "$bC" "$beC"; then ok "stars, 2 ranks: the coordination of fix gibd's exact sweep is BD's"
+    else bad "stars, 2 ranks: coordination $C +- $eC, BD's $bC +- $beC"; fi
+else bad "stars, 2 ranks: LAMMPS failed: $(grep ERROR "$t/star.log" | head -n 1)"; fi
 
 # bits: from one restart file, 1000 steps on 1, 2 and 4 ranks end in the
 # same atoms, bit for bit (the noise is keyed by step and tags, the sums are

@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
 # make mutants-lammps: each injected error of the plugin (a single
-# coefficient 10 % off in fix_gibd.cpp or pair_star.cpp) must make the
+# coefficient 10 % off in fix_gibd.cpp, pair_star.cpp, or the functions of
+# hcbd.h that only the plugin calls (hcbd_gibd_pair_exact)) must make the
 # quick part of make test-lammps fail (lammps/check.sh with
 # HCBD_LAMMPS_QUICK=1: the atom-by-atom comparison with hcbd's world).
 # Builds the plugin once per mutant against build/lammps (make lammps).
 # Prints one line per mutant: caught (by the first failing check) or MISSED.
+# NAMES="a b": only those.
 set -u
 root=$(cd "$(dirname "$0")/.." && pwd)
 B=$root/build/lammps
@@ -15,9 +17,14 @@ missed=0
 # NAME|FILE|OLD|NEW, OLD once in FILE
 while IFS='|' read -r -u 3 name file old new; do
     [ -n "$name" ] || continue
-    rm -rf "$work/src" "$work/plugin"
+    case " ${NAMES:-$name} " in *" $name "*) ;; *) continue ;; esac
+    rm -rf "$work/src" "$work/plugin" "$work/hdr"
     cp -r "$root/lammps" "$work/src"
-    if ! python3 - "$work/src/$file" "$old" "$new" <<'PY'
+    mkdir -p "$work/hdr"
+    cp "$root/hcbd.h" "$work/hdr/"
+    target=$work/src/$file
+    [ "$file" = hcbd.h ] && target=$work/hdr/hcbd.h
+    if ! python3 - "$target" "$old" "$new" <<'PY'
 import sys
 path, old, new = sys.argv[1:4]
 s = open(path).read()
@@ -27,7 +34,7 @@ open(path, 'w').write(s.replace(old, new))
 PY
     then echo "$name: BAD PATTERN"; missed=$((missed + 1)); continue; fi
     if ! { cmake -S "$work/src" -B "$work/plugin" -D CMAKE_BUILD_TYPE=Release -D LAMMPS_HEADER_DIR="$B/src/src" \
-        -D HCBD_DIR="$root" && cmake --build "$work/plugin" -j2; } > "$work/build.log" 2>&1; then
+        -D HCBD_DIR="$work/hdr" && cmake --build "$work/plugin" -j2; } > "$work/build.log" 2>&1; then
         echo "$name: does not build"; missed=$((missed + 1)); continue
     fi
     ln -sf "$B/lmp" "$work/lmp"
@@ -48,6 +55,17 @@ fric_scale|fix_gibd.cpp|fscale = p.tau / (p.dt * c.m);|fscale = 1.1 * p.tau / (p
 fric_wave|fix_gibd.cpp|fs[2] += 2.0 * fij|fs[2] += 2.2 * fij
 density|fix_gibd.cpp|inv_rho[i] = 1.0 / hcbd_gibd_density|inv_rho[i] = 1.1 / hcbd_gibd_density
 noise_step|fix_gibd.cpp|update->ntimestep - 1;|update->ntimestep;
+exact_kick|fix_gibd.cpp|v[i][d] += f[i][d] * dt_m;|v[i][d] += 1.1 * f[i][d] * dt_m;
+exact_mobility|fix_gibd.cpp|x[i][d] += f[i][d] * dt_xi|x[i][d] += 1.1 * f[i][d] * dt_xi
+exact_advection|fix_gibd.cpp|+ v[i][d] * dt;|+ 1.1 * v[i][d] * dt;
+lm_amplitude|fix_gibd.cpp|sdz = lm ? 0.5 * bd : bd|sdz = lm ? 0.55 * bd : bd
+lm_next_step|fix_gibd.cpp|hcbd_noise_particle(&ns, step + 1, id, z1);|hcbd_noise_particle(&ns, step + 2, id, z1);
+sweep_rows|fix_gibd.cpp|n[d] = k >= 3.0 ? 3 * (int)|n[d] = k >= 5.5 ? 3 * (int)
+sweep_row_corner|fix_gibd.cpp|double cy = o[0] + a / fy|double cy = o[0] + 1.1 * a / fy
+sweep_anchor|fix_gibd.cpp|const double yy = r[1] - o[0]|const double yy = r[1] - 1.1 * o[0]
+pair_exact_rate|hcbd.h|x = 2.0 * sdt * inv_m;|x = 2.2 * sdt * inv_m;
+pair_exact_noise|hcbd.h|sqrt(0.5 * kT * m * om|sqrt(0.55 * kT * m * om
+pair_exact_share|hcbd.h|h = 0.5 * m * om;|h = 0.55 * m * om;
 star_force|pair_star.cpp|const double fpair = hcbd_star_force_over_r(|const double fpair = 1.1 * hcbd_star_force_over_r(
 star_sigma|pair_star.cpp|sigma[i][j] = s1;|sigma[i][j] = 1.1 * s1;
 star_eps|pair_star.cpp|eps[i][j] = e1;|eps[i][j] = 1.1 * e1;
