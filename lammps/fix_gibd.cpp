@@ -77,9 +77,9 @@ static double number(Error *error, const char *key, const char *v)
 }
 
 FixGIBD::FixGIBD(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), list(nullptr), inv_rho(nullptr), acc(nullptr), xw(nullptr), touched(nullptr),
+    Fix(lmp, narg, arg), list(nullptr), glist(nullptr), inv_rho(nullptr), acc(nullptr), xw(nullptr), touched(nullptr),
     nmax(0), nacc(1), cmode(FWD_RHO), wscale(0), vscale(0), fric_every(0), fric{0, 0, 0}, exact(1),
-    lm(1), ny(1), nz(1), ncell{1, 1, 1}
+    lm(1), ny(1), nz(1)
 {
   p = hcbd_params_default();
   p.potential = HCBD_POT_IDEAL; // the conservative forces are LAMMPS's pair style
@@ -182,7 +182,6 @@ void FixGIBD::init()
     for (int d = 0; d < 3; ++d) {
       if (p.L[d] < 2.0 * p.Rc)
         error->all(FLERR, "fix gibd: pair exact needs box edges of at least 2 Rc (L[{}] = {})", d, p.L[d]);
-      ncell[d] = std::max(1, std::min(1024, (int) std::floor(p.L[d] / p.Rc)));
     }
     if (atom->map_style == Atom::MAP_NONE)
       error->all(FLERR, "fix gibd: pair exact needs an atom map (atom_modify map array before the box)");
@@ -192,14 +191,15 @@ void FixGIBD::init()
                           "or pair euler)");
       if (comm->mode != 0) error->all(FLERR, "fix gibd: pair exact needs comm_modify mode single");
       // a rank sweeps the rows whose corner is in its subdomain: a row and
-      // its partners reach a row and Rc beyond it, atoms move skin/2
-      // between neighbour-list builds
-      const double need = std::max(p.L[1] / ny, p.L[2] / nz) + p.Rc + 0.5 * neighbor->skin;
+      // its partners reach a row and Rc beyond it; the ghost neighbour
+      // list finds them if the ghosts reach another skin (atoms move
+      // skin/2 between builds, and the list reaches Rc + skin)
+      const double need = std::max(p.L[1] / ny, p.L[2] / nz) + p.Rc + 1.5 * neighbor->skin;
       if (comm->cutghostuser < need) {
         comm->cutghostuser = need * (1.0 + 1e-9);
         if (comm->me == 0)
           utils::logmesg(lmp, "fix gibd: ghost cutoff raised to {:.6g} for the exact pair sweep "
-                              "(a row {:.6g} + Rc + skin/2)\n", comm->cutghostuser, need - p.Rc - 0.5 * neighbor->skin);
+                              "(a row {:.6g} + Rc + 1.5 skin)\n", comm->cutghostuser, need - p.Rc - 1.5 * neighbor->skin);
       }
     }
   }
@@ -210,11 +210,22 @@ void FixGIBD::init()
   int irequest = neighbor->request(this, instance_me);
   neighbor->requests[irequest]->pair = 0;
   neighbor->requests[irequest]->fix = 1;
+  if (exact) {
+    // the sweep's partners: every neighbour of every atom, ghosts included
+    irequest = neighbor->request(this, instance_me);
+    neighbor->requests[irequest]->pair = 0;
+    neighbor->requests[irequest]->fix = 1;
+    neighbor->requests[irequest]->half = 0;
+    neighbor->requests[irequest]->full = 1;
+    neighbor->requests[irequest]->ghost = 1;
+    neighbor->requests[irequest]->id = 1;
+  }
 }
 
-void FixGIBD::init_list(int, NeighList *ptr)
+void FixGIBD::init_list(int id, NeighList *ptr)
 {
-  list = ptr;
+  if (id == 1) glist = ptr;
+  else list = ptr;
 }
 
 // every pair of the half list within Rc, once: fn(i, j, dx, dy, dz, r2)
@@ -319,10 +330,10 @@ void FixGIBD::euler_pairs(int64_t step)
   comm->reverse_comm_fix(this, 3);
 }
 
-// minimum image of a difference of canonical coordinates
+// minimum image of a difference of canonical coordinates (|d| < L)
 static inline double min_image(double d, double L)
 {
-  return d - L * std::floor(d / L + 0.5);
+  return d > 0.5 * L ? d - L : (d < -0.5 * L ? d + L : d);
 }
 
 // The exact sweep's plan for this step: the rows, this rank's owners by
@@ -345,17 +356,10 @@ void FixGIBD::sweep_plan()
   const double fy = ny / L[1], fz = nz / L[2];
   const double lo[2] = {domain->sublo[1] - domain->boxlo[1], domain->sublo[2] - domain->boxlo[2]};
   const double hi[2] = {domain->subhi[1] - domain->boxlo[1], domain->subhi[2] - domain->boxlo[2]};
-  const int ncells = ncell[0] * ncell[1] * ncell[2];
-  cell_of.assign(nall, -1);
-  cell_start.assign(ncells + 1, 0);
   key.clear();
   for (int k = 0; k < nall; ++k) {
     if (atom->map(tag[k]) != k) continue; // another copy of the atom takes part
     const double *r = xw + 3 * k;
-    int cc[3];
-    for (int d = 0; d < 3; ++d) cc[d] = std::min(ncell[d] - 1, (int) (r[d] * ncell[d] / L[d]));
-    cell_of[k] = (cc[2] * ncell[1] + cc[1]) * ncell[0] + cc[0];
-    cell_start[cell_of[k] + 1]++;
     // the atom's row, as hcbd__shardlow finds it
     const double yy = r[1] - o[0], zz = r[2] - o[1];
     int a = (int) ((yy < 0 ? yy + L[1] : yy) * fy), b = (int) ((zz < 0 ? zz + L[2] : zz) * fz);
@@ -370,13 +374,6 @@ void FixGIBD::sweep_plan()
     const long long colour = (a % 3) + 3 * (b % 3), row = (long long) b * ny + a;
     key.push_back((((colour << 24) + row) << 32) + (long long) tag[k]);
   }
-  for (int q = 0; q < ncells; ++q) cell_start[q + 1] += cell_start[q];
-  cell_atom.resize(cell_start[ncells]);
-  {
-    std::vector<int> fill(cell_start.begin(), cell_start.end() - 1);
-    for (int k = 0; k < nall; ++k)
-      if (cell_of[k] >= 0) cell_atom[fill[cell_of[k]]++] = k;
-  }
   std::sort(key.begin(), key.end());
   own.resize(key.size());
   col_start.assign(10, 0);
@@ -385,44 +382,33 @@ void FixGIBD::sweep_plan()
     col_start[(int) (key[q] >> 56) + 1]++;
   }
   for (int q = 0; q < 9; ++q) col_start[q + 1] += col_start[q];
-  // partners: higher tags within Rc, by tag
-  int off[3][3], noff[3];
-  for (int d = 0; d < 3; ++d) {
-    noff[d] = ncell[d] >= 3 ? 3 : ncell[d];
-    for (int e = 0; e < noff[d]; ++e) off[d][e] = noff[d] == 3 ? e - 1 : e;
-  }
+  // partners: higher tags within Rc (from the canonical positions), by
+  // tag, from the neighbours of any copy in the ghost neighbour list
   part_start.assign(own.size() + 1, 0);
   part.clear();
   part_r2.clear();
-  std::vector<std::pair<tagint, int>> cand;
-  std::vector<double> cr2(nall);
+  std::vector<std::pair<tagint, int>> &cand = cand_buf;
   for (size_t q = 0; q < own.size(); ++q) {
     const int i = own[q];
     const double *ri = xw + 3 * i;
-    const int ci = cell_of[i], cx = ci % ncell[0], cy = (ci / ncell[0]) % ncell[1], cz = ci / (ncell[0] * ncell[1]);
+    const int *jlist = glist->firstneigh[i];
     cand.clear();
-    for (int ez = 0; ez < noff[2]; ++ez)
-      for (int ey = 0; ey < noff[1]; ++ey)
-        for (int ex = 0; ex < noff[0]; ++ex) {
-          const int gx = noff[0] == 3 ? (cx + off[0][ex] + ncell[0]) % ncell[0] : off[0][ex];
-          const int gy = noff[1] == 3 ? (cy + off[1][ey] + ncell[1]) % ncell[1] : off[1][ey];
-          const int gz = noff[2] == 3 ? (cz + off[2][ez] + ncell[2]) % ncell[2] : off[2][ez];
-          const int g = (gz * ncell[1] + gy) * ncell[0] + gx;
-          for (int t = cell_start[g]; t < cell_start[g + 1]; ++t) {
-            const int j = cell_atom[t];
-            if (tag[j] <= tag[i]) continue;
-            const double dx = min_image(ri[0] - xw[3 * j], L[0]), dy = min_image(ri[1] - xw[3 * j + 1], L[1]),
-                         dz = min_image(ri[2] - xw[3 * j + 2], L[2]), r2 = dx * dx + dy * dy + dz * dz;
-            if (r2 < Rc2) {
-              cand.emplace_back(tag[j], j);
-              cr2[j] = r2;
-            }
-          }
-        }
+    for (int jj = 0; jj < glist->numneigh[i]; ++jj) {
+      const int j0 = jlist[jj] & NEIGHMASK;
+      if (tag[j0] <= tag[i]) continue;
+      const int j = atom->map(tag[j0]);
+      const double dx = min_image(ri[0] - xw[3 * j], L[0]), dy = min_image(ri[1] - xw[3 * j + 1], L[1]),
+                   dz = min_image(ri[2] - xw[3 * j + 2], L[2]);
+      if (dx * dx + dy * dy + dz * dz < Rc2) cand.emplace_back(tag[j], j);
+    }
     std::sort(cand.begin(), cand.end());
-    for (auto &pj : cand) {
-      part.push_back(pj.second);
-      part_r2.push_back(cr2[pj.second]);
+    for (size_t t = 0; t < cand.size(); ++t) {
+      const int j = cand[t].second;
+      if (t && cand[t].first == cand[t - 1].first) continue; // two images of one atom
+      const double dx = min_image(ri[0] - xw[3 * j], L[0]), dy = min_image(ri[1] - xw[3 * j + 1], L[1]),
+                   dz = min_image(ri[2] - xw[3 * j + 2], L[2]);
+      part.push_back(j);
+      part_r2.push_back(dx * dx + dy * dy + dz * dz);
     }
     part_start[q + 1] = (int) part.size();
   }
@@ -582,6 +568,6 @@ double FixGIBD::compute_vector(int n)
 double FixGIBD::memory_usage()
 {
   return nmax * (4.0 * sizeof(double) + 3.0 * sizeof(int64_t) + sizeof(int)) +
-         sizeof(int) * (own.size() + part.size() + cell_atom.size() + cell_of.size()) +
+         sizeof(int) * (own.size() + part.size()) +
          sizeof(double) * part_r2.size();
 }

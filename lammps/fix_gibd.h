@@ -45,7 +45,8 @@ class FixGIBD : public Fix {
   hcbd_params p;            // the model's parameters (dt and box from LAMMPS)
   hcbd_gibd_coef c;         // its pair coefficients (hcbd_gibd_coef_of)
   hcbd_noise_stream ns;     // pair and Brownian noise keyed by (seed, step, ids)
-  class NeighList *list;
+  class NeighList *list;    // half list: densities, Euler pairs, fric
+  class NeighList *glist;   // full list with ghosts: the exact sweep's partners
   double *inv_rho;          // 1 / rho of owned and ghost atoms
   int64_t *acc;             // fixed-point pair sums of owned and ghost atoms:
                             // nacc per atom (1: weights, 3: velocity changes)
@@ -61,10 +62,10 @@ class FixGIBD : public Fix {
   // this step's sweep on this rank: owners (local indices) by colour, row
   // and tag, each colour from col_start; each owner's partners (local
   // index, r^2) by tag from part_start
-  std::vector<int> own, col_start, part_start, part, cell_start, cell_atom, cell_of;
+  std::vector<int> own, col_start, part_start, part;
   std::vector<double> part_r2;
   std::vector<long long> key;
-  int ncell[3];
+  std::vector<std::pair<tagint, int>> cand_buf;
 };
 
 }    // namespace LAMMPS_NS
