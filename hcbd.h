@@ -790,7 +790,7 @@ double hcbd_gibd_sdt(const hcbd_gibd_coef *c, double r, double inv_rho_i, double
    (hcbd_noise_pair, i the lower id), u = v_i - v_j relaxes as
    u' = u e + sqrt(2 kT/m (1 - e^2)) z, e = exp(-2 sdt/m); v_i and v_j are
    updated in place by +-(m/2)(u' - u)/m.  The caller sweeps the pairs in
-   an order of its own (the world's: MODEL 13.1). */
+   an order of its own (the world's: MODEL 13.2). */
 void hcbd_gibd_pair_exact(const hcbd_gibd_coef *c, double kT, double sdt, const double z[3],
                           double vi[3], double vj[3]);
 

@@ -52,6 +52,14 @@ expect "xip tau" "$fixline xip 2 tau \${tau}/"
 expect "comm_modify vel yes" "/^comm_modify/d"
 expect "needs newton on" "s/^units/newton off\nunits/"
 expect "group must be all" "s/^fix  *g all gibd/group half id 1:10\nfix g half gibd/"
+expect "pair = bogus is not exact or euler" "$fixline pair bogus/"
+expect "brownian = x is not lm or euler" "$fixline brownian x/"
+expect "needs an atom map" "/^atom_modify/d"
+# the sweep's rows span x: two ranks along x are refused by name
+sed 's/^processors .*/processors 2 1 1/' "$in" > "$t/bad.in"
+out=$($MPI -np 2 "$lmp" -in "$t/bad.in" -var plugin "$plug" -var segments 1 -var steps 10 -log none 2>&1)
+if printf '%s' "$out" | grep -q "ERROR.*processors 1 \* \*"; then ok "bad input -> error names processors 1 * *"
+else bad "two ranks along x: $(printf '%s' "$out" | grep ERROR | head -n 1)"; fi
 expect "sigma = -1 is not a positive number" 's/${sigma} ${eps}/-1/' star
 expect "pair_style star takes one value" 's/pair_style star ${Rc}/pair_style star/' star
 expect "pair_coeff I J f sigma" 's/${f} ${sigma} ${eps}/${f}/' star
@@ -106,7 +114,7 @@ compare() {
 compare "exact sweep, ideal, 2016 density, Gaussian" 1 3e-3 1.3 0.8 0.9 2e-4 2016 gauss 0 1 1
 compare "exact sweep, stars (sigma 0.9, eps 1.2), 2014 density, uniform, 2 ranks" 2 5e-3 0.7 1.6 1.3 1e-4 2014 uniform 128 0.9 1.2
 compare "exact sweep, stars, 2016 density, Gaussian, 4 ranks" 4 4e-3 1.2 0.9 1.1 1e-4 2016 gauss 128 1 1
-compare "Euler pairs and Brownian steps, ideal, 2016 density, Gaussian, 2 ranks" 2 3e-3 1.3 0.8 0.9 2e-4 2016 gauss 0 1 1 euler euler
+compare "Euler pairs and Brownian steps, stars, 2016 density, Gaussian, 2 ranks" 2 3e-3 1.3 0.8 0.9 1e-4 2016 gauss 128 0.95 1.1 euler euler
 if [ -n "${HCBD_LAMMPS_QUICK:-}" ]; then # lammps/mutants.sh: the checks up to here
     echo "$pass passed, $fail failed"
     [ $fail -eq 0 ]; exit

@@ -16,7 +16,7 @@
 // Leimkuhler-Matthews sqrt(2 kT dt / xi) (zeta_i(t) + zeta_i(t + dt)) / 2
 // (brownian lm), as hcbd's HCBD_BROWNIAN_LM.
 //
-// The exact sweep's order is hcbd's (MODEL 13.1): rows of y-z cells at
+// The exact sweep's order is hcbd's (MODEL 13.2): rows of y-z cells at
 // least Rc wide (a multiple of 3 along each axis, or one), measured from
 // the atom of tag 1, spanning all x; a pair belongs to the row of its lower
 // tag; the nine colours (y row mod 3, z row mod 3) run in turn, owners by
@@ -365,7 +365,8 @@ void FixGIBD::sweep_plan()
     int a = (int) ((yy < 0 ? yy + L[1] : yy) * fy), b = (int) ((zz < 0 ? zz + L[2] : zz) * fz);
     if (a > ny - 1) a = ny - 1;
     if (b > nz - 1) b = nz - 1;
-    // the row's corner, and so the row, is this rank's when it lies here
+    // the row is this rank's when its corner lies here (any rule that gives each row
+    // to one rank within the ghosts' reach gives the same bits)
     double cy = o[0] + a / fy, cz = o[1] + b / fz;
     if (cy >= L[1]) cy -= L[1];
     if (cz >= L[2]) cz -= L[2];

@@ -61,7 +61,6 @@ exact_advection|fix_gibd.cpp|+ v[i][d] * dt;|+ 1.1 * v[i][d] * dt;
 lm_amplitude|fix_gibd.cpp|sdz = lm ? 0.5 * bd : bd|sdz = lm ? 0.55 * bd : bd
 lm_next_step|fix_gibd.cpp|hcbd_noise_particle(&ns, step + 1, id, z1);|hcbd_noise_particle(&ns, step + 2, id, z1);
 sweep_rows|fix_gibd.cpp|n[d] = k >= 3.0 ? 3 * (int)|n[d] = k >= 5.5 ? 3 * (int)
-sweep_row_corner|fix_gibd.cpp|double cy = o[0] + a / fy|double cy = o[0] + 1.1 * a / fy
 sweep_anchor|fix_gibd.cpp|const double yy = r[1] - o[0]|const double yy = r[1] - 1.1 * o[0]
 pair_exact_rate|hcbd.h|x = 2.0 * sdt * inv_m;|x = 2.2 * sdt * inv_m;
 pair_exact_noise|hcbd.h|sqrt(0.5 * kT * m * om|sqrt(0.55 * kT * m * om
