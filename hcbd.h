@@ -789,10 +789,13 @@ double hcbd_gibd_sdt(const hcbd_gibd_coef *c, double r, double inv_rho_i, double
    sweep makes it: with sdt = hcbd_gibd_sdt(...) and the pair's unit noise z
    (hcbd_noise_pair, i the lower id), u = v_i - v_j relaxes as
    u' = u e + sqrt(2 kT/m (1 - e^2)) z, e = exp(-2 sdt/m); v_i and v_j are
-   updated in place by +-(m/2)(u' - u)/m.  The caller sweeps the pairs in
-   an order of its own (the world's: MODEL 13.2). */
+   updated in place by +-(m/2)(u' - u)/m.  dvx: under Lees-Edwards, the x
+   velocity of the image of j the pair sees less j's own (k gdot L[1] for
+   the image k boxes up), so that u_x = v_ix - v_jx - dvx; 0 otherwise.
+   The caller sweeps the pairs in an order of its own (the world's: MODEL
+   13.2). */
 void hcbd_gibd_pair_exact(const hcbd_gibd_coef *c, double kT, double sdt, const double z[3],
-                          double vi[3], double vj[3]);
+                          double dvx, double vi[3], double vj[3]);
 
 /* >>kernels (exported for tests and users) --------------------------------*/
 double hcbd_wendland(double r, double Rc);
@@ -1954,14 +1957,14 @@ double hcbd_gibd_sdt(const hcbd_gibd_coef *c, double r, double inv_rho_i, double
 }
 
 void hcbd_gibd_pair_exact(const hcbd_gibd_coef *c, double kT, double sdt, const double z[3],
-                          double vi[3], double vj[3])
+                          double dvx, double vi[3], double vj[3])
 {
     const double m = c->m, inv_m = 1.0 / m, x = 2.0 * sdt * inv_m;
     const double om = x < 0.125 ? hcbd__one_minus_exp_series(x) : -expm1(-x);
     const double b = sqrt(0.5 * kT * m * om * (2.0 - om)), h = 0.5 * m * om;
     int d;
     for (d = 0; d < 3; ++d) {
-        const double P = -h * (vi[d] - vj[d]) + b * z[d];
+        const double P = -h * (vi[d] - vj[d] - (d ? 0.0 : dvx)) + b * z[d];
         vi[d] += P * inv_m;
         vj[d] -= P * inv_m;
     }

@@ -80,17 +80,20 @@ agree() {
 }
 compare() {
     name=$1 np=$2 tau=$3 xi=$4 xip=$5 kT=$6 dt=$7 norm=$8 noise=$9 f=${10} sigma=${11} eps=${12} seed=11
-    pair=${13:-exact} brownian=${14:-lm}
+    pair=${13:-exact} brownian=${14:-lm} gdot=${15:-0}
     if ! $MPI -np "$np" "$lmp" -in "$root/lammps/in.gibd_compare" -var plugin "$plug" -var tau "$tau" -var xi "$xi" \
         -var xip "$xip" -var kT "$kT" -var dt "$dt" -var norm "$norm" -var noise "$noise" -var f "$f" \
-        -var pair "$pair" -var brownian "$brownian" \
+        -var pair "$pair" -var brownian "$brownian" -var gdot "$gdot" \
         -var sigma "$sigma" -var eps "$eps" -var seed $seed -var start "$t/c0.txt" -var end "$t/c1.txt" \
         -var pe "$t/pe.txt" -var fric "$t/fr.txt" -log none -screen none > /dev/null 2>&1; then
         bad "$name: LAMMPS failed"; return
     fi
     if ! "$t/gibd_ref" "$t/c0.txt" "$t/cr.txt" 20 "$dt" "$tau" "$xi" "$xip" "$kT" 2.5 0.24 "$norm" $seed \
-        "$noise" "$f" "$sigma" "$eps" 2.5 "$pair" "$brownian" > "$t/ref.txt"; then bad "$name: gibd_ref failed"; return; fi
+        "$noise" "$f" "$sigma" "$eps" 2.5 "$pair" "$brownian" "$gdot" > "$t/ref.txt"; then bad "$name: gibd_ref failed"; return; fi
     Lc=$(awk 'NR == 6 { printf "%.17g", $2 - $1 }' "$t/c0.txt")
+    # sheared: LAMMPS's atoms in hcbd's Lees-Edwards frame
+    awk -v vle="$(awk -v g="$gdot" -v L="$Lc" 'BEGIN { printf "%.17g", g * L }')" -f "$root/lammps/le_canon.awk" \
+        "$t/c1.txt" > "$t/c1c.txt" && mv "$t/c1c.txt" "$t/c1.txt"
     vth=$(awk -v kT="$kT" -v m="$(awk -v a="$xip" -v b="$tau" 'BEGIN { print a * b }')" 'BEGIN { print sqrt(kT / m) }')
     read -r dx dv n < <(awk -v L="$Lc" -f "$root/lammps/maxdiff.awk" "$t/c1.txt" "$t/cr.txt")
     read -r mx mv _ < <(awk -v L="$Lc" -f "$root/lammps/maxdiff.awk" "$t/c0.txt" "$t/c1.txt")
@@ -114,6 +117,9 @@ compare() {
 compare "exact sweep, ideal, 2016 density, Gaussian" 1 3e-3 1.3 0.8 0.9 2e-4 2016 gauss 0 1 1
 compare "exact sweep, stars (sigma 0.9, eps 1.2), 2014 density, uniform, 2 ranks" 2 5e-3 0.7 1.6 1.3 1e-4 2014 uniform 128 0.9 1.2
 compare "exact sweep, stars, 2016 density, Gaussian, 4 ranks" 4 4e-3 1.2 0.9 1.1 1e-4 2016 gauss 128 1 1
+compare "exact sweep, sheared (gdot = 20), ideal, 2016 density, Gaussian, 2 ranks" 2 3e-3 1.3 0.8 0.9 2e-4 2016 gauss 0 1 1 exact lm 20
+compare "exact sweep, sheared (gdot = 15), stars, 2014 density, uniform, 4 ranks" 4 5e-3 0.7 1.6 1.3 1e-4 2014 uniform 128 0.9 1.2 exact lm 15
+compare "Euler pairs, sheared (gdot = 20), ideal, 2016 density, Gaussian, 2 ranks" 2 3e-3 1.3 0.8 0.9 2e-4 2016 gauss 0 1 1 euler euler 20
 compare "Euler pairs and Brownian steps, stars, 2016 density, Gaussian, 2 ranks" 2 3e-3 1.3 0.8 0.9 1e-4 2016 gauss 128 0.95 1.1 euler euler
 if [ -n "${HCBD_LAMMPS_QUICK:-}" ]; then # lammps/mutants.sh: the checks up to here
     echo "$pass passed, $fail failed"

@@ -77,9 +77,10 @@ static double number(Error *error, const char *key, const char *v)
 }
 
 FixGIBD::FixGIBD(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), list(nullptr), glist(nullptr), inv_rho(nullptr), acc(nullptr), xw(nullptr), touched(nullptr),
+    Fix(lmp, narg, arg), list(nullptr), glist(nullptr), inv_rho(nullptr), acc(nullptr), xw(nullptr), vc(nullptr),
+    touched(nullptr), kw(nullptr),
     nmax(0), nacc(1), cmode(FWD_RHO), wscale(0), vscale(0), fric_every(0), fric{0, 0, 0}, exact(1),
-    lm(1), ny(1), nz(1)
+    lm(1), ny(1), nz(1), le_s(0), le_v(0)
 {
   p = hcbd_params_default();
   p.potential = HCBD_POT_IDEAL; // the conservative forces are LAMMPS's pair style
@@ -130,7 +131,7 @@ FixGIBD::FixGIBD(LAMMPS *lmp, int narg, char **arg) :
   // the fixed-point grid of the pair sums is scaled by the thermal speed
   if (!(p.kT > 0)) error->all(FLERR, "fix gibd: kT = {} must be positive (no deterministic GI-BD here)", p.kT);
   time_integrate = 1;
-  comm_forward = 3;
+  comm_forward = 6;
   comm_reverse = 4;
   if (fric_every) {
     vector_flag = 1;
@@ -145,7 +146,9 @@ FixGIBD::~FixGIBD()
   memory->destroy(inv_rho);
   memory->destroy(acc);
   memory->destroy(xw);
+  memory->destroy(vc);
   memory->destroy(touched);
+  memory->destroy(kw);
 }
 
 int FixGIBD::setmask()
@@ -250,12 +253,16 @@ void FixGIBD::grow()
   memory->destroy(inv_rho);
   memory->destroy(acc);
   memory->destroy(xw);
+  memory->destroy(vc);
   memory->destroy(touched);
+  memory->destroy(kw);
   nmax = atom->nmax;
   memory->create(inv_rho, nmax, "gibd:inv_rho");
   memory->create(acc, 3 * nmax, "gibd:acc");
   memory->create(xw, 3 * nmax, "gibd:xw");
+  memory->create(vc, 3 * nmax, "gibd:vc");
   memory->create(touched, nmax, "gibd:touched");
+  memory->create(kw, nmax, "gibd:kw");
 }
 
 // 1 / rho of owned and ghost atoms from the positions of now
@@ -298,6 +305,16 @@ void FixGIBD::friction_averages()
 // the vector at the run's first step, when that is one of its steps
 void FixGIBD::setup(int)
 {
+  // Lees-Edwards is a triclinic box whose xy tilt alone may change, with
+  // the atoms' x velocity jumping as they cross y (fix deform ... remap v)
+  if (domain->triclinic && (domain->xz != 0.0 || domain->yz != 0.0))
+    error->all(FLERR, "fix gibd: a triclinic box may tilt in xy only (Lees-Edwards), not xz = {}, yz = {}",
+               domain->xz, domain->yz);
+  for (int d = 0; d < 5; ++d)
+    if (domain->h_rate[d] != 0.0)
+      error->all(FLERR, "fix gibd: the box may only shear (fix deform xy ...), not change its edges or xz, yz");
+  if (domain->h_rate[5] != 0.0 && !domain->deform_vremap)
+    error->all(FLERR, "fix gibd: a shearing box needs fix deform ... remap v (the velocity jump across y)");
   if (!fric_every || update->ntimestep % fric_every) return;
   densities();
   friction_averages();
@@ -330,10 +347,29 @@ void FixGIBD::euler_pairs(int64_t step)
   comm->reverse_comm_fix(this, 3);
 }
 
-// minimum image of a difference of canonical coordinates (|d| < L)
+// minimum image of a difference of canonical coordinates (|d| < 1.5 L)
 static inline double min_image(double d, double L)
 {
   return d > 0.5 * L ? d - L : (d < -0.5 * L ? d + L : d);
+}
+
+// r^2 between canonical positions ri and rj by the nearest image of j,
+// under Lees-Edwards the image k boxes up sitting k le_s further along x;
+// returns k
+int FixGIBD::le_delta(const double *ri, const double *rj, double *r2) const
+{
+  double dy = ri[1] - rj[1];
+  int k = 0;
+  if (dy > 0.5 * p.L[1]) {
+    dy -= p.L[1];
+    k = 1;
+  } else if (dy < -0.5 * p.L[1]) {
+    dy += p.L[1];
+    k = -1;
+  }
+  const double dx = min_image(ri[0] - rj[0] - k * le_s, p.L[0]), dz = min_image(ri[2] - rj[2], p.L[2]);
+  *r2 = dx * dx + dy * dy + dz * dz;
+  return k;
 }
 
 // The exact sweep's plan for this step: the rows, this rank's owners by
@@ -354,8 +390,11 @@ void FixGIBD::sweep_plan()
   }
   MPI_Allreduce(a0, o, 2, MPI_DOUBLE, MPI_MAX, world);
   const double fy = ny / L[1], fz = nz / L[2];
-  const double lo[2] = {domain->sublo[1] - domain->boxlo[1], domain->sublo[2] - domain->boxlo[2]};
-  const double hi[2] = {domain->subhi[1] - domain->boxlo[1], domain->subhi[2] - domain->boxlo[2]};
+  const int tri = domain->triclinic;
+  const double lo[2] = {tri ? domain->sublo_lamda[1] * L[1] : domain->sublo[1] - domain->boxlo[1],
+                        tri ? domain->sublo_lamda[2] * L[2] : domain->sublo[2] - domain->boxlo[2]};
+  const double hi[2] = {tri ? domain->subhi_lamda[1] * L[1] : domain->subhi[1] - domain->boxlo[1],
+                        tri ? domain->subhi_lamda[2] * L[2] : domain->subhi[2] - domain->boxlo[2]};
   key.clear();
   for (int k = 0; k < nall; ++k) {
     if (atom->map(tag[k]) != k) continue; // another copy of the atom takes part
@@ -388,28 +427,33 @@ void FixGIBD::sweep_plan()
   part_start.assign(own.size() + 1, 0);
   part.clear();
   part_r2.clear();
+  part_k.clear();
   std::vector<std::pair<tagint, int>> &cand = cand_buf;
   for (size_t q = 0; q < own.size(); ++q) {
     const int i = own[q];
     const double *ri = xw + 3 * i;
-    const int *jlist = glist->firstneigh[i];
     cand.clear();
-    for (int jj = 0; jj < glist->numneigh[i]; ++jj) {
-      const int j0 = jlist[jj] & NEIGHMASK;
-      if (tag[j0] <= tag[i]) continue;
-      const int j = atom->map(tag[j0]);
-      const double dx = min_image(ri[0] - xw[3 * j], L[0]), dy = min_image(ri[1] - xw[3 * j + 1], L[1]),
-                   dz = min_image(ri[2] - xw[3 * j + 2], L[2]);
-      if (dx * dx + dy * dy + dz * dz < Rc2) cand.emplace_back(tag[j], j);
+    // every copy's neighbours: a copy near the edge of the ghosts has an
+    // incomplete list, but the atom has a copy whose list is whole
+    for (int ic = i; ic >= 0; ic = atom->sametag[ic]) {
+      const int *jlist = glist->firstneigh[ic];
+      for (int jj = 0; jj < glist->numneigh[ic]; ++jj) {
+        const int j0 = jlist[jj] & NEIGHMASK;
+        if (tag[j0] <= tag[i]) continue;
+        const int j = atom->map(tag[j0]);
+        double r2;
+        le_delta(ri, xw + 3 * j, &r2);
+        if (r2 < Rc2) cand.emplace_back(tag[j], j);
+      }
     }
     std::sort(cand.begin(), cand.end());
     for (size_t t = 0; t < cand.size(); ++t) {
       const int j = cand[t].second;
-      if (t && cand[t].first == cand[t - 1].first) continue; // two images of one atom
-      const double dx = min_image(ri[0] - xw[3 * j], L[0]), dy = min_image(ri[1] - xw[3 * j + 1], L[1]),
-                   dz = min_image(ri[2] - xw[3 * j + 2], L[2]);
+      if (t && cand[t].first == cand[t - 1].first) continue; // found from two copies
+      double r2;
+      part_k.push_back((signed char) le_delta(ri, xw + 3 * j, &r2));
       part.push_back(j);
-      part_r2.push_back(dx * dx + dy * dy + dz * dz);
+      part_r2.push_back(r2);
     }
     part_start[q + 1] = (int) part.size();
   }
@@ -423,17 +467,33 @@ void FixGIBD::sweep(int64_t step)
   const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
   double **x = atom->x, **v = atom->v;
   const tagint *tag = atom->tag;
-  for (int i = 0; i < nlocal; ++i)
-    for (int d = 0; d < 3; ++d) {
-      // the owner wraps, so that every copy carries the same bits
-      double u = x[i][d] - domain->boxlo[d];
-      if (u < 0.0) u += p.L[d];
-      else if (u >= p.L[d]) u -= p.L[d];
-      if (!(u >= 0.0 && u < p.L[d])) u = 0.0;
-      xw[3 * i + d] = u;
+  // Lees-Edwards: the offset of the image above (the tilt, taken into
+  // [-Lx/2, Lx/2]) and the velocity jump across y (fix deform remap v)
+  le_s = domain->triclinic ? domain->xy - p.L[0] * std::floor(domain->xy / p.L[0] + 0.5) : 0.0;
+  le_v = domain->deform_vremap ? domain->h_rate[5] : 0.0;
+  for (int i = 0; i < nlocal; ++i) {
+    // the owner wraps, so that every copy carries the same bits; an atom
+    // past y's edge is its image inside, moved along x and slowed by the
+    // jump (what LAMMPS's remap does at the next neighbour-list build)
+    double u[3];
+    for (int d = 0; d < 3; ++d) u[d] = x[i][d] - domain->boxlo[d];
+    const int k = u[1] < 0.0 ? -1 : (u[1] >= p.L[1] ? 1 : 0);
+    kw[i] = k;
+    if (k) {
+      u[1] -= k * p.L[1];
+      u[0] -= k * le_s;
     }
+    for (int d = 0; d < 3; ++d) {
+      while (u[d] < 0.0) u[d] += p.L[d];
+      while (u[d] >= p.L[d]) u[d] -= p.L[d];
+      if (!(u[d] >= 0.0 && u[d] < p.L[d])) u[d] = 0.0;
+      xw[3 * i + d] = u[d];
+      vc[3 * i + d] = v[i][d];
+    }
+    if (k) vc[3 * i] -= k * le_v;
+  }
   cmode = FWD_XW;
-  comm->forward_comm_fix(this, 3);
+  comm->forward_comm_fix(this, 6);
   sweep_plan();
   for (int col = 0; col < 9; ++col) {
     std::memset(touched, 0, sizeof(int) * nall);
@@ -445,7 +505,7 @@ void FixGIBD::sweep(int64_t step)
         const double sdt = hcbd_gibd_sdt(&c, std::sqrt(part_r2[t]), inv_rho[i], inv_rho[j]);
         double z[3];
         hcbd_noise_pair(&ns, step, ti, (int32_t) (tag[j] - 1), z);
-        hcbd_gibd_pair_exact(&c, p.kT, sdt, z, v[i], v[j]);
+        hcbd_gibd_pair_exact(&c, p.kT, sdt, z, part_k[t] * le_v, vc + 3 * i, vc + 3 * j);
         touched[j] = 1;
       }
       touched[i] = 1;
@@ -457,6 +517,10 @@ void FixGIBD::sweep(int64_t step)
       cmode = FWD_V;
       comm->forward_comm_fix(this, 3);
     }
+  }
+  for (int i = 0; i < nlocal; ++i) {
+    for (int d = 0; d < 3; ++d) v[i][d] = vc[3 * i + d];
+    if (kw[i]) v[i][0] += kw[i] * le_v;
   }
 }
 
@@ -503,10 +567,16 @@ int FixGIBD::pack_forward_comm(int n, int *slist, double *buf, int, int *)
     for (int k = 0; k < n; ++k) buf[k] = inv_rho[slist[k]];
     return n;
   }
-  const double *src = cmode == FWD_XW ? xw : nullptr;
-  double **v = atom->v;
+  if (cmode == FWD_XW) {
+    for (int k = 0; k < n; ++k)
+      for (int d = 0; d < 3; ++d) {
+        buf[6 * k + d] = xw[3 * slist[k] + d];
+        buf[6 * k + 3 + d] = vc[3 * slist[k] + d];
+      }
+    return 6 * n;
+  }
   for (int k = 0; k < n; ++k)
-    for (int d = 0; d < 3; ++d) buf[3 * k + d] = src ? src[3 * slist[k] + d] : v[slist[k]][d];
+    for (int d = 0; d < 3; ++d) buf[3 * k + d] = vc[3 * slist[k] + d];
   return 3 * n;
 }
 
@@ -516,11 +586,14 @@ void FixGIBD::unpack_forward_comm(int n, int first, double *buf)
     for (int k = 0; k < n; ++k) inv_rho[first + k] = buf[k];
     return;
   }
-  double **v = atom->v;
   for (int k = 0; k < n; ++k)
     for (int d = 0; d < 3; ++d) {
-      if (cmode == FWD_XW) xw[3 * (first + k) + d] = buf[3 * k + d];
-      else v[first + k][d] = buf[3 * k + d];
+      if (cmode == FWD_XW) {
+        xw[3 * (first + k) + d] = buf[6 * k + d];
+        vc[3 * (first + k) + d] = buf[6 * k + 3 + d];
+      } else {
+        vc[3 * (first + k) + d] = buf[3 * k + d];
+      }
     }
 }
 
@@ -530,10 +603,9 @@ void FixGIBD::unpack_forward_comm(int n, int first, double *buf)
 int FixGIBD::pack_reverse_comm(int n, int first, double *buf)
 {
   if (cmode == REV_V) {
-    double **v = atom->v;
     for (int k = 0; k < n; ++k) {
       buf[4 * k] = touched[first + k];
-      for (int d = 0; d < 3; ++d) buf[4 * k + 1 + d] = v[first + k][d];
+      for (int d = 0; d < 3; ++d) buf[4 * k + 1 + d] = vc[3 * (first + k) + d];
     }
     return 4 * n;
   }
@@ -544,12 +616,11 @@ int FixGIBD::pack_reverse_comm(int n, int first, double *buf)
 void FixGIBD::unpack_reverse_comm(int n, int *slist, double *buf)
 {
   if (cmode == REV_V) {
-    double **v = atom->v;
     for (int k = 0; k < n; ++k)
       if (buf[4 * k] != 0.0) {
         const int i = slist[k];
         touched[i] = 1;
-        for (int d = 0; d < 3; ++d) v[i][d] = buf[4 * k + 1 + d];
+        for (int d = 0; d < 3; ++d) vc[3 * i + d] = buf[4 * k + 1 + d];
       }
     return;
   }
@@ -568,7 +639,7 @@ double FixGIBD::compute_vector(int n)
 
 double FixGIBD::memory_usage()
 {
-  return nmax * (4.0 * sizeof(double) + 3.0 * sizeof(int64_t) + sizeof(int)) +
+  return nmax * (7.0 * sizeof(double) + 3.0 * sizeof(int64_t) + 2.0 * sizeof(int)) +
          sizeof(int) * (own.size() + part.size()) +
          sizeof(double) * part_r2.size();
 }

@@ -41,7 +41,7 @@ class FixGIBD : public Fix {
   void euler_pairs(int64_t step);
   void sweep_plan();
   void sweep(int64_t step);
-  void check_sweep_ghosts();
+  int le_delta(const double *ri, const double *rj, double *r2) const;
   hcbd_params p;            // the model's parameters (dt and box from LAMMPS)
   hcbd_gibd_coef c;         // its pair coefficients (hcbd_gibd_coef_of)
   hcbd_noise_stream ns;     // pair and Brownian noise keyed by (seed, step, ids)
@@ -51,7 +51,9 @@ class FixGIBD : public Fix {
   int64_t *acc;             // fixed-point pair sums of owned and ghost atoms:
                             // nacc per atom (1: weights, 3: velocity changes)
   double *xw;               // canonical positions in [0, L), the owners' bits
+  double *vc;               // the sweep's velocities, in the frame of xw
   int *touched;             // atoms whose velocity this colour of the sweep set
+  int *kw;                  // y-wraps of an owned atom's canonical position
   int nmax, nacc, cmode;    // cmode: what the next communication carries
   double wscale, vscale;    // fixed-point scales of the density and velocity sums
   int fric_every;           // keyword fric: friction averages every this many steps
@@ -59,11 +61,13 @@ class FixGIBD : public Fix {
   int exact;                // pair exact (default): hcbd's exact pair sweep; 0: Euler
   int lm;                   // brownian lm (default): Leimkuhler-Matthews; 0: Euler
   int ny, nz;               // the sweep's rows along y and z, as hcbd's world's
+  double le_s, le_v;        // Lees-Edwards: offset of the image above, velocity jump
   // this step's sweep on this rank: owners (local indices) by colour, row
   // and tag, each colour from col_start; each owner's partners (local
   // index, r^2) by tag from part_start
   std::vector<int> own, col_start, part_start, part;
   std::vector<double> part_r2;
+  std::vector<signed char> part_k; // the partner's image: k boxes up
   std::vector<long long> key;
   std::vector<std::pair<tagint, int>> cand_buf;
 };

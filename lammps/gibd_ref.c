@@ -1,14 +1,15 @@
 /* gibd_ref: hcbd's own GI-BD world advanced from the atoms of a LAMMPS
    dump, for make test-lammps to compare fix gibd with, atom by atom.  Usage:
      gibd_ref IN OUT steps dt tau xi xip kT Rc density norm seed noise f sigma eps rcut
-              pair brownian
+              pair brownian gdot
    IN: write_dump custom id x y z vx vy vz, sorted by id (tags 1..n); OUT:
    "id x y z vx vy vz" after `steps` steps, wrapped into the box; stdout:
    the pair energy and hcbd_friction_average (nk = 1) of IN, then that of
    the configuration the last step starts from (fix gibd's vector, fric).  f = 0:
    ideal carriers; otherwise the star potential (2014 eq. 28, from the
    formula, not the force table).  noise: gauss or uniform; pair: exact
-   (HCBD_PAIR_SHARDLOW, the world's sweep) or euler; brownian: lm or euler. */
+   (HCBD_PAIR_SHARDLOW, the world's sweep) or euler; brownian: lm or euler;
+   gdot: the Lees-Edwards shear rate from IN on (offset 0 there). */
 #define HCBD_IMPLEMENTATION
 #include "hcbd.h"
 
@@ -25,9 +26,9 @@ int main(int argc, char **argv)
     double lo[3], hi[3], fr[3], *x, *v;
     int n = 0, i, d, steps;
     FILE *in, *out;
-    if (argc != 20) {
+    if (argc != 21) {
         fprintf(stderr, "usage: gibd_ref IN OUT steps dt tau xi xip kT Rc density norm seed noise f sigma eps "
-                        "rcut pair brownian\n");
+                        "rcut pair brownian gdot\n");
         return 2;
     }
     in = fopen(argv[1], "r");
@@ -70,6 +71,7 @@ int main(int argc, char **argv)
     p->force_table = 0;
     p->pair_integrator = strcmp(argv[18], "euler") ? HCBD_PAIR_SHARDLOW : HCBD_PAIR_EULER;
     p->brownian = strcmp(argv[19], "euler") ? HCBD_BROWNIAN_LM : HCBD_BROWNIAN_EULER;
+    p->gdot = atof(argv[20]);
     if (hcbd_world_create(&w, &def) != HCBD_OK || hcbd_world_set_positions(&w, n, x) != HCBD_OK ||
         hcbd_world_set_velocities(&w, v) != HCBD_OK) {
         fprintf(stderr, "gibd_ref: %s\n", w.err.msg);

@@ -308,42 +308,45 @@ void test_gibd_coef_exported(void)
 /* hcbd_gibd_pair_exact (what lammps/ calls for the exact sweep) against the
    written-out Ornstein-Uhlenbeck step of u = v_i - v_j and against the
    world's own sweep: two particles within Rc, one step, no force, so the
-   world's velocities after the step are its one pair's update.  A 10 %
-   error in the rate, the noise or the share moves them by far more than
-   the 1e-12 allowed. */
+   world's velocities after the step are its one pair's update; the third
+   case pairs them across the sheared boundary (Lees-Edwards, the partner's
+   image one box down: dvx = -gdot L).  A 10 % error in the rate, the noise,
+   the share or the shift moves them by far more than the 1e-12 allowed. */
 void test_gibd_pair_exact_exported(void)
 {
     int cs;
     /* rates 2 sdt/m of 0.09 and 0.35: the series of 1 - e and expm1 */
-    for (cs = 0; cs < 2; ++cs) {
+    for (cs = 0; cs < 3; ++cs) {
         hcbd_world_def d = hcbd_world_def_default();
         hcbd_world w;
         hcbd_gibd_coef c;
-        const double xyz[6] = {1.0, 1.0, 1.0, 2.3, 1.9, 0.4};
+        const double L = cs == 2 ? 10.0 : 8.0, gdot = cs == 2 ? 5.0 : 0.0;
+        const double xyz[6] = {1.0, cs == 2 ? 0.4 : 1.0, 1.0, 2.3, cs == 2 ? 9.2 : 1.9, 0.4};
         double v[6] = {0.3, -1.2, 0.5, -0.7, 0.1, 2.0}, out[6], z[3], vi[3], vj[3], r, rho, sdt;
         int k;
         d.capacity = 2;
-        d.params.L[0] = d.params.L[1] = d.params.L[2] = 8.0;
+        d.params.L[0] = d.params.L[1] = d.params.L[2] = L;
+        d.params.gdot = gdot;
         d.params.potential = HCBD_POT_IDEAL;
         d.params.kT = 1.3;
         d.params.xip = 1.7;
-        d.params.tau = cs ? 5e-5 : 2e-4;
+        d.params.tau = cs == 1 ? 5e-5 : 2e-4;
         if (!make_world(&w, &d)) return;
         CHECK(hcbd_world_set_positions(&w, 2, xyz) == HCBD_OK && hcbd_world_set_velocities(&w, v) == HCBD_OK,
               "set-up: %s", w.err.msg);
         CHECK(hcbd_gibd_coef_of(&d.params, &c, NULL, 0) == HCBD_OK, "coefficients");
-        r = sqrt(1.3 * 1.3 + 0.9 * 0.9 + 0.6 * 0.6);
+        r = sqrt(1.3 * 1.3 + (cs == 2 ? 1.2 * 1.2 : 0.9 * 0.9) + 0.6 * 0.6);
         rho = hcbd_gibd_density(&c, hcbd_gibd_weight(&c, r));
         sdt = hcbd_gibd_sdt(&c, r, 1 / rho, 1 / rho);
-        CHECK(cs ? 2 * sdt / c.m > 0.125 : 2 * sdt / c.m < 0.125, "rate %g", 2 * sdt / c.m);
+        CHECK(cs == 1 ? 2 * sdt / c.m > 0.125 : 2 * sdt / c.m < 0.125, "rate %g", 2 * sdt / c.m);
         hcbd_pair_normals(&w, 0, 0, 1, z);
         for (k = 0; k < 3; ++k) {
             vi[k] = v[k];
             vj[k] = v[3 + k];
         }
-        hcbd_gibd_pair_exact(&c, 1.3, sdt, z, vi, vj);
+        hcbd_gibd_pair_exact(&c, 1.3, sdt, z, -gdot * L, vi, vj);
         for (k = 0; k < 3; ++k) {
-            const double m = c.m, e = exp(-2 * sdt / m), u = v[k] - v[3 + k];
+            const double m = c.m, e = exp(-2 * sdt / m), u = v[k] - v[3 + k] + (k ? 0 : gdot * L);
             const double u1 = u * e + sqrt(2 * 1.3 / m * (1 - e * e)) * z[k], P = 0.5 * m * (u1 - u);
             CHECK(fabs(vi[k] - (v[k] + P / m)) < 1e-12 && fabs(vj[k] - (v[3 + k] - P / m)) < 1e-12,
                   "component %d: %.15g %.15g, the formula's %.15g %.15g", k, vi[k], vj[k], v[k] + P / m,
