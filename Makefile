@@ -120,7 +120,7 @@ test:
 lammps:
 	lammps/build.sh
 
-test-lammps: lammps $(B)/gibd_bulk
+test-lammps: lammps $(B)/gibd_bulk $(B)/shear_flow
 	lammps/check.sh
 
 # make mutants-lammps: every injected error of the plugin is caught by the

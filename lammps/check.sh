@@ -85,7 +85,7 @@ compare() {
         -var xip "$xip" -var kT "$kT" -var dt "$dt" -var norm "$norm" -var noise "$noise" -var f "$f" \
         -var pair "$pair" -var brownian "$brownian" -var gdot "$gdot" \
         -var sigma "$sigma" -var eps "$eps" -var seed $seed -var start "$t/c0.txt" -var end "$t/c1.txt" \
-        -var pe "$t/pe.txt" -var fric "$t/fr.txt" -log none -screen none > /dev/null 2>&1; then
+        -var pe "$t/pe.txt" -var fric "$t/fr.txt" -var stressf "$t/st.txt" -log none -screen none > /dev/null 2>&1; then
         bad "$name: LAMMPS failed"; return
     fi
     if ! "$t/gibd_ref" "$t/c0.txt" "$t/cr.txt" 20 "$dt" "$tau" "$xi" "$xip" "$kT" 2.5 0.24 "$norm" $seed \
@@ -109,6 +109,14 @@ compare() {
     if agree "$fr0" "$rfr0" 1e-10 && agree "$fr1" "$rfr1" 1e-10; then
         ok "$name: fric's friction averages at the start and the end = hcbd_friction_average ($fr1)"
     else bad "$name: fric's friction averages $fr0 / $fr1, hcbd's $rfr0 / $rfr1"; fi
+    # the shear stress of the 20 steps: the background exchanges (and, under
+    # shear, the carriers crossing y) as hcbd_stress_read's
+    read -r s1 s2 < "$t/st.txt"; read -r rs1 rs2 < <(sed -n 3p "$t/ref.txt")
+    if awk -v a="$s1" -v b="$s2" -v ra="$rs1" -v rb="$rs2" -v g="$gdot" 'BEGIN {
+        d1 = a - ra; d2 = b - rb; if (d1 < 0) d1 = -d1; if (d2 < 0) d2 = -d2; s = ra < 0 ? -ra : ra
+        exit !(ra != 0 && d1 <= 1e-9 * s && d2 <= 1e-9 * s + 1e-12 && (g == 0 || rb != 0)) }'; then
+        ok "$name: the shear stress of the steps = hcbd_stress_read's ($s1 $s2)"
+    else bad "$name: shear stress $s1 $s2, hcbd's $rs1 $rs2"; fi
     if [ "$f" != 0 ]; then
         if agree "$pe0" "$rpe" 1e-12; then ok "$name: pair_style star energy = hcbd_potential_energy ($rpe)"
         else bad "$name: pair_style star energy $pe0, hcbd's $rpe"; fi
@@ -257,6 +265,34 @@ dmax=$(awk -v a="$dx" -v b="$dv" 'BEGIN { print (a > b ? a : b) }')
 if [ "$n" = 500 ] && awk -v d="$dmax" 'BEGIN { exit !(d < 1e-6) }'; then
     ok "500 + 500 steps through a restart file (2 ranks, then 1) = 1000 steps within $dmax"
 else bad "a restart does not continue the run: largest difference $dmax"; fi
+
+# Lees-Edwards: 1, 2 and 4 ranks end in the same bits after 500 sheared
+# steps from one restart file of lammps/in.gibd_shear; on 2 ranks the shear
+# viscosity (background exchanges and carriers crossing y, fix gibd's
+# stress yes) equals hcbd's shear_flow at the same parameters within four
+# combined block errors (ideal carriers, n# = 0.24, N = 500, xi' = 1, tau =
+# 3.6e-3, gdot = 20, 16000 steps after 4000)
+shear=$root/lammps/in.gibd_shear
+"$lmp" -in "$shear" -var plugin "$plug" -var seed 7 -var warm 200 -var blocks 1 -var steps 100 -var save "$t/rs0" \
+    -log none -screen none > /dev/null 2>&1
+for np in 1 2 4; do
+    $MPI -np $np "$lmp" -in "$cont" -var plugin "$plug" -var seed 7 -var restart "$t/rs0" -var steps 500 \
+        -var gdot 20 -var dump "$t/s$np.txt" -log none -screen none > /dev/null 2>&1
+done
+if [ -s "$t/s1.txt" ] && cmp -s "$t/s1.txt" "$t/s2.txt" && cmp -s "$t/s1.txt" "$t/s4.txt"; then
+    ok "sheared, 1, 2 and 4 ranks: the same atoms bit for bit after 500 steps"
+else bad "sheared, 1, 2 and 4 ranks: the atoms differ after 500 steps"; fi
+"$root/build/shear_flow" potential=ideal gdot=20 xip=1 N=500 steps=20000 threads=2 out="$t/sf" > "$t/sf.txt" 2>/dev/null
+hE=$(awk -F= '$1 == "eta_total_measured" { print $2 }' "$t/sf.txt")
+heE=$(awk -F= '$1 == "eta_total_err" { print $2 }' "$t/sf.txt")
+if $MPI -np 2 "$lmp" -in "$shear" -var plugin "$plug" -var seed 3 -var out "$t/eta.txt" -log "$t/shear.log" \
+    -screen none > /dev/null 2>&1; then
+    read -r E eE < <(awk -v g=20 '!/^#/ { e[++n] = ($2 + $3) / g } END { for (k = 1; k <= n; ++k) s += e[k]; s /= n
+        for (k = 1; k <= n; ++k) v += (e[k] - s) ^ 2; printf "%.6g %.3g\n", s, sqrt(v / (n * (n - 1))) }' "$t/eta.txt")
+    echo "    sheared: viscosity fix gibd $E +- $eE, hcbd's shear_flow $hE +- $heE"
+    if within "$E" "$eE" "$hE" "$heE"; then ok "sheared, 2 ranks: the viscosity equals hcbd's shear_flow"
+    else bad "sheared, 2 ranks: viscosity $E +- $eE, shear_flow's $hE +- $heE"; fi
+else bad "sheared, 2 ranks: LAMMPS failed: $(grep ERROR "$t/shear.log" | head -n 1)"; fi
 
 echo "$pass passed, $fail failed"
 [ $fail -eq 0 ]

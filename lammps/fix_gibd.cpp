@@ -80,7 +80,7 @@ FixGIBD::FixGIBD(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), list(nullptr), glist(nullptr), inv_rho(nullptr), acc(nullptr), xw(nullptr), vc(nullptr),
     touched(nullptr), kw(nullptr),
     nmax(0), nacc(1), cmode(FWD_RHO), wscale(0), vscale(0), fric_every(0), fric{0, 0, 0}, exact(1),
-    lm(1), ny(1), nz(1), le_s(0), le_v(0)
+    lm(1), ny(1), nz(1), le_s(0), le_v(0), stress(0), sbg(0), scr(0), sfl{0, 0}
 {
   p = hcbd_params_default();
   p.potential = HCBD_POT_IDEAL; // the conservative forces are LAMMPS's pair style
@@ -115,6 +115,10 @@ FixGIBD::FixGIBD(LAMMPS *lmp, int narg, char **arg) :
       if (!strcmp(v, "lm")) lm = 1;
       else if (!strcmp(v, "euler")) lm = 0;
       else error->all(FLERR, "fix gibd: brownian = {} is not lm or euler", v);
+    } else if (!strcmp(key, "stress")) {
+      if (!strcmp(v, "yes")) stress = 1;
+      else if (!strcmp(v, "no")) stress = 0;
+      else error->all(FLERR, "fix gibd: stress = {} is not yes or no", v);
     } else if (!strcmp(key, "fric")) {
       char *end;
       long e = strtol(v, &end, 10);
@@ -133,10 +137,10 @@ FixGIBD::FixGIBD(LAMMPS *lmp, int narg, char **arg) :
   time_integrate = 1;
   comm_forward = 6;
   comm_reverse = 4;
-  if (fric_every) {
+  if (fric_every || stress) {
     vector_flag = 1;
-    size_vector = 3;
-    global_freq = fric_every;
+    size_vector = stress ? 5 : 3;
+    global_freq = stress ? 1 : fric_every;
     extvector = 0;
   }
 }
@@ -330,12 +334,13 @@ void FixGIBD::euler_pairs(int64_t step)
   double **v = atom->v;
   const tagint *tag = atom->tag;
   std::memset(acc, 0, sizeof(int64_t) * 3 * nall);
-  each_pair(list, atom->x, p.Rc, [&](int i, int j, double, double, double, double r2) {
+  each_pair(list, atom->x, p.Rc, [&](int i, int j, double, double dy, double, double r2) {
     const int32_t ti = (int32_t) (tag[i] - 1), tj = (int32_t) (tag[j] - 1);
     const double sdt = hcbd_gibd_sdt(&c, std::sqrt(r2), inv_rho[i], inv_rho[j]);
     const double amp = (ti < tj ? 1.0 : -1.0) * std::sqrt(two_kT * sdt);
     double z[3];
     hcbd_noise_pair(&ns, step, ti, tj, z);
+    if (stress) sbg += dy * (sdt * (v[j][0] - v[i][0]) + amp * z[0]); // y_ij P_ij,x
     for (int d = 0; d < 3; ++d) {
       const int64_t q = llrint((sdt * (v[j][d] - v[i][d]) + amp * z[d]) / m * vscale);
       acc[3 * i + d] += q;
@@ -356,7 +361,7 @@ static inline double min_image(double d, double L)
 // r^2 between canonical positions ri and rj by the nearest image of j,
 // under Lees-Edwards the image k boxes up sitting k le_s further along x;
 // returns k
-int FixGIBD::le_delta(const double *ri, const double *rj, double *r2) const
+int FixGIBD::le_delta(const double *ri, const double *rj, double *r2, double *ry) const
 {
   double dy = ri[1] - rj[1];
   int k = 0;
@@ -369,6 +374,7 @@ int FixGIBD::le_delta(const double *ri, const double *rj, double *r2) const
   }
   const double dx = min_image(ri[0] - rj[0] - k * le_s, p.L[0]), dz = min_image(ri[2] - rj[2], p.L[2]);
   *r2 = dx * dx + dy * dy + dz * dz;
+  if (ry) *ry = dy;
   return k;
 }
 
@@ -428,6 +434,7 @@ void FixGIBD::sweep_plan()
   part.clear();
   part_r2.clear();
   part_k.clear();
+  part_y.clear();
   std::vector<std::pair<tagint, int>> &cand = cand_buf;
   for (size_t q = 0; q < own.size(); ++q) {
     const int i = own[q];
@@ -442,7 +449,7 @@ void FixGIBD::sweep_plan()
         if (tag[j0] <= tag[i]) continue;
         const int j = atom->map(tag[j0]);
         double r2;
-        le_delta(ri, xw + 3 * j, &r2);
+        le_delta(ri, xw + 3 * j, &r2, nullptr);
         if (r2 < Rc2) cand.emplace_back(tag[j], j);
       }
     }
@@ -450,10 +457,11 @@ void FixGIBD::sweep_plan()
     for (size_t t = 0; t < cand.size(); ++t) {
       const int j = cand[t].second;
       if (t && cand[t].first == cand[t - 1].first) continue; // found from two copies
-      double r2;
-      part_k.push_back((signed char) le_delta(ri, xw + 3 * j, &r2));
+      double r2, ry;
+      part_k.push_back((signed char) le_delta(ri, xw + 3 * j, &r2, &ry));
       part.push_back(j);
       part_r2.push_back(r2);
+      part_y.push_back(ry);
     }
     part_start[q + 1] = (int) part.size();
   }
@@ -467,10 +475,6 @@ void FixGIBD::sweep(int64_t step)
   const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
   double **x = atom->x, **v = atom->v;
   const tagint *tag = atom->tag;
-  // Lees-Edwards: the offset of the image above (the tilt, taken into
-  // [-Lx/2, Lx/2]) and the velocity jump across y (fix deform remap v)
-  le_s = domain->triclinic ? domain->xy - p.L[0] * std::floor(domain->xy / p.L[0] + 0.5) : 0.0;
-  le_v = domain->deform_vremap ? domain->h_rate[5] : 0.0;
   for (int i = 0; i < nlocal; ++i) {
     // the owner wraps, so that every copy carries the same bits; an atom
     // past y's edge is its image inside, moved along x and slowed by the
@@ -505,7 +509,9 @@ void FixGIBD::sweep(int64_t step)
         const double sdt = hcbd_gibd_sdt(&c, std::sqrt(part_r2[t]), inv_rho[i], inv_rho[j]);
         double z[3];
         hcbd_noise_pair(&ns, step, ti, (int32_t) (tag[j] - 1), z);
+        const double vx0 = vc[3 * i];
         hcbd_gibd_pair_exact(&c, p.kT, sdt, z, part_k[t] * le_v, vc + 3 * i, vc + 3 * j);
+        if (stress) sbg += part_y[t] * c.m * (vc[3 * i] - vx0); // y_ij P_ij,x
         touched[j] = 1;
       }
       touched[i] = 1;
@@ -533,8 +539,13 @@ void FixGIBD::final_integrate()
   double **x = atom->x, **v = atom->v, **f = atom->f;
   const tagint *tag = atom->tag;
 
+  // Lees-Edwards: the offset of the image above (the tilt, taken into
+  // [-Lx/2, Lx/2]) and the velocity jump across y (fix deform remap v)
+  le_s = domain->triclinic ? domain->xy - p.L[0] * std::floor(domain->xy / p.L[0] + 0.5) : 0.0;
+  le_v = domain->deform_vremap ? domain->h_rate[5] : 0.0;
   densities();
   if (fric_every && update->ntimestep % fric_every == 0) friction_averages();
+  sbg = scr = 0.0;
   if (exact) sweep(step);
   else euler_pairs(step);
   for (int i = 0; i < nlocal; ++i) {
@@ -546,6 +557,7 @@ void FixGIBD::final_integrate()
       hcbd_noise_particle(&ns, step + 1, id, z1);
       for (int d = 0; d < 3; ++d) z[d] += z1[d];
     }
+    const int k0 = stress && le_v != 0.0 ? y_wraps(x[i][1]) : 0;
     if (exact) {
       // kick before drift, as hcbd's world after its sweep
       for (int d = 0; d < 3; ++d) {
@@ -558,6 +570,22 @@ void FixGIBD::final_integrate()
         v[i][d] += f[i][d] * dt / m + (double) acc[3 * i + d] / vscale;
       }
     }
+    if (stress && le_v != 0.0) {
+      // the momentum a carrier takes across the sheared boundary (in the
+      // frame it leaves), as hcbd counts it
+      const int k1 = y_wraps(x[i][1]);
+      const double vx = v[i][0] - k0 * le_v;
+      if (k1 > k0) scr += m * vx;
+      else if (k1 < k0) scr -= m * (vx + le_v);
+    }
+  }
+  if (stress) {
+    // this step's shear stress S_yx: the background exchanges and the
+    // carriers' flux across y, as hcbd_stress_read's [1] and [2]
+    double loc[2] = {sbg, scr}, tot[2];
+    MPI_Allreduce(loc, tot, 2, MPI_DOUBLE, MPI_SUM, world);
+    sfl[0] = -tot[0] / (p.L[0] * p.L[1] * p.L[2] * dt);
+    sfl[1] = -tot[1] / (p.L[0] * p.L[2] * dt);
   }
 }
 
@@ -634,7 +662,14 @@ void FixGIBD::unpack_reverse_comm(int n, int *slist, double *buf)
 
 double FixGIBD::compute_vector(int n)
 {
-  return fric[n];
+  return n < 3 ? fric[n] : sfl[n - 3];
+}
+
+// how many box heights y lies above the box (-1 below, 0 inside)
+int FixGIBD::y_wraps(double y) const
+{
+  const double u = y - domain->boxlo[1];
+  return u < 0.0 ? -1 : (u >= p.L[1] ? 1 : 0);
 }
 
 double FixGIBD::memory_usage()

@@ -41,7 +41,8 @@ class FixGIBD : public Fix {
   void euler_pairs(int64_t step);
   void sweep_plan();
   void sweep(int64_t step);
-  int le_delta(const double *ri, const double *rj, double *r2) const;
+  int le_delta(const double *ri, const double *rj, double *r2, double *ry) const;
+  int y_wraps(double y) const;
   hcbd_params p;            // the model's parameters (dt and box from LAMMPS)
   hcbd_gibd_coef c;         // its pair coefficients (hcbd_gibd_coef_of)
   hcbd_noise_stream ns;     // pair and Brownian noise keyed by (seed, step, ids)
@@ -62,12 +63,16 @@ class FixGIBD : public Fix {
   int lm;                   // brownian lm (default): Leimkuhler-Matthews; 0: Euler
   int ny, nz;               // the sweep's rows along y and z, as hcbd's world's
   double le_s, le_v;        // Lees-Edwards: offset of the image above, velocity jump
+  int stress;               // keyword stress yes: the vector's [4], [5]
+  double sbg, scr;          // this step's sums of y_ij P_ij,x and of carried momentum
+  double sfl[2];            // this step's shear stress: background, carriers
   // this step's sweep on this rank: owners (local indices) by colour, row
   // and tag, each colour from col_start; each owner's partners (local
   // index, r^2) by tag from part_start
   std::vector<int> own, col_start, part_start, part;
   std::vector<double> part_r2;
   std::vector<signed char> part_k; // the partner's image: k boxes up
+  std::vector<double> part_y;      // y_ij of the pair
   std::vector<long long> key;
   std::vector<std::pair<tagint, int>> cand_buf;
 };

@@ -65,6 +65,15 @@ sweep_anchor|fix_gibd.cpp|const double yy = r[1] - o[0]|const double yy = r[1] -
 pair_exact_rate|hcbd.h|x = 2.0 * sdt * inv_m;|x = 2.2 * sdt * inv_m;
 pair_exact_noise|hcbd.h|sqrt(0.5 * kT * m * om|sqrt(0.55 * kT * m * om
 pair_exact_share|hcbd.h|h = 0.5 * m * om;|h = 0.55 * m * om;
+le_pair_shift|fix_gibd.cpp|part_k[t] * le_v, vc|1.1 * part_k[t] * le_v, vc
+le_image_offset|fix_gibd.cpp|min_image(ri[0] - rj[0] - k * le_s|min_image(ri[0] - rj[0] - 1.1 * k * le_s
+le_frame|fix_gibd.cpp|if (k) vc[3 * i] -= k * le_v;|if (k) vc[3 * i] -= 1.1 * k * le_v;
+le_frame_back|fix_gibd.cpp|if (kw[i]) v[i][0] += kw[i] * le_v;|if (kw[i]) v[i][0] += 1.1 * kw[i] * le_v;
+stress_exchange|fix_gibd.cpp|sfl[0] = -tot[0] / (p.L[0]|sfl[0] = -1.1 * tot[0] / (p.L[0]
+stress_exchange_euler|fix_gibd.cpp|if (stress) sbg += dy * (sdt|if (stress) sbg += 1.1 * dy * (sdt
+stress_carrier_up|fix_gibd.cpp|if (k1 > k0) scr += m * vx;|if (k1 > k0) scr += 1.1 * m * vx;
+stress_carrier_down|fix_gibd.cpp|else if (k1 < k0) scr -= m * (vx + le_v);|else if (k1 < k0) scr -= m * (vx + 1.1 * le_v);
+stress_carrier_area|fix_gibd.cpp|sfl[1] = -tot[1] / (p.L[0] * p.L[2] * dt);|sfl[1] = -1.1 * tot[1] / (p.L[0] * p.L[2] * dt);
 star_force|pair_star.cpp|const double fpair = hcbd_star_force_over_r(|const double fpair = 1.1 * hcbd_star_force_over_r(
 star_sigma|pair_star.cpp|sigma[i][j] = s1;|sigma[i][j] = 1.1 * s1;
 star_eps|pair_star.cpp|eps[i][j] = e1;|eps[i][j] = 1.1 * e1;
