@@ -147,6 +147,11 @@ FixGIBD::FixGIBD(LAMMPS *lmp, int narg, char **arg) :
 
 FixGIBD::~FixGIBD()
 {
+  release();
+}
+
+void FixGIBD::release()
+{
   memory->destroy(inv_rho);
   memory->destroy(acc);
   memory->destroy(xw);
@@ -254,12 +259,7 @@ template <class F> static void each_pair(NeighList *list, double **x, double Rc,
 void FixGIBD::grow()
 {
   if (atom->nmax <= nmax) return;
-  memory->destroy(inv_rho);
-  memory->destroy(acc);
-  memory->destroy(xw);
-  memory->destroy(vc);
-  memory->destroy(touched);
-  memory->destroy(kw);
+  release();
   nmax = atom->nmax;
   memory->create(inv_rho, nmax, "gibd:inv_rho");
   memory->create(acc, 3 * nmax, "gibd:acc");
@@ -361,7 +361,7 @@ static inline double min_image(double d, double L)
 // r^2 between canonical positions ri and rj by the nearest image of j,
 // under Lees-Edwards the image k boxes up sitting k le_s further along x;
 // returns k
-int FixGIBD::le_delta(const double *ri, const double *rj, double *r2, double *ry) const
+inline int FixGIBD::le_delta(const double *ri, const double *rj, double *r2, double *ry) const
 {
   double dy = ri[1] - rj[1];
   int k = 0;
@@ -374,7 +374,7 @@ int FixGIBD::le_delta(const double *ri, const double *rj, double *r2, double *ry
   }
   const double dx = min_image(ri[0] - rj[0] - k * le_s, p.L[0]), dz = min_image(ri[2] - rj[2], p.L[2]);
   *r2 = dx * dx + dy * dy + dz * dz;
-  if (ry) *ry = dy;
+  *ry = dy;
   return k;
 }
 
@@ -435,33 +435,36 @@ void FixGIBD::sweep_plan()
   part_r2.clear();
   part_k.clear();
   part_y.clear();
-  std::vector<std::pair<tagint, int>> &cand = cand_buf;
+  std::vector<Cand> &cand = cand_buf;
   for (size_t q = 0; q < own.size(); ++q) {
     const int i = own[q];
     const double *ri = xw + 3 * i;
     cand.clear();
-    // every copy's neighbours: a copy near the edge of the ghosts has an
-    // incomplete list, but the atom has a copy whose list is whole
-    for (int ic = i; ic >= 0; ic = atom->sametag[ic]) {
+    // an owned atom's list is whole; a ghost copy near the edge of the
+    // ghosts has an incomplete one, but the atom has a copy whose list is
+    // whole: take every copy's neighbours
+    for (int ic = i; ic >= 0; ic = i < nlocal ? -1 : atom->sametag[ic]) {
       const int *jlist = glist->firstneigh[ic];
       for (int jj = 0; jj < glist->numneigh[ic]; ++jj) {
         const int j0 = jlist[jj] & NEIGHMASK;
         if (tag[j0] <= tag[i]) continue;
         const int j = atom->map(tag[j0]);
-        double r2;
-        le_delta(ri, xw + 3 * j, &r2, nullptr);
-        if (r2 < Rc2) cand.emplace_back(tag[j], j);
+        Cand cd;
+        cd.k = le_delta(ri, xw + 3 * j, &cd.r2, &cd.ry);
+        if (cd.r2 < Rc2) {
+          cd.tag = tag[j];
+          cd.j = j;
+          cand.push_back(cd);
+        }
       }
     }
-    std::sort(cand.begin(), cand.end());
+    std::sort(cand.begin(), cand.end(), [](const Cand &a, const Cand &b) { return a.tag < b.tag; });
     for (size_t t = 0; t < cand.size(); ++t) {
-      const int j = cand[t].second;
-      if (t && cand[t].first == cand[t - 1].first) continue; // found from two copies
-      double r2, ry;
-      part_k.push_back((signed char) le_delta(ri, xw + 3 * j, &r2, &ry));
-      part.push_back(j);
-      part_r2.push_back(r2);
-      part_y.push_back(ry);
+      if (t && cand[t].tag == cand[t - 1].tag) continue; // found from two copies
+      part_k.push_back((signed char) cand[t].k);
+      part.push_back(cand[t].j);
+      part_r2.push_back(cand[t].r2);
+      part_y.push_back(cand[t].ry);
     }
     part_start[q + 1] = (int) part.size();
   }
@@ -496,8 +499,10 @@ void FixGIBD::sweep(int64_t step)
     }
     if (k) vc[3 * i] -= k * le_v;
   }
-  cmode = FWD_XW;
-  comm->forward_comm_fix(this, 6);
+  if (comm->nprocs > 1) { // on one rank every copy that takes part is owned
+    cmode = FWD_XW;
+    comm->forward_comm_fix(this, 6);
+  }
   sweep_plan();
   for (int col = 0; col < 9; ++col) {
     std::memset(touched, 0, sizeof(int) * nall);

@@ -36,6 +36,7 @@ class FixGIBD : public Fix {
  private:
   enum { FWD_RHO, FWD_XW, FWD_V, REV_ACC, REV_V };
   void grow();
+  void release();
   void densities();
   void friction_averages();
   void euler_pairs(int64_t step);
@@ -74,7 +75,12 @@ class FixGIBD : public Fix {
   std::vector<signed char> part_k; // the partner's image: k boxes up
   std::vector<double> part_y;      // y_ij of the pair
   std::vector<long long> key;
-  std::vector<std::pair<tagint, int>> cand_buf;
+  struct Cand {              // a partner found: its tag, copy, r^2, y_ij, image
+    tagint tag;
+    int j, k;
+    double r2, ry;
+  };
+  std::vector<Cand> cand_buf;
 };
 
 }    // namespace LAMMPS_NS
