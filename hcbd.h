@@ -274,9 +274,9 @@ typedef enum hcbd_wall_mode {
 #define HCBD_AUTO (-1)
 
 /* Walls normal to y (MODEL 4), params.wall of the walled build (the other
-   builds have the type, for checkpoints, but no such member).  thickness > 0 fills y < t and
-   y >= L[1] - t with artificial particles redrawn every step; the channel
-   lies between the interfaces y = t and L[1] - t. */
+   builds have the type, for checkpoints, but no such member).  thickness
+   t > 0 fills y < t and y >= L[1] - t with artificial particles redrawn
+   every step; the channel lies between the interfaces y = t and L[1] - t. */
 typedef struct hcbd_wall_params {
     double thickness;
     double vx[2];         /* x velocity of the bottom and top wall          */
@@ -391,8 +391,8 @@ typedef struct hcbd__zig {
    err, step) stays a member of its own, since C99 has no anonymous members:
    w.err and w.step read as before.  The functions written once for both
    worlds (lifecycle, threads, checkpoint wrappers, stress, temperature and
-   momentum, the guard's position and velocity scan) take the core, the
-   error and step, and a species view (hcbd__vset). */
+   momentum, the guard's position and velocity scan) take the core with the
+   error and step (hcbd__self) and a species view (hcbd__vset). */
 #define HCBD__NSTRESS 10 /* the most stress parts a world accumulates */
 typedef struct hcbd__core {
     /* Lees-Edwards: offset s of the image above, velocity jump gdot L[1] */
@@ -1221,7 +1221,7 @@ static inline hcbd_result hcbd_flux_read(const hcbd_world *w, double out[4], int
 #define HCBD__STREAM_BROWNIAN 0x6ULL
 /* The GI-BD build compiles the wall branches away. */
 #define HCBD__WALLS (HCBD_MODEL == HCBD_MODEL_WALLED)
-/* the wall thickness, 0 in the builds without walls */
+/* the walls' defaults (every build keeps them in checkpoints) */
 static hcbd_wall_params hcbd__wall_default(void)
 {
     hcbd_wall_params q;
@@ -1235,6 +1235,7 @@ static hcbd_wall_params hcbd__wall_default(void)
     q.noise_beta = 1;
     return q;
 }
+/* the wall thickness, 0 in the builds without walls */
 #if HCBD__WALLS
 static double hcbd__wall_t(const hcbd_params *p) { return p->wall.thickness; }
 #else
