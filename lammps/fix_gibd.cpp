@@ -224,13 +224,12 @@ void FixGIBD::init()
   neighbor->requests[irequest]->fix = 1;
   if (exact) {
     // the sweep's partners: every neighbour of every atom, ghosts included
-    // (on one rank every atom that takes part is owned: no ghosts' lists)
     irequest = neighbor->request(this, instance_me);
     neighbor->requests[irequest]->pair = 0;
     neighbor->requests[irequest]->fix = 1;
     neighbor->requests[irequest]->half = 0;
     neighbor->requests[irequest]->full = 1;
-    neighbor->requests[irequest]->ghost = comm->nprocs > 1;
+    neighbor->requests[irequest]->ghost = 1;
     neighbor->requests[irequest]->id = 1;
   }
 }
