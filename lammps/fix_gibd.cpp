@@ -224,6 +224,9 @@ void FixGIBD::init()
   neighbor->requests[irequest]->fix = 1;
   if (exact) {
     // the sweep's partners: every neighbour of every atom, ghosts included
+    // (on one rank too: without ghosts LAMMPS would derive the half list
+    // from this one, with other periodic images, and the densities' last
+    // bits would depend on the rank count)
     irequest = neighbor->request(this, instance_me);
     neighbor->requests[irequest]->pair = 0;
     neighbor->requests[irequest]->fix = 1;
