@@ -1957,6 +1957,9 @@ double hcbd_gibd_sdt(const hcbd_gibd_coef *c, double r, double inv_rho_i, double
     return q < 1.0 ? hcbd__sdt(c->cs, inv_rho_i, inv_rho_j, 1.0 - q) : 0.0;
 }
 
+/* One pair at a time, for engines of their own; the world's sweep makes
+   the same step in chunks (hcbd__sweep_pairs, its velocity-free part in
+   SIMD loops), and test_gibd_pair_exact_exported holds the two together. */
 void hcbd_gibd_pair_exact(const hcbd_gibd_coef *c, double kT, double sdt, const double z[3],
                           double dvx, double vi[3], double vj[3])
 {
@@ -2296,7 +2299,7 @@ static int hcbd__art_count(const hcbd_params *p, int acol[2])
     double n;
     int d;
     acol[0] = acol[1] = 1;
-    if (!HCBD__WALLS || p->wall.thickness <= 0 || p->dynamics != HCBD_DYN_GIBD) return 0;
+    if (p->wall.thickness <= 0 || p->dynamics != HCBD_DYN_GIBD) return 0;
     for (d = 0; d < 2; ++d) {
         double k = floor(p->L[2 * d] / p->Rc);
         acol[d] = k < 3.0 ? 1 : (k > 256.0 ? 256 : (int)k);
