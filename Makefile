@@ -120,7 +120,7 @@ test:
 lammps:
 	lammps/build.sh
 
-test-lammps: lammps $(B)/gibd_bulk $(B)/shear_flow
+test-lammps: lammps $(B)/gibd_bulk $(B)/shear_flow $(B)/channel_flow
 	lammps/check.sh
 
 # make mutants-lammps: every injected error of the plugin is caught by the

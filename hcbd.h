@@ -384,6 +384,18 @@ typedef struct hcbd__zig {
     double r[256];
 } hcbd__zig;
 
+/* The walls of one step (MODEL 4): interfaces (lo, hi), Morris planes, the
+   artificial particles' density, and the artificial particles themselves,
+   sorted into x-z columns (col_start), drawn from the stream key; pair_key
+   keys their pairs' noise.  A world holds one, and so does hcbd_walls. */
+typedef struct hcbd__wallset {
+    int n_art, acol[2];
+    double lo, hi, morris_lo, morris_hi, art_inv_rho;
+    hcbd_real *ax, *ay, *az;
+    int32_t *col_start, *col_of;
+    uint64_t key, pair_key;
+} hcbd__wallset;
+
 /* What both worlds keep alike, embedded in each as w->core: the box's
    Lees-Edwards state, the Verlet skin, the fixed-point scales of the pair
    sums, the stress accumulation (hcbd_stress_enable, hcbd_hc_stress_enable),
@@ -467,15 +479,12 @@ typedef struct hcbd_world {
     double *lx;
     /* per-particle parts of the shear-stress flux (hcbd_stress_enable) */
     hcbd_real *fl_p, *fl_b, *fl_c;
-    /* walls: interfaces, Morris planes, artificial particles of this step
-       sorted into x-z columns, real particles found inside a wall */
-    int walls, n_art, acol[2], has_gauss, has_refl, fext_dr;
-    double wall_lo, wall_hi, morris_lo, morris_hi, art_inv_rho;
-    hcbd_real *ax, *ay, *az;
-    int32_t *acol_start, *acol_of;
+    /* walls: their interfaces and this step's artificial particles, real
+       particles found inside a wall */
+    int walls, has_gauss, has_refl, fext_dr;
+    hcbd__wallset ws;
     int64_t wall_pen, wall_pen_step;
     int wall_pen_id;
-    uint64_t wall_key, wall_pair_key;
     void *scratch;               /* n x 8 bytes: permutations, degree counts at
                                     a list build, the sweep's row lists        */
     double *tab_F, *tab_V;
@@ -796,6 +805,38 @@ double hcbd_gibd_sdt(const hcbd_gibd_coef *c, double r, double inv_rho_i, double
    13.2). */
 void hcbd_gibd_pair_exact(const hcbd_gibd_coef *c, double kT, double sdt, const double z[3],
                           double dvx, double vi[3], double vj[3]);
+
+#if HCBD_MODEL == HCBD_MODEL_WALLED
+/* The walls' artificial particles and Morris pairs without a world, for
+   engines of their own (lammps/), with the world's own code: a GI-BD p
+   (checked as hcbd_world_create checks it) whose p.wall sets the walls;
+   memory of hcbd_walls_bytes(p) bytes (0: p is invalid) that the walls
+   use until they are dropped (nothing to free).  Per step s:
+   hcbd_walls_draw(wl, s) draws the step's artificial particles (the same
+   ones a world of this seed draws at its step s, hcbd_world's w->step
+   before the step); hcbd_walls_weights(wl, r) is their weight sum at r
+   (in [0, L)), which enters rho as the pair weights do (hcbd_gibd_density
+   of the pairs' sum plus this); hcbd_walls_morris(wl, exact, id, r,
+   1/rho, v, P) makes the Morris pairs of particle id: with exact = 1 (the
+   sweep's) on v in place, right after the particle's own pairs as an
+   owner in the sweep (MODEL 13.2); with exact = 0 (Euler) it adds the
+   momentum exchanges of the velocities v of the step's start to P.  Both
+   do nothing away from the walls; the repulsion is hcbd_wall_potential. */
+typedef struct hcbd_walls {
+    hcbd_params p;
+    hcbd_gibd_coef c;
+    hcbd__zig zig;
+    hcbd__wallset ws;
+    int64_t step; /* the step drawn, -1 before the first */
+} hcbd_walls;
+size_t hcbd_walls_bytes(const hcbd_params *p);
+hcbd_result hcbd_walls_init(hcbd_walls *wl, const hcbd_params *p, void *mem, size_t bytes, char *msg,
+                            size_t msg_size);
+hcbd_result hcbd_walls_draw(hcbd_walls *wl, int64_t step);
+double hcbd_walls_weights(const hcbd_walls *wl, const double r[3]);
+void hcbd_walls_morris(const hcbd_walls *wl, int exact, int32_t id, const double r[3], double inv_rho,
+                       double v[3], double P[3]);
+#endif
 
 /* >>kernels (exported for tests and users) --------------------------------*/
 double hcbd_wendland(double r, double Rc);
@@ -2308,131 +2349,152 @@ static int hcbd__art_count(const hcbd_params *p, int acol[2])
     return n > (double)(INT32_MAX / 4) ? INT32_MAX / 4 : (int)n;
 }
 
+/* The wall set's interfaces, Morris planes and keys from p; m is the
+   carriers' mass, w0 = w(0) */
+static void hcbd__ws_init(hcbd__wallset *s, const hcbd_params *p, double m, double w0)
+{
+    double h = 0.0;
+    s->lo = p->wall.thickness;
+    s->hi = p->L[1] - p->wall.thickness;
+    if (p->wall.thickness > 0 && p->wall.mode == HCBD_WALL_NOSLIP)
+        h = p->wall.shift == HCBD_AUTO ? hcbd__depletion(p) : p->wall.shift;
+    s->morris_lo = s->lo + h;
+    s->morris_hi = s->hi - h;
+    /* an artificial particle's density is that of an ideal bulk,
+       m n# (2016) or m (n# + w(0)) (2014) */
+    s->art_inv_rho = m > 0 ? 1.0 / (m * (p->density_norm == 2016 ? p->density : p->density + w0)) : 0.0;
+    s->key = hcbd__mix64(p->seed ^ hcbd__mix64(HCBD__STREAM_WALL));
+    s->pair_key = hcbd__mix64(p->seed ^ hcbd__mix64(HCBD__STREAM_WALL_PAIR));
+}
+
 /* Wall passes: artificial particles are redrawn every step from a
    counter-based stream keyed by (seed, step), uniform in the wall slab
    [-t, t) of the periodic y axis, and sorted into x-z columns. */
-static void hcbd__art_pos(const hcbd_world *w, uint64_t *g, double r[3])
+static void hcbd__art_pos(const hcbd_params *p, uint64_t *g, double r[3])
 {
-    r[0] = hcbd__u01(hcbd_splitmix64(g)) * w->p.L[0];
-    r[1] = (2.0 * hcbd__u01(hcbd_splitmix64(g)) - 1.0) * w->p.wall.thickness;
-    if (r[1] < 0.0) r[1] += w->p.L[1];
-    r[2] = hcbd__u01(hcbd_splitmix64(g)) * w->p.L[2];
+    r[0] = hcbd__u01(hcbd_splitmix64(g)) * p->L[0];
+    r[1] = (2.0 * hcbd__u01(hcbd_splitmix64(g)) - 1.0) * p->wall.thickness;
+    if (r[1] < 0.0) r[1] += p->L[1];
+    r[2] = hcbd__u01(hcbd_splitmix64(g)) * p->L[2];
 }
 
-static int hcbd__art_col(const hcbd_world *w, double x, double z)
+static int hcbd__art_col(const hcbd__wallset *s, const hcbd_params *p, double x, double z)
 {
-    int cx = (int)(x * w->acol[0] / w->p.L[0]), cz = (int)(z * w->acol[1] / w->p.L[2]);
-    if (cx >= w->acol[0]) cx = w->acol[0] - 1;
-    if (cz >= w->acol[1]) cz = w->acol[1] - 1;
-    return cx * w->acol[1] + cz;
+    int cx = (int)(x * s->acol[0] / p->L[0]), cz = (int)(z * s->acol[1] / p->L[2]);
+    if (cx >= s->acol[0]) cx = s->acol[0] - 1;
+    if (cz >= s->acol[1]) cz = s->acol[1] - 1;
+    return cx * s->acol[1] + cz;
 }
 
 /* Counting sort in two passes over the same stream, so no scratch. */
-static void hcbd__wall_draw(hcbd_world *w)
+static void hcbd__ws_draw(hcbd__wallset *s, const hcbd_params *p, int64_t step)
 {
-    const int ncol = w->acol[0] * w->acol[1];
-    const uint64_t key = hcbd__mix64(w->wall_key ^ hcbd__mix64((uint64_t)w->step));
+    const int ncol = s->acol[0] * s->acol[1];
+    const uint64_t key = hcbd__mix64(s->key ^ hcbd__mix64((uint64_t)step));
     uint64_t g = key;
     int k, c;
-    for (c = 0; c <= ncol; ++c) w->acol_start[c] = 0;
-    for (k = 0; k < w->n_art; ++k) {
+    for (c = 0; c <= ncol; ++c) s->col_start[c] = 0;
+    for (k = 0; k < s->n_art; ++k) {
         double r[3];
-        hcbd__art_pos(w, &g, r);
-        w->acol_start[hcbd__art_col(w, r[0], r[2]) + 1]++;
+        hcbd__art_pos(p, &g, r);
+        s->col_start[hcbd__art_col(s, p, r[0], r[2]) + 1]++;
     }
     for (c = 0; c < ncol; ++c) {
-        w->acol_start[c + 1] += w->acol_start[c];
-        w->acol_of[c] = w->acol_start[c];
+        s->col_start[c + 1] += s->col_start[c];
+        s->col_of[c] = s->col_start[c];
     }
     g = key;
-    for (k = 0; k < w->n_art; ++k) {
+    for (k = 0; k < s->n_art; ++k) {
         double r[3];
         int32_t q;
-        hcbd__art_pos(w, &g, r);
-        q = w->acol_of[hcbd__art_col(w, r[0], r[2])]++;
-        w->ax[q] = (hcbd_real)r[0]; w->ay[q] = (hcbd_real)r[1]; w->az[q] = (hcbd_real)r[2];
+        hcbd__art_pos(p, &g, r);
+        q = s->col_of[hcbd__art_col(s, p, r[0], r[2])]++;
+        s->ax[q] = (hcbd_real)r[0]; s->ay[q] = (hcbd_real)r[1]; s->az[q] = (hcbd_real)r[2];
     }
 }
 
 /* The (up to 9) columns within Rc of x, z. */
-static int hcbd__art_cols(const hcbd_world *w, double x, double z, int cols[9])
+static int hcbd__art_cols(const hcbd__wallset *s, const hcbd_params *p, double x, double z, int cols[9])
 {
-    int c = hcbd__art_col(w, x, z), cx = c / w->acol[1], cz = c % w->acol[1];
-    int nx = w->acol[0] < 3 ? 1 : 3, nz = w->acol[1] < 3 ? 1 : 3, a, b, k = 0;
+    int c = hcbd__art_col(s, p, x, z), cx = c / s->acol[1], cz = c % s->acol[1];
+    int nx = s->acol[0] < 3 ? 1 : 3, nz = s->acol[1] < 3 ? 1 : 3, a, b, k = 0;
     for (a = 0; a < nx; ++a)
         for (b = 0; b < nz; ++b) {
-            int ux = nx == 1 ? 0 : (cx + a - 1 + w->acol[0]) % w->acol[0];
-            int uz = nz == 1 ? 0 : (cz + b - 1 + w->acol[1]) % w->acol[1];
-            cols[k++] = ux * w->acol[1] + uz;
+            int ux = nx == 1 ? 0 : (cx + a - 1 + s->acol[0]) % s->acol[0];
+            int uz = nz == 1 ? 0 : (cz + b - 1 + s->acol[1]) % s->acol[1];
+            cols[k++] = ux * s->acol[1] + uz;
         }
     return k;
 }
 
-static int hcbd__near_wall(const hcbd_world *w, double y)
+static int hcbd__ws_near(const hcbd__wallset *s, const hcbd_params *p, double y)
 {
-    return y < w->wall_lo + w->p.Rc || y > w->wall_hi - w->p.Rc;
+    return y < s->lo + p->Rc || y > s->hi - p->Rc;
 }
 
 /* Sum of the weights of the artificial particles around (x, y, z): they
    count in the real particles' densities (MODEL 4). */
-static double hcbd__art_wsum(const hcbd_world *w, double x, double y, double z)
+static double hcbd__ws_wsum(const hcbd__wallset *s, const hcbd_params *p, double cw, double x, double y,
+                            double z)
 {
-    const double Rc2 = w->p.Rc * w->p.Rc, invRc = 1.0 / w->p.Rc;
-    double s = 0.0;
-    int cols[9], nc = hcbd__art_cols(w, x, z, cols), c;
+    const double Rc2 = p->Rc * p->Rc, invRc = 1.0 / p->Rc;
+    double sum = 0.0;
+    int cols[9], nc = hcbd__art_cols(s, p, x, z, cols), c;
     for (c = 0; c < nc; ++c) {
         int32_t k;
-        for (k = w->acol_start[cols[c]]; k < w->acol_start[cols[c] + 1]; ++k) {
-            double dx = hcbd__mi(x - w->ax[k], w->p.L[0]), dy = hcbd__mi(y - w->ay[k], w->p.L[1]);
-            double dz = hcbd__mi(z - w->az[k], w->p.L[2]), r2 = dx * dx + dy * dy + dz * dz;
+        for (k = s->col_start[cols[c]]; k < s->col_start[cols[c] + 1]; ++k) {
+            double dx = hcbd__mi(x - s->ax[k], p->L[0]), dy = hcbd__mi(y - s->ay[k], p->L[1]);
+            double dz = hcbd__mi(z - s->az[k], p->L[2]), r2 = dx * dx + dy * dy + dz * dz;
             if (r2 < Rc2) {
                 double q = sqrt(r2) * invRc, a = 1.0 - q;
-                s += hcbd__weight(w->cw, q, a);
+                sum += hcbd__weight(cw, q, a);
             }
         }
     }
-    return s;
+    return sum;
 }
 
-/* Friction and noise of the artificial particles on real particle i (Morris
-   et al. 1997, MODEL 4): the artificial particle B takes the velocity with
-   v_i - v_B = beta (v_i - v_wall), beta = min(beta_max, 1 + d_B/d_A), both
-   distances from the interface between them (the Morris plane); the noise
-   carries sqrt(beta) so the pair keeps its fluctuation-dissipation balance.
-   The wall absorbs the momentum. */
-static void hcbd__morris(hcbd_world *w, int i, uint64_t key, double P[3], int exact)
+/* Friction and noise of the artificial particles on real particle id at r
+   (Morris et al. 1997, MODEL 4): the artificial particle B takes the
+   velocity with v_i - v_B = beta (v_i - v_wall), beta = min(beta_max, 1 +
+   d_B/d_A), both distances from the interface between them (the Morris
+   plane); the noise carries sqrt(beta) so the pair keeps its
+   fluctuation-dissipation balance.  The wall absorbs the momentum.  exact:
+   v relaxes pair by pair over the step; else the Euler exchanges are added
+   to P.  cf, m: the GI-BD coefficient and mass; key: the step's. */
+static void hcbd__ws_morris(const hcbd__wallset *s, const hcbd_params *p, const hcbd__zig *zig, double cf,
+                            double m, uint64_t key, int32_t id, const double r[3], double iri,
+                            double v[3], double P[3], int exact)
 {
-    const double Rc2 = w->p.Rc * w->p.Rc, invRc = 1.0 / w->p.Rc;
-    const double cs = w->cf * w->m * w->m * w->p.dt / w->p.tau, two_kT = 2.0 * w->p.kT;
-    const double bmax = w->p.wall.beta_max, m = w->m, inv_m = w->inv_m;
-    const double xi = w->x[i], yi = w->y[i], zi = w->z[i], iri = w->inv_rho[i];
-    const uint64_t idk = (uint64_t)(uint32_t)w->id[i] << 32;
-    double v[3];
-    int cols[9], nc = hcbd__art_cols(w, xi, zi, cols), c, d;
-    v[0] = w->vx[i]; v[1] = w->vy[i]; v[2] = w->vz[i];
+    const double Rc2 = p->Rc * p->Rc, invRc = 1.0 / p->Rc;
+    const double cs = cf * m * m * p->dt / p->tau, two_kT = 2.0 * p->kT;
+    const double bmax = p->wall.beta_max, inv_m = 1.0 / m;
+    const double xi = r[0], yi = r[1], zi = r[2];
+    const uint64_t idk = (uint64_t)(uint32_t)id << 32;
+    int cols[9], nc = hcbd__art_cols(s, p, xi, zi, cols), c, d;
     for (c = 0; c < nc; ++c) {
         int32_t k;
-        for (k = w->acol_start[cols[c]]; k < w->acol_start[cols[c] + 1]; ++k) {
-            double dx = hcbd__mi(xi - w->ax[k], w->p.L[0]), dy = hcbd__mi(yi - w->ay[k], w->p.L[1]);
-            double dz = hcbd__mi(zi - w->az[k], w->p.L[2]), r2 = dx * dx + dy * dy + dz * dz;
+        for (k = s->col_start[cols[c]]; k < s->col_start[cols[c] + 1]; ++k) {
+            double dx = hcbd__mi(xi - s->ax[k], p->L[0]), dy = hcbd__mi(yi - s->ay[k], p->L[1]);
+            double dz = hcbd__mi(zi - s->az[k], p->L[2]), r2 = dx * dx + dy * dy + dz * dz;
             double q, a, sdt, dA, dB, vw[3] = {0, 0, 0}, beta, nb, z3[3] = {0, 0, 0};
             if (r2 >= Rc2) continue;
             q = sqrt(r2) * invRc;
             a = 1.0 - q;
-            sdt = hcbd__sdt(cs, iri, w->art_inv_rho, a);
+            sdt = hcbd__sdt(cs, iri, s->art_inv_rho, a);
             if (dy > 0.0) { /* B below i: behind the bottom interface */
-                dA = yi - w->morris_lo;
-                dB = w->morris_lo - (yi - dy);
-                vw[0] = w->p.wall.vx[0];
+                dA = yi - s->morris_lo;
+                dB = s->morris_lo - (yi - dy);
+                vw[0] = p->wall.vx[0];
             } else {
-                dA = w->morris_hi - yi;
-                dB = (yi - dy) - w->morris_hi;
-                vw[0] = w->p.wall.vx[1];
+                dA = s->morris_hi - yi;
+                dB = (yi - dy) - s->morris_hi;
+                vw[0] = p->wall.vx[1];
             }
             beta = (dA > 0.0 && dB >= 0.0) ? 1.0 + dB / dA : bmax;
             if (beta > bmax) beta = bmax;
-            nb = w->p.wall.noise_beta ? 1.0 : 1.0 / beta; /* noise variance factor */
-            if (two_kT > 0.0) hcbd__noise3(w, hcbd__mix64(key ^ idk ^ (uint64_t)k), z3);
+            nb = p->wall.noise_beta ? 1.0 : 1.0 / beta; /* noise variance factor */
+            if (two_kT > 0.0) hcbd__deviates3(zig, p->noise, hcbd__mix64(key ^ idk ^ (uint64_t)k), z3);
             if (exact) {
                 /* the wall is a reservoir: v - v_wall relaxes at the rate
                    beta sdt / (m dt), solved over the step */
@@ -2445,6 +2507,32 @@ static void hcbd__morris(hcbd_world *w, int i, uint64_t key, double P[3], int ex
             }
         }
     }
+}
+
+/* The Morris pairs' key of a step: the sweep's differs from the Euler
+   step's in its last bit */
+static uint64_t hcbd__ws_pair_step_key(const hcbd__wallset *s, int64_t step, int exact)
+{
+    const uint64_t k = hcbd__mix64(s->pair_key ^ hcbd__mix64((uint64_t)step));
+    return exact ? k | 1 : k;
+}
+
+/* The world's wall passes, on its wall set */
+static void hcbd__wall_draw(hcbd_world *w) { hcbd__ws_draw(&w->ws, &w->p, w->step); }
+
+static int hcbd__near_wall(const hcbd_world *w, double y) { return hcbd__ws_near(&w->ws, &w->p, y); }
+
+static double hcbd__art_wsum(const hcbd_world *w, double x, double y, double z)
+{
+    return hcbd__ws_wsum(&w->ws, &w->p, w->cw, x, y, z);
+}
+
+static void hcbd__morris(hcbd_world *w, int i, uint64_t key, double P[3], int exact)
+{
+    double r[3], v[3];
+    r[0] = w->x[i]; r[1] = w->y[i]; r[2] = w->z[i];
+    v[0] = w->vx[i]; v[1] = w->vy[i]; v[2] = w->vz[i];
+    hcbd__ws_morris(&w->ws, &w->p, w->core.zig, w->cf, w->m, key, w->id[i], r, w->inv_rho[i], v, P, exact);
     if (exact) { w->vx[i] = (hcbd_real)v[0]; w->vy[i] = (hcbd_real)v[1]; w->vz[i] = (hcbd_real)v[2]; }
 }
 
@@ -2453,25 +2541,12 @@ static void hcbd__walls_init(hcbd_world *w, const hcbd_params *p)
 {
     w->walls = p->wall.thickness > 0;
     if (w->walls) {
-        double h = 0.0;
         w->has_gauss = p->wall.mode != HCBD_WALL_REFLECT && p->wall.a > 0;
         w->has_refl = p->wall.mode == HCBD_WALL_REFLECT;
-        w->wall_lo = p->wall.thickness;
-        w->wall_hi = p->L[1] - p->wall.thickness;
-        if (p->wall.mode == HCBD_WALL_NOSLIP)
-            h = p->wall.shift == HCBD_AUTO ? hcbd__depletion(p) : p->wall.shift;
-        w->morris_lo = w->wall_lo + h;
-        w->morris_hi = w->wall_hi - h;
-        /* an artificial particle's density is that of an ideal bulk,
-           m n# (2016) or m (n# + w(0)) (2014) */
-        if (w->gibd)
-            w->art_inv_rho = 1.0 / (w->m * (p->density_norm == 2016 ? p->density
-                                                                     : p->density + w->w0));
     }
+    hcbd__ws_init(&w->ws, p, w->gibd ? w->m : 0.0, w->w0);
     w->wall_pen_step = -1;
     w->wall_pen_id = -1;
-    w->wall_key = hcbd__mix64(p->seed ^ hcbd__mix64(HCBD__STREAM_WALL));
-    w->wall_pair_key = hcbd__mix64(p->seed ^ hcbd__mix64(HCBD__STREAM_WALL_PAIR));
 }
 
 /* wall.guard of the walled build's parameters */
@@ -2484,9 +2559,79 @@ static double hcbd__wall_fy(const hcbd_world *w, double y)
     hcbd_wall_potential(&w->p, y, &fy);
     return fy;
 }
+
+/* >>walls without a world (hcbd_walls, for engines of their own) */
+static void hcbd__ws_take(char *base, size_t *off, hcbd__wallset *s, const hcbd_params *p);
+static char *hcbd__init_block(hcbd_error *e, hcbd_result r, void *mem, size_t bytes, size_t need,
+                              const char *bytes_fn);
+
+size_t hcbd_walls_bytes(const hcbd_params *p)
+{
+    size_t off = 0;
+    hcbd__wallset s;
+    char msg[8];
+    if (!p || hcbd_params_check(p, msg, sizeof msg) != HCBD_OK) return 0;
+    hcbd__ws_take(NULL, &off, &s, p);
+    return off + HCBD__ALIGN;
+}
+
+hcbd_result hcbd_walls_init(hcbd_walls *wl, const hcbd_params *p, void *mem, size_t bytes, char *msg,
+                            size_t msg_size)
+{
+    hcbd_error e;
+    hcbd_result r;
+    char *base;
+    size_t off = 0;
+    if (msg && msg_size) msg[0] = '\0';
+    if (!wl || !p) return HCBD_ERR_NULL;
+    hcbd__clear(&e);
+    r = hcbd_params_check(p, e.msg, sizeof e.msg);
+    if (r == HCBD_OK && p->dynamics != HCBD_DYN_GIBD)
+        r = hcbd__fail(&e, HCBD_ERR_PARAM, -1, -1, "dynamics = %d: walls without a world are GI-BD's",
+                       (int)p->dynamics);
+    base = hcbd__init_block(&e, r, mem, bytes, r == HCBD_OK ? hcbd_walls_bytes(p) : 0, "hcbd_walls_bytes");
+    if (!base) {
+        if (msg && msg_size) snprintf(msg, msg_size, "%s", e.msg);
+        return e.code;
+    }
+    wl->p = *p;
+    hcbd__gibd_coef(p, &wl->c);
+    hcbd__zig_init(&wl->zig);
+    hcbd__ws_take(base, &off, &wl->ws, p);
+    hcbd__ws_init(&wl->ws, p, wl->c.m, wl->c.cw);
+    /* no artificial particles before the first draw */
+    memset(wl->ws.col_start, 0, (size_t)(wl->ws.acol[0] * wl->ws.acol[1] + 1) * sizeof(int32_t));
+    wl->step = -1;
+    return HCBD_OK;
+}
+
+hcbd_result hcbd_walls_draw(hcbd_walls *wl, int64_t step)
+{
+    if (!wl || !wl->ws.col_start) return HCBD_ERR_NULL;
+    if (step < 0) return HCBD_ERR_PARAM;
+    hcbd__ws_draw(&wl->ws, &wl->p, step);
+    wl->step = step;
+    return HCBD_OK;
+}
+
+double hcbd_walls_weights(const hcbd_walls *wl, const double r[3])
+{
+    if (!wl || !r) return NAN;
+    if (wl->p.wall.thickness <= 0 || !hcbd__ws_near(&wl->ws, &wl->p, r[1])) return 0.0;
+    return hcbd__ws_wsum(&wl->ws, &wl->p, wl->c.cw, r[0], r[1], r[2]);
+}
+
+void hcbd_walls_morris(const hcbd_walls *wl, int exact, int32_t id, const double r[3], double inv_rho,
+                       double v[3], double P[3])
+{
+    if (!wl || !r || !v || (!exact && !P) || wl->step < 0 || wl->ws.n_art <= 0) return;
+    if (!hcbd__ws_near(&wl->ws, &wl->p, r[1])) return;
+    hcbd__ws_morris(&wl->ws, &wl->p, &wl->zig, wl->c.cf, wl->c.m,
+                    hcbd__ws_pair_step_key(&wl->ws, wl->step, exact), id, r, inv_rho, v, P, exact);
+}
 #else
 /* Without walls: nothing to draw, no wall near, no force.  The step's calls
-   to these sit behind w->walls, w->n_art and w->has_gauss, all 0. */
+   to these sit behind w->walls, w->ws.n_art and w->has_gauss, all 0. */
 static int hcbd__art_count(const hcbd_params *p, int acol[2])
 {
     (void)p;
@@ -2514,6 +2659,11 @@ static inline double hcbd__art_wsum(const hcbd_world *w, double x, double y, dou
 static inline void hcbd__morris(hcbd_world *w, int i, uint64_t key, double P[3], int exact)
 {
     (void)w; (void)i; (void)key; (void)P; (void)exact;
+}
+static inline uint64_t hcbd__ws_pair_step_key(const hcbd__wallset *s, int64_t step, int exact)
+{
+    (void)s; (void)step; (void)exact;
+    return 0;
 }
 static inline int hcbd__wall_guard(const hcbd_world *w) { (void)w; return 0; }
 static inline double hcbd__wall_fy(const hcbd_world *w, double y) { (void)w; (void)y; return 0.0; }
@@ -2688,6 +2838,21 @@ static void hcbd__take(char *base, size_t *off, size_t bytes, void **out)
     *off = o + bytes;
 }
 
+/* A wall set's artificial particles and columns (none without walls) */
+static void hcbd__ws_take(char *base, size_t *off, hcbd__wallset *s, const hcbd_params *p)
+{
+    const size_t R = sizeof(hcbd_real), I = sizeof(int32_t);
+    size_t A, ncol;
+    s->n_art = hcbd__art_count(p, s->acol);
+    A = (size_t)s->n_art;
+    ncol = (size_t)s->acol[0] * (size_t)s->acol[1];
+    hcbd__take(base, off, A * R, (void **)&s->ax);
+    hcbd__take(base, off, A * R, (void **)&s->ay);
+    hcbd__take(base, off, A * R, (void **)&s->az);
+    hcbd__take(base, off, (ncol + 1) * I, (void **)&s->col_start);
+    hcbd__take(base, off, ncol * I, (void **)&s->col_of);
+}
+
 /* The arrays of a list of N particles (N + 1 for a cross list's starts is
    not needed: nb_start has N + 1) on nc cells with room for mp pairs. */
 static void hcbd__nl_take(char *base, size_t *off, hcbd__nlist *nl, size_t N, const int nc[3],
@@ -2757,8 +2922,7 @@ static size_t hcbd__layout(const hcbd_world_def *def, hcbd_world *w, char *base)
     hcbd_world *t = w ? w : &tmp;
     const hcbd_params *p = &def->params;
     int gibd = (hcbd__cells(p, nc), p->dynamics == HCBD_DYN_GIBD), pot = p->potential != HCBD_POT_IDEAL;
-    int acol[2], nart = hcbd__art_count(p, acol);
-    size_t A = (size_t)nart, ncol = (size_t)acol[0] * (size_t)acol[1], Q = sizeof(int64_t);
+    size_t Q = sizeof(int64_t);
     hcbd__take(base, &off, sizeof(hcbd__zig), (void **)&t->core.zig);
 #define HCBD__ARR(ptr, bytes) hcbd__take(base, &off, (bytes), (void **)&(t->ptr))
     HCBD__ARR(x, N * R); HCBD__ARR(y, N * R); HCBD__ARR(z, N * R);
@@ -2789,10 +2953,7 @@ static size_t hcbd__layout(const hcbd_world_def *def, hcbd_world *w, char *base)
         t->vx = t->vy = t->vz = NULL;
         t->rho = t->inv_rho = NULL;
     }
-    HCBD__ARR(ax, A * R); HCBD__ARR(ay, A * R); HCBD__ARR(az, A * R);
-    HCBD__ARR(acol_start, (ncol + 1) * I); HCBD__ARR(acol_of, ncol * I);
-    t->n_art = nart;
-    t->acol[0] = acol[0]; t->acol[1] = acol[1];
+    hcbd__ws_take(base, &off, &t->ws, p);
     if (p->potential == HCBD_POT_TABLE) {
         HCBD__ARR(tab_F, (size_t)p->table_n * sizeof(double));
         HCBD__ARR(tab_V, (size_t)p->table_n * sizeof(double));
@@ -2984,12 +3145,12 @@ static hcbd_result hcbd__set_particles(hcbd_world *w, int n, hcbd__src *src)
         hcbd__src_get(w, src, i, r);
         /* generated positions fill the channel only */
         if (w->walls && !src->xyz)
-            r[1] = w->wall_lo + r[1] / w->p.L[1] * (w->wall_hi - w->wall_lo);
+            r[1] = w->ws.lo + r[1] / w->p.L[1] * (w->ws.hi - w->ws.lo);
         for (d = 0; d < 3; ++d) hcbd__wrap(w->p.L[d], &r[d], &img[d]);
-        if (w->walls && (r[1] < w->wall_lo || r[1] > w->wall_hi))
+        if (w->walls && (r[1] < w->ws.lo || r[1] > w->ws.hi))
             return hcbd__fail(&w->err, HCBD_ERR_WALL, -1, i,
                               "particle %d at y = %g is inside a wall (the channel is "
-                              "%g <= y <= %g)", i, r[1], w->wall_lo, w->wall_hi);
+                              "%g <= y <= %g)", i, r[1], w->ws.lo, w->ws.hi);
         w->nl.x0[i] = (hcbd_real)r[0]; w->nl.y0[i] = (hcbd_real)r[1]; w->nl.z0[i] = (hcbd_real)r[2];
         /* A position that rounds to L in float storage belongs at 0. */
         if (w->nl.x0[i] >= (hcbd_real)w->p.L[0]) w->nl.x0[i] = 0;
@@ -3023,7 +3184,7 @@ static hcbd_result hcbd__set_particles(hcbd_world *w, int n, hcbd__src *src)
         int32_t img[3] = {0, 0, 0};
         hcbd__src_get(w, src, i, r);
         if (w->walls && !src->xyz)
-            r[1] = w->wall_lo + r[1] / w->p.L[1] * (w->wall_hi - w->wall_lo);
+            r[1] = w->ws.lo + r[1] / w->p.L[1] * (w->ws.hi - w->ws.lo);
         for (d = 0; d < 3; ++d) hcbd__wrap(w->p.L[d], &r[d], &img[d]);
         w->x[i] = w->nl.x0[i]; w->y[i] = w->nl.y0[i]; w->z[i] = w->nl.z0[i];
         w->ix[i] = img[0]; w->iy[i] = img[1]; w->iz[i] = img[2];
@@ -3059,7 +3220,7 @@ static hcbd_result hcbd__set_particles(hcbd_world *w, int n, hcbd__src *src)
     w->rho_valid = 0;
     w->nl.n_rebuilds = 0;
     /* no artificial particles before the first step draws them */
-    if (w->n_art > 0) memset(w->acol_start, 0, (size_t)(w->acol[0] * w->acol[1] + 1) * sizeof(int32_t));
+    if (w->ws.n_art > 0) memset(w->ws.col_start, 0, (size_t)(w->ws.acol[0] * w->ws.acol[1] + 1) * sizeof(int32_t));
     return HCBD_OK;
 }
 
@@ -4009,9 +4170,9 @@ static void hcbd__shardlow(hcbd_world *w)
 {
     const int n = w->n, nt = w->p.threads, ny = w->sw_n[0], nz = w->sw_n[1];
     const int nrows = ny * nz;
-    const int morris = HCBD__WALLS && w->walls && w->n_art > 0;
+    const int morris = HCBD__WALLS && w->walls && w->ws.n_art > 0;
     const uint64_t skey = hcbd__step_key(w, w->step);
-    const uint64_t wkey = morris ? hcbd__mix64(w->wall_pair_key ^ hcbd__mix64((uint64_t)w->step)) | 1 : 0;
+    const uint64_t wkey = morris ? hcbd__ws_pair_step_key(&w->ws, w->step, 1) : 0;
     const double fy = ny / w->p.L[1], fz = nz / w->p.L[2], Ly = w->p.L[1], Lz = w->p.L[2];
     /* rows move with particle 0, so that a boosted copy of the world sweeps
        in the same order (Galilean invariance of the trajectory) */
@@ -4086,9 +4247,9 @@ static hcbd_result hcbd__integrate(hcbd_world *w)
     const int track = w->has_pairs; /* displacement since the list build */
     const int fext_dr = w->fext_dr, walls = HCBD__WALLS && w->walls;
     const int gauss = walls && w->has_gauss, refl = walls && w->has_refl;
-    const int morris = walls && w->n_art > 0 && fric;
-    const double wlo = w->wall_lo, whi = w->wall_hi;
-    const uint64_t wkey = morris ? hcbd__mix64(w->wall_pair_key ^ hcbd__mix64((uint64_t)w->step)) : 0;
+    const int morris = walls && w->ws.n_art > 0 && fric;
+    const double wlo = w->ws.lo, whi = w->ws.hi;
+    const uint64_t wkey = morris ? hcbd__ws_pair_step_key(&w->ws, w->step, 0) : 0;
     int64_t npen = 0;
     int pen_id = INT_MAX;
     const int le = w->core.le_on, flux = w->core.stress_on;
@@ -4366,11 +4527,11 @@ static hcbd_result hcbd__guard(hcbd_world *w)
                               "guard at step %lld: particle %d has images (%d, %d, %d) near "
                               "overflow or x shift %g", (long long)w->step, k, (int)w->ix[i],
                               (int)w->iy[i], (int)w->iz[i], w->lx[i]);
-        if (hcbd__wall_guard(w) && (y < w->wall_lo || y > w->wall_hi))
+        if (hcbd__wall_guard(w) && (y < w->ws.lo || y > w->ws.hi))
             return hcbd__fail(&w->err, HCBD_ERR_WALL, w->step, k,
                               "guard at step %lld: particle %d at y = %.17g is inside a "
                               "wall (the channel is %g <= y <= %g)",
-                              (long long)w->step, k, y, w->wall_lo, w->wall_hi);
+                              (long long)w->step, k, y, w->ws.lo, w->ws.hi);
         if (w->gibd && w->rho_valid && !(w->rho[i] > 0 && isfinite(w->rho[i])))
             return hcbd__fail(&w->err, HCBD_ERR_NONFINITE, w->step, k,
                               "guard at step %lld: particle %d has density %g",
@@ -4395,7 +4556,7 @@ hcbd_result hcbd_step(hcbd_world *w, int nsteps)
         w->pr2_ok = 0;
         r = hcbd__ensure_list(w);
         if (r != HCBD_OK) return r;
-        if (HCBD__WALLS && w->n_art > 0) {
+        if (HCBD__WALLS && w->ws.n_art > 0) {
             /* this step's artificial particles enter the densities */
             hcbd__wall_draw(w);
             w->rho_current = 0;
@@ -6030,7 +6191,7 @@ static hcbd_result hcbd__ck_load(hcbd_world *w, const void *buf, size_t size)
                        w->core.stress_on, w->core.le_offset);
     /* the artificial wall particles of the saved step, for observables
        called before the next step draws its own */
-    if (r == HCBD_OK && HCBD__WALLS && w->n_art > 0) {
+    if (r == HCBD_OK && HCBD__WALLS && w->ws.n_art > 0) {
         w->step--;
         hcbd__wall_draw(w);
         w->step++;

@@ -111,10 +111,10 @@ int main(int argc, char **argv)
                     dtm = (now() - t0) * 1e9 / ((double)N * steps);
                     if (dtm < best) best = dtm;
                 }
-                printf("%-8s %8d %6d %7d %14.1f %10.1f %10.2f  %016llx\n", names[dyn], N, w.n_art, th,
+                printf("%-8s %8d %6d %7d %14.1f %10.1f %10.2f  %016llx\n", names[dyn], N, w.ws.n_art, th,
                        best, 100.0 * (w.nl.n_rebuilds - r0) / (reps * steps), (double)w.nl.npairs / N,
                        (unsigned long long)hcbd_state_checksum(&w));
-                fprintf(csv, "%s,%d,%d,%d,%.2f,%d,%.2f,%.3f,%s,%016llx\n", names[dyn], N, w.n_art, th,
+                fprintf(csv, "%s,%d,%d,%d,%.2f,%d,%.2f,%.3f,%s,%016llx\n", names[dyn], N, w.ws.n_art, th,
                         best, steps * reps, 100.0 * (w.nl.n_rebuilds - r0) / (reps * steps),
                         (double)w.nl.npairs / N, noise == HCBD_NOISE_UNIFORM ? "uniform" : "gauss",
                         (unsigned long long)hcbd_state_checksum(&w));

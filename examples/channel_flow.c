@@ -187,7 +187,10 @@ int main(int argc, char **argv)
         double *mem, *out, ys[10000], vs[10000], es[10000], q[3] = {0, 0, 0}, C[9] = {0};
         double gv[3], gs[3], vmax_err, slip_err;
         double lo, hi, nbulk = 0, nbulk_e2 = 0, tc_e2 = 0, tc_err, tc = 0, vmax, slip = 0, slope, dep = 0, dep_err, tdev = 0, meanc = 0;
-        int nint = 0, ncen = 0, s, nc = 0;
+        int nint = 0, ncen = 0, s, nc = 0, nsamp = (c.steps - start) / 10;
+        /* the carriers' mean x velocity in 10 blocks of the samples */
+        double vb[10] = {0}, vmean = 0, vmean_err = 0;
+        int nvb[10] = {0};
         int64_t pen;
         size_t bytes = hcbd_profile_bytes(nslab);
         p->xip = xips[r];
@@ -215,6 +218,13 @@ int main(int argc, char **argv)
                 return 1;
             }
             hcbd_profile_sample(&prof, &w);
+            {
+                double sv = 0;
+                int q, b = (int)((int64_t)k * 10 / nsamp);
+                for (q = 0; q < w.n; ++q) sv += w.vx[q];
+                vb[b] += sv / w.n;
+                nvb[b]++;
+            }
             if (k % 1000 == 999)
                 progress(&c, r * c.steps + start + 10 * (k + 1), nxip * c.steps, &t0);
         }
@@ -236,6 +246,9 @@ int main(int argc, char **argv)
             }
         }
         nbulk /= ncen; tc /= ncen; meanc /= nc;
+        for (s = 0; s < 10; ++s) vmean += (vb[s] /= nvb[s] > 0 ? nvb[s] : 1) / 10;
+        for (s = 0; s < 10; ++s) vmean_err += (vb[s] - vmean) * (vb[s] - vmean) / 90;
+        vmean_err = sqrt(vmean_err);
         for (s = 0; s < nslab; ++s) {
             double a = out[8 * s] - 0.5 * p->L[1] / nslab, b = a + p->L[1] / nslab;
             double ov = fmin(b, hi) - fmax(a, lo);
@@ -276,6 +289,7 @@ int main(int argc, char **argv)
         }
         printf("# summary xip=%g (xi'/xi = %g)\n", xips[r], xips[r] / p->xi);
         printf("v_max_measured=%.6g\nv_max_err=%.3g\nv_max_newtonian=%.6g\n", vmax, vmax_err, th.v_max);
+        printf("v_mean_measured=%.6g\nv_mean_err=%.3g\n", vmean, vmean_err);
         printf("slip_velocity_ratio=%.4g\nslip_velocity_ratio_err=%.3g\nslip_length=%.4g\n",
                vmax != 0 ? slip / vmax : 0, vmax != 0 ? slip_err / fabs(vmax) : 0,
                slope > 0 ? slip / slope : 0);

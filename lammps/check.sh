@@ -55,6 +55,11 @@ expect "group must be all" "s/^fix  *g all gibd/group half id 1:10\nfix g half g
 expect "pair = bogus is not exact or euler" "$fixline pair bogus/"
 expect "brownian = x is not lm or euler" "$fixline brownian x/"
 expect "needs an atom map" "/^atom_modify/d"
+expect "wall_mode = soft is not gauss, noslip or reflect" "$fixline wall 1.5 wall_mode soft/"
+expect "wall.thickness = -1" "$fixline wall -1/"
+expect "wall.beta_max = 0.5" "$fixline wall 1.5 wall_beta 0.5/"
+expect "wall_vlo = x is not a number" "$fixline wall 1.5 wall_vlo x/"
+expect "is inside a wall" "$fixline wall 1.5/"
 # the sweep's rows span x: two ranks along x are refused by name
 sed 's/^processors .*/processors 2 1 1/' "$in" > "$t/bad.in"
 out=$($MPI -np 2 "$lmp" -in "$t/bad.in" -var plugin "$plug" -var segments 1 -var steps 10 -log none 2>&1)
@@ -70,7 +75,7 @@ expect "pair_coeff I J f sigma" 's/${f} ${sigma} ${eps}/${f}/' star
 # differ by 1e-11 per pair); pair_style star's energy against
 # hcbd_potential_energy and the fix's friction averages (fric) against
 # hcbd_friction_average
-cc -O2 -std=c99 -I"$root" -o "$t/gibd_ref" "$root/lammps/gibd_ref.c" -lm
+cc -O2 -std=c99 -DHCBD_MODEL=HCBD_MODEL_WALLED -I"$root" -o "$t/gibd_ref" "$root/lammps/gibd_ref.c" -lm
 # agree A B TOL: the numbers of the strings A and B, one by one, within TOL
 # relative (and as many, and positive)
 agree() {
@@ -80,16 +85,19 @@ agree() {
 }
 compare() {
     name=$1 np=$2 tau=$3 xi=$4 xip=$5 kT=$6 dt=$7 norm=$8 noise=$9 f=${10} sigma=${11} eps=${12} seed=11
-    pair=${13:-exact} brownian=${14:-lm} gdot=${15:-0}
+    pair=${13:-exact} brownian=${14:-lm} gdot=${15:-0} wall=${16:-0} wmode=${17:-gauss} wvlo=${18:-0} wvhi=${19:-0} fx=${20:-0}
     if ! $MPI -np "$np" "$lmp" -in "$root/lammps/in.gibd_compare" -var plugin "$plug" -var tau "$tau" -var xi "$xi" \
         -var xip "$xip" -var kT "$kT" -var dt "$dt" -var norm "$norm" -var noise "$noise" -var f "$f" \
         -var pair "$pair" -var brownian "$brownian" -var gdot "$gdot" \
+        -var wall "$wall" -var wall_mode "$wmode" -var wall_vlo "$wvlo" -var wall_vhi "$wvhi" -var fx "$fx" \
         -var sigma "$sigma" -var eps "$eps" -var seed $seed -var start "$t/c0.txt" -var end "$t/c1.txt" \
         -var pe "$t/pe.txt" -var fric "$t/fr.txt" -var stressf "$t/st.txt" -log none -screen none > /dev/null 2>&1; then
         bad "$name: LAMMPS failed"; return
     fi
     if ! "$t/gibd_ref" "$t/c0.txt" "$t/cr.txt" 20 "$dt" "$tau" "$xi" "$xip" "$kT" 2.5 0.24 "$norm" $seed \
-        "$noise" "$f" "$sigma" "$eps" 2.5 "$pair" "$brownian" "$gdot" > "$t/ref.txt"; then bad "$name: gibd_ref failed"; return; fi
+        "$noise" "$f" "$sigma" "$eps" 2.5 "$pair" "$brownian" "$gdot" "$wall" "$wmode" "$wvlo" "$wvhi" "$fx" \
+        > "$t/ref.txt"; then bad "$name: gibd_ref failed"; return; fi
+    natoms=$(awk 'NR == 4 { print $1 }' "$t/c0.txt")
     Lc=$(awk 'NR == 6 { printf "%.17g", $2 - $1 }' "$t/c0.txt")
     # sheared: LAMMPS's atoms in hcbd's Lees-Edwards frame
     awk -v vle="$(awk -v g="$gdot" -v L="$Lc" 'BEGIN { printf "%.17g", g * L }')" -f "$root/lammps/le_canon.awk" \
@@ -99,14 +107,18 @@ compare() {
     read -r mx mv _ < <(awk -v L="$Lc" -f "$root/lammps/maxdiff.awk" "$t/c0.txt" "$t/c1.txt")
     echo "    $name: largest |x - x_hcbd| $dx, |v - v_hcbd| $dv (moved by $mx, $mv; sqrt(kT/m) $vth)"
     if awk -v dx="$dx" -v dv="$dv" -v mx="$mx" -v mv="$mv" -v u="$vth" -v n="$n" \
-        'BEGIN { exit !(n == 512 && dx < 1e-9 && dv < 1e-8 * u && mx > 0.01 && mv > 0.5 * u) }'; then
+        -v N="$natoms" 'BEGIN { exit !(n == N && N > 400 && dx < 1e-9 && dv < 1e-8 * u && mx > 0.01 && mv > 0.5 * u) }'; then
         ok "$name: 20 steps of fix gibd = hcbd's world, atom by atom"
     else bad "$name: fix gibd and hcbd's world part: |dx| $dx, |dv| $dv"; fi
     # pe.txt: the pair energy and fric's vector of the start (setup); fr.txt:
-    # fric's vector of the last step; ref.txt: hcbd's, in the same order
+    # fric's vector of the last step; ref.txt: hcbd's, in the same order.
+    # With walls the densities in them hold artificial particles of another
+    # step in each code (hcbd's world: none before its first step): the
+    # atoms above are the check
     read -r pe0 fr0 < "$t/pe.txt"; read -r rpe rfr0 < <(sed -n 1p "$t/ref.txt")
     fr1=$(cat "$t/fr.txt"); rfr1=$(sed -n 2p "$t/ref.txt")
-    if agree "$fr0" "$rfr0" 1e-10 && agree "$fr1" "$rfr1" 1e-10; then
+    if [ "$wall" != 0 ]; then :
+    elif agree "$fr0" "$rfr0" 1e-10 && agree "$fr1" "$rfr1" 1e-10; then
         ok "$name: fric's friction averages at the start and the end = hcbd_friction_average ($fr1)"
     else bad "$name: fric's friction averages $fr0 / $fr1, hcbd's $rfr0 / $rfr1"; fi
     # the shear stress of the 20 steps: the background exchanges (and, under
@@ -129,6 +141,13 @@ compare "exact sweep, sheared (gdot = 20), ideal, 2016 density, Gaussian, 2 rank
 compare "exact sweep, sheared (gdot = 15), stars, 2014 density, uniform, 4 ranks" 4 5e-3 0.7 1.6 1.3 1e-4 2014 uniform 128 0.9 1.2 exact lm 15
 compare "Euler pairs, sheared (gdot = 20), ideal, 2016 density, Gaussian, 2 ranks" 2 3e-3 1.3 0.8 0.9 2e-4 2016 gauss 0 1 1 euler euler 20
 compare "Euler pairs and Brownian steps, stars, 2016 density, Gaussian, 2 ranks" 2 3e-3 1.3 0.8 0.9 1e-4 2016 gauss 128 0.95 1.1 euler euler
+# walls (2016): the artificial particles in the densities, the Morris pairs
+# after each atom's own pairs (sweep) or with the Euler exchanges, moving
+# walls, the repulsion, reflection, a body force (fix addforce)
+compare "walls, no-slip, moving, body force, exact sweep, ideal, 2016 density, Gaussian, 2 ranks" 2 3e-3 1.3 0.8 0.9 2e-4 2016 gauss 0 1 1 exact lm 0 1.5 noslip 0.7 -0.4 2.5
+compare "walls, Gaussian, exact sweep, stars, 2014 density, uniform, 4 ranks" 4 5e-3 0.7 1.6 1.3 1e-4 2014 uniform 128 0.9 1.2 exact lm 0 1.5 gauss 0 0 0
+compare "walls, no-slip, moving, Euler pairs, ideal, 2016 density, Gaussian, 2 ranks" 2 3e-3 1.3 0.8 0.9 2e-4 2016 gauss 0 1 1 euler lm 0 1.5 noslip -0.5 0.3 1.7
+compare "walls, reflecting, exact sweep, ideal, 2016 density, Gaussian, 1 rank" 1 3e-3 1.3 0.8 0.9 2e-4 2016 gauss 0 1 1 exact lm 0 1.5 reflect 0 0 0
 if [ -n "${HCBD_LAMMPS_QUICK:-}" ]; then # lammps/mutants.sh: the checks up to here
     echo "$pass passed, $fail failed"
     [ $fail -eq 0 ]; exit
@@ -293,6 +312,40 @@ if $MPI -np 2 "$lmp" -in "$shear" -var plugin "$plug" -var seed 3 -var out "$t/e
     if within "$E" "$eE" "$hE" "$heE"; then ok "sheared, 2 ranks: the viscosity equals hcbd's shear_flow"
     else bad "sheared, 2 ranks: viscosity $E +- $eE, shear_flow's $hE +- $heE"; fi
 else bad "sheared, 2 ranks: LAMMPS failed: $(grep ERROR "$t/shear.log" | head -n 1)"; fi
+
+# walls: 1, 2 and 4 ranks end in the same bits after 500 steps of the
+# channel (no-slip walls, body force) from one restart file of
+# lammps/in.gibd_channel; on 2 ranks the carriers' mean flow velocity equals
+# hcbd's channel_flow at the same parameters (ideal carriers, 13^3 box,
+# walls 1.5 thick, xi' = 1.5, tau = 2e-3, dt = 2e-4, g = 200, 32000 steps
+# after 8000) within four combined block errors, and no atom enters a wall
+chan=$root/lammps/in.gibd_channel
+"$lmp" -in "$chan" -var plugin "$plug" -var seed 9 -var steps 1000 -var save "$t/rc0" -log none -screen none \
+    > /dev/null 2>&1
+for np in 1 2 4; do
+    $MPI -np $np "$lmp" -in "$cont" -var plugin "$plug" -var seed 9 -var restart "$t/rc0" -var steps 500 \
+        -var tau 2e-3 -var xip 1.5 -var dt 2e-4 -var wall 1.5 -var wall_mode noslip -var fx 0.6 \
+        -var dump "$t/w$np.txt" -log none -screen none > /dev/null 2>&1
+done
+if [ -s "$t/w1.txt" ] && cmp -s "$t/w1.txt" "$t/w2.txt" && cmp -s "$t/w1.txt" "$t/w4.txt"; then
+    ok "walls, 1, 2 and 4 ranks: the same atoms bit for bit after 500 steps"
+else bad "walls, 1, 2 and 4 ranks: the atoms differ after 500 steps"; fi
+"$root/build/channel_flow" potential=ideal xip=1.5 tau=2e-3 dt=2e-4 g=200 wall=noslip steps=40000 threads=2 \
+    out="$t/cf" > "$t/cf.txt" 2>/dev/null
+hV=$(awk -F= '$1 == "v_mean_measured" { print $2 }' "$t/cf.txt")
+heV=$(awk -F= '$1 == "v_mean_err" { print $2 }' "$t/cf.txt")
+if $MPI -np 2 "$lmp" -in "$chan" -var plugin "$plug" -var seed 4 -var out "$t/vm.txt" -log "$t/chan.log" \
+    -screen none > /dev/null 2>&1; then
+    read -r V eV < <(awk '!/^#/ { e[++n] = $2 } END { for (k = 1; k <= n; ++k) s += e[k]; s /= n
+        for (k = 1; k <= n; ++k) v += (e[k] - s) ^ 2; printf "%.6g %.3g\n", s, sqrt(v / (n * (n - 1))) }' "$t/vm.txt")
+    pen=$(awk '/^ *Step/ { f = 1; next } /^Loop/ { f = 0 } f { p = $3 } END { print p }' "$t/chan.log")
+    echo "    channel: mean flow velocity fix gibd $V +- $eV, hcbd's channel_flow $hV +- $heV; atoms in walls $pen"
+    if within "$V" "$eV" "$hV" "$heV" && [ "$(awk -v n="$(wc -l < "$t/vm.txt")" 'BEGIN { print n }')" -ge 11 ]; then
+        ok "walls, 2 ranks: the channel's mean flow velocity equals hcbd's channel_flow"
+    else bad "walls, 2 ranks: mean flow velocity $V +- $eV, channel_flow's $hV +- $heV"; fi
+    if [ "$pen" = 0 ]; then ok "walls, 2 ranks: no atom entered a wall"
+    else bad "walls, 2 ranks: $pen atom-steps inside a wall"; fi
+else bad "walls, 2 ranks: LAMMPS failed: $(grep ERROR "$t/chan.log" | head -n 1)"; fi
 
 echo "$pass passed, $fail failed"
 [ $fail -eq 0 ]

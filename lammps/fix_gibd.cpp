@@ -80,7 +80,7 @@ FixGIBD::FixGIBD(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), list(nullptr), glist(nullptr), inv_rho(nullptr), acc(nullptr), xw(nullptr), vc(nullptr),
     touched(nullptr), kw(nullptr),
     nmax(0), nacc(1), cmode(FWD_RHO), wscale(0), vscale(0), fric_every(0), fric{0, 0, 0}, exact(1),
-    lm(1), ny(1), nz(1), le_s(0), le_v(0), stress(0), sbg(0), scr(0), sfl{0, 0}
+    lm(1), ny(1), nz(1), le_s(0), le_v(0), stress(0), sbg(0), scr(0), sfl{0, 0}, walls(0), started(0), npen{0, 0}
 {
   p = hcbd_params_default();
   p.potential = HCBD_POT_IDEAL; // the conservative forces are LAMMPS's pair style
@@ -119,7 +119,21 @@ FixGIBD::FixGIBD(LAMMPS *lmp, int narg, char **arg) :
       if (!strcmp(v, "yes")) stress = 1;
       else if (!strcmp(v, "no")) stress = 0;
       else error->all(FLERR, "fix gibd: stress = {} is not yes or no", v);
-    } else if (!strcmp(key, "fric")) {
+    } else if (!strcmp(key, "wall")) {
+      p.wall.thickness = number(error, key, v);
+    } else if (!strcmp(key, "wall_mode")) {
+      if (!strcmp(v, "gauss")) p.wall.mode = HCBD_WALL_GAUSS;
+      else if (!strcmp(v, "noslip")) p.wall.mode = HCBD_WALL_NOSLIP;
+      else if (!strcmp(v, "reflect")) p.wall.mode = HCBD_WALL_REFLECT;
+      else error->all(FLERR, "fix gibd: wall_mode = {} is not gauss, noslip or reflect", v);
+    } else if (!strcmp(key, "wall_vlo")) p.wall.vx[0] = number(error, key, v);
+    else if (!strcmp(key, "wall_vhi")) p.wall.vx[1] = number(error, key, v);
+    else if (!strcmp(key, "wall_a")) p.wall.a = number(error, key, v);
+    else if (!strcmp(key, "wall_b")) p.wall.b = number(error, key, v);
+    else if (!strcmp(key, "wall_plane")) p.wall.plane = number(error, key, v);
+    else if (!strcmp(key, "wall_shift")) p.wall.shift = number(error, key, v);
+    else if (!strcmp(key, "wall_beta")) p.wall.beta_max = number(error, key, v);
+    else if (!strcmp(key, "fric")) {
       char *end;
       long e = strtol(v, &end, 10);
       if (end == v || *end || e < 1 || e > 1000000000)
@@ -137,10 +151,11 @@ FixGIBD::FixGIBD(LAMMPS *lmp, int narg, char **arg) :
   time_integrate = 1;
   comm_forward = 6;
   comm_reverse = 4;
-  if (fric_every || stress) {
+  walls = p.wall.thickness > 0;
+  if (fric_every || stress || walls) {
     vector_flag = 1;
-    size_vector = stress ? 5 : 3;
-    global_freq = stress ? 1 : fric_every;
+    size_vector = walls ? 6 : stress ? 5 : 3;
+    global_freq = stress || walls ? 1 : fric_every;
     extvector = 0;
   }
 }
@@ -172,6 +187,15 @@ void FixGIBD::init()
   for (int d = 0; d < 3; ++d) p.L[d] = domain->prd[d];
   p.rcut = p.Rc; // no hcbd pair potential: its cut-off only has to be valid
   if (hcbd_gibd_coef_of(&p, &c, msg, sizeof msg) != HCBD_OK) error->all(FLERR, "fix gibd: {}", msg);
+  if (walls) {
+    // hcbd's walls lie across y's periodic edge; Lees-Edwards is the other
+    // boundary condition in y (hcbd refuses the two together)
+    if (domain->triclinic) error->all(FLERR, "fix gibd: walls need an orthogonal box (no Lees-Edwards with walls)");
+    if (!domain->yperiodic) error->all(FLERR, "fix gibd: walls need a periodic y (they lie across its edge)");
+    wmem.assign(hcbd_walls_bytes(&p), 0);
+    if (hcbd_walls_init(&wl, &p, wmem.data(), wmem.size(), msg, sizeof msg) != HCBD_OK)
+      error->all(FLERR, "fix gibd: {}", msg);
+  }
   if (!comm->ghost_velocity) error->all(FLERR, "fix gibd: needs ghost velocities (comm_modify vel yes)");
   if (!force->newton_pair) error->all(FLERR, "fix gibd: needs newton on (each pair once, sums to the owners)");
   if (!force->pair || force->pair->cutforce < p.Rc)
@@ -287,7 +311,11 @@ void FixGIBD::densities()
   nacc = 1;
   cmode = REV_ACC;
   comm->reverse_comm_fix(this, 1);
-  for (int i = 0; i < atom->nlocal; ++i) inv_rho[i] = 1.0 / hcbd_gibd_density(&c, (double) acc[i] / wscale);
+  for (int i = 0; i < atom->nlocal; ++i) {
+    double s = (double) acc[i] / wscale;
+    if (walls) s += hcbd_walls_weights(&wl, xw + 3 * i); // the artificial particles of the step
+    inv_rho[i] = 1.0 / hcbd_gibd_density(&c, s);
+  }
   cmode = FWD_RHO;
   comm->forward_comm_fix(this, 1);
 }
@@ -322,7 +350,26 @@ void FixGIBD::setup(int)
       error->all(FLERR, "fix gibd: the box may only shear (fix deform xy ...), not change its edges or xz, yz");
   if (domain->h_rate[5] != 0.0 && !domain->deform_vremap)
     error->all(FLERR, "fix gibd: a shearing box needs fix deform ... remap v (the velocity jump across y)");
+  if (walls && !started) {
+    // as hcbd_world_set_positions: atoms start in the channel (later, in a
+    // run, one pushed into a wall is counted, f_ID[6])
+    double **x = atom->x;
+    tagint first = MAXTAGINT, all;
+    for (int i = 0; i < atom->nlocal; ++i) {
+      double u = x[i][1] - domain->boxlo[1];
+      u -= p.L[1] * std::floor(u / p.L[1]);
+      if ((u < wl.ws.lo || u > wl.ws.hi) && atom->tag[i] < first) first = atom->tag[i];
+    }
+    MPI_Allreduce(&first, &all, 1, MPI_LMP_TAGINT, MPI_MIN, world);
+    if (all != MAXTAGINT)
+      error->all(FLERR, "fix gibd: atom {} is inside a wall (the channel is {} <= y - ylo <= {}; create the atoms in it)",
+                 all, wl.ws.lo, wl.ws.hi);
+  }
+  started = 1;
   if (!fric_every || update->ntimestep % fric_every) return;
+  grow();
+  canonical();
+  if (walls) hcbd_walls_draw(&wl, update->ntimestep); // the coming step's
   densities();
   friction_averages();
 }
@@ -473,18 +520,14 @@ void FixGIBD::sweep_plan()
   }
 }
 
-// hcbd's exact pair sweep (HCBD_PAIR_SHARDLOW) on this rank's rows, colour
-// by colour; the velocities a colour changed on ghost copies go back to
-// their owners, and the ghosts are refreshed before the next colour
-void FixGIBD::sweep(int64_t step)
+// The owned atoms' canonical positions xw in [0, L) and velocities vc:
+// the owner wraps, so that every copy carries the same bits; an atom past
+// y's edge is its image inside, moved along x and slowed by the jump (what
+// LAMMPS's remap does at the next neighbour-list build)
+void FixGIBD::canonical()
 {
-  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
   double **x = atom->x, **v = atom->v;
-  const tagint *tag = atom->tag;
-  for (int i = 0; i < nlocal; ++i) {
-    // the owner wraps, so that every copy carries the same bits; an atom
-    // past y's edge is its image inside, moved along x and slowed by the
-    // jump (what LAMMPS's remap does at the next neighbour-list build)
+  for (int i = 0; i < atom->nlocal; ++i) {
     double u[3];
     for (int d = 0; d < 3; ++d) u[d] = x[i][d] - domain->boxlo[d];
     const int k = u[1] < 0.0 ? -1 : (u[1] >= p.L[1] ? 1 : 0);
@@ -502,6 +545,16 @@ void FixGIBD::sweep(int64_t step)
     }
     if (k) vc[3 * i] -= k * le_v;
   }
+}
+
+// hcbd's exact pair sweep (HCBD_PAIR_SHARDLOW) on this rank's rows, colour
+// by colour; the velocities a colour changed on ghost copies go back to
+// their owners, and the ghosts are refreshed before the next colour
+void FixGIBD::sweep(int64_t step)
+{
+  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
+  double **v = atom->v;
+  const tagint *tag = atom->tag;
   if (comm->nprocs > 1) { // on one rank every copy that takes part is owned
     cmode = FWD_XW;
     comm->forward_comm_fix(this, 6);
@@ -522,6 +575,8 @@ void FixGIBD::sweep(int64_t step)
         if (stress) sbg += part_y[t] * c.m * (vc[3 * i] - vx0); // y_ij P_ij,x
         touched[j] = 1;
       }
+      // the owner's Morris pairs, right after its own pairs (as hcbd's sweep)
+      if (walls) hcbd_walls_morris(&wl, 1, ti, xw + 3 * i, inv_rho[i], vc + 3 * i, nullptr);
       touched[i] = 1;
     }
     if (comm->nprocs == 1) continue; // every copy that takes part is owned
@@ -542,7 +597,10 @@ void FixGIBD::final_integrate()
 {
   const int nlocal = atom->nlocal;
   const double dt = p.dt, m = c.m, dt_xi = dt / p.xi, dt_m = dt * (1.0 / m);
-  const double bd = std::sqrt(2.0 * p.kT * dt / p.xi), sdz = lm ? 0.5 * bd : bd;
+  // reflecting walls take Euler-Maruyama Brownian steps, as hcbd's world
+  const int refl = walls && p.wall.mode == HCBD_WALL_REFLECT, lmw = lm && !refl;
+  const int gauss = walls && !refl && p.wall.a > 0;
+  const double bd = std::sqrt(2.0 * p.kT * dt / p.xi), sdz = lmw ? 0.5 * bd : bd;
   const int64_t step = update->ntimestep - 1; // hcbd's step counter: the step being made
   double **x = atom->x, **v = atom->v, **f = atom->f;
   const tagint *tag = atom->tag;
@@ -551,6 +609,9 @@ void FixGIBD::final_integrate()
   // [-Lx/2, Lx/2]) and the velocity jump across y (fix deform remap v)
   le_s = domain->triclinic ? domain->xy - p.L[0] * std::floor(domain->xy / p.L[0] + 0.5) : 0.0;
   le_v = domain->deform_vremap ? domain->h_rate[5] : 0.0;
+  grow();
+  canonical();
+  if (walls) hcbd_walls_draw(&wl, step);
   densities();
   if (fric_every && update->ntimestep % fric_every == 0) friction_averages();
   sbg = scr = 0.0;
@@ -560,23 +621,45 @@ void FixGIBD::final_integrate()
     const int32_t id = (int32_t) (tag[i] - 1);
     double z[3];
     hcbd_noise_particle(&ns, step, id, z);
-    if (lm) {
+    if (lmw) {
       double z1[3];
       hcbd_noise_particle(&ns, step + 1, id, z1);
       for (int d = 0; d < 3; ++d) z[d] += z1[d];
     }
     const int k0 = stress && le_v != 0.0 ? y_wraps(x[i][1]) : 0;
+    double F[3] = {f[i][0], f[i][1], f[i][2]};
+    const double y0 = x[i][1];
+    if (gauss) {
+      double fy;
+      hcbd_wall_potential(&p, xw[3 * i + 1], &fy);
+      F[1] += fy;
+    }
     if (exact) {
       // kick before drift, as hcbd's world after its sweep
       for (int d = 0; d < 3; ++d) {
-        v[i][d] += f[i][d] * dt_m;
-        x[i][d] += f[i][d] * dt_xi + sdz * z[d] + v[i][d] * dt;
+        v[i][d] += F[d] * dt_m;
+        x[i][d] += F[d] * dt_xi + sdz * z[d] + v[i][d] * dt;
       }
     } else {
+      double P[3] = {0, 0, 0}; // the Morris exchanges of the velocities of t
+      if (walls) hcbd_walls_morris(&wl, 0, id, xw + 3 * i, inv_rho[i], v[i], P);
       for (int d = 0; d < 3; ++d) {
-        x[i][d] += v[i][d] * dt + f[i][d] * dt / p.xi + sdz * z[d];
-        v[i][d] += f[i][d] * dt / m + (double) acc[3 * i + d] / vscale;
+        x[i][d] += v[i][d] * dt + F[d] * dt / p.xi + sdz * z[d];
+        v[i][d] += F[d] * dt / m + (double) acc[3 * i + d] / vscale + P[d] / m;
       }
+    }
+    if (walls) {
+      // specular reflection at the interface the atom faces (reflect), and
+      // the atoms found inside a wall after the step (counted, f_ID[6])
+      double u = xw[3 * i + 1] + (x[i][1] - y0);
+      if (refl) {
+        const double lo = wl.ws.lo, hi = wl.ws.hi, u0 = u;
+        if (xw[3 * i + 1] < 0.5 * p.L[1]) { if (u < lo) u = 2.0 * lo - u; }
+        else if (u > hi) u = 2.0 * hi - u;
+        x[i][1] += u - u0;
+      }
+      u -= p.L[1] * std::floor(u / p.L[1]);
+      if (u < wl.ws.lo || u > wl.ws.hi) npen[0] += 1.0;
     }
     if (stress && le_v != 0.0) {
       // the momentum a carrier takes across the sheared boundary (in the
@@ -586,6 +669,12 @@ void FixGIBD::final_integrate()
       if (k1 > k0) scr += m * vx;
       else if (k1 < k0) scr -= m * (vx + le_v);
     }
+  }
+  if (walls) {
+    double tot;
+    MPI_Allreduce(npen, &tot, 1, MPI_DOUBLE, MPI_SUM, world);
+    npen[1] += tot;
+    npen[0] = 0.0;
   }
   if (stress) {
     // this step's shear stress S_yx: the background exchanges and the
@@ -670,7 +759,7 @@ void FixGIBD::unpack_reverse_comm(int n, int *slist, double *buf)
 
 double FixGIBD::compute_vector(int n)
 {
-  return n < 3 ? fric[n] : sfl[n - 3];
+  return n < 3 ? fric[n] : n < 5 ? sfl[n - 3] : npen[1];
 }
 
 // how many box heights y lies above the box (-1 below, 0 inside)

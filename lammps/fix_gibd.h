@@ -44,6 +44,7 @@ class FixGIBD : public Fix {
   void sweep(int64_t step);
   int le_delta(const double *ri, const double *rj, double *r2, double *ry) const;
   int y_wraps(double y) const;
+  void canonical();
   hcbd_params p;            // the model's parameters (dt and box from LAMMPS)
   hcbd_gibd_coef c;         // its pair coefficients (hcbd_gibd_coef_of)
   hcbd_noise_stream ns;     // pair and Brownian noise keyed by (seed, step, ids)
@@ -81,6 +82,13 @@ class FixGIBD : public Fix {
     double r2, ry;
   };
   std::vector<Cand> cand_buf;
+  // walls (keyword wall): every rank draws every artificial particle of the
+  // step (hcbd_walls, counter-keyed, as hcbd's world draws them)
+  int walls;                 // 1: p.wall.thickness > 0
+  int started;               // setup() ran once (atoms checked against the walls)
+  hcbd_walls wl;
+  std::vector<char> wmem;    // wl's artificial particles
+  double npen[2];            // real atoms inside a wall: this step, all steps
 };
 
 }    // namespace LAMMPS_NS

@@ -1,7 +1,7 @@
 /* gibd_ref: hcbd's own GI-BD world advanced from the atoms of a LAMMPS
    dump, for make test-lammps to compare fix gibd with, atom by atom.  Usage:
      gibd_ref IN OUT steps dt tau xi xip kT Rc density norm seed noise f sigma eps rcut
-              pair brownian gdot
+              pair brownian gdot [wall mode vlo vhi fx]
    IN: write_dump custom id x y z vx vy vz, sorted by id (tags 1..n); OUT:
    "id x y z vx vy vz" after `steps` steps, wrapped into the box; stdout:
    the pair energy and hcbd_friction_average (nk = 1) of IN, then that of
@@ -11,7 +11,9 @@
    ideal carriers; otherwise the star potential (2014 eq. 28, from the
    formula, not the force table).  noise: gauss or uniform; pair: exact
    (HCBD_PAIR_SHARDLOW, the world's sweep) or euler; brownian: lm or euler;
-   gdot: the Lees-Edwards shear rate from IN on (offset 0 there). */
+   gdot: the Lees-Edwards shear rate from IN on (offset 0 there); wall: the
+   walls' thickness (walled build; mode gauss, noslip or reflect, the walls'
+   x velocities vlo and vhi), fx: a body force along x on every carrier. */
 #define HCBD_IMPLEMENTATION
 #include "hcbd.h"
 
@@ -28,9 +30,9 @@ int main(int argc, char **argv)
     double lo[3], hi[3], fr[3], *x, *v;
     int n = 0, i, d, steps;
     FILE *in, *out;
-    if (argc != 21) {
+    if (argc != 21 && argc != 26) {
         fprintf(stderr, "usage: gibd_ref IN OUT steps dt tau xi xip kT Rc density norm seed noise f sigma eps "
-                        "rcut pair brownian gdot\n");
+                        "rcut pair brownian gdot [wall mode vlo vhi fx]\n");
         return 2;
     }
     in = fopen(argv[1], "r");
@@ -74,6 +76,14 @@ int main(int argc, char **argv)
     p->pair_integrator = strcmp(argv[18], "euler") ? HCBD_PAIR_SHARDLOW : HCBD_PAIR_EULER;
     p->brownian = strcmp(argv[19], "euler") ? HCBD_BROWNIAN_LM : HCBD_BROWNIAN_EULER;
     p->gdot = atof(argv[20]);
+    if (argc == 26) {
+        p->wall.thickness = atof(argv[21]);
+        p->wall.mode = !strcmp(argv[22], "noslip") ? HCBD_WALL_NOSLIP
+                       : !strcmp(argv[22], "reflect") ? HCBD_WALL_REFLECT : HCBD_WALL_GAUSS;
+        p->wall.vx[0] = atof(argv[23]);
+        p->wall.vx[1] = atof(argv[24]);
+        p->fext[0] = atof(argv[25]);
+    }
     if (hcbd_world_create(&w, &def) != HCBD_OK || hcbd_world_set_positions(&w, n, x) != HCBD_OK ||
         hcbd_world_set_velocities(&w, v) != HCBD_OK) {
         fprintf(stderr, "gibd_ref: %s\n", w.err.msg);

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # make mutants-lammps: each injected error of the plugin (a single
 # coefficient 10 % off in fix_gibd.cpp, pair_star.cpp, or the functions of
-# hcbd.h that only the plugin calls (hcbd_gibd_pair_exact)) must make the
+# hcbd.h that only the plugin calls (hcbd_gibd_pair_exact, hcbd_walls_morris)) must make the
 # quick part of make test-lammps fail (lammps/check.sh with
 # HCBD_LAMMPS_QUICK=1: the atom-by-atom comparison with hcbd's world).
 # Builds the plugin once per mutant against build/lammps (make lammps).
@@ -43,8 +43,8 @@ PY
     else echo "$name: MISSED"; missed=$((missed + 1)); fi
 done 3<<'LIST'
 brownian_amplitude|fix_gibd.cpp|std::sqrt(2.0 * p.kT * dt / p.xi)|std::sqrt(2.2 * p.kT * dt / p.xi)
-mobility|fix_gibd.cpp|f[i][d] * dt / p.xi|1.1 * f[i][d] * dt / p.xi
-force_on_background|fix_gibd.cpp|v[i][d] += f[i][d] * dt / m|v[i][d] += 1.1 * f[i][d] * dt / m
+mobility|fix_gibd.cpp|F[d] * dt / p.xi|1.1 * F[d] * dt / p.xi
+force_on_background|fix_gibd.cpp|v[i][d] += F[d] * dt / m|v[i][d] += 1.1 * F[d] * dt / m
 advection|fix_gibd.cpp|x[i][d] += v[i][d] * dt|x[i][d] += 1.1 * v[i][d] * dt
 pair_friction|fix_gibd.cpp|(sdt * (v[j][d] - v[i][d])|(1.1 * sdt * (v[j][d] - v[i][d])
 pair_noise|fix_gibd.cpp|std::sqrt(two_kT * sdt)|std::sqrt(2.2 * p.kT * sdt)
@@ -55,10 +55,10 @@ fric_scale|fix_gibd.cpp|fscale = p.tau / (p.dt * c.m);|fscale = 1.1 * p.tau / (p
 fric_wave|fix_gibd.cpp|fs[2] += 2.0 * fij|fs[2] += 2.2 * fij
 density|fix_gibd.cpp|inv_rho[i] = 1.0 / hcbd_gibd_density|inv_rho[i] = 1.1 / hcbd_gibd_density
 noise_step|fix_gibd.cpp|update->ntimestep - 1;|update->ntimestep;
-exact_kick|fix_gibd.cpp|v[i][d] += f[i][d] * dt_m;|v[i][d] += 1.1 * f[i][d] * dt_m;
-exact_mobility|fix_gibd.cpp|x[i][d] += f[i][d] * dt_xi|x[i][d] += 1.1 * f[i][d] * dt_xi
+exact_kick|fix_gibd.cpp|v[i][d] += F[d] * dt_m;|v[i][d] += 1.1 * F[d] * dt_m;
+exact_mobility|fix_gibd.cpp|x[i][d] += F[d] * dt_xi|x[i][d] += 1.1 * F[d] * dt_xi
 exact_advection|fix_gibd.cpp|+ v[i][d] * dt;|+ 1.1 * v[i][d] * dt;
-lm_amplitude|fix_gibd.cpp|sdz = lm ? 0.5 * bd : bd|sdz = lm ? 0.55 * bd : bd
+lm_amplitude|fix_gibd.cpp|sdz = lmw ? 0.5 * bd : bd|sdz = lmw ? 0.55 * bd : bd
 lm_next_step|fix_gibd.cpp|hcbd_noise_particle(&ns, step + 1, id, z1);|hcbd_noise_particle(&ns, step + 2, id, z1);
 sweep_rows|fix_gibd.cpp|n[d] = k >= 3.0 ? 3 * (int)|n[d] = k >= 5.5 ? 3 * (int)
 sweep_anchor|fix_gibd.cpp|const double yy = r[1] - o[0]|const double yy = r[1] - 1.1 * o[0]
@@ -74,6 +74,14 @@ stress_exchange_euler|fix_gibd.cpp|if (stress) sbg += dy * (sdt|if (stress) sbg 
 stress_carrier_up|fix_gibd.cpp|if (k1 > k0) scr += m * vx;|if (k1 > k0) scr += 1.1 * m * vx;
 stress_carrier_down|fix_gibd.cpp|else if (k1 < k0) scr -= m * (vx + le_v);|else if (k1 < k0) scr -= m * (vx + 1.1 * le_v);
 stress_carrier_area|fix_gibd.cpp|sfl[1] = -tot[1] / (p.L[0] * p.L[2] * dt);|sfl[1] = -1.1 * tot[1] / (p.L[0] * p.L[2] * dt);
+wall_weights|fix_gibd.cpp|s += hcbd_walls_weights(&wl, xw + 3 * i);|s += 1.1 * hcbd_walls_weights(&wl, xw + 3 * i);
+wall_step|fix_gibd.cpp|if (walls) hcbd_walls_draw(&wl, step);|if (walls) hcbd_walls_draw(&wl, step + 1);
+wall_morris_sweep|fix_gibd.cpp|xw + 3 * i, inv_rho[i], vc + 3 * i, nullptr)|xw + 3 * i, 1.1 * inv_rho[i], vc + 3 * i, nullptr)
+wall_morris_euler|fix_gibd.cpp|+ P[d] / m;|+ 1.1 * P[d] / m;
+wall_force|fix_gibd.cpp|F[1] += fy;|F[1] += 1.1 * fy;
+wall_reflect_lo|fix_gibd.cpp|if (u < lo) u = 2.0 * lo - u;|if (u < lo) u = 2.2 * lo - u;
+wall_reflect_hi|fix_gibd.cpp|else if (u > hi) u = 2.0 * hi - u;|else if (u > hi) u = 2.2 * hi - u;
+wall_pair_key|hcbd.h|hcbd__ws_pair_step_key(&wl->ws, wl->step, exact)|hcbd__ws_pair_step_key(&wl->ws, wl->step + 1, exact)
 star_force|pair_star.cpp|const double fpair = hcbd_star_force_over_r(|const double fpair = 1.1 * hcbd_star_force_over_r(
 star_sigma|pair_star.cpp|sigma[i][j] = s1;|sigma[i][j] = 1.1 * s1;
 star_eps|pair_star.cpp|eps[i][j] = e1;|eps[i][j] = 1.1 * e1;

@@ -867,8 +867,8 @@ static int abs_morris_of(const hcbd_world *w, const double *x, int i, abs_morris
         if (j != i && abs_sep(x, i, j, p->L, d) < Rc) return 0;
     }
     /* the artificial particles within Rc (a coarse test in double first) */
-    for (k = 0, nn = 0; k < w->n_art && nn < 256; ++k) {
-        double ex = x[3 * i] - w->ax[k], ey = x[3 * i + 1] - w->ay[k], ez = x[3 * i + 2] - w->az[k];
+    for (k = 0, nn = 0; k < w->ws.n_art && nn < 256; ++k) {
+        double ex = x[3 * i] - w->ws.ax[k], ey = x[3 * i + 1] - w->ws.ay[k], ez = x[3 * i + 2] - w->ws.az[k];
         ex -= p->L[0] * round(ex / p->L[0]);
         ey -= p->L[1] * round(ey / p->L[1]);
         ez -= p->L[2] * round(ez / p->L[2]);
@@ -877,8 +877,8 @@ static int abs_morris_of(const hcbd_world *w, const double *x, int i, abs_morris
     for (q = 0; q < nn; ++q) {
         k = near[q];
         {
-            ld dx = abs_mi((ld)x[3 * i] - w->ax[k], p->L[0]), dy = abs_mi((ld)x[3 * i + 1] - w->ay[k], L);
-            ld dz = abs_mi((ld)x[3 * i + 2] - w->az[k], p->L[2]);
+            ld dx = abs_mi((ld)x[3 * i] - w->ws.ax[k], p->L[0]), dy = abs_mi((ld)x[3 * i + 1] - w->ws.ay[k], L);
+            ld dz = abs_mi((ld)x[3 * i + 2] - w->ws.az[k], p->L[2]);
             rho += abs_W(sqrtl(dx * dx + dy * dy + dz * dz), Rc);
         }
     }
@@ -886,9 +886,9 @@ static int abs_morris_of(const hcbd_world *w, const double *x, int i, abs_morris
     for (q = 0; q < nn; ++q) {
         ld dx, dy, dz, r, yA, yB, dA, dB, beta, kB;
         k = near[q];
-        dx = abs_mi((ld)x[3 * i] - w->ax[k], p->L[0]);
-        dy = abs_mi((ld)x[3 * i + 1] - w->ay[k], L);
-        dz = abs_mi((ld)x[3 * i + 2] - w->az[k], p->L[2]);
+        dx = abs_mi((ld)x[3 * i] - w->ws.ax[k], p->L[0]);
+        dy = abs_mi((ld)x[3 * i + 1] - w->ws.ay[k], L);
+        dz = abs_mi((ld)x[3 * i + 2] - w->ws.az[k], p->L[2]);
         r = sqrtl(dx * dx + dy * dy + dz * dz);
         yA = x[3 * i + 1];
         yB = yA - dy;

@@ -133,7 +133,7 @@ void test_wall_artificial_particles(void)
     int s, k, same = 0, outside = 0, nsteps = t_quick ? 100 : 400;
     d.capacity = 2;
     if (!make_world(&w, &d)) return;
-    CHECK(w.n_art == 122, "artificial particles: %d, want round(0.24 x 13 x 3 x 13) = 122", w.n_art);
+    CHECK(w.ws.n_art == 122, "artificial particles: %d, want round(0.24 x 13 x 3 x 13) = 122", w.ws.n_art);
     d.params.kT = 0; /* no noise and no forces: the two real particles stay put */
     d.params.wall.mode = HCBD_WALL_REFLECT;
     hcbd_world_destroy(&w);
@@ -143,13 +143,13 @@ void test_wall_artificial_particles(void)
         if (!run(&w, 1)) return;
         /* the density of this step: the particle at the interface is id 0 */
         rho[s] = w.rho[w.slot[0]];
-        if (s > 0 && w.ax[0] == first_x) ++same;
-        first_x = w.ax[0];
-        for (k = 0; k < w.n_art; ++k) {
-            double y = w.ay[k] < 6.5 ? w.ay[k] + 13.0 : w.ay[k]; /* slab [11.5, 14.5) */
+        if (s > 0 && w.ws.ax[0] == first_x) ++same;
+        first_x = w.ws.ax[0];
+        for (k = 0; k < w.ws.n_art; ++k) {
+            double y = w.ws.ay[k] < 6.5 ? w.ws.ay[k] + 13.0 : w.ws.ay[k]; /* slab [11.5, 14.5) */
             if (y < 11.5 || y >= 14.5) ++outside;
             cy[(int)((y - 11.5) / 0.5) % 6] += 1;
-            cx[(int)(w.ax[k] / 2.6) % 5] += 1;
+            cx[(int)(w.ws.ax[k] / 2.6) % 5] += 1;
         }
     }
     CHECK(outside == 0, "%d artificial particles outside the walls", outside);
@@ -199,15 +199,15 @@ void test_wall_morris_friction(void)
             m = w.m;
             plane = 1.5 + (mode ? th.depletion_width : 0.0);
             rhoA = 0;
-            for (k = 0; k < w.n_art; ++k) { /* density of particle 0 */
-                double dx = xyz[0] - w.ax[k], dy = xyz[1] - w.ay[k], dz = xyz[2] - w.az[k], r;
+            for (k = 0; k < w.ws.n_art; ++k) { /* density of particle 0 */
+                double dx = xyz[0] - w.ws.ax[k], dy = xyz[1] - w.ws.ay[k], dz = xyz[2] - w.ws.az[k], r;
                 dx -= 13 * round(dx / 13); dy -= 13 * round(dy / 13); dz -= 13 * round(dz / 13);
                 r = sqrt(dx * dx + dy * dy + dz * dz);
                 rhoA += hcbd_wendland(r, Rc);
             }
             rhoA = m * w.rho_norm * (hcbd_wendland(0, Rc) + rhoA);
-            for (k = 0; k < w.n_art; ++k) {
-                double dx = xyz[0] - w.ax[k], dy = xyz[1] - w.ay[k], dz = xyz[2] - w.az[k], r;
+            for (k = 0; k < w.ws.n_art; ++k) {
+                double dx = xyz[0] - w.ws.ax[k], dy = xyz[1] - w.ws.ay[k], dz = xyz[2] - w.ws.az[k], r;
                 double dA, dB, beta, f, vw;
                 dx -= 13 * round(dx / 13); dy -= 13 * round(dy / 13); dz -= 13 * round(dz / 13);
                 r = sqrt(dx * dx + dy * dy + dz * dz);
@@ -232,6 +232,102 @@ void test_wall_morris_friction(void)
             hcbd_world_destroy(&w);
         }
     CHECK(capped > 0 && free_ > 0, "the cases cover %d capped and %d free pairs", capped, free_);
+}
+
+/* hcbd_walls, the walls without a world (lammps/): its artificial
+   particles are the world's of the same step, bit for bit; its weight sum
+   is an independent sum over all of them; one particle near each wall,
+   stepped by the world, ends with the velocity the public pieces give
+   (density, Morris pairs, wall force: the sweep's in place, Euler's as
+   exchanges), for a moving wall, noise and both integrators; bad inputs
+   are refused by name and leave nothing drawn. */
+void test_walls_exported(void)
+{
+    int integ, side;
+    for (integ = 0; integ < 2; ++integ)
+        for (side = 0; side < 2; ++side) {
+            hcbd_world_def d = channel();
+            hcbd_world w;
+            hcbd_walls wl;
+            hcbd_gibd_coef c;
+            double xyz[6] = {4.0, 2.2, 5.0, 9.0, 6.5, 9.0}, v[6] = {1.0, 0.5, -0.3, 0, 0, 0};
+            double vw[6], u[3], P[3] = {0, 0, 0}, r[3], ws = 0, fy, rho, err = 0;
+            char msg[256];
+            void *mem;
+            size_t nb;
+            int k, same = 1;
+            d.capacity = 2;
+            d.params.kT = 1.3;
+            d.params.pair_integrator = integ ? HCBD_PAIR_EULER : HCBD_PAIR_SHARDLOW;
+            d.params.wall.vx[0] = 0.2;
+            d.params.wall.vx[1] = -0.7;
+            d.params.wall.mode = HCBD_WALL_NOSLIP;
+            if (side) xyz[1] = 13.0 - xyz[1];
+            if (!make_world(&w, &d)) return;
+            CHECK(hcbd_world_set_positions(&w, 2, xyz) == HCBD_OK && hcbd_world_set_velocities(&w, v) == HCBD_OK,
+                  "set-up: %s", w.err.msg);
+            if (!run(&w, 3)) return;
+            hcbd_world_get_positions(&w, xyz, 0);
+            hcbd_world_get_velocities(&w, v);
+            nb = hcbd_walls_bytes(&d.params);
+            mem = malloc(nb);
+            CHECK(nb > 0 && mem && hcbd_walls_init(&wl, &d.params, mem, nb, msg, sizeof msg) == HCBD_OK,
+                  "hcbd_walls_init: %s", msg);
+            CHECK(hcbd_walls_draw(&wl, w.step) == HCBD_OK && hcbd_gibd_coef_of(&d.params, &c, NULL, 0) == HCBD_OK,
+                  "draw");
+            if (!run(&w, 1)) return;
+            CHECK(wl.ws.n_art == w.ws.n_art, "%d artificial particles, the world's %d", wl.ws.n_art, w.ws.n_art);
+            for (k = 0; k < w.ws.n_art && k < wl.ws.n_art; ++k)
+                same &= wl.ws.ax[k] == w.ws.ax[k] && wl.ws.ay[k] == w.ws.ay[k] && wl.ws.az[k] == w.ws.az[k];
+            CHECK(same, "the artificial particles differ from the world's of the same step");
+            for (k = 0; k < wl.ws.n_art; ++k) {
+                double dx = xyz[0] - wl.ws.ax[k], dy = xyz[1] - wl.ws.ay[k], dz = xyz[2] - wl.ws.az[k];
+                dx -= 13 * round(dx / 13); dy -= 13 * round(dy / 13); dz -= 13 * round(dz / 13);
+                ws += hcbd_wendland(sqrt(dx * dx + dy * dy + dz * dz), 2.5);
+            }
+            for (k = 0; k < 3; ++k) r[k] = xyz[k];
+            CHECK(ws > 0 && fabs(hcbd_walls_weights(&wl, r) - ws) < 1e-12 * ws, "weights %.15g, direct sum %.15g",
+                  hcbd_walls_weights(&wl, r), ws);
+            /* the particles are far apart: particle 0 has only wall pairs */
+            rho = hcbd_gibd_density(&c, hcbd_walls_weights(&wl, r));
+            for (k = 0; k < 3; ++k) u[k] = v[k];
+            hcbd_walls_morris(&wl, !integ, 0, r, 1.0 / rho, u, P);
+            hcbd_wall_potential(&d.params, r[1], &fy);
+            hcbd_world_get_velocities(&w, vw);
+            for (k = 0; k < 3; ++k) {
+                const double want = u[k] + ((k == 1 ? fy : 0.0) * d.params.dt + P[k]) / c.m;
+                err = fmax(err, fabs(vw[k] - want));
+            }
+            CHECK(err < 1e-12 && (integ ? P[0] != 0 : u[0] != v[0]), "%s side %d: |v - hcbd_walls'| = %g",
+                  integ ? "Euler" : "sweep", side, err);
+            /* far from the walls: nothing */
+            r[1] = 6.5;
+            u[0] = 1.0;
+            hcbd_walls_morris(&wl, 1, 0, r, 1.0 / rho, u, NULL);
+            CHECK(u[0] == 1.0 && hcbd_walls_weights(&wl, r) == 0.0, "the channel's middle feels the walls");
+            free(mem);
+            hcbd_world_destroy(&w);
+        }
+    {
+        hcbd_world_def d = channel();
+        hcbd_walls wl;
+        char msg[256];
+        static char mem[1 << 16];
+        d.params.tau = 0;
+        CHECK(hcbd_walls_bytes(&d.params) == 0 &&
+                  hcbd_walls_init(&wl, &d.params, mem, sizeof mem, msg, sizeof msg) == HCBD_ERR_PARAM &&
+                  strstr(msg, "tau = 0"), "tau = 0: %s", msg);
+        d = channel();
+        d.params.dynamics = HCBD_DYN_BD;
+        CHECK(hcbd_walls_init(&wl, &d.params, mem, sizeof mem, msg, sizeof msg) == HCBD_ERR_PARAM &&
+                  strstr(msg, "dynamics"), "BD: %s", msg);
+        d = channel();
+        CHECK(hcbd_walls_init(&wl, &d.params, mem, 64, msg, sizeof msg) == HCBD_ERR_MEMORY &&
+                  strstr(msg, "hcbd_walls_bytes"), "small block: %s", msg);
+        CHECK(hcbd_walls_init(&wl, &d.params, mem, sizeof mem, msg, sizeof msg) == HCBD_OK &&
+                  hcbd_walls_draw(&wl, -1) == HCBD_ERR_PARAM && wl.step == -1 && hcbd_walls_draw(NULL, 0) == HCBD_ERR_NULL,
+              "draw at step -1 accepted");
+    }
 }
 
 /* Equilibrium channel of ideal particles (Gaussian walls, no body force):
