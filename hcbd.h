@@ -101,8 +101,8 @@
      errors; parameters and their checks (a table row per field); random
      numbers; kernels (Wendland, star potential and its force table); GI-BD
      equations; fixed-point pair sums; box and minimum image (Lees-Edwards);
-     walls (repulsion, depletion, artificial particles, Morris pairs: the
-     walled build only); theory and stability limits; world and storage;
+     walls (repulsion, depletion, artificial particles, Morris pairs, and
+     hcbd_walls, the same without a world: the walled build only); theory and stability limits; world and storage;
      neighbour search (cells, half and cross Verlet lists); pair passes
      (density, forces and Euler exchanges, exact pair sweep); integrator,
      run-time guard and step; observables (g(r), correlators, Carreau fit,
@@ -132,7 +132,9 @@
      Functions of numbers alone (kernels, the star force, Flory-Huggins)
      are named by what they compute.  Old names kept for one version, with
      a deprecation warning: hcbd_get_positions, hcbd_get_velocities,
-     hcbd_stress, hcbd_flux_enable, hcbd_flux_read.
+     hcbd_stress, hcbd_flux_enable, hcbd_flux_read.  For engines of their
+     own (lammps/), the pieces of a step without a world: hcbd_gibd_*
+     (equations), hcbd_noise_* (noise), hcbd_walls_* (walls).
 
    ERRORS
      Every call that can fail returns hcbd_result (HCBD_OK = 0).  On failure
