@@ -28,6 +28,13 @@
 // velocities a rank changed go back to their owners and the ghosts are
 // refreshed.  1, 2, 4 ranks: the same bits.
 //
+// With wall T (2016), hcbd's walls across y's edge: every rank draws all of
+// the step's artificial particles (hcbd_walls_draw, keyed by seed and
+// step), each owner adds their weights to its atom's density and makes its
+// atom's Morris pairs right after the atom's own pairs in the sweep (or
+// with the Euler exchanges); the repulsion joins the force, reflecting
+// walls mirror the step, and atoms found inside a wall are counted.
+//
 // With fric N, on every N-th step, the fix's global vector holds
 // hcbd_friction_average (nk = 1) of the configuration the step starts from
 // (at a run's first step, by setup(), of that step's configuration):
