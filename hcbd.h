@@ -102,17 +102,18 @@
      numbers; kernels (Wendland, star potential and its force table); GI-BD
      equations; fixed-point pair sums; box and minimum image (Lees-Edwards);
      walls (repulsion, depletion, artificial particles, Morris pairs, and
-     hcbd_walls, the same without a world: the walled build only); theory and stability limits; world and storage;
-     neighbour search (cells, half and cross Verlet lists); pair passes
-     (density, forces and Euler exchanges, exact pair sweep); integrator,
-     run-time guard and step; observables (g(r), correlators, Carreau fit,
-     MSD, profiles, slabs); checkpoints; world kinds (lifecycle); XYZ and
-     thermo.  Then the HCBD world, in one section on top of that engine:
-     its kernels; parameters and units; storage; set-up; lists and pair
-     passes (fluid density, exact sweep or Euler pairs, polymer density,
-     transient pairs, forces, coupling); the step and its guard;
-     observables; checkpoints, lifecycle, XYZ and thermo.  Both worlds
-     embed one hcbd__core (w->core) and share the code written over it.
+     hcbd_walls, the same without a world: the walled build only); theory and
+     stability limits; world and storage; neighbour search (cells, half and
+     cross Verlet lists); pair passes (density, forces and Euler exchanges,
+     exact pair sweep); integrator, run-time guard and step; observables
+     (g(r), correlators, Carreau fit, MSD, profiles, slabs); checkpoints;
+     world kinds (lifecycle); XYZ and thermo.  Then the HCBD world, in one
+     section on top of that engine: its kernels; parameters and units;
+     storage; set-up; lists and pair passes (fluid density, exact sweep or
+     Euler pairs, polymer density, transient pairs, forces, coupling); the
+     step and its guard; observables; checkpoints, lifecycle, XYZ and
+     thermo.  Both worlds embed one hcbd__core (w->core) and share the code
+     written over it.
 
    NAMING
      hcbd_<thing>_<verb>, the thing first.  A world: hcbd_world_def_default,
@@ -3222,7 +3223,8 @@ static hcbd_result hcbd__set_particles(hcbd_world *w, int n, hcbd__src *src)
     w->rho_valid = 0;
     w->nl.n_rebuilds = 0;
     /* no artificial particles before the first step draws them */
-    if (w->ws.n_art > 0) memset(w->ws.col_start, 0, (size_t)(w->ws.acol[0] * w->ws.acol[1] + 1) * sizeof(int32_t));
+    if (w->ws.n_art > 0)
+        memset(w->ws.col_start, 0, (size_t)(w->ws.acol[0] * w->ws.acol[1] + 1) * sizeof(int32_t));
     return HCBD_OK;
 }
 

@@ -18,14 +18,18 @@
    of the exact sweep; brownian=euler the Euler-Maruyama displacement of the
    papers and of LAMMPS fix brownian instead of Leimkuhler-Matthews.
 
-   usage: bench_speed [Nmax=262144] [threads=2] [out=out/bench]
+   threads=n runs 1..n threads, threads=1,4,16 the listed counts; Nmin=
+   skips the smaller sizes.
+
+   usage: bench_speed [Nmin=512] [Nmax=262144] [threads=2] [out=out/bench]
                       [noise=gauss|uniform] [scenes=bd,gibd,...] [skin=0.6]
                       [pair=shardlow|euler] [brownian=lm|euler] */
 #include "bench_common.h"
 
 int main(int argc, char **argv)
 {
-    int sizes[5] = {512, 4096, 32768, 262144, 1048576}, Nmax = 262144, maxth = 2, k, dyn, th;
+    int sizes[5] = {512, 4096, 32768, 262144, 1048576}, Nmin = 0, Nmax = 262144, k, dyn, it;
+    int thl[64] = {1, 2}, nth = 2;
     char out[512] = "out/bench", path[600], scenes[256] = "";
     hcbd_noise noise = HCBD_NOISE_GAUSS;
     double skin = HCBD_AUTO;
@@ -34,7 +38,26 @@ int main(int argc, char **argv)
     FILE *csv;
     for (k = 1; k < argc; ++k) {
         if (!strncmp(argv[k], "Nmax=", 5)) Nmax = atoi(argv[k] + 5);
-        else if (!strncmp(argv[k], "threads=", 8)) maxth = atoi(argv[k] + 8);
+        else if (!strncmp(argv[k], "Nmin=", 5)) Nmin = atoi(argv[k] + 5);
+        else if (!strncmp(argv[k], "threads=", 8)) {
+            const char *q = argv[k] + 8;
+            char *e;
+            nth = 0;
+            while (nth < 64) {
+                long v = strtol(q, &e, 10);
+                if (e == q || v < 1 || v > 4096) break;
+                thl[nth++] = (int)v;
+                if (*e != ',') break;
+                q = e + 1;
+            }
+            if (nth == 0 || *e) {
+                fprintf(stderr, "bench_speed: threads='%s': a count or a comma list of counts >= 1\n",
+                        argv[k] + 8);
+                return 2;
+            }
+            if (nth == 1) /* threads=n: 1..n */
+                for (nth = 0; nth < thl[0] && nth < 64; ++nth) thl[nth] = nth + 1;
+        }
         else if (!strncmp(argv[k], "out=", 4)) snprintf(out, sizeof out, "%s", argv[k] + 4);
         else if (!strcmp(argv[k], "noise=gauss")) noise = HCBD_NOISE_GAUSS;
         else if (!strcmp(argv[k], "noise=uniform")) noise = HCBD_NOISE_UNIFORM;
@@ -45,13 +68,12 @@ int main(int argc, char **argv)
         else if (!strcmp(argv[k], "brownian=euler")) brownian = HCBD_BROWNIAN_EULER;
         else if (!strcmp(argv[k], "brownian=lm")) brownian = HCBD_BROWNIAN_LM;
         else {
-            fprintf(stderr, "bench_speed: unknown argument '%s' (Nmax=, threads=, out=, "
+            fprintf(stderr, "bench_speed: unknown argument '%s' (Nmin=, Nmax=, threads=, out=, "
                             "noise=gauss|uniform, scenes=, skin=, pair=shardlow|euler, brownian=lm|euler)\n",
                     argv[k]);
             return 2;
         }
     }
-    if (maxth < 1) maxth = 1;
     csv = bench_csv("bench_speed", out, noise == HCBD_NOISE_UNIFORM ? "speed_uniform.csv" : "speed.csv",
                     path, sizeof path);
     if (!csv) return 1;
@@ -62,8 +84,10 @@ int main(int argc, char **argv)
     for (k = 0; k < 5; ++k) {
         int N = sizes[k];
         if (N > Nmax) break;
+        if (N < Nmin) continue;
         for (dyn = 0; dyn < (HCBD_MODEL == HCBD_MODEL_WALLED ? 4 : 3); ++dyn)
-            for (th = 1; th <= maxth; ++th) {
+            for (it = 0; it < nth; ++it) {
+                int th = thl[it];
                 static const char *names[4] = {"bd", "gibd", "gibd-le", "channel"};
                 hcbd_world_def d = hcbd_world_def_default();
                 hcbd_world w;
