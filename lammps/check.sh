@@ -196,6 +196,27 @@ nu_initial() {
         }' "$1"
 }
 
+# stats LOG: T mean and error (10 blocks), MSD at the end of each segment
+# (mean, error), the largest |total momentum| over the run
+stats() {
+    awk '
+        /^ *Step / { in_run = 1; msd = ($NF == "c_msd[4]"); next }
+        /^Loop time/ { if (msd && last != "") m[++nm] = last; in_run = 0; last = ""; next }
+        in_run && $1 ~ /^[0-9]+$/ {
+            for (c = 3; c <= 5; ++c) { p = $c < 0 ? -$c : $c; if (p > pmax) pmax = p }
+            if (msd) { T[++nT] = $2; last = $6 }
+        }
+        END {
+            b = int(nT / 10)
+            for (k = 0; k < 10; ++k) { s = 0; for (j = 1; j <= b; ++j) s += T[k * b + j]; tb[k] = s / b; st += tb[k] }
+            st /= 10; for (k = 0; k < 10; ++k) vt += (tb[k] - st) ^ 2
+            for (k = 1; k <= nm; ++k) sm += m[k]; sm /= nm; for (k = 1; k <= nm; ++k) vm += (m[k] - sm) ^ 2
+            printf "%.6g %.3g %.6g %.3g %.3g\n", st, sqrt(vt / 90), sm, sqrt(vm / (nm * (nm - 1))), pmax
+        }' "$1"
+}
+
+within() { awk -v a="$1" -v ea="$2" -v b="$3" -v eb="$4" 'BEGIN { d = a - b; if (d < 0) d = -d; exit !(d <= 4 * sqrt(ea * ea + eb * eb)) }'; }
+
 if [ -n "$STATS" ]; then
     # hcbd's run of the scene: T, nu_initial and the MSD at t = 0.15 with block errors
     "$root/build/gibd_bulk" potential=ideal N=500 steps=40000 threads=1 out="$t/hcbd" > "$t/hcbd.txt" 2>/dev/null
@@ -206,27 +227,6 @@ if [ -n "$STATS" ]; then
     read -r hM heM < <(awk -F, '$1 + 0 > 0.1499 && $1 + 0 < 0.1501 { print $2, $4 }' "$t/hcbd/msd.csv")
     echo "    hcbd: T/kT = $hT +- $heT, nu_initial = $hN +- $heN, MSD(0.15) = $hM +- $heM"
     Lbox=$(awk 'BEGIN { print (500 / 0.24) ^ (1 / 3) }')
-
-    # stats LOG: T mean and error (10 blocks), MSD at the end of each segment
-    # (mean, error), the largest |total momentum| over the run
-    stats() {
-        awk '
-            /^ *Step / { in_run = 1; msd = ($NF == "c_msd[4]"); next }
-            /^Loop time/ { if (msd && last != "") m[++nm] = last; in_run = 0; last = ""; next }
-            in_run && $1 ~ /^[0-9]+$/ {
-                for (c = 3; c <= 5; ++c) { p = $c < 0 ? -$c : $c; if (p > pmax) pmax = p }
-                if (msd) { T[++nT] = $2; last = $6 }
-            }
-            END {
-                b = int(nT / 10)
-                for (k = 0; k < 10; ++k) { s = 0; for (j = 1; j <= b; ++j) s += T[k * b + j]; tb[k] = s / b; st += tb[k] }
-                st /= 10; for (k = 0; k < 10; ++k) vt += (tb[k] - st) ^ 2
-                for (k = 1; k <= nm; ++k) sm += m[k]; sm /= nm; for (k = 1; k <= nm; ++k) vm += (m[k] - sm) ^ 2
-                printf "%.6g %.3g %.6g %.3g %.3g\n", st, sqrt(vt / 90), sm, sqrt(vm / (nm * (nm - 1))), pmax
-            }' "$1"
-    }
-
-    within() { awk -v a="$1" -v ea="$2" -v b="$3" -v eb="$4" 'BEGIN { d = a - b; if (d < 0) d = -d; exit !(d <= 4 * sqrt(ea * ea + eb * eb)) }'; }
 
     for np in 1 2 4; do
         seed=$((10 + np))

@@ -78,8 +78,13 @@ int main(int argc, char **argv)
     p->gdot = atof(argv[20]);
     if (argc == 26) {
         p->wall.thickness = atof(argv[21]);
-        p->wall.mode = !strcmp(argv[22], "noslip") ? HCBD_WALL_NOSLIP
-                       : !strcmp(argv[22], "reflect") ? HCBD_WALL_REFLECT : HCBD_WALL_GAUSS;
+        if (!strcmp(argv[22], "gauss")) p->wall.mode = HCBD_WALL_GAUSS;
+        else if (!strcmp(argv[22], "noslip")) p->wall.mode = HCBD_WALL_NOSLIP;
+        else if (!strcmp(argv[22], "reflect")) p->wall.mode = HCBD_WALL_REFLECT;
+        else {
+            fprintf(stderr, "gibd_ref: wall mode '%s' is not gauss, noslip or reflect\n", argv[22]);
+            return 2;
+        }
         p->wall.vx[0] = atof(argv[23]);
         p->wall.vx[1] = atof(argv[24]);
         p->fext[0] = atof(argv[25]);
