@@ -55,8 +55,10 @@ int main(int argc, char **argv)
                         argv[k] + 8);
                 return 2;
             }
-            if (nth == 1) /* threads=n: 1..n */
-                for (nth = 0; nth < thl[0] && nth < 64; ++nth) thl[nth] = nth + 1;
+            if (nth == 1) { /* threads=n: 1..n (the count read before the list is written) */
+                const int top = thl[0] < 64 ? thl[0] : 64;
+                for (nth = 0; nth < top; ++nth) thl[nth] = nth + 1;
+            }
         }
         else if (!strncmp(argv[k], "out=", 4)) snprintf(out, sizeof out, "%s", argv[k] + 4);
         else if (!strcmp(argv[k], "noise=gauss")) noise = HCBD_NOISE_GAUSS;
