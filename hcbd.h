@@ -461,6 +461,8 @@ typedef struct hcbd_world {
     /* per-particle arrays (struct of arrays), storage order */
     hcbd_real *x, *y, *z;        /* positions in [0, L)                       */
     hcbd_real *vx, *vy, *vz;     /* background velocity (GI-BD)               */
+    hcbd_real *ux, *uy, *uz;     /* the kicked velocity before the exact sweep
+                                    (its drift takes the mean of both)        */
     hcbd_real *rho, *inv_rho;
     int32_t *ix, *iy, *iz;       /* periodic images crossed (unwrapped pos.)  */
     int32_t *id, *slot;          /* slot -> id, id -> slot                    */
@@ -2941,6 +2943,9 @@ static size_t hcbd__layout(const hcbd_world_def *def, hcbd_world *w, char *base)
     if (gibd && p->pair_integrator == HCBD_PAIR_SHARDLOW && p->Rc > 0) {
         HCBD__ARR(sw_start, ((size_t)hcbd__sweep_rows(p, t->sw_n) + 1) * I);
         HCBD__ARR(pr2, (size_t)mp * sizeof(double));
+        HCBD__ARR(ux, N * R); HCBD__ARR(uy, N * R); HCBD__ARR(uz, N * R);
+    } else {
+        t->ux = t->uy = t->uz = NULL;
     }
     for (k = 0; k < 3; ++k) {
         t->aF[k] = t->aP[k] = NULL;
@@ -4170,6 +4175,15 @@ HCBD__INLINE int hcbd__sweep_end(void *ctx, int i, hcbd__acc *a)
     return INT_MAX;
 }
 
+/* row rr of the sweep if it has colour col */
+static inline void hcbd__sweep_row(const hcbd__trav *T, hcbd__sweep_ctx *s, const int32_t *list,
+                                   const int32_t *start, int ny, int rr, int col)
+{
+    if ((rr % ny) % 3 + 3 * ((rr / ny) % 3) == col)
+        hcbd__traverse(T, list, start[rr], start[rr + 1], s, hcbd__sweep_begin, hcbd__sweep_pairs,
+                       hcbd__sweep_end);
+}
+
 static void hcbd__shardlow(hcbd_world *w)
 {
     const int n = w->n, nt = w->p.threads, ny = w->sw_n[0], nz = w->sw_n[1];
@@ -4216,41 +4230,88 @@ static void hcbd__shardlow(hcbd_world *w)
         s.skey = skey; s.wkey = wkey;
         s.noise = w->has_noise;
         s.flux = w->core.stress_on;
-        HCBD__OMP(omp parallel num_threads(nt))
-        {
-            int col;
-            for (col = 0; col < 9; ++col) {
-                int rr;
-                HCBD__OMP(omp for schedule(dynamic, 1))
-                for (rr = 0; rr < nrows; ++rr)
-                    if ((rr % ny) % 3 + 3 * ((rr / ny) % 3) == col)
-                        hcbd__traverse(&T, list, start[rr], start[rr + 1], &s, hcbd__sweep_begin,
-                                       hcbd__sweep_pairs, hcbd__sweep_end);
+        /* one thread: no worksharing (libgomp's barrier of a team of
+           one still costs a system call per colour) */
+        if (nt <= 1) {
+            int rr;
+            for (rr = 0; rr < 9 * nrows; ++rr)
+                hcbd__sweep_row(&T, &s, list, start, ny, rr % nrows, rr / nrows);
+        } else {
+            HCBD__OMP(omp parallel num_threads(nt))
+            {
+                int col;
+                for (col = 0; col < 9; ++col) {
+                    int rr;
+                    HCBD__OMP(omp for schedule(dynamic, 1))
+                    for (rr = 0; rr < nrows; ++rr) hcbd__sweep_row(&T, &s, list, start, ny, rr, col);
+                }
             }
         }
     }
 }
 
 /* >>integrator (MODEL 2, 13.2): dv = F/m dt + (pair exchanges)/m, dR = v dt
-   + F/xi dt + dW.  With Euler pairs every right-hand side is of time t;
-   after the exact sweep the kick comes first and the drift uses the new
-   v (kick before drift). */
+   + F/xi dt + dW.  With Euler pairs every right-hand side is of time t.
+   With the exact sweep the step is BAOAB-like (MODEL 13.2): the kick with
+   the forces of t (hcbd__kick, before the sweep), the sweep, then the
+   drift with the mean of the velocities before and after the sweep (half
+   a drift on each side of it) and the Brownian step with the forces of t.
+   In a harmonic well that keeps both temperatures exact at any dt; the
+   order of the last release (sweep, kick, drift with the new v) left
+   first-order rests, T_conf low and T_kin high. */
+
+/* The systematic force on particle i at t (pair sum, wall repulsion, the
+   body force where it drives the particles) and G, the body force where it
+   drives only the background. */
+HCBD__INLINE void hcbd__force_on(const hcbd_world *w, int i, double iqF, double F[3], double G[3])
+{
+    int d;
+    for (d = 0; d < 3; ++d) {
+        F[d] = iqF != 0.0 ? (double)w->aF[d][i] * iqF : 0.0;
+        G[d] = 0.0;
+    }
+    if (HCBD__WALLS && w->walls && w->has_gauss) F[1] += hcbd__wall_fy(w, w->y[i]);
+    if (w->has_fext)
+        for (d = 0; d < 3; ++d) {
+            if (w->fext_dr) F[d] += w->p.fext[d];
+            else G[d] = w->p.fext[d];
+        }
+}
+
+/* The exact sweep's kick, before it: v += (F + G) dt/m, kept in u for the
+   drift. */
+static void hcbd__kick(hcbd_world *w)
+{
+    const int n = w->n, nt = w->p.threads;
+    const double dt_m = w->p.dt * w->inv_m;
+    const double iqF = w->p.potential != HCBD_POT_IDEAL ? 1.0 / w->core.qF : 0.0;
+    int i;
+    (void)nt;
+    HCBD__OMP(omp parallel for num_threads(nt) schedule(static))
+    for (i = 0; i < n; ++i) {
+        double F[3], G[3];
+        hcbd__force_on(w, i, iqF, F, G);
+        w->ux[i] = w->vx[i] = (hcbd_real)(w->vx[i] + (F[0] + G[0]) * dt_m);
+        w->uy[i] = w->vy[i] = (hcbd_real)(w->vy[i] + (F[1] + G[1]) * dt_m);
+        w->uz[i] = w->vz[i] = (hcbd_real)(w->vz[i] + (F[2] + G[2]) * dt_m);
+    }
+}
+
 static hcbd_result hcbd__integrate(hcbd_world *w)
 {
     const int n = w->n, nt = w->p.threads;
     const int pot = w->p.potential != HCBD_POT_IDEAL, gibd = w->gibd;
-    const int fric = gibd && !w->shardlow;
-    const int noise = w->has_noise, lag = gibd && w->p.lagged_density, fext = w->has_fext;
+    const int fric = gibd && !w->shardlow, swept = gibd && w->shardlow;
+    const int noise = w->has_noise, lag = gibd && w->p.lagged_density;
     const double dt = w->p.dt, dt_xi = dt / w->p.xi, sdr = sqrt(2.0 * w->p.kT * dt / w->p.xi);
-    const double inv_m = w->inv_m, dt_m = dt * w->inv_m;
+    const double inv_m = w->inv_m, dt_m = dt * w->inv_m, hdt = 0.5 * dt;
     const double L0 = w->p.L[0], L1 = w->p.L[1], L2 = w->p.L[2];
     /* guard_step is read here, so it may change between steps */
     const double lim = w->p.guard_step != HCBD_AUTO ? w->p.guard_step : w->step_limit,
                  lim2 = lim * lim;
-    const double gx = w->p.fext[0], gy = w->p.fext[1], gz = w->p.fext[2];
     const int track = w->has_pairs; /* displacement since the list build */
-    const int fext_dr = w->fext_dr, walls = HCBD__WALLS && w->walls;
-    const int gauss = walls && w->has_gauss, refl = walls && w->has_refl;
+    const int walls = HCBD__WALLS && w->walls;
+    const int refl = walls && w->has_refl;
     const int morris = walls && w->ws.n_art > 0 && fric;
     const double wlo = w->ws.lo, whi = w->ws.hi;
     const uint64_t wkey = morris ? hcbd__ws_pair_step_key(&w->ws, w->step, 0) : 0;
@@ -4275,26 +4336,21 @@ static hcbd_result hcbd__integrate(hcbd_world *w)
     (void)nt;
     HCBD__OMP(omp parallel for num_threads(nt) schedule(static) reduction(max:dmax) reduction(min:bad_step) reduction(min:bad_nan) reduction(+:npen) reduction(min:pen_id))
     for (i = 0; i < n; ++i) {
-        double F[3] = {0, 0, 0}, P[3] = {0, 0, 0}, G[3] = {0, 0, 0};
+        double F[3], P[3] = {0, 0, 0}, G[3];
         double r[3], dr[3], d2, v2 = 0.0;
         int d;
         if (flux) w->fl_c[i] = 0;
-        if (pot)
-            for (d = 0; d < 3; ++d) F[d] = (double)w->aF[d][i] * iqF;
+        hcbd__force_on(w, i, iqF, F, G);
         if (fric)
             for (d = 0; d < 3; ++d) P[d] = (double)w->aP[d][i] * iqP;
-        if (gauss) {
-            F[1] += hcbd__wall_fy(w, w->y[i]);
-        }
         if (morris && hcbd__near_wall(w, w->y[i])) hcbd__morris(w, i, wkey, P, 0);
-        /* G: the body force when it drives only the background */
-        if (fext) {
-            if (fext_dr) { F[0] += gx; F[1] += gy; F[2] += gz; }
-            else { G[0] = gx; G[1] = gy; G[2] = gz; }
-        }
         for (d = 0; d < 3; ++d) dr[d] = F[d] * dt_xi;
         if (fric) {
             dr[0] += w->vx[i] * dt; dr[1] += w->vy[i] * dt; dr[2] += w->vz[i] * dt;
+        } else if (swept) { /* half a drift with the kicked v, half with the swept one */
+            dr[0] += (w->ux[i] + w->vx[i]) * hdt;
+            dr[1] += (w->uy[i] + w->vy[i]) * hdt;
+            dr[2] += (w->uz[i] + w->vz[i]) * hdt;
         }
         if (noise) {
             double z3[3];
@@ -4306,15 +4362,14 @@ static hcbd_result hcbd__integrate(hcbd_world *w)
             }
             for (d = 0; d < 3; ++d) dr[d] += sdz * z3[d];
         }
-        if (gibd) {
+        if (fric) {
             double vx = w->vx[i] + (F[0] + G[0]) * dt_m + P[0] * inv_m;
             double vy = w->vy[i] + (F[1] + G[1]) * dt_m + P[1] * inv_m;
             double vz = w->vz[i] + (F[2] + G[2]) * dt_m + P[2] * inv_m;
             w->vx[i] = (hcbd_real)vx; w->vy[i] = (hcbd_real)vy; w->vz[i] = (hcbd_real)vz;
-            v2 = vx * vx + vy * vy + vz * vz;
-            /* with the exact pair sweep, kick before drift (symplectic
-               Euler): the explicit drift with the old v heats by O(dt) */
-            if (!fric) { dr[0] += vx * dt; dr[1] += vy * dt; dr[2] += vz * dt; }
+        }
+        if (gibd) {
+            v2 = (double)w->vx[i] * w->vx[i] + (double)w->vy[i] * w->vy[i] + (double)w->vz[i] * w->vz[i];
             if (lag) {
                 double rho = w->m * w->rho_norm * (w->w0 + (double)w->aW[i] * iqW);
                 w->rho[i] = (hcbd_real)rho;
@@ -4574,7 +4629,10 @@ hcbd_result hcbd_step(hcbd_world *w, int nsteps)
             r = hcbd__forces(w, fuse);
             if (r != HCBD_OK) return r;
         }
-        if (w->shardlow) hcbd__shardlow(w);
+        if (w->shardlow) {
+            hcbd__kick(w);
+            hcbd__shardlow(w);
+        }
         r = hcbd__integrate(w);
         if (r == HCBD_OK && w->core.stress_on) hcbd__flux_add(w);
         if (r == HCBD_OK && hcbd__wall_guard(w) && w->wall_pen_step == w->step)

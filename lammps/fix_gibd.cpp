@@ -5,8 +5,10 @@
 //   rho_i  = hcbd_gibd_density(sum_j w(r_ij))            owned i, ghosts get 1/rho
 // then, with `pair exact` (the default, hcbd's HCBD_PAIR_SHARDLOW): every
 // pair's friction and noise solved exactly in turn (hcbd_gibd_pair_exact),
-// in the order hcbd's world sweeps them, then kick before drift:
-//   v_i += F_i dt / m;  x_i += F_i dt / xi + dW_i + v_i dt
+// in the order hcbd's world sweeps them, between the kick and the drift
+// with the mean of the velocities before and after the sweep (BAOAB-like,
+// hcbd's MODEL 13.2):
+//   u_i = v_i + F_i dt / m;  v = sweep(u);  x_i += F_i dt / xi + dW_i + (u_i + v_i) dt / 2
 // or, with `pair euler` (the papers' scheme, O(dt/tau) too hot), every
 // right-hand side of t:
 //   dp_ij  = sdt (v_j - v_i) + sqrt(2 kT sdt) zeta_ij     sdt = S_ij dt / tau
@@ -85,7 +87,7 @@ static double number(Error *error, const char *key, const char *v)
 
 FixGIBD::FixGIBD(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), list(nullptr), glist(nullptr), inv_rho(nullptr), acc(nullptr), xw(nullptr), vc(nullptr),
-    touched(nullptr), kw(nullptr),
+    uk(nullptr), touched(nullptr), kw(nullptr),
     nmax(0), nacc(1), cmode(FWD_RHO), wscale(0), vscale(0), fric_every(0), fric{0, 0, 0}, exact(1),
     lm(1), ny(1), nz(1), le_s(0), le_v(0), stress(0), sbg(0), scr(0), sfl{0, 0}, walls(0), started(0), npen{0, 0}
 {
@@ -178,6 +180,7 @@ void FixGIBD::release()
   memory->destroy(acc);
   memory->destroy(xw);
   memory->destroy(vc);
+  memory->destroy(uk);
   memory->destroy(touched);
   memory->destroy(kw);
 }
@@ -299,6 +302,7 @@ void FixGIBD::grow()
   memory->create(acc, 3 * nmax, "gibd:acc");
   memory->create(xw, 3 * nmax, "gibd:xw");
   memory->create(vc, 3 * nmax, "gibd:vc");
+  memory->create(uk, 3 * nmax, "gibd:uk");
   memory->create(touched, nmax, "gibd:touched");
   memory->create(kw, nmax, "gibd:kw");
 }
@@ -622,8 +626,21 @@ void FixGIBD::final_integrate()
   densities();
   if (fric_every && update->ntimestep % fric_every == 0) friction_averages();
   sbg = scr = 0.0;
-  if (exact) sweep(step);
-  else euler_pairs(step);
+  if (exact) {
+    // the kick with the forces of t before the sweep (its ghosts get the
+    // kicked velocities with the sweep's first communication)
+    for (int i = 0; i < nlocal; ++i) {
+      double F[3] = {f[i][0], f[i][1], f[i][2]};
+      if (gauss) {
+        double fy;
+        hcbd_wall_potential(&p, xw[3 * i + 1], &fy);
+        F[1] += fy;
+      }
+      for (int d = 0; d < 3; ++d) uk[3 * i + d] = vc[3 * i + d] += F[d] * dt_m;
+    }
+    sweep(step);
+  } else
+    euler_pairs(step);
   for (int i = 0; i < nlocal; ++i) {
     const int32_t id = (int32_t) (tag[i] - 1);
     double z[3];
@@ -642,10 +659,11 @@ void FixGIBD::final_integrate()
       F[1] += fy;
     }
     if (exact) {
-      // kick before drift, as hcbd's world after its sweep
+      // half a drift with the kicked velocity, half with the swept one (in
+      // LAMMPS's frame: v is vc and the jump of an atom past y's edge)
       for (int d = 0; d < 3; ++d) {
-        v[i][d] += F[d] * dt_m;
-        x[i][d] += F[d] * dt_xi + sdz * z[d] + v[i][d] * dt;
+        const double u = uk[3 * i + d] + (d == 0 ? kw[i] * le_v : 0.0);
+        x[i][d] += F[d] * dt_xi + sdz * z[d] + (u + v[i][d]) * (0.5 * dt);
       }
     } else {
       double P[3] = {0, 0, 0}; // the Morris exchanges of the velocities of t

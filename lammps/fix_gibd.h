@@ -55,6 +55,7 @@ class FixGIBD : public Fix {
                             // nacc per atom (1: weights, 3: velocity changes)
   double *xw;               // canonical positions in [0, L), the owners' bits
   double *vc;               // the sweep's velocities, in the frame of xw
+  double *uk;               // an owned atom's kicked velocity before the sweep (xw's frame)
   int *touched;             // atoms whose velocity this colour of the sweep set
   int *kw;                  // y-wraps of an owned atom's canonical position
   int nmax, nacc, cmode;    // cmode: what the next communication carries

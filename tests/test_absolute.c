@@ -100,8 +100,9 @@ static void abs_bd_normals(const hcbd_world *w, int id, ld out[3])
                dR_i = v_i dt + F_i/xi dt + sqrt(2 kT dt/xi) n_i
      Shardlow: pairs (a < b) in turn, u = v_a - v_b,
                u' = u e + sqrt(2 kT/m (1 - e^2)) zeta, e = exp(-2 S dt/(m tau)),
-               v_a += (u' - u)/2, v_b -= (u' - u)/2; then v += (F + G)/m dt and
-               dR_i = v_i(t + dt) dt + F_i/xi dt + sqrt(2 kT dt/xi) n_i
+               after the kick u_i = v_i + (F_i + G)/m dt (v starts from u),
+               v_a += (u' - u)/2, v_b -= (u' - u)/2, and
+               dR_i = (u_i + v_i(t + dt)) dt/2 + F_i/xi dt + sqrt(2 kT dt/xi) n_i
    S_ij = m f_ij, m = xi' tau, zeta_ij the pair's normals (+ for the lower
    id), n_i the particle's normals (abs_bd_normals).  G = fext when it drives only the
    background.  x, v in id order; x1, v1, rho out. */
@@ -114,7 +115,7 @@ static void abs_ref_step(const hcbd_world *w, const double *x, const double *v, 
     const int n = w->n, noise = p->kT > 0, star = p->potential == HCBD_POT_STAR;
     const ld m = (ld)p->xip * p->tau, dt = p->dt, tau = p->tau, kT = p->kT, Rc = p->Rc;
     const ld nrm = abs_norm(p);
-    static ld F[ABS_NMAX][3], G[3], vs[ABS_NMAX][3], nb[ABS_NMAX][3];
+    static ld F[ABS_NMAX][3], G[3], vs[ABS_NMAX][3], nb[ABS_NMAX][3], nb_u[ABS_NMAX][3];
     int i, j, c;
     for (i = 0; i < n; ++i) {
         ld s = abs_W(0, Rc), d[3];
@@ -178,8 +179,9 @@ static void abs_ref_step(const hcbd_world *w, const double *x, const double *v, 
             }
             colour[i] = rw[0] % 3 + 3 * (rw[1] % 3);
         }
+        /* the kick first, with the forces of t (kept for the drift) */
         for (i = 0; i < n; ++i)
-            for (c = 0; c < 3; ++c) vs[i][c] = v[3 * i + c];
+            for (c = 0; c < 3; ++c) vs[i][c] = nb_u[i][c] = v[3 * i + c] + (F[i][c] + G[c]) * dt / m;
         for (col = 0; col < 9; ++col)
         for (i = 0; i < n; ++i)
             for (j = i + 1; j < n; ++j) {
@@ -198,8 +200,8 @@ static void abs_ref_step(const hcbd_world *w, const double *x, const double *v, 
             }
         for (i = 0; i < n; ++i)
             for (c = 0; c < 3; ++c) {
-                v1[3 * i + c] = vs[i][c] + (F[i][c] + G[c]) * dt / m;
-                x1[3 * i + c] = x[3 * i + c] + v1[3 * i + c] * dt + F[i][c] * dt / p->xi +
+                v1[3 * i + c] = vs[i][c];
+                x1[3 * i + c] = x[3 * i + c] + (nb_u[i][c] + vs[i][c]) * dt / 2 + F[i][c] * dt / p->xi +
                                 sqrtl(2 * kT * dt / p->xi) * nb[i][c];
             }
     }
@@ -245,8 +247,9 @@ static abs_dev abs_compare_step(hcbd_world *w, double tol_x, double tol_v)
    Two particles, ideal, kT = 0: the relative background velocity u decays
    in one step by exactly 1 - 2 f dt/tau (Euler) or exp(-2 f dt/tau)
    (Shardlow), f = f_01 = f_10 from the densities summed here; the centre of
-   mass velocity stays; the displacement is v(t) dt (Euler) or v(t + dt) dt
-   (Shardlow: kick before drift).  Three distances, both densities, xi' != xi. */
+   mass velocity stays; the displacement is v(t) dt (Euler) or the mean of
+   v(t) and v(t + dt) times dt (Shardlow: half a drift on each side of the
+   sweep).  Three distances, both densities, xi' != xi. */
 void test_abs_pair_friction(void)
 {
     const double rs[3] = {0.4, 1.3, 2.3};
@@ -291,7 +294,9 @@ void test_abs_pair_friction(void)
                 f = abs_f(r, d.params.Rc, m, rho, rho);
                 fac = integ ? expl(-2 * f * d.params.dt / d.params.tau) : 1 - 2 * f * d.params.dt / d.params.tau;
                 for (c = 0; c < 3; ++c) {
-                    ld vb = integ ? v1[c] : v0[c], vc = integ ? v1[3 + c] : v0[3 + c];
+                    /* Shardlow: the mean of the velocities before and after the sweep (no force) */
+                    ld vb = integ ? ((ld)v0[c] + v1[c]) / 2 : v0[c];
+                    ld vc = integ ? ((ld)v0[3 + c] + v1[3 + c]) / 2 : v0[3 + c];
                     u = (ld)v0[c] - v0[3 + c];
                     up = (ld)v1[c] - v1[3 + c];
                     /* plus the fixed-point grid of the exchange, 1/(2 qP) a side */
@@ -512,7 +517,7 @@ void test_abs_pair_noise_variance(void)
 
 /* ------------------------------------------------------------------------
    Brownian displacement, measured: ideal particles; the displacement less
-   the drift the step applies (v(t) dt for Euler, v(t + dt) dt for Shardlow,
+   the drift the step applies (v(t) dt for Euler, (v(t) + v(t + dt)) dt/2 for Shardlow,
    none in classical BD) has per component the variance 2 kT dt/xi with
    Euler-Maruyama, kT dt/xi with Leimkuhler-Matthews (sqrt(kT dt/(2 xi))
    (R_n + R_(n+1))), and mean 0 (kT = 1.7, xi = 2.5, xi' = 0.3).  150000 samples per case: error of
@@ -549,7 +554,7 @@ void test_abs_bd_noise_variance(void)
             hcbd_world_get_positions(&w, x1, 1);
             if (w.gibd) hcbd_world_get_velocities(&w, v1);
             for (i = 0; i < 3 * N; ++i) {
-                ld drift = k == 2 ? 0 : (k == 1 ? v1[i] : v0[i]) * d.params.dt;
+                ld drift = k == 2 ? 0 : (k == 1 ? ((ld)v0[i] + v1[i]) / 2 : v0[i]) * d.params.dt;
                 ld dw = (ld)x1[i] - x0[i] - drift;
                 sum += dw * dw;
                 sm += dw;
@@ -953,9 +958,10 @@ void test_abs_wall_morris_friction(void)
                 F[0] = F[2] = 0;
                 F[1] = abs_wall_F(p, xyz[3 * i + 1]);
                 for (c = 0; c < 3; ++c) {
-                    ld vw = c == 0 ? o.vw : 0, rel = v0[3 * i + c] - vw, vn, xn;
-                    vn = vw + (integ ? rel * expl(-o.ksum) : rel * (1 - o.ksum)) + F[c] * p->dt / m;
-                    xn = xyz[3 * i + c] + (integ ? vn : (ld)v0[3 * i + c]) * p->dt + F[c] * p->dt / p->xi;
+                    /* Shardlow: the kick, the Morris pairs, then the drift with the mean velocity */
+                    ld vw = c == 0 ? o.vw : 0, u = v0[3 * i + c] + F[c] * p->dt / m, vn, xn;
+                    vn = integ ? vw + (u - vw) * expl(-o.ksum) : u + (v0[3 * i + c] - vw) * -o.ksum;
+                    xn = xyz[3 * i + c] + (integ ? (u + vn) / 2 : (ld)v0[3 * i + c]) * p->dt + F[c] * p->dt / p->xi;
                     worst_v = fmax(worst_v, (double)(fabsl(v1[3 * i + c] - vn) / (1 + fabsl(vn))));
                     worst_x = fmax(worst_x, (double)fabsl(abs_mi((ld)x1[3 * i + c] - xn, 13)));
                     if (c != 1) dv_min = fmin(dv_min, fabs(v1[3 * i + c] - v0[3 * i + c]));
