@@ -32,7 +32,7 @@ HC_EXAMPLES := $(B)/hcbd_fluid $(B)/hcbd_polymer $(B)/hcbd_sound
 HEADERS  := hcbd.h
 TEST_SRC := $(wildcard tests/test_*.c) tests/main.c
 
-.PHONY: all run test validate mutants exercise lammps test-lammps mutants-lammps test-main test-walls test-float test-hcbd-float test-examples test-gibd test-hcbd test-sanitize test-sanitize-hcbd test-tsan test-tsan-hcbd test-fuzz-args test-fuzz-ckpt test-install test-build build-check install fuzz bench bench-wp bench-wp-table1 bench-stability bench-peers bench-parts bench-soak clean
+.PHONY: all run test validate mutants exercise lammps test-lammps mutants-lammps test-main test-walls test-float test-hcbd-float test-examples test-gibd test-hcbd test-sanitize test-sanitize-hcbd test-tsan test-tsan-hcbd test-fuzz-args test-fuzz-ckpt test-install test-build build-check install fuzz bench bench-wp bench-wp-peers bench-wp-table1 bench-stability bench-peers bench-parts bench-soak clean
 
 all: $(B)/hcbd_impl.o $(EXAMPLES) $(HC_EXAMPLES)
 
@@ -308,6 +308,18 @@ $(B)/bench_speed: bench/bench_speed.c $(B)/hcbd_impl.o $(HEADERS) bench/bench_co
 WP_BINS := $(B)/bench_wp $(B)/bench_wp_float $(B)/bench_wp_hcbd $(B)/bench_wp_hcbd_float
 bench-wp: $(WP_BINS)
 	bench/wp.sh out/bench
+
+# Work-precision against LAMMPS fix brownian, the star fluid's T_conf and
+# g(r) from dumped configurations by one estimator (bench/peers/wp.sh,
+# ~40 min; skipped with a message without lmp).
+bench-wp-peers: $(B)/wp_star $(B)/wp_estimate
+	bench/peers/wp.sh
+
+$(B)/wp_star: bench/wp_star.c $(B)/hcbd_impl.o $(HEADERS) bench/bench_common.h
+	$(CC) $(ALL_CFLAGS) $< $(B)/hcbd_impl.o -o $@ $(LDLIBS)
+
+$(B)/wp_estimate: bench/wp_estimate.c | $(B)
+	$(CC) $(WARN) $(CFLAGS) $< -o $@ $(LDLIBS)
 
 # The time step of the 2018 polymer solution at Table I (~35 min, two
 # threads): bench/results/wp_table1.csv and, with gnuplot, wp_table1.png.
