@@ -55,7 +55,8 @@ fric_scale|fix_gibd.cpp|fscale = p.tau / (p.dt * c.m);|fscale = 1.1 * p.tau / (p
 fric_wave|fix_gibd.cpp|fs[2] += 2.0 * fij|fs[2] += 2.2 * fij
 density|fix_gibd.cpp|inv_rho[i] = 1.0 / hcbd_gibd_density|inv_rho[i] = 1.1 / hcbd_gibd_density
 noise_step|fix_gibd.cpp|update->ntimestep - 1;|update->ntimestep;
-exact_kick|fix_gibd.cpp|v[i][d] += F[d] * dt_m;|v[i][d] += 1.1 * F[d] * dt_m;
+exact_kick|fix_gibd.cpp|vc[3 * i + d] += F[d] * dt_m;|vc[3 * i + d] += 1.1 * F[d] * dt_m;
+exact_drift_mean|fix_gibd.cpp|(u + v[i][d]) * (0.5 * dt)|(u + v[i][d]) * (0.55 * dt)
 exact_mobility|fix_gibd.cpp|x[i][d] += F[d] * dt_xi|x[i][d] += 1.1 * F[d] * dt_xi
 exact_advection|fix_gibd.cpp|+ v[i][d] * dt;|+ 1.1 * v[i][d] * dt;
 lm_amplitude|fix_gibd.cpp|sdz = lmw ? 0.5 * bd : bd|sdz = lmw ? 0.55 * bd : bd
