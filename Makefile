@@ -32,7 +32,7 @@ HC_EXAMPLES := $(B)/hcbd_fluid $(B)/hcbd_polymer $(B)/hcbd_sound
 HEADERS  := hcbd.h
 TEST_SRC := $(wildcard tests/test_*.c) tests/main.c
 
-.PHONY: all run test validate mutants exercise lammps test-lammps mutants-lammps test-main test-walls test-float test-hcbd-float test-examples test-gibd test-hcbd test-sanitize test-sanitize-hcbd test-tsan test-tsan-hcbd test-fuzz-args test-fuzz-ckpt test-install test-build build-check install fuzz bench bench-wp bench-wp-peers bench-wp-sph-peers bench-wp-table1 bench-stability bench-peers bench-parts bench-soak clean
+.PHONY: all run test validate mutants exercise lammps test-lammps mutants-lammps test-main test-walls test-float test-hcbd-float test-examples test-gibd test-hcbd test-sanitize test-sanitize-hcbd test-tsan test-tsan-hcbd test-fuzz-args test-fuzz-ckpt test-install test-build build-check install fuzz bench bench-wp bench-wp-peers bench-wp-sph-peers bench-wp-table1 bench-table2-departures bench-stability bench-peers bench-parts bench-soak clean
 
 all: $(B)/hcbd_impl.o $(EXAMPLES) $(HC_EXAMPLES)
 
@@ -287,8 +287,8 @@ build-check: | $(B)
 	done; done; \
 	for cxx in g++ clang++; do \
 	  $$cxx -x c++ -std=c++11 -Wall -Wextra -Werror -O2 -DHCBD_MODEL=HCBD_MODEL_$$m -fsyntax-only $(B)/compile_test.c || exit 1; done; done
-	for cc in gcc clang; do $$cc $(WARN) $(MODELFLAG) -fsyntax-only $(filter-out examples/hcbd_%,$(wildcard examples/*.c)) $(filter-out bench/bench_hcbd.c bench/bench_wp_hcbd.c bench/wp_table1.c bench/wp_sph.c bench/carreau_refit.c,$(wildcard bench/*.c)) || exit 1; \
-	  $$cc $(WARN) $(HCBDFLAG) -fsyntax-only $(wildcard examples/hcbd_*.c bench/bench_hcbd.c bench/bench_wp_hcbd.c bench/wp_table1.c bench/wp_sph.c bench/carreau_refit.c bench/stability.c bench/bench_parts.c bench/soak.c) || exit 1; done
+	for cc in gcc clang; do $$cc $(WARN) $(MODELFLAG) -fsyntax-only $(filter-out examples/hcbd_%,$(wildcard examples/*.c)) $(filter-out bench/bench_hcbd.c bench/bench_wp_hcbd.c bench/wp_table1.c bench/wp_sph.c bench/carreau_refit.c bench/paired_series.c,$(wildcard bench/*.c)) || exit 1; \
+	  $$cc $(WARN) $(HCBDFLAG) -fsyntax-only $(wildcard examples/hcbd_*.c bench/bench_hcbd.c bench/bench_wp_hcbd.c bench/wp_table1.c bench/wp_sph.c bench/carreau_refit.c bench/paired_series.c bench/stability.c bench/bench_parts.c bench/soak.c) || exit 1; done
 	@echo "build: the header compiles as C99, C11 and C++11 with gcc and clang, GI-BD, walled and HCBD, double and float, $(CONV); examples and bench too"
 	@echo "1 passed, 0 failed"
 
@@ -337,6 +337,14 @@ bench-wp-table1: $(B)/wp_table1
 	 else echo "gnuplot not found: skipped bench/results/wp_table1.png (bench/wp_table1.gp draws it)"; fi
 
 $(B)/wp_table1: bench/wp_table1.c $(B)/hcbd_impl_hc.o $(HEADERS) bench/bench_common.h
+	$(CC) $(HC_CFLAGS) $< $(B)/hcbd_impl_hc.o -o $@ $(LDLIBS)
+
+# What each departure from the 2018 paper does to eta at Table I, from
+# paired runs (bench/table2_departures.sh, ~30 min on 2 cores).
+bench-table2-departures: $(B)/hcbd_polymer $(B)/paired_series
+	bench/table2_departures.sh
+
+$(B)/paired_series: bench/paired_series.c $(B)/hcbd_impl_hc.o $(HEADERS)
 	$(CC) $(HC_CFLAGS) $< $(B)/hcbd_impl_hc.o -o $@ $(LDLIBS)
 
 # Refits of hcbd_polymer's flow curves: build/carreau_refit out/hcbd_polymer/flowcurve.csv

@@ -752,10 +752,28 @@ hcbd_result hcbd_msd_diffusion(const hcbd_msd *d, double lag_min, double lag_max
    Levenberg-Marquardt on chi^2 with the given standard errors; p[] =
    {eta0, lambda, n} (also the start if p_start is nonzero), perr[] their
    standard errors from the inverse curvature matrix; *chi2 (may be NULL)
-   the final chi^2.  Needs n_points >= 4, positive rates and errors. */
+   the final chi^2.  n is held at n >= 0 (below 0 the shear stress would
+   fall as the rate rises); at that bound the errors are still those of
+   the full curvature matrix.  Needs n_points >= 4, positive rates and
+   errors. */
 hcbd_result hcbd_carreau_fit(const double *gdot, const double *eta, const double *err,
                              int n_points, double eta_inf, int p_start, double p[3],
                              double perr[3], double *chi2);
+
+/* Standard error of the mean of a correlated series x[0..n) by blocking
+   (Flyvbjerg and Petersen, J. Chem. Phys. 91, 461 (1989)): the series is
+   halved into means of pairs, level by level; at each level with nb >= 4
+   blocks the error of the mean is s / sqrt(nb) (s the blocks' standard
+   deviation), itself uncertain by a factor 1 +- 1/sqrt(2 (nb - 1)).  The
+   plateau is the first level whose successor no longer rises beyond this
+   uncertainty, and the estimate that successor's (*plateau = 1); when no
+   level reaches one, the largest of them (*plateau = 0: the series is too
+   short for its correlation time and err is a lower bound).  *mean and *err;
+   *neff (may be NULL) the number of independent samples the series is
+   worth, var(x) / err^2, and *plateau (may be NULL).  Needs n >= 8 finite
+   values. */
+hcbd_result hcbd_blocking_error(const double *x, int n, double *mean, double *err, double *neff,
+                                int *plateau);
 
 /* >>random numbers (also for callers' own use) ----------------------------*/
 typedef struct hcbd_rng { uint64_t s[4]; } hcbd_rng;
@@ -5396,6 +5414,15 @@ hcbd_result hcbd_carreau_fit(const double *gdot, const double *eta, const double
         for (k = 0; k < 3; ++k) M[4 * k] *= 1.0 + mu;
         if (!hcbd__solve3(M, b, dp)) break;
         for (k = 0; k < 3; ++k) q[k] = p[k] + dp[k];
+        if (q[2] < 0) {
+            /* n held at 0: the step in eta0 and lambda with n's fixed */
+            const double d2 = -p[2], r0 = b[0] - M[2] * d2, r1 = b[1] - M[5] * d2;
+            const double det = M[0] * M[4] - M[1] * M[3];
+            if (!(fabs(det) > 0)) break;
+            q[0] = p[0] + (r0 * M[4] - M[1] * r1) / det;
+            q[1] = p[1] + (M[0] * r1 - M[3] * r0) / det;
+            q[2] = 0.0;
+        }
         if (q[1] <= 0) q[1] = 0.5 * p[1]; /* lambda stays positive */
         c2n = hcbd__carreau_chi2(gdot, eta, err, n_points, eta_inf, q, NULL, NULL);
         if (c2n < c2) {
@@ -5421,6 +5448,61 @@ hcbd_result hcbd_carreau_fit(const double *gdot, const double *eta, const double
     }
     if (chi2) *chi2 = c2;
     return isfinite(p[0] + p[1] + p[2]) ? HCBD_OK : HCBD_ERR_NONFINITE;
+}
+
+/* >>blocking error of a correlated mean */
+hcbd_result hcbd_blocking_error(const double *x, int n, double *mean, double *err, double *neff,
+                                int *plateau)
+{
+    enum { MAXLEV = 40 };
+    double e[MAXLEV], de[MAXLEV], m = 0.0, var0 = 0.0;
+    int k, nb, nl = 0, pl = 0, best;
+    if (!x || !mean || !err) return HCBD_ERR_NULL;
+    if (n < 8) return HCBD_ERR_PARAM;
+    for (k = 0; k < n; ++k) {
+        if (!isfinite(x[k])) return HCBD_ERR_NONFINITE;
+        m += x[k];
+    }
+    m /= n;
+    for (k = 0; k < n; ++k) var0 += (x[k] - m) * (x[k] - m);
+    var0 /= n - 1;
+    /* level l: means of 2^l consecutive samples (a remainder left out, as
+       in the original method), each level read from x afresh: O(n log n),
+       no copy */
+    for (nb = n; nb >= 4 && nl < MAXLEV; nb /= 2) {
+        const int len = n / nb;
+        double mm = 0.0, v = 0.0;
+        int j;
+        for (j = 0; j < nb; ++j) {
+            double s = 0.0;
+            for (k = 0; k < len; ++k) s += x[j * len + k];
+            mm += s / len;
+        }
+        mm /= nb;
+        for (j = 0; j < nb; ++j) {
+            double s = 0.0;
+            for (k = 0; k < len; ++k) s += x[j * len + k];
+            v += (s / len - mm) * (s / len - mm);
+        }
+        e[nl] = sqrt(v / (nb - 1) / nb);
+        de[nl] = e[nl] / sqrt(2.0 * (nb - 1));
+        ++nl;
+    }
+    best = 0;
+    for (k = 0; k < nl; ++k) if (e[k] > e[best]) best = k;
+    for (k = 0; k + 1 < nl; ++k)
+        if (e[k + 1] <= e[k] + de[k]) {
+            /* blocks still short of the correlation time read low by about
+               tau / length: of the two levels at the plateau, the longer */
+            pl = 1;
+            best = k + 1;
+            break;
+        }
+    *mean = m;
+    *err = e[best];
+    if (neff) *neff = e[best] > 0 ? var0 / (e[best] * e[best]) : (double)n;
+    if (plateau) *plateau = pl;
+    return HCBD_OK;
 }
 
 /* >>mean-squared displacement, order-n */

@@ -107,11 +107,11 @@
 #define KB 1.380649e-23
 #define MAXC 4    /* concentrations */
 #define MAXG 16   /* shear rates */
-#define MAXB 20   /* blocks */
+#define MAXB 64   /* blocks */
 #define MAXS 202  /* slabs */
 #define NCOMP 4   /* total, fluid, polymer, interaction */
 #define NTS 300   /* rows of the start-up series */
-#define NSER 168  /* half blocks of a Lees-Edwards run: start-up <= 128, blocks 2 x MAXB */
+#define NSER 256  /* half blocks of a Lees-Edwards run: start-up <= 128, blocks 2 x MAXB */
 /* preset=paper's step: the largest polymer step and fluid sub-steps whose
    viscosity at Table I stays within 1 % of a resolved reference
    (bench/wp_table1.c, README "Table II") */
@@ -132,12 +132,18 @@ static struct {
     int alpha_given;
     int le_steps, rp_steps, eq_steps, nblk, nslab;
     int substeps;             /* fluid steps per polymer step              */
+    int coupling;             /* hcbd_coupling: Shepard (default) or raw    */
+    int pair_euler;           /* the fluid's pair step: 0 the exact sweep, 1 Euler */
     /* plateau=1: a Lees-Edwards run is start-up chunks of block_tau
        tau_lambda until the stress levels off (startup_bias; at most
        startup_max), then
        nblk blocks of block_tau; plateau=0: le_steps, the first 2/3 start-up */
     int plateau, startup_max;
     double block_tau, startup_tol;
+    double startup_min;       /* the least start-up, tau_lambda (0: the rule's) */
+    double startup_strain;    /* the least strain of a start-up             */
+    double startup_corr;      /* the least start-up in stress correlation times */
+    double measure_strain;    /* the least strain of the measured window    */
     double startup_lambda;    /* the stress's slowest relaxation time assumed
                                  for the least start-up, tau_lambda          */
     int jobs;                 /* runs at a time, each on threads/jobs threads */
@@ -181,6 +187,8 @@ typedef struct {
     double series[MAXG][NSER]; /* total viscosity of each half block, start-up and blocks */
     int nser[MAXG], nser_up[MAXG]; /* its length and how much of it is start-up */
     double err_ratio[MAXG];    /* total's error from blocks twice as long over the one used */
+    double neff[MAXG];         /* independent samples the measured window is worth (blocking) */
+    int fp_plateau[MAXG];      /* the blocking reached its plateau (else err is a lower bound) */
     int fitted;
     double pc[3], pe[3], chi2; /* Carreau eta0, lambda, n */
     double eta0;               /* zero-shear viscosity of the Newtonian profile */
@@ -198,15 +206,19 @@ static void usage(FILE *f)
 {
     fprintf(f,
             "usage: hcbd_polymer [key=value ...]\n"
-            "  preset=quick|paper  quick (default, about a minute on one core): tau_lambda=2e-4\n"
+            "  preset=quick|paper|paper-long  quick (default, about a minute on one core): tau_lambda=2e-4\n"
             "                      (alpha scaled to keep alpha tau_lambda), P0=571.4 (c_s = 2 m/s),\n"
             "                      box 8^3, gdot=1000,2154,4642,10000, le_steps=rp_steps=600,\n"
             "                      eq_steps=100, blocks=5;\n"
             "                      paper: Table I as printed (tau_lambda = 1 s, alpha = 500 kT,\n"
             "                      P0 = 0.13 Pa), box 10^3, gdot=0.1,0.3,1,3,10,30, dt=1e-4 with\n"
             "                      substeps=8 (bench/wp_table1.c), plateau=1, blocks=4,\n"
-            "                      rp_steps=50000 (5 tau_lambda), eq_steps=1000: under an hour\n"
-            "                      with threads=2\n"
+            "                      rp_steps=50000 (5 tau_lambda), eq_steps=1000, start-ups of at\n"
+            "                      least a strain of 3 (startup_strain) and 6 correlation times\n"
+            "                      (startup_corr), measured windows of at least a strain of 2\n"
+            "                      (measure_strain): about an hour with threads=2;\n"
+            "                      paper-long: the same with measure_strain=4 (errors about 1.4\n"
+            "                      times smaller at the slow rates)\n"
             "  C=2.5,5             polymer concentrations in C* = 3/(4 pi sigma^3)\n"
             "  gdot=a,b,...        Lees-Edwards shear rates in 1/s\n"
             "  tau_lambda=s        relaxation time of the transient pairs, seconds\n"
@@ -220,13 +232,22 @@ static void usage(FILE *f)
             "  le_steps=N          per Lees-Edwards run (the first 2/3 are start-up)\n"
             "  rp_steps=N          reverse-Poiseuille run (the first 2/3 are start-up)\n"
             "  eq_steps=N          equilibrium run for the momentum drift\n"
-            "  blocks=N slabs=N    blocks for the errors (2..20); slabs across y (4k+2, <= 202)\n"
-            "  substeps=k          fluid steps of dt/k per polymer step (1..1000)\n"
+            "  blocks=N slabs=N    blocks for the errors (2..64); slabs across y (4k+2, <= 202)\n"
+            "  substeps=k          fluid steps of dt/k per polymer step (1..1000)\n");
+    fprintf(f,
+            "  pair=shardlow|euler the fluid's pair step: the exact sweep (default) or the\n"
+            "                      paper's explicit Euler pairs (stable to about 2.8 dt_visc)\n"
+            "  coupling=shepard|raw  polymer-fluid weights: psi_ai normalised per polymer\n"
+            "                      (default; momentum exact) or the paper's w(r_ai)/n_i\n"
             "  plateau=0|1         1: each Lees-Edwards run starts up in chunks of block_tau until\n"
             "                      the stress growth fitted to them would carry less than\n"
             "                      startup_tol of the measured mean (3..startup_max blocks), then\n"
             "                      measures blocks of block_tau tau_lambda; 0: le_steps, 2/3 start-up\n"
             "  block_tau=1 startup_max=8 (paper 16) startup_tol=0.005  (with plateau=1)\n"
+            "  startup_min=t       at least t tau_lambda of start-up (with plateau=1; up to startup_max)\n"
+            "  startup_strain=s    at least the strain s in the start-up (with plateau=1)\n"
+            "  startup_corr=k      at least k correlation times of the stress (blocking of the\n"
+            "                      start-up's second half; 0: off) in the start-up\n"
             "  startup_lambda=3    the slowest stress relaxation time assumed, in tau_lambda: every\n"
             "                      start-up lasts at least 4 of it over 1 + gdot startup_lambda\n"
             "                      tau_lambda (2018 Table II: lambda = 2.1-3.1 s)\n"
@@ -265,7 +286,7 @@ static int positive(const config *c, const char *key, const char *v, double *x)
    that only seed, threads and out reach it. */
 static int own_key(config *c, const char *key, const char *v)
 {
-    if (!strcmp(key, "preset")) return check_preset(c, v);
+    if (!strcmp(key, "preset")) return !strcmp(v, "paper-long") || check_preset(c, v);
     if (!strcmp(key, "time_unit")) return positive(c, key, v, &opt.time_unit);
     if (!strcmp(key, "C")) return (opt.nconc = parse_list(c, key, v, opt.conc, MAXC)) > 0;
     if (!strcmp(key, "gdot")) return (opt.ngdot = parse_list(c, key, v, opt.gdot_si, MAXG)) > 0;
@@ -303,8 +324,33 @@ static int own_key(config *c, const char *key, const char *v)
     if (!strcmp(key, "eq_steps")) return int_range(c, key, v, &opt.eq_steps, 1, 1000000000);
     if (!strcmp(key, "blocks")) return int_range(c, key, v, &opt.nblk, 2, MAXB);
     if (!strcmp(key, "substeps")) return int_range(c, key, v, &opt.substeps, 1, 1000);
+    if (!strcmp(key, "pair")) {
+        if (!strcmp(v, "shardlow") || !strcmp(v, "euler")) {
+            opt.pair_euler = v[0] == 'e';
+            return 1;
+        }
+        fprintf(stderr, "%s: pair=%s must be shardlow or euler\n", c->name, v);
+        return 0;
+    }
+    if (!strcmp(key, "coupling")) {
+        if (!strcmp(v, "shepard") || !strcmp(v, "raw")) {
+            opt.coupling = v[0] == 'r' ? HCBD_COUPLE_RAW : HCBD_COUPLE_SHEPARD;
+            return 1;
+        }
+        fprintf(stderr, "%s: coupling=%s must be shepard or raw\n", c->name, v);
+        return 0;
+    }
     if (!strcmp(key, "plateau")) return int_range(c, key, v, &opt.plateau, 0, 1);
     if (!strcmp(key, "startup_max")) return int_range(c, key, v, &opt.startup_max, 3, 64);
+    if (!strcmp(key, "startup_min")) return positive(c, key, v, &opt.startup_min);
+    if (!strcmp(key, "startup_strain")) return positive(c, key, v, &opt.startup_strain);
+    if (!strcmp(key, "measure_strain")) return positive(c, key, v, &opt.measure_strain);
+    if (!strcmp(key, "startup_corr")) {
+        if (!parse_double(c, key, v, &opt.startup_corr)) return 0;
+        if (opt.startup_corr >= 0) return 1;
+        fprintf(stderr, "%s: startup_corr=%s must be 0 or more\n", c->name, v);
+        return 0;
+    }
     if (!strcmp(key, "startup_tol")) return positive(c, key, v, &opt.startup_tol);
     if (!strcmp(key, "startup_lambda")) return positive(c, key, v, &opt.startup_lambda);
     if (!strcmp(key, "jobs")) return int_range(c, key, v, &opt.jobs, 1, 64);
@@ -525,11 +571,19 @@ static int shear_run(const hcbd_hc_params *base, conc_run *cr, int r, double gd,
     hcbd_hc_world w;
     run_out ro;
     double blk[NCOMP][MAXB], s[HCBD_HC_NSTRESS];
-    int per, b, k;
+    int per, b, k, nb;
     char what[96], label[64];
     snprintf(what, sizeof what, "C = %g C*, gdot = %g 1/s", cr->C, opt.gdot_si[r]);
     snprintf(label, sizeof label, "C%g_gdot%g", cr->C, opt.gdot_si[r]);
     p.gdot = gd;
+    /* the measured window: nblk blocks, and more until it spans
+       measure_strain (the slow rates' stress stays correlated over
+       tau_lambda's, and their signal is the weakest) */
+    nb = opt.nblk;
+    if (opt.plateau && opt.measure_strain > 0) {
+        const int ns = (int)ceil(opt.measure_strain / (gd * block_steps(&p) * p.dt) - 1e-9);
+        if (nb < ns) nb = ns < MAXB ? ns : MAXB;
+    }
     if (!new_world(&w, &ro, &p, blobs_in(&p), cr->np, what, label)) return 0;
     cr->relax[r] = cr->bias[r] = NAN;
     if (opt.plateau) {
@@ -542,6 +596,16 @@ static int shear_run(const hcbd_hc_params *base, conc_run *cr, int r, double gd,
         const double wl = gd * opt.startup_lambda * p.tau_lambda;
         int nc = 0, level = 0, least = (int)ceil(4 * opt.startup_lambda / ((1 + wl) * bt) - 1e-9);
         if (least < 6) least = 6;
+        if (least < (int)ceil(opt.startup_min / bt - 1e-9)) least = (int)ceil(opt.startup_min / bt - 1e-9);
+        /* and a strain: the transient pairs' structure follows the flow's
+           displacements, which diffusion alone renews far slower than
+           tau_lambda, so at low rates the stress still grows until the
+           strain is of order one (issue 41: the long runs stored in
+           bench/results/paper_long) */
+        if (opt.startup_strain > 0) {
+            const int ls = (int)ceil(opt.startup_strain / (gd * half * p.dt) - 1e-9);
+            if (least < ls) least = ls;
+        }
         if (least > 2 * opt.startup_max) least = 2 * opt.startup_max;
         per = block_steps(&p);
         /* the series holds 2 startup_max <= 128 chunks; the fit's ratios
@@ -550,19 +614,26 @@ static int shear_run(const hcbd_hc_params *base, conc_run *cr, int r, double gd,
             if (!stress_chunk(&w, &ro, half, what, s)) goto fail;
             cr->series[r][nc++] = s[HCBD_HC_S_TOTAL] / gd;
             if (nc >= least) {
-                double sig;
-                cr->bias[r] = startup_bias(cr->series[r], nc, bt, opt.nblk * per / half, &cr->relax[r], &sig);
+                double sig, m, e, ne;
+                cr->bias[r] = startup_bias(cr->series[r], nc, bt, nb * per / half, &cr->relax[r], &sig);
                 level = cr->bias[r] <= opt.startup_tol || sig < 2;
+                /* at least startup_corr correlation times of the stress,
+                   read by blocking from the second half of the start-up (a
+                   trend still in it reads as a longer time: a longer
+                   start-up) */
+                if (level && opt.startup_corr > 0 && nc / 2 >= 8 &&
+                    hcbd_blocking_error(cr->series[r] + nc - nc / 2, nc / 2, &m, &e, &ne, NULL) == HCBD_OK)
+                    level = nc >= opt.startup_corr * (nc / 2) / (2.0 * ne);
             }
         }
         cr->startup[r] = (level ? 1 : -1) * nc * bt;
         cr->nser_up[r] = cr->nser[r] = nc;
     } else {
-        per = (opt.le_steps - 2 * opt.le_steps / 3) / opt.nblk;
-        if (!advance(&w, &ro, opt.le_steps - per * opt.nblk, what)) goto fail;
-        cr->startup[r] = (opt.le_steps - per * opt.nblk) * p.dt / p.tau_lambda;
+        per = (opt.le_steps - 2 * opt.le_steps / 3) / nb;
+        if (!advance(&w, &ro, opt.le_steps - per * nb, what)) goto fail;
+        cr->startup[r] = (opt.le_steps - per * nb) * p.dt / p.tau_lambda;
     }
-    for (b = 0; b < opt.nblk; ++b) {
+    for (b = 0; b < nb; ++b) {
         if (opt.plateau) { /* two halves, for the series */
             double h1[HCBD_HC_NSTRESS];
             const int half = half_steps(&p);
@@ -575,16 +646,31 @@ static int shear_run(const hcbd_hc_params *base, conc_run *cr, int r, double gd,
         } else if (!stress_chunk(&w, &ro, per, what, s)) goto fail;
         for (k = 0; k < NCOMP; ++k) blk[k][b] = s[comp_index[k]] / gd;
     }
-    for (k = 0; k < NCOMP; ++k) mean_err(blk[k], opt.nblk, &cr->eta[k][r], &cr->err[k][r]);
+    for (k = 0; k < NCOMP; ++k) mean_err(blk[k], nb, &cr->eta[k][r], &cr->err[k][r]);
     cr->err_ratio[r] = NAN;
-    if (opt.nblk >= 4) {
+    if (nb >= 4) {
         double two[MAXB / 2], m, e2;
-        for (b = 0; b + 1 < opt.nblk; b += 2) two[b / 2] = 0.5 * (blk[0][b] + blk[0][b + 1]);
-        mean_err(two, opt.nblk / 2, &m, &e2);
+        for (b = 0; b + 1 < nb; b += 2) two[b / 2] = 0.5 * (blk[0][b] + blk[0][b + 1]);
+        mean_err(two, nb / 2, &m, &e2);
         cr->err_ratio[r] = e2 / cr->err[0][r];
         if (e2 > cr->err[0][r]) cr->err[0][r] = e2;
     }
-    cr->rise[r] = (blk[0][opt.nblk - 1] - blk[0][0]) / cr->eta[0][r];
+    /* the error from the correlation time: blocking (Flyvbjerg-Petersen)
+       of the half-block series of the window, which blocks of one
+       block_tau understate when the stress stays correlated longer */
+    cr->neff[r] = NAN;
+    cr->fp_plateau[r] = 0;
+    if (opt.plateau) {
+        const int nw = cr->nser[r] - cr->nser_up[r];
+        double m, e, ne;
+        int pl;
+        if (nw >= 8 && hcbd_blocking_error(cr->series[r] + cr->nser_up[r], nw, &m, &e, &ne, &pl) == HCBD_OK) {
+            cr->neff[r] = ne;
+            cr->fp_plateau[r] = pl;
+            if (e > cr->err[0][r]) cr->err[0][r] = e;
+        }
+    }
+    cr->rise[r] = (blk[0][nb - 1] - blk[0][0]) / cr->eta[0][r];
     *checksum = hcbd_hc_state_checksum(&w);
     return end_world(&w, &ro, 1);
 fail:
@@ -968,7 +1054,7 @@ static void write_flowcurve(const config *c, const conc_run *runs, const units *
     fprintf(f, "C,gdot_per_s,gdot,Wi");
     for (k = 0; k < NCOMP; ++k) fprintf(f, ",eta_%s,eta_%s_err", comp_name[k], comp_name[k]);
     for (k = 0; k < NCOMP; ++k) fprintf(f, ",eta_%s_mPas,eta_%s_err_mPas", comp_name[k], comp_name[k]);
-    fprintf(f, ",startup_rise,startup_tau_lambda,err_ratio_2blocks\n");
+    fprintf(f, ",startup_rise,startup_tau_lambda,err_ratio_2blocks,n_eff,blocking_plateau\n");
     for (ci = 0; ci < opt.nconc; ++ci)
         for (r = 0; r < opt.ngdot; ++r) {
             fprintf(f, "%g,%.6g,%.6g,%.4g", runs[ci].C, opt.gdot_si[r], opt.gdot_si[r] * u->t,
@@ -976,7 +1062,8 @@ static void write_flowcurve(const config *c, const conc_run *runs, const units *
             for (k = 0; k < NCOMP; ++k) fprintf(f, ",%.6g,%.3g", runs[ci].eta[k][r], runs[ci].err[k][r]);
             for (k = 0; k < NCOMP; ++k)
                 fprintf(f, ",%.6g,%.3g", runs[ci].eta[k][r] * u->eta * 1e3, runs[ci].err[k][r] * u->eta * 1e3);
-            fprintf(f, ",%.4g,%.4g,%.4g\n", runs[ci].rise[r], runs[ci].startup[r], runs[ci].err_ratio[r]);
+            fprintf(f, ",%.4g,%.4g,%.4g,%.3g,%d\n", runs[ci].rise[r], runs[ci].startup[r], runs[ci].err_ratio[r],
+                    runs[ci].neff[r], runs[ci].fp_plateau[r]);
         }
     fclose(f);
 }
@@ -1080,11 +1167,15 @@ static void print_summary(const conc_run *cr, const hcbd_hc_params *p, const rp_
         printf("# startup_tau_lambda: the start-up each rate took before its stress levelled off (negative: it "
                "did not within startup_max); startup_relax: the time constant of the stress growth fitted to the "
                "start-up, tau_lambda; startup_bias: the share of the measured mean the fitted growth still "
-               "carries; err_ratio: the error from blocks twice as long over the block error\n");
+               "carries; err_ratio: the error from blocks twice as long over the block error; n_eff: the "
+               "independent samples the measured window is worth (blocking of its half-block series), "
+               "blocking_plateau 0 where the window is too short for its correlation time (the error is then a "
+               "lower bound)\n");
         for (k = 0; k < opt.ngdot; ++k)
             printf("startup_tau_lambda_gdot%g=%.3g\nstartup_relax_gdot%g=%.3g\nstartup_bias_gdot%g=%.2g\n"
-                   "err_ratio_gdot%g=%.3g\n", opt.gdot_si[k], cr->startup[k], opt.gdot_si[k], cr->relax[k],
-                   opt.gdot_si[k], cr->bias[k], opt.gdot_si[k], cr->err_ratio[k]);
+                   "err_ratio_gdot%g=%.3g\nn_eff_gdot%g=%.3g\nblocking_plateau_gdot%g=%d\n", opt.gdot_si[k],
+                   cr->startup[k], opt.gdot_si[k], cr->relax[k], opt.gdot_si[k], cr->bias[k], opt.gdot_si[k],
+                   cr->err_ratio[k], opt.gdot_si[k], cr->neff[k], opt.gdot_si[k], cr->fp_plateau[k]);
         printf("rates_without_plateau=%d\n", bad);
     }
     printf("rp_Ly=%.4g\nrp_polymers=%d\ng=%.6g\ng_si=%.6g\n", Ly_rp, cr->np_rp, cr->g, cr->g * u->acc);
@@ -1150,14 +1241,14 @@ static void write_plots(const config *c, const conc_run *runs, const hcbd_hc_par
                 double e = runs[ci].eta[k][j] * u->eta * 1e3;
                 if (e > 0) { ylo = fmin(ylo, e); yhi = fmax(yhi, e); }
             }
-    gp_preamble(f, opt.nconc > 1 ? 820 * opt.nconc : 1250, 680);
+    gp_preamble(f, opt.nconc > 1 ? 820 * opt.nconc : 1250, 1100);
     fprintf(f, "scene = \"%s\"\ntau = %.17g\n", scene, tau_s);
     if (!(yhi > 0)) ylo = yhi = eta_f;
     /* ---- flow curve: the four parts, the Carreau fit with eta_inf fixed,
        and the Carreau law of 2018 Table II with lambda scaled by this
        run's tau_lambda (the quick preset shortens tau_lambda) */
     fprintf(f, "set output 'flowcurve.png'\n"
-               "set multiplot layout 1,%d title \"Lees-Edwards flow curves, stress split (block errors)\\n"
+               "set multiplot layout 2,%d title \"Lees-Edwards flow curves, stress split (block errors)\\n"
                "{/*0.85 \".scene.\"}\"\n"
                "set logscale xy\nset format y '%%g'\nset xlabel 'shear rate " GP_GDOT " (1/s)'\n"
                "set ylabel 'viscosity " GP_ETA " (mPa s)'\nset key top right\n"
@@ -1199,20 +1290,55 @@ static void write_plots(const config *c, const conc_run *runs, const hcbd_hc_par
         fprintf(f, ", \\\n     %.17g w l dt 2 lc 1 t '" GP_ETA "_" GP_INF " = %g mPa s (held fixed)', "
                    "%.17g w l dt 3 lc 2 t 'solvent " GP_ETA " = %g mPa s'\n", ei, ei, eta_f, eta_f);
     }
+    /* the second row: the total over Table II's Carreau curve, rate by
+       rate, with its error (a log axis over seven decades hides 5 %) */
+    fprintf(f, "unset logscale y\nset format y '%%.2f'\nset ylabel 'run / Table II Carreau'\n"
+               "set yrange [0.85:1.15]\nset key top right\n");
+    for (ci = 0; ci < opt.nconc; ++ci) {
+        const conc_run *cr = &runs[ci];
+        if (!table2(cr->C, t2)) {
+            fprintf(f, "set title 'C = %g C*: no Table II row'\nplot 1 w l lc 'gray30' notitle\n", cr->C);
+            continue;
+        }
+        {
+            const double e0 = t2[0] * eta_f, l = t2[1] * tau_s, n = t2[2], einf = 0.9 * eta_f;
+            fprintf(f, "t2c%d(x) = %.17g + (%.17g - %.17g) * (1 + (%.17g * x)**2)**((%.17g - 1) / 2)\n", ci, einf,
+                    e0, einf, l, n);
+            fprintf(f, "set title \"C = %g C*: total viscosity over 2018 Table II's Carreau curve\" font ',12'\n"
+                       "plot 'flowcurve.csv' u ($1==%g&&$13>0?$2:1/0):($13/t2c%d($2)):($14/t2c%d($2)) w yerrorbars "
+                       "pt 7 ps 1.3 lc 1 t 'this run (error from the correlation time)', 1 w l lc 'gray30' notitle, "
+                       "1.03 w l dt 2 lc 'gray50' t '" GP_PM " 3 %%', 0.97 w l dt 2 lc 'gray50' notitle\n",
+                    cr->C, cr->C, ci, ci);
+        }
+    }
     fprintf(f, "unset multiplot\nunset logscale\nunset x2tics\nunset x2label\nset xtics mirror autofreq\n"
                "set offsets 0, 0, 0, 0\nset xrange [*:*]\nset yrange [*:*]\n");
     /* ---- reverse-Poiseuille velocity: fluid and polymers against the
        Newtonian eta0 profile and the Carreau fluid of the fit */
     for (ci = 0; ci < opt.nconc; ++ci) {
         const conc_run *cr = &runs[ci];
-        if (!cr->fitted) continue;
-        fprintf(f, "$carreau%d << EOD\n", ci);
-        for (j = 0; j < ny; ++j) {
-            double y = Ly * j / (ny - 1), yh = y >= W ? y - W : y;
-            fprintf(f, "%.6g,%.6g\n", y * um,
-                    (y >= W ? 1 : -1) * carreau_speed(cr->pc, opt.eta_inf, p->rho * cr->g, W, yh) * mm);
+        if (cr->fitted) {
+            fprintf(f, "$carreau%d << EOD\n", ci);
+            for (j = 0; j < ny; ++j) {
+                double y = Ly * j / (ny - 1), yh = y >= W ? y - W : y;
+                fprintf(f, "%.6g,%.6g\n", y * um,
+                        (y >= W ? 1 : -1) * carreau_speed(cr->pc, opt.eta_inf, p->rho * cr->g, W, yh) * mm);
+            }
+            fprintf(f, "EOD\n");
         }
-        fprintf(f, "EOD\n");
+        if (table2(cr->C, t2)) {
+            /* the Carreau fluid of Table II (lambda in units of tau_lambda)
+               under the same square-wave force: the paper's CFD curve of
+               Fig. 5, as a one-dimensional steady solve */
+            const double pt[3] = {t2[0] * p->eta, t2[1] * p->tau_lambda, t2[2]};
+            fprintf(f, "$table2carreau%d << EOD\n", ci);
+            for (j = 0; j < ny; ++j) {
+                double y = Ly * j / (ny - 1), yh = y >= W ? y - W : y;
+                fprintf(f, "%.6g,%.6g\n", y * um,
+                        (y >= W ? 1 : -1) * carreau_speed(pt, opt.eta_inf, p->rho * cr->g, W, yh) * mm);
+            }
+            fprintf(f, "EOD\n");
+        }
     }
     fprintf(f, "set output 'velocity.png'\n"
                "set multiplot layout 1,%d title \"Reverse Poiseuille flow (+g above L_y/2, -g below), last third "
@@ -1234,7 +1360,11 @@ static void write_plots(const config *c, const conc_run *runs, const hcbd_hc_par
                 cr->C, cr->g * u->acc, p->L[0], Ly, p->L[2], cr->C, um, mm, mm, um, mm, mm, W * um, A * mm / (um * um),
                 W * um, W * um, W * um, W * um, W * um,
                 cr->fitted ? GP_ETA "_0" : GP_ETA "_0 (lowest rate, no fit)", cr->eta0 * u->eta * 1e3);
+        fprintf(f, ", \\\n     '' u ($1*%.17g):(($14-$16)*%.17g):(sqrt($15**2+$17**2)*%.17g) w yerrorbars pt 4 "
+                   "ps 1.0 lc 1 t 'fluid v(r_a) at the polymers (their slabs, as u_x)'", um, mm, mm);
         if (cr->fitted) fprintf(f, ", \\\n     $carreau%d u 1:2 w l lw 2 lc 3 t 'Carreau fluid of the fit'", ci);
+        if (table2(cr->C, t2))
+            fprintf(f, ", \\\n     $table2carreau%d u 1:2 w l dt 4 lw 2 lc 'gray30' t 'Carreau fluid of Table II'", ci);
         fprintf(f, ", 0 w l lc 'gray40' notitle\n");
     }
     /* ---- densities: the high-shear zones (within Ly/8 of the planes
@@ -1355,7 +1485,8 @@ int main(int argc, char **argv)
     c.steps = 1000;
     if (!expand_args(&c, &argc, &argv)) return 2;
     for (k = 1; k < argc; ++k) /* the preset first: explicit keys override it */
-        if (!strcmp(argv[k], "preset=paper")) paper = 1;
+        if (!strcmp(argv[k], "preset=paper") || !strcmp(argv[k], "preset=paper-long"))
+            paper = 1 + !strcmp(argv[k], "preset=paper-long");
     si = si1;
     opt.time_unit = 1e-6;
     opt.conc[0] = 2.5;
@@ -1389,7 +1520,13 @@ int main(int argc, char **argv)
     opt.substeps = paper ? PAPER_SUBSTEPS : 1;
     opt.plateau = paper;
     opt.block_tau = 1;
-    opt.startup_max = paper ? 16 : 8;
+    opt.startup_max = paper ? 64 : 8;
+    /* issue 41: at Wi = 0.1 the stress still grows until a strain of about
+       2.4 (bench/results/paper_long), and it stays correlated over 1.5-2.5
+       tau_lambda */
+    opt.startup_strain = paper ? 3 : 0;
+    opt.startup_corr = paper ? 6 : 0;
+    opt.measure_strain = paper == 2 ? 4 : paper ? 2 : 0;
     opt.startup_tol = 0.005;
     opt.startup_lambda = 3;
     snprintf(c.out, sizeof c.out, "out/hcbd_polymer");
@@ -1422,6 +1559,8 @@ int main(int argc, char **argv)
     p->tau_lambda = opt.tau_si / u.t;
     p->alpha = opt.alpha;
     p->substeps = opt.substeps;
+    p->coupling = (hcbd_coupling)opt.coupling;
+    p->pair_integrator = opt.pair_euler ? HCBD_PAIR_EULER : HCBD_PAIR_SHARDLOW;
     p->seed = c.def.params.seed;
     /* independent runs side by side scale better than one run's threads
        (1.4x on two cores at Table I); thermo lines would interleave */
@@ -1447,7 +1586,7 @@ int main(int argc, char **argv)
     write_run_conf(&c);
 
     printf("hcbd_polymer: HCBD polymer solutions (2018 sec. IV B), preset %s, box %.4g x %.4g x %.4g sigma "
-           "(reverse Poiseuille %.4g x %.4g x %.4g), fluid blobs %d (%d), polymers", paper ? "paper" : "quick",
+           "(reverse Poiseuille %.4g x %.4g x %.4g), fluid blobs %d (%d), polymers", paper == 2 ? "paper-long" : paper ? "paper" : "quick",
            p->L[0], p->L[1], p->L[2], prp.L[0], prp.L[1], prp.L[2], blobs_in(p), blobs_in(&prp));
     for (ci = 0; ci < opt.nconc; ++ci) printf(" %d (%d) at C = %g C*", runs[ci].np, runs[ci].np_rp, runs[ci].C);
     printf(", threads = %d (%d run%s at a time, %d thread%s each), seed = %llu\n", c.def.params.threads, jobs,
@@ -1480,10 +1619,12 @@ int main(int argc, char **argv)
     printf("; Mach gdot_max Ly / c_s = %.3g\n", mach);
     if (opt.plateau)
         printf("# runs per concentration: Lees-Edwards x %d rates, each a start-up of at least 4 x %g tau_lambda / "
-               "(1 + %g Wi), then until its fitted stress growth would shift the mean by less than %g (3..%d "
-               "blocks), then %d blocks of %g tau_lambda (%d steps); reverse Poiseuille %d steps; equilibrium %d "
-               "steps; %d slabs\n", opt.ngdot, opt.startup_lambda, opt.startup_lambda, opt.startup_tol,
-               opt.startup_max, opt.nblk, opt.block_tau, block_steps(p), opt.rp_steps, opt.eq_steps, opt.nslab);
+               "(1 + %g Wi), a strain of %g and %g correlation times of the stress, then until its fitted stress "
+               "growth would shift the mean by less than %g (3..%d blocks), then %d blocks of %g tau_lambda (%d "
+               "steps) and more until a strain of %g; reverse Poiseuille %d steps; equilibrium %d steps; %d slabs\n",
+               opt.ngdot, opt.startup_lambda, opt.startup_lambda, opt.startup_strain, opt.startup_corr,
+               opt.startup_tol, opt.startup_max, opt.nblk, opt.block_tau, block_steps(p), opt.measure_strain,
+               opt.rp_steps, opt.eq_steps, opt.nslab);
     else
         printf("# runs per concentration: Lees-Edwards %d steps (%.3g tau_lambda) x %d rates, reverse Poiseuille "
                "%d steps; equilibrium %d steps; %d blocks, %d slabs\n", opt.le_steps,
@@ -1497,9 +1638,15 @@ int main(int argc, char **argv)
     /* ---- the runs ---- */
     prog.c = &c;
     if (c.restart[0] && !hc_restart(&c, &rst)) return 2;
-    /* with plateau=1 the start-up is a guess: 5 blocks */
-    prog.total = (int64_t)opt.nconc * ((int64_t)opt.ngdot * (opt.plateau ? (int64_t)(5 + opt.nblk) * block_steps(p)
-                                                                         : opt.le_steps) + opt.rp_steps) + opt.eq_steps;
+    /* with plateau=1 the start-up is a guess: its least strain, or 5 blocks */
+    prog.total = (int64_t)opt.nconc * opt.rp_steps + opt.eq_steps;
+    for (r = 0; r < opt.ngdot; ++r) {
+        const double wi = opt.gdot_si[r] * opt.tau_si;
+        double up = 5, me = opt.nblk;
+        if (opt.plateau && opt.startup_strain / wi > up) up = opt.startup_strain / wi;
+        if (opt.plateau && opt.measure_strain / wi > me) me = opt.measure_strain / wi;
+        prog.total += (int64_t)opt.nconc * (opt.plateau ? (int64_t)((up + me) * block_steps(p)) : opt.le_steps);
+    }
     for (r = 0; r < opt.ngdot; ++r) { /* before the runs, which may overlap */
         hcbd_hc_params q = *p;
         q.gdot = opt.gdot_si[r] * u.t;

@@ -59,6 +59,20 @@ if [ "$(sort -u "$t/sums" | wc -l)" -eq 1 ] && [ "$(wc -l < "$t/sums")" -eq 3 ]
 then ok "hcbd_polymer: jobs=2, jobs=1 and one thread give the same state_checksum"
 else bad "hcbd_polymer: jobs or threads change the bits: $(tr '\n' ' ' < "$t/sums")"; fi
 rm -rf "$t"
+# plateau=1 (the paper presets' measurement on the quick scene): the
+# start-up lasts at least startup_strain, the measured window holds at least
+# measure_strain (6 blocks of tau_lambda at Wi = 0.4: 12 half blocks in the
+# series), and the total's error comes with its blocking n_eff
+t=$(mktemp -d)
+"$B/hcbd_polymer" C=2.5 gdot=2000,8000 plateau=1 startup_strain=1 measure_strain=2.4 blocks=4 rp_steps=30 \
+    eq_steps=1 out="$t/o" > "$t/log" 2>/dev/null
+up=$(sed -n 's/^startup_tau_lambda_gdot2000=//p' "$t/log")
+nw=$(awk -F, '$1 == 0.4 && $5 == 1' "$t/o/startup_C2.5.csv" | wc -l)
+ne=$(awk -F, 'NR > 1 && $(NF - 1) > 0' "$t/o/flowcurve.csv" | wc -l)
+if awk -v u="$up" 'BEGIN {exit !(u >= 2.5)}' && [ "$nw" -eq 12 ] && [ "$ne" -eq 2 ]
+then ok "hcbd_polymer plateau=1: start-up $up tau_lambda >= strain 1 / Wi 0.4, 12 measured half blocks, n_eff per rate"
+else bad "hcbd_polymer plateau=1: start-up '$up' (>= 2.5), measured half blocks $nw (12), rates with n_eff $ne (2)"; fi
+rm -rf "$t"
 for key in rho eta nbar P0 T dt sigma h amp; do expect $key "$B/hcbd_sound" $key=0; done
 expect relax_steps "$B/hcbd_sound" relax_steps=-1
 

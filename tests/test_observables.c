@@ -249,6 +249,37 @@ void test_carreau_fit(void)
         CHECK(fabs(m) < 4 / sqrt((double)TRIALS) && fabs(sqrt(s2) - 1) < 4 / sqrt(2.0 * TRIALS),
               "parameter %d: pulls have mean %g, sd %g", c, m, sqrt(s2));
     }
+    {
+        /* a flow curve thinning faster than n = 0 allows: the fit stops at
+           n = 0, where chi^2 rises along n and along eta0, lambda either way */
+        const double steep[3] = {2.0, 1.5, -0.3};
+        double y[NP], q[3], c0;
+        int s, d;
+        for (k = 0; k < NP; ++k)
+            y[k] = eta_inf + (steep[0] - eta_inf) * pow(1 + pow(steep[1] * g[k], 2), (steep[2] - 1) / 2);
+        CHECK(hcbd_carreau_fit(g, y, err, NP, eta_inf, 0, p, pe, &chi2) == HCBD_OK, "bounded fit failed");
+        CHECK(p[2] == 0.0, "n = %g, not held at 0", p[2]);
+        c0 = 0;
+        for (k = 0; k < NP; ++k) {
+            const double r = (y[k] - (eta_inf + (p[0] - eta_inf) * pow(1 + pow(p[1] * g[k], 2), -0.5))) / err[k];
+            c0 += r * r;
+        }
+        CHECK(fabs(c0 / chi2 - 1) < 1e-9, "chi2 %g, recomputed %g", chi2, c0);
+        for (d = 0; d < 3; ++d)
+            for (s = -1; s <= 1; s += 2) {
+                double c1 = 0;
+                if (d == 2 && s < 0) continue;
+                for (c = 0; c < 3; ++c) q[c] = p[c];
+                q[d] += s * (d == 2 ? 1e-3 : 1e-4 * p[d]);
+                for (k = 0; k < NP; ++k) {
+                    const double r = (y[k] - (eta_inf + (q[0] - eta_inf) *
+                                              pow(1 + pow(q[1] * g[k], 2), (q[2] - 1) / 2))) / err[k];
+                    c1 += r * r;
+                }
+                CHECK(c1 >= chi2 * (1 - 1e-12), "chi2 falls from %g to %g moving parameter %d by %+d", chi2, c1,
+                      d, s);
+            }
+    }
     CHECK(hcbd_carreau_fit(g, eta, err, 3, eta_inf, 0, p, pe, NULL) == HCBD_ERR_PARAM, "3 points accepted");
     err[2] = 0;
     CHECK(hcbd_carreau_fit(g, eta, err, NP, eta_inf, 0, p, pe, NULL) == HCBD_ERR_PARAM, "zero error accepted");
@@ -458,3 +489,73 @@ void test_old_names(void)
 #if defined(__GNUC__) || defined(__clang__)
 #pragma GCC diagnostic pop
 #endif
+
+/* hcbd_blocking_error against series whose error of the mean is known:
+   independent normals (err = 1/sqrt(n)) and AR(1), x' = phi x +
+   sqrt(1 - phi^2) z, whose mean over n samples has the variance
+   ((1 + phi)/(1 - phi) - 2 phi (1 - phi^n)/(n (1 - phi)^2)) / n. */
+void test_blocking_error(void)
+{
+    enum { N = 16384, TRIALS = 300 };
+    static double x[N];
+    const double phis[2] = {0.0, 0.9};
+    hcbd_world_def d = scene(64, 0.24);
+    hcbd_world w;
+    hcbd_rng r;
+    double m, e, neff;
+    int c, t, k, pl;
+    if (!make_world(&w, &d)) return;
+    hcbd_rng_seed(&r, 23);
+    for (c = 0; c < 2; ++c) {
+        const double phi = phis[c], a = sqrt(1 - phi * phi);
+        const double truth = sqrt(((1 + phi) / (1 - phi) - 2 * phi * (1 - pow(phi, N)) / (N * (1 - phi) * (1 - phi))) / N);
+        double se = 0, sp = 0, sp2 = 0, sn = 0;
+        int npl = 0;
+        for (t = 0; t < TRIALS; ++t) {
+            double v = hcbd_rng_normal(&w, &r);
+            for (k = 0; k < N; ++k) {
+                x[k] = v;
+                v = phi * v + a * hcbd_rng_normal(&w, &r);
+            }
+            if (hcbd_blocking_error(x, N, &m, &e, &neff, &pl) != HCBD_OK) {
+                CHECK(0, "phi %g: blocking failed", phi);
+                break;
+            }
+            se += e / truth;
+            sp += m / e;
+            sp2 += (m / e) * (m / e);
+            sn += neff;
+            npl += pl;
+        }
+        se /= TRIALS;
+        sp /= TRIALS;
+        sp2 = sqrt(sp2 / TRIALS - sp * sp);
+        NOTE("phi %.1f: err / truth %.3f, pulls mean %.3f sd %.3f, neff %.0f (truth %.0f), plateau %d of %d", phi, se,
+             sp, sp2, sn / TRIALS, 1 / (truth * truth), npl, TRIALS);
+        /* the estimate's own scatter is 4-7 % per trial, so its mean over
+           TRIALS is known to 0.4 %; blocks short of the correlation time
+           read a few per cent low by design (tau / length) */
+        CHECK(se > 0.93 && se < 1.03, "phi %g: mean error estimate %g of the truth", phi, se);
+        CHECK(fabs(sp) < 4 / sqrt((double)TRIALS) && sp2 > 1 - 4 / sqrt(2.0 * TRIALS) &&
+              sp2 < 1.04 + 4 / sqrt(2.0 * TRIALS), "phi %g: pulls have mean %g, sd %g", phi, sp, sp2);
+        CHECK(fabs(sn / TRIALS * truth * truth - 1) < 0.15, "phi %g: neff %g, truth %g", phi, sn / TRIALS,
+              1 / (truth * truth));
+        CHECK(npl == TRIALS, "phi %g: %d of %d series found no plateau", phi, TRIALS - npl, TRIALS);
+    }
+    /* a series far shorter than its correlation time has no plateau */
+    {
+        double v = 0;
+        for (k = 0; k < 256; ++k) {
+            x[k] = v;
+            v = 0.9995 * v + 0.0316 * hcbd_rng_normal(&w, &r);
+        }
+        CHECK(hcbd_blocking_error(x, 256, &m, &e, NULL, &pl) == HCBD_OK && pl == 0,
+              "a 256-sample series with tau ~ 2000 samples reported a plateau");
+    }
+    CHECK(hcbd_blocking_error(x, 7, &m, &e, NULL, NULL) == HCBD_ERR_PARAM, "7 samples accepted");
+    CHECK(hcbd_blocking_error(NULL, 16, &m, &e, NULL, NULL) == HCBD_ERR_NULL, "NULL series accepted");
+    CHECK(hcbd_blocking_error(x, 16, NULL, &e, NULL, NULL) == HCBD_ERR_NULL, "NULL mean accepted");
+    x[3] = NAN;
+    CHECK(hcbd_blocking_error(x, 16, &m, &e, NULL, NULL) == HCBD_ERR_NONFINITE, "NaN accepted");
+    hcbd_world_destroy(&w);
+}
