@@ -56,8 +56,9 @@
    rate; rp_center_change: the same for the reverse-Poiseuille centre
    velocity), and the block errors, from blocks shorter than tau_lambda,
    are too small.  preset=paper keeps Table I (tau_lambda = 1 s, alpha =
-   500 kT, P0 = 0.13 Pa, box 10^3) but not its step: 1 us would make
-   10^6 steps per tau_lambda, a week of runs.  bench/wp_table1.c measured
+   500 kT, P0 = 0.13 Pa) in a 10^3 box (an assumption: the paper states no
+   box for its polymer runs) but not its step: 1 us would make 10^6 steps
+   per tau_lambda, a week of runs.  bench/wp_table1.c measured
    the viscosity against the step at Table I: the fluid needs its viscous
    step, dt_visc = 0.125 h^2/nu = 12.5 us (at 25 us its part of eta reads
    1-2.5 % low, at 100 us 10 %), the polymers and the coupling much less
@@ -66,13 +67,17 @@
    within 0.3 %), so the preset steps the polymers by 100 us and the fluid
    in 8 sub-steps.  Each Lees-Edwards run measures its start-up
    (plateau=1): at least 4 times the slowest stress relaxation time (3
-   tau_lambda, over 1 + 3 Wi: a slow part of the growth, 5-8 % of the
-   stress at Wi = 0.1, hides under the noise of a few tau_lambda), then on
-   until the stress growth fitted to it would shift the measured mean by
-   less than 0.5 %; then it measures 4 blocks of one tau_lambda; the error of the total is the larger of that
-   block error and the one from blocks twice as long.  The runs are
-   independent, so with threads=2 two of them run side by side on one
-   thread each (jobs=).
+   tau_lambda, over 1 + 3 Wi), a strain of 3 (the stress levels off at a
+   strain of 2.4-3, whatever the rate: bench/results/paper_long, so 30
+   tau_lambda at Wi = 0.1) and 6 correlation times of the stress (by
+   blocking), then on until the stress growth fitted to it would shift the
+   measured mean by less than 0.5 %; then it measures 4 blocks of one
+   tau_lambda (preset=paper-long: until a strain of 2 as well).  The error
+   of the total is the largest of that block error, the one from blocks
+   twice as long and the blocking (Flyvbjerg-Petersen) error of the
+   window's half-block series, which also gives n_eff, the independent
+   samples the window is worth.  The runs are independent, so with
+   threads=2 two of them run side by side on one thread each (jobs=).
 
    What to look for: shear thinning (eta falls once gdot tau_lambda ~ 1),
    carried by the transient part of the polymer stress, stronger at C2;
@@ -211,14 +216,15 @@ static void usage(FILE *f)
             "                      box 8^3, gdot=1000,2154,4642,10000, le_steps=rp_steps=600,\n"
             "                      eq_steps=100, blocks=5;\n"
             "                      paper: Table I as printed (tau_lambda = 1 s, alpha = 500 kT,\n"
-            "                      P0 = 0.13 Pa), box 10^3, gdot=0.1,0.3,1,3,10,30, dt=1e-4 with\n"
+            "                      P0 = 0.13 Pa), box 10^3 (assumed), gdot=0.1,...,30, dt=1e-4 with\n"
             "                      substeps=8 (bench/wp_table1.c), plateau=1, blocks=4,\n"
             "                      rp_steps=50000 (5 tau_lambda), eq_steps=1000, start-ups of at\n"
             "                      least a strain of 3 (startup_strain) and 6 correlation times\n"
-            "                      (startup_corr), measured windows of at least a strain of 2\n"
-            "                      (measure_strain): about an hour with threads=2;\n"
-            "                      paper-long: the same with measure_strain=4 (errors about 1.4\n"
-            "                      times smaller at the slow rates)\n"
+            "                      (startup_corr), then 4 blocks: about an hour with threads=2\n"
+            "                      (the slow rates' errors are lower bounds: their windows are\n"
+            "                      shorter than the stress stays correlated);\n"
+            "                      paper-long: the same with windows of at least a strain of 2\n"
+            "                      (measure_strain=2: 20 tau_lambda at Wi = 0.1), 85 minutes\n"
             "  C=2.5,5             polymer concentrations in C* = 3/(4 pi sigma^3)\n"
             "  gdot=a,b,...        Lees-Edwards shear rates in 1/s\n"
             "  tau_lambda=s        relaxation time of the transient pairs, seconds\n"
@@ -1254,7 +1260,7 @@ static void write_plots(const config *c, const conc_run *runs, const hcbd_hc_par
                "set ylabel 'viscosity " GP_ETA " (mPa s)'\nset key top right\n"
                "set yrange [%.6g:%.6g]\n"
                "set logscale x2\nset x2label 'Wi = " GP_GDOT GP_TAU "_" GP_LAMBDA "'\nset xtics nomirror\n"
-               "set xrange [%.6g:%.6g]\nset x2range [%.6g:%.6g]\n", opt.nconc, ylo / 2, yhi * 300,
+               "set xrange [%.6g:%.6g]\nset x2range [%.6g:%.6g]\n", opt.nconc, ylo / 2, yhi * 1e5,
             opt.gdot_si[0] / 1.5, opt.gdot_si[opt.ngdot - 1] * 1.5, opt.gdot_si[0] / 1.5 * tau_s,
             opt.gdot_si[opt.ngdot - 1] * 1.5 * tau_s);
     fprintf(f, "set xtics (");
@@ -1352,7 +1358,7 @@ static void write_plots(const config *c, const conc_run *runs, const hcbd_hc_par
                    "font ',12'\n"
                    "plot 'profile_C%g.csv' u ($20>0?$1*%.17g:1/0):($12*%.17g):($13*%.17g) w yerrorbars pt 7 ps 1.2 "
                    "lc 1 t 'fluid v_x (slabs holding blob rows)', \\\n"
-                   "     '' u ($1*%.17g):($14*%.17g):($15*%.17g) w yerrorbars pt 6 ps 1.2 lc 2 "
+                   "     '' u ($1*%.17g):($14*%.17g):($15*%.17g) w yerrorbars pt 6 ps 1.8 lc 2 "
                    "t 'polymer drift u_x', \\\n"
                    "     (x < %.17g ? -1 : 1) * %.17g * (x < %.17g ? x : x - %.17g) * (%.17g - (x < %.17g ? x : x - "
                    "%.17g)) w l dt 2 lw 2 lc 'black' t \"Newtonian, %s = %.3g mPa s: (g/2" GP_NU "_0) y"
@@ -1526,7 +1532,7 @@ int main(int argc, char **argv)
        tau_lambda */
     opt.startup_strain = paper ? 3 : 0;
     opt.startup_corr = paper ? 6 : 0;
-    opt.measure_strain = paper == 2 ? 4 : paper ? 2 : 0;
+    opt.measure_strain = paper == 2 ? 2 : 0;
     opt.startup_tol = 0.005;
     opt.startup_lambda = 3;
     snprintf(c.out, sizeof c.out, "out/hcbd_polymer");
