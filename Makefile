@@ -101,7 +101,7 @@ $(B)/run_tests_san: $(TEST_SRC) tests/test.h tests/list.h $(B)/san_impl.o
 # the fuzz inputs replayed under ASan + UBSan; an install and a program
 # built against the installed header only.
 JOBS ?= 2
-TEST_PARTS := main walls hcbd hcbd-float examples sanitize sanitize-hcbd float gibd tsan tsan-hcbd fuzz-args fuzz-ckpt install build
+TEST_PARTS := main walls hcbd hcbd-float examples sanitize sanitize-hcbd float gibd tsan tsan-hcbd fuzz-args fuzz-ckpt install build docs
 LOG = > $(CURDIR)/$(B)/logs/$(1).log 2>&1 || { tail -n 30 $(CURDIR)/$(B)/logs/$(1).log; exit 1; }
 test:
 	@rm -rf $(B)/logs && mkdir -p $(B)/logs
@@ -274,6 +274,10 @@ test-install: $(B)/hcbd_impl.o $(B)/hcbd_impl_hc.o | $(B)/logs
 # generation (their front-end warnings are the same; the float build is
 # compiled in full for its own test part).
 CONV := -Wshadow -Wconversion -Wno-sign-conversion
+# the header's banners against its CONTENTS, and the programs the docs quote
+test-docs: | $(B)/logs
+	tests/docs.sh $(call LOG,docs)
+
 test-build: | $(B)/logs
 	$(MAKE) --no-print-directory build-check $(call LOG,build)
 

@@ -97,23 +97,90 @@
      equations as implemented, the papers' equation numbers, the decisions
      taken where the papers are ambiguous, and what was measured.
 
-   CONTENTS (implementation; each ">>" banner below opens one of these)
-     errors; parameters and their checks (a table row per field); random
-     numbers; kernels (Wendland, star potential and its force table); GI-BD
-     equations; fixed-point pair sums; box and minimum image (Lees-Edwards);
-     walls (repulsion, depletion, artificial particles, Morris pairs, and
-     hcbd_walls, the same without a world: the walled build only); theory and
-     stability limits; world and storage; neighbour search (cells, half and
-     cross Verlet lists); pair passes (density, forces and Euler exchanges,
-     exact pair sweep); integrator, run-time guard and step; observables
-     (g(r), correlators, Carreau fit, MSD, profiles, slabs); checkpoints;
-     world kinds (lifecycle); XYZ and thermo.  Then the HCBD world, in one
-     section on top of that engine: its kernels; parameters and units;
-     storage; set-up; lists and pair passes (fluid density, exact sweep or
-     Euler pairs, polymer density, transient pairs, forces, coupling); the
-     step and its guard; observables; checkpoints, lifecycle, XYZ and
-     thermo.  Both worlds embed one hcbd__core (w->core) and share the code
-     written over it.
+   CONTENTS: one line per ">>" banner below, in order; each names the
+   public functions the banner declares or defines, by prefix, in [ ]
+   (tests/banners.sh checks both, in make test).
+     The interface:
+     >>results [hcbd_result_name]
+     >>parameters [hcbd_params_ hcbd_world_def_]
+     >>world [hcbd_world_]
+     >>step [hcbd_step]
+     >>observables [hcbd_world_get_ hcbd_temperature hcbd_momentum hcbd_virial_stress
+        hcbd_friction_average hcbd_transverse_current hcbd_potential_energy
+        hcbd_config_temperature hcbd_forces hcbd_stress_ hcbd_wall_ hcbd_state_checksum]
+     >>theory and stability limits [hcbd_theory_of hcbd_stability hcbd_limits_format]
+     >>accumulators [hcbd_profile_ hcbd_rdf_ hcbd_mtcorr_ hcbd_msd_ hcbd_slabs_]
+     >>statistics of a run's results [hcbd_carreau_fit hcbd_blocking_error]
+     >>random numbers [hcbd_splitmix64 hcbd_rng_ hcbd_pair_normals hcbd_particle_normals
+        hcbd_noise_]
+     >>GI-BD equations without a world [hcbd_gibd_]
+     >>walls without a world [hcbd_walls_]
+     >>kernels [hcbd_wendland hcbd_star_]
+     >>HCBD (2018) [hcbd_hc_si_table1 hcbd_hc_params_ hcbd_hc_def_default]
+     >>HCBD: world [hcbd_hc_world_ hcbd_hc_set_fluid hcbd_hc_set_polymers hcbd_hc_place_
+        hcbd_hc_refresh]
+     >>HCBD: step [hcbd_hc_step]
+     >>HCBD: observables [hcbd_hc_lambda hcbd_hc_set_lambda hcbd_hc_temperature
+        hcbd_hc_momentum hcbd_hc_transverse_current hcbd_hc_polymer_energy
+        hcbd_hc_density_range hcbd_hc_stress_ hcbd_hc_state_checksum]
+     >>HCBD: theory and stability limits [hcbd_hc_theory_of hcbd_hc_stability]
+     >>HCBD: kernels of the 2018 model [hcbd_m4 hcbd_rapid_w hcbd_flory_]
+     >>checkpoint/restart [hcbd_checkpoint_ hcbd_save hcbd_load hcbd_set_threads]
+     >>trajectories and logs [hcbd_xyz_ hcbd_thermo_]
+     >>HCBD: checkpoints, threads, XYZ and thermo [hcbd_hc_checkpoint_ hcbd_hc_save
+        hcbd_hc_load hcbd_hc_set_threads hcbd_hc_xyz_ hcbd_hc_thermo_]
+     >>old names
+     The implementation:
+     >>implementation
+     >>errors [hcbd_result_name]
+     >>parameters [hcbd_params_ hcbd_world_def_]
+     >>random numbers [hcbd_splitmix64 hcbd_rng_ hcbd_pair_normals hcbd_particle_normals
+        hcbd_noise_]
+     >>kernels [hcbd_wendland]
+     >>GI-BD equations [hcbd_gibd_]
+     >>star potential [hcbd_star_]
+     >>fixed-point pair sums
+     >>box and minimum image
+     >>walls [hcbd_wall_]
+     >>theory and stability limits [hcbd_theory_of hcbd_stability hcbd_limits_format]
+     >>world and storage [hcbd_world_]
+     >>walls without a world [hcbd_walls_]
+     >>neighbour search
+     >>pair traversal
+     >>pair passes
+     >>integrator
+     >>stress a run accumulates [hcbd_stress_]
+     >>run-time guard
+     >>step [hcbd_step]
+     >>observables [hcbd_world_get_ hcbd_temperature hcbd_momentum hcbd_virial_stress
+        hcbd_friction_average hcbd_transverse_current hcbd_potential_energy
+        hcbd_config_temperature hcbd_forces hcbd_state_checksum]
+     >>g(r) [hcbd_rdf_]
+     >>multiple-tau correlator [hcbd_mtcorr_]
+     >>Carreau fit [hcbd_carreau_fit]
+     >>blocking error [hcbd_blocking_error]
+     >>mean-squared displacement [hcbd_msd_]
+     >>slab profiles [hcbd_profile_]
+     >>slabs [hcbd_slabs_]
+     >>checkpoint
+     >>world kinds
+     >>extended XYZ and thermo lines [hcbd_xyz_ hcbd_thermo_]
+     >>HCBD (2018): the fluid and polymer world
+     >>HCBD: kernels [hcbd_m4 hcbd_rapid_w hcbd_flory_]
+     >>HCBD: parameters and units [hcbd_hc_si_table1 hcbd_hc_params_ hcbd_hc_def_default
+        hcbd_hc_theory_of hcbd_hc_stability]
+     >>HCBD: storage [hcbd_hc_world_]
+     >>HCBD: set-up [hcbd_hc_set_fluid hcbd_hc_set_polymers hcbd_hc_place_]
+     >>HCBD: lists and pair passes
+     >>HCBD: integrator [hcbd_hc_refresh]
+     >>HCBD: the step and its guard [hcbd_hc_step]
+     >>HCBD: observables [hcbd_hc_lambda hcbd_hc_set_lambda hcbd_hc_temperature
+        hcbd_hc_momentum hcbd_hc_transverse_current hcbd_hc_polymer_energy
+        hcbd_hc_density_range hcbd_hc_stress_ hcbd_hc_state_checksum]
+     >>HCBD: checkpoints, lifecycle, XYZ and thermo [hcbd_hc_xyz_ hcbd_hc_thermo_]
+     The shared code: both worlds embed one hcbd__core (w->core) and share
+     the code written over it; the world kinds generate the lifecycle,
+     thread and checkpoint functions of both.
 
    NAMING
      hcbd_<thing>_<verb>, the thing first.  A world: hcbd_world_def_default,
@@ -267,7 +334,7 @@ typedef enum hcbd_wall_mode {
                               the walls; depletes the fluid next to them    */
     HCBD_WALL_REFLECT = 1, /* specular reflection at the interface: no
                               depletion (GI-BD carriers still pile up at
-                              the wall, see README)                        */
+                              the wall, see docs/GUIDE.md)               */
     HCBD_WALL_NOSLIP = 2   /* the Gaussian repulsion, with the Morris
                               distances measured from the edge of the
                               depleted layer so the no-slip plane is the
@@ -337,7 +404,7 @@ typedef struct hcbd_params {
     hcbd_wall_params wall; /* the walls (only in the walled build)         */
 #endif
     double skin;          /* Verlet skin; HCBD_AUTO: 0.6 (the fastest of
-                             0.4-1.0 for BD and GI-BD stars, README), less
+                             0.4-1.0 for BD and GI-BD stars, docs/GUIDE.md), less
                              where the box is too small for it           */
     int sort;             /* 1: re-sort storage by cell at each rebuild      */
     uint64_t seed;
@@ -591,6 +658,12 @@ int64_t hcbd_wall_penetrations(const hcbd_world *w, int64_t *last_step, int *las
 double hcbd_wall_potential(const hcbd_params *p, double y, double *fy);
 #endif
 
+/* 64-bit hash of the step, positions, images, Lees-Edwards shifts and
+   velocities in id order: equal checksums mean bit-identical states (the
+   noise is keyed by step and ids, so there is no generator state). */
+uint64_t hcbd_state_checksum(const hcbd_world *w);
+
+/* >>theory and stability limits ------------------------------------------*/
 /* Mean-field predictions for a channel or a sheared bulk (MODEL 3, 4):
    nu = Rc^2/(28 tau), eta_inf = nu n# m (2016 eq. 35), the channel width
    W (L[1] without walls), g = fext[0]/m, the Newtonian centre velocity
@@ -602,7 +675,7 @@ typedef struct hcbd_theory {
 } hcbd_theory;
 hcbd_result hcbd_theory_of(const hcbd_params *p, hcbd_theory *t);
 
-/* >>stability: the limits of a scene, each as a value against its bound in
+/* The limits of a scene, each as a value against its bound in
    the same units (mostly dt against a largest dt) with margin bound/value
    (> 1 inside, < 1 crossed).  guard names what stops a run that crosses it
    (a result code), or "accuracy" where crossing costs only accuracy, or
@@ -619,6 +692,7 @@ hcbd_result hcbd_stability(const hcbd_params *p, hcbd_limit *out, int *n);
    the full text needs, as snprintf does. */
 int hcbd_limits_format(const hcbd_limit *l, int n, char *buf, size_t size);
 
+/* >>accumulators: feed them between steps, read them at any time ---------*/
 /* Slab profiles across y: number density, mean background velocity and
    temperature (m times the velocity variance about the slab mean, averaged
    over components, 2016 sec. IV B), each with the standard error of its
@@ -639,11 +713,6 @@ void hcbd_profile_sample(hcbd_profile *pr, const hcbd_world *w);
    4 its error, 5 temperature, 6 its error, 7 mean particles per sample.
    Returns the number of closed blocks (errors need at least 2). */
 int64_t hcbd_profile_result(const hcbd_profile *pr, double *out);
-
-/* 64-bit hash of the step, positions, images, Lees-Edwards shifts and
-   velocities in id order: equal checksums mean bit-identical states (the
-   noise is keyed by step and ids, so there is no generator state). */
-uint64_t hcbd_state_checksum(const hcbd_world *w);
 
 /* Radial distribution function in nbins shells of width rmax / nbins, with
    block errors when block > 0 (block samples per block; block = 0: no
@@ -746,6 +815,25 @@ int hcbd_msd_stats(const hcbd_msd *d, double *lag, double *msd, double *err, int
 hcbd_result hcbd_msd_diffusion(const hcbd_msd *d, double lag_min, double lag_max, double *D,
                                double *err);
 
+/* Slab profiles across y of any per-particle values, with block errors:
+   add every particle of a sample, then end the sample; blocks of `block`
+   samples.  Result out[(3 + 2 nval) s + c]: c = 0 slab centre, 1 number
+   density, 2 its error, 3 + 2v and 4 + 2v mean and error of value v. */
+typedef struct hcbd_slabs {
+    int nslab, nval, block, nsamp;
+    int64_t nblocks;
+    double L[3];
+    double *acc, *stat;
+} hcbd_slabs;
+size_t hcbd_slabs_bytes(int nslab, int nval);
+hcbd_result hcbd_slabs_init(hcbd_slabs *s, const double L[3], int nslab, int nval,
+                            int block, void *mem, size_t bytes);
+void hcbd_slabs_add(hcbd_slabs *s, double y, const double *vals);
+void hcbd_slabs_end_sample(hcbd_slabs *s);
+int64_t hcbd_slabs_result(const hcbd_slabs *s, double *out);
+
+
+/* >>statistics of a run's results: Carreau fit, blocking error ---------*/
 /* Carreau fit of a flow curve (2016 eq. 34, 2018 eq. 36) with eta_inf
    fixed (for GI-BD the background viscosity of eq. 35):
      eta(gdot) = eta_inf + (eta0 - eta_inf) [1 + (lambda gdot)^2]^((n-1)/2).
@@ -803,6 +891,7 @@ void hcbd_noise_stream_init(hcbd_noise_stream *ns, uint64_t seed, hcbd_noise kin
 void hcbd_noise_pair(const hcbd_noise_stream *ns, int64_t s, int32_t a, int32_t b, double out[3]);
 void hcbd_noise_particle(const hcbd_noise_stream *ns, int64_t s, int32_t id, double out[3]);
 
+/* >>GI-BD equations without a world (for engines of their own) ---------*/
 /* The GI-BD pair equations (MODEL 2-3) for the same kind of engine, from
    the one place the library writes them: with c from hcbd_gibd_coef_of
    (params checked as hcbd_world_create checks them; m = xi' tau),
@@ -829,6 +918,7 @@ double hcbd_gibd_sdt(const hcbd_gibd_coef *c, double r, double inv_rho_i, double
 void hcbd_gibd_pair_exact(const hcbd_gibd_coef *c, double kT, double sdt, const double z[3],
                           double dvx, double vi[3], double vj[3]);
 
+/* >>walls without a world (for engines of their own) --------------------*/
 #if HCBD_MODEL == HCBD_MODEL_WALLED
 /* The walls' artificial particles and Morris pairs without a world, for
    engines of their own (lammps/), with the world's own code: a GI-BD p
@@ -959,6 +1049,7 @@ typedef struct hcbd_hc_def {
 } hcbd_hc_def;
 hcbd_hc_def hcbd_hc_def_default(void);
 
+/* >>HCBD: world -----------------------------------------------------------*/
 /* Stress contributions, S_yx = -(1/V) sum y_ij F_ij,x (the flux of x
    momentum across y planes, the one Lees-Edwards shear measures; the
    Morris viscous force is not central, so this is not the xy one). */
@@ -1067,6 +1158,7 @@ hcbd_result hcbd_hc_place_polymers_random(hcbd_hc_world *w, int n);
    at lambda_eq, deleted beyond rc) and forces at the present positions
    without moving anything: the neighbour rebuild the step does first. */
 hcbd_result hcbd_hc_refresh(hcbd_hc_world *w);
+/* >>HCBD: step ------------------------------------------------------------*/
 /* Advances nsteps.  HCBD_ERR_PARAM when phi >= 1 or a polymer has no fluid
    blob within rc, HCBD_ERR_CAPACITY on pair or neighbour-list overflow,
    HCBD_ERR_UNSTABLE when a fluid blob moves more than h/2 or a polymer rc/4
@@ -1075,6 +1167,7 @@ hcbd_result hcbd_hc_refresh(hcbd_hc_world *w);
    in a step), HCBD_ERR_NONFINITE on non-finite state. */
 hcbd_result hcbd_hc_step(hcbd_hc_world *w, int nsteps);
 
+/* >>HCBD: observables -----------------------------------------------------*/
 /* Pair variable of polymers a, b (any order); HCBD_ERR_STATE if the pair
    does not exist. */
 hcbd_result hcbd_hc_lambda(const hcbd_hc_world *w, int a, int b, double *lambda);
@@ -1100,6 +1193,7 @@ hcbd_result hcbd_hc_stress_read(const hcbd_hc_world *w, double out[HCBD_HC_NSTRE
                                 int64_t *nsteps);
 uint64_t hcbd_hc_state_checksum(const hcbd_hc_world *w);
 
+/* >>HCBD: theory and stability limits ------------------------------------*/
 /* Flow predictions: nu = eta/rho, c_s, blob mass, the reverse-Poiseuille
    centre velocity of each half g (L/4)^2 / (2 nu), and the explicit limits
    dt_visc = 0.125 h^2/nu and dt_sound = 0.25 h / c_s. */
@@ -1111,7 +1205,7 @@ hcbd_result hcbd_hc_theory_of(const hcbd_hc_params *p, hcbd_hc_theory *t);
    fluid sub-step dt/substeps. */
 hcbd_result hcbd_hc_stability(const hcbd_hc_params *p, hcbd_limit *out, int *n);
 
-/* >>kernels of the 2018 model */
+/* >>HCBD: kernels of the 2018 model --------------------------------------*/
 double hcbd_m4(double r, double h);
 double hcbd_m4_dr(double r, double h);
 double hcbd_rapid_w(double r, double sigma, double rc);
@@ -1172,6 +1266,7 @@ hcbd_result hcbd_xyz_offenders(const hcbd_world *w, FILE *f);
 int hcbd_thermo_header(char *buf, size_t size);
 int hcbd_thermo_line(const hcbd_world *w, double ns_pstep, char *buf, size_t size);
 
+/* >>HCBD: checkpoints, threads, XYZ and thermo ----------------------------*/
 #if HCBD_MODEL == HCBD_MODEL_HCBD
 /* The same for the 2018 world: fluid blobs are species "F", polymers "P"
    (velocity: their drift velocity); the thermo line has step time T_fluid
@@ -1186,23 +1281,6 @@ hcbd_result hcbd_hc_xyz_write(const hcbd_hc_world *w, FILE *f);
 int hcbd_hc_thermo_header(char *buf, size_t size);
 int hcbd_hc_thermo_line(const hcbd_hc_world *w, double ns_pstep, char *buf, size_t size);
 #endif
-
-/* Slab profiles across y of any per-particle values, with block errors:
-   add every particle of a sample, then end the sample; blocks of `block`
-   samples.  Result out[(3 + 2 nval) s + c]: c = 0 slab centre, 1 number
-   density, 2 its error, 3 + 2v and 4 + 2v mean and error of value v. */
-typedef struct hcbd_slabs {
-    int nslab, nval, block, nsamp;
-    int64_t nblocks;
-    double L[3];
-    double *acc, *stat;
-} hcbd_slabs;
-size_t hcbd_slabs_bytes(int nslab, int nval);
-hcbd_result hcbd_slabs_init(hcbd_slabs *s, const double L[3], int nslab, int nval,
-                            int block, void *mem, size_t bytes);
-void hcbd_slabs_add(hcbd_slabs *s, double y, const double *vals);
-void hcbd_slabs_end_sample(hcbd_slabs *s);
-int64_t hcbd_slabs_result(const hcbd_slabs *s, double *out);
 
 /* >>old names, kept for one version (the compiler warns where it can) ----*/
 #if defined(__GNUC__) || defined(__clang__)
@@ -1242,7 +1320,7 @@ static inline hcbd_result hcbd_flux_read(const hcbd_world *w, double out[4], int
 #endif /* HCBD_H_INCLUDED */
 
 /* ========================================================================= */
-/* >>implementation                                                          */
+/* >>implementation: includes, portability macros, stream ids             */
 /* ========================================================================= */
 #if defined(HCBD_IMPLEMENTATION) && !defined(HCBD_IMPLEMENTATION_DONE)
 #define HCBD_IMPLEMENTATION_DONE
@@ -1285,30 +1363,6 @@ static inline hcbd_result hcbd_flux_read(const hcbd_world *w, double out[4], int
 #define HCBD__STREAM_BROWNIAN 0x6ULL
 /* The GI-BD build compiles the wall branches away. */
 #define HCBD__WALLS (HCBD_MODEL == HCBD_MODEL_WALLED)
-/* the walls' defaults (every build keeps them in checkpoints) */
-static hcbd_wall_params hcbd__wall_default(void)
-{
-    hcbd_wall_params q;
-    memset(&q, 0, sizeof q);
-    q.beta_max = 1.5;
-    q.mode = HCBD_WALL_GAUSS;
-    q.a = 300.0;
-    q.b = 2.0;
-    q.plane = 1.2;
-    q.shift = HCBD_AUTO;
-    q.noise_beta = 1;
-    return q;
-}
-/* the wall thickness, 0 in the builds without walls */
-#if HCBD__WALLS
-static double hcbd__wall_t(const hcbd_params *p) { return p->wall.thickness; }
-#else
-static double hcbd__wall_t(const hcbd_params *p)
-{
-    (void)p;
-    return 0.0;
-}
-#endif
 
 #ifdef __cplusplus
 extern "C" {
@@ -1364,6 +1418,31 @@ static void hcbd__clear(hcbd_error *e)
 }
 
 /* >>parameters */
+/* the walls' defaults (every build keeps them in checkpoints) */
+static hcbd_wall_params hcbd__wall_default(void)
+{
+    hcbd_wall_params q;
+    memset(&q, 0, sizeof q);
+    q.beta_max = 1.5;
+    q.mode = HCBD_WALL_GAUSS;
+    q.a = 300.0;
+    q.b = 2.0;
+    q.plane = 1.2;
+    q.shift = HCBD_AUTO;
+    q.noise_beta = 1;
+    return q;
+}
+/* the wall thickness, 0 in the builds without walls */
+#if HCBD__WALLS
+static double hcbd__wall_t(const hcbd_params *p) { return p->wall.thickness; }
+#else
+static double hcbd__wall_t(const hcbd_params *p)
+{
+    (void)p;
+    return 0.0;
+}
+#endif
+
 hcbd_params hcbd_params_default(void)
 {
     hcbd_params p;
@@ -2038,6 +2117,7 @@ void hcbd_gibd_pair_exact(const hcbd_gibd_coef *c, double kT, double sdt, const 
     }
 }
 
+/* >>star potential, its force and the force table (MODEL 9) */
 double hcbd_star_potential(double r, double f, double sigma, double eps)
 {
     double a = eps * (5.0 / 18.0) * pow(f, 1.5), b = 1.0 / (1.0 + 0.5 * sqrt(f));
@@ -2583,75 +2663,6 @@ static double hcbd__wall_fy(const hcbd_world *w, double y)
     return fy;
 }
 
-/* >>walls without a world (hcbd_walls, for engines of their own) */
-static void hcbd__ws_take(char *base, size_t *off, hcbd__wallset *s, const hcbd_params *p);
-static char *hcbd__init_block(hcbd_error *e, hcbd_result r, void *mem, size_t bytes, size_t need,
-                              const char *bytes_fn);
-
-size_t hcbd_walls_bytes(const hcbd_params *p)
-{
-    size_t off = 0;
-    hcbd__wallset s;
-    char msg[8];
-    if (!p || hcbd_params_check(p, msg, sizeof msg) != HCBD_OK) return 0;
-    hcbd__ws_take(NULL, &off, &s, p);
-    return off + HCBD__ALIGN;
-}
-
-hcbd_result hcbd_walls_init(hcbd_walls *wl, const hcbd_params *p, void *mem, size_t bytes, char *msg,
-                            size_t msg_size)
-{
-    hcbd_error e;
-    hcbd_result r;
-    char *base;
-    size_t off = 0;
-    if (msg && msg_size) msg[0] = '\0';
-    if (!wl || !p) return HCBD_ERR_NULL;
-    hcbd__clear(&e);
-    r = hcbd_params_check(p, e.msg, sizeof e.msg);
-    if (r == HCBD_OK && p->dynamics != HCBD_DYN_GIBD)
-        r = hcbd__fail(&e, HCBD_ERR_PARAM, -1, -1, "dynamics = %d: walls without a world are GI-BD's",
-                       (int)p->dynamics);
-    base = hcbd__init_block(&e, r, mem, bytes, r == HCBD_OK ? hcbd_walls_bytes(p) : 0, "hcbd_walls_bytes");
-    if (!base) {
-        if (msg && msg_size) snprintf(msg, msg_size, "%s", e.msg);
-        return e.code;
-    }
-    wl->p = *p;
-    hcbd__gibd_coef(p, &wl->c);
-    hcbd__zig_init(&wl->zig);
-    hcbd__ws_take(base, &off, &wl->ws, p);
-    hcbd__ws_init(&wl->ws, p, wl->c.m, wl->c.cw);
-    /* no artificial particles before the first draw */
-    memset(wl->ws.col_start, 0, (size_t)(wl->ws.acol[0] * wl->ws.acol[1] + 1) * sizeof(int32_t));
-    wl->step = -1;
-    return HCBD_OK;
-}
-
-hcbd_result hcbd_walls_draw(hcbd_walls *wl, int64_t step)
-{
-    if (!wl || !wl->ws.col_start) return HCBD_ERR_NULL;
-    if (step < 0) return HCBD_ERR_PARAM;
-    hcbd__ws_draw(&wl->ws, &wl->p, step);
-    wl->step = step;
-    return HCBD_OK;
-}
-
-double hcbd_walls_weights(const hcbd_walls *wl, const double r[3])
-{
-    if (!wl || !r) return NAN;
-    if (wl->p.wall.thickness <= 0 || !hcbd__ws_near(&wl->ws, &wl->p, r[1])) return 0.0;
-    return hcbd__ws_wsum(&wl->ws, &wl->p, wl->c.cw, r[0], r[1], r[2]);
-}
-
-void hcbd_walls_morris(const hcbd_walls *wl, int exact, int32_t id, const double r[3], double inv_rho,
-                       double v[3], double P[3])
-{
-    if (!wl || !r || !v || (!exact && !P) || wl->step < 0 || wl->ws.n_art <= 0) return;
-    if (!hcbd__ws_near(&wl->ws, &wl->p, r[1])) return;
-    hcbd__ws_morris(&wl->ws, &wl->p, &wl->zig, wl->c.cf, wl->c.m,
-                    hcbd__ws_pair_step_key(&wl->ws, wl->step, exact), id, r, inv_rho, v, P, exact);
-}
 #else
 /* Without walls: nothing to draw, no wall near, no force.  The step's calls
    to these sit behind w->walls, w->ws.n_art and w->has_gauss, all 0. */
@@ -3306,6 +3317,74 @@ hcbd_result hcbd_world_set_velocities(hcbd_world *w, const double *v)
     return HCBD_OK;
 }
 
+/* >>walls without a world (hcbd_walls, for engines of their own) */
+#if HCBD__WALLS
+size_t hcbd_walls_bytes(const hcbd_params *p)
+{
+    size_t off = 0;
+    hcbd__wallset s;
+    char msg[8];
+    if (!p || hcbd_params_check(p, msg, sizeof msg) != HCBD_OK) return 0;
+    hcbd__ws_take(NULL, &off, &s, p);
+    return off + HCBD__ALIGN;
+}
+
+hcbd_result hcbd_walls_init(hcbd_walls *wl, const hcbd_params *p, void *mem, size_t bytes, char *msg,
+                            size_t msg_size)
+{
+    hcbd_error e;
+    hcbd_result r;
+    char *base;
+    size_t off = 0;
+    if (msg && msg_size) msg[0] = '\0';
+    if (!wl || !p) return HCBD_ERR_NULL;
+    hcbd__clear(&e);
+    r = hcbd_params_check(p, e.msg, sizeof e.msg);
+    if (r == HCBD_OK && p->dynamics != HCBD_DYN_GIBD)
+        r = hcbd__fail(&e, HCBD_ERR_PARAM, -1, -1, "dynamics = %d: walls without a world are GI-BD's",
+                       (int)p->dynamics);
+    base = hcbd__init_block(&e, r, mem, bytes, r == HCBD_OK ? hcbd_walls_bytes(p) : 0, "hcbd_walls_bytes");
+    if (!base) {
+        if (msg && msg_size) snprintf(msg, msg_size, "%s", e.msg);
+        return e.code;
+    }
+    wl->p = *p;
+    hcbd__gibd_coef(p, &wl->c);
+    hcbd__zig_init(&wl->zig);
+    hcbd__ws_take(base, &off, &wl->ws, p);
+    hcbd__ws_init(&wl->ws, p, wl->c.m, wl->c.cw);
+    /* no artificial particles before the first draw */
+    memset(wl->ws.col_start, 0, (size_t)(wl->ws.acol[0] * wl->ws.acol[1] + 1) * sizeof(int32_t));
+    wl->step = -1;
+    return HCBD_OK;
+}
+
+hcbd_result hcbd_walls_draw(hcbd_walls *wl, int64_t step)
+{
+    if (!wl || !wl->ws.col_start) return HCBD_ERR_NULL;
+    if (step < 0) return HCBD_ERR_PARAM;
+    hcbd__ws_draw(&wl->ws, &wl->p, step);
+    wl->step = step;
+    return HCBD_OK;
+}
+
+double hcbd_walls_weights(const hcbd_walls *wl, const double r[3])
+{
+    if (!wl || !r) return NAN;
+    if (wl->p.wall.thickness <= 0 || !hcbd__ws_near(&wl->ws, &wl->p, r[1])) return 0.0;
+    return hcbd__ws_wsum(&wl->ws, &wl->p, wl->c.cw, r[0], r[1], r[2]);
+}
+
+void hcbd_walls_morris(const hcbd_walls *wl, int exact, int32_t id, const double r[3], double inv_rho,
+                       double v[3], double P[3])
+{
+    if (!wl || !r || !v || (!exact && !P) || wl->step < 0 || wl->ws.n_art <= 0) return;
+    if (!hcbd__ws_near(&wl->ws, &wl->p, r[1])) return;
+    hcbd__ws_morris(&wl->ws, &wl->p, &wl->zig, wl->c.cf, wl->c.m,
+                    hcbd__ws_pair_step_key(&wl->ws, wl->step, exact), id, r, inv_rho, v, P, exact);
+}
+#endif
+
 /* >>neighbour search: cells, half and cross Verlet lists, their rebuild */
 /* One set of particles as the list machinery sees it: positions by slot
    and the id of each slot (NULL: slot = id). */
@@ -3633,7 +3712,8 @@ static int hcbd__density_stale(const hcbd_world *w)
     return !w->rho_current && !(w->p.lagged_density && w->rho_valid);
 }
 
-/* >>pair passes (sums in fixed point, see hcbd__fix) */
+/* >>pair traversal: owners scheduled in slabs, partners gathered in chunks,
+   and the one loop of every pair pass. */
 /* Runs fn over the owners in cell order and returns the least of its
    results (the lowest id of an owner with a term out of range, or INT_MAX).
    With T threads and at least 4T layers of cells along z, the owners are
@@ -3717,7 +3797,7 @@ HCBD__INLINE int hcbd__gather_r2(const int32_t *HCBD__RESTRICT nb, const double 
     return m;
 }
 
-/* >>pair traversal: the one loop of every pair pass.  Owners come from a
+/* The one loop of every pair pass.  Owners come from a
    list of indices (cell order, a sweep block, id order), each meets its
    partners within cut in chunks (hcbd__gather_at), and a pass plugs in
    three inline evaluators: begin (the owner's running state), pairs (one
@@ -3804,6 +3884,8 @@ HCBD__INLINE int hcbd__traverse(const hcbd__trav *T, const int32_t *owners, int 
     return worst;
 }
 
+/* >>pair passes (sums in fixed point, see hcbd__fix): densities, forces and
+   the exact sweep, each an evaluator of the traversal */
 /* begin for passes whose owner state is sums from zero */
 HCBD__INLINE void hcbd__ev_zero(void *ctx, int i, hcbd__acc *a)
 {
@@ -4479,6 +4561,7 @@ static hcbd_result hcbd__integrate(hcbd_world *w)
     return HCBD_OK;
 }
 
+/* >>stress a run accumulates (hcbd_stress_*) */
 /* Adds this step's shear stress contributions, summed in id order, as
    S_yx = -(1/V) sum_{i<j} y_ij F_ij,x (a momentum flux, so viscosity is
    S/gdot): pair forces, background exchanges dp/dt, and the momentum
@@ -4617,6 +4700,7 @@ static hcbd_result hcbd__guard(hcbd_world *w)
     return HCBD_OK;
 }
 
+/* >>step */
 hcbd_result hcbd_step(hcbd_world *w, int nsteps)
 {
     int s;
@@ -8477,6 +8561,8 @@ static int hcbd__hc_fluid_kick(hcbd_hc_world *w, double dt, uint64_t skey)
     return bad == INT_MAX ? -1 : bad;
 }
 
+/* >>HCBD: integrator (pair variables, moves, the state at the present
+   positions) */
 /* Exact Ornstein-Uhlenbeck update of the pair variables over dt with
    lambda_eq held at its value of t: the equilibrium variance is kT/alpha
    for any dt/tau_lambda (Euler-Maruyama, the paper's, agrees to first

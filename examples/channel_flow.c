@@ -18,7 +18,7 @@
    rises towards the background's parabola.  With potential=ideal the profile is Newtonian:
    compare v_max_measured with v_max_newtonian, which uses the mean-field
    nu = Rc^2/(28 tau) (the measured viscosity of ideal carriers is lower,
-   see README).  wall=gauss (the paper's repulsion) depletes the fluid next
+   see docs/GUIDE.md).  wall=gauss (the paper's repulsion) depletes the fluid next
    to the walls and the flow slips; wall=reflect or wall=noslip remove the
    slip.
 
@@ -159,7 +159,7 @@ int main(int argc, char **argv)
     p->wall.thickness = wall_t;
     p->wall.mode = (hcbd_wall_mode)wall_mode;
     /* the no-slip mode needs a firmer grip on the particles next to the
-       Morris plane than the paper's cap (README) */
+       Morris plane than the paper's cap (docs/GUIDE.md) */
     p->wall.beta_max = beta_max > 0 ? beta_max : (wall_mode == HCBD_WALL_NOSLIP ? 5.0 : 1.5);
     p->wall.shift = shift;
     p->fext_background_only = bg_only;

@@ -178,7 +178,7 @@ static inline void common_help(FILE *f)
                "                      the results are the same bits for any count)\n"
                "  seed=u              the random stream (unsigned integer)\n"
                "  out=DIR             where the CSV files, plots.gp and run.conf go\n"
-               "  xyz=FILE xyz_every=k  extended XYZ frames every k steps (OVITO, ASE: README)\n"
+               "  xyz=FILE xyz_every=k  extended XYZ frames every k steps (OVITO, ASE: docs/GUIDE.md)\n"
                "  thermo_every=k      a thermo line every k steps\n"
                "  checkpoint=FILE     save the world at the end\n"
                "  restart=FILE        start from a checkpoint\n"

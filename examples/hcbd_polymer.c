@@ -119,7 +119,7 @@
 #define NSER 256  /* half blocks of a Lees-Edwards run: start-up <= 128, blocks 2 x MAXB */
 /* preset=paper's step: the largest polymer step and fluid sub-steps whose
    viscosity at Table I stays within 1 % of a resolved reference
-   (bench/wp_table1.c, README "Table II") */
+   (bench/wp_table1.c, docs/VALIDATION.md "Table II") */
 #define PAPER_DT 1e-4 /* s */
 #define PAPER_SUBSTEPS 8 /* the fluid at 12.5 us = 0.125 h^2 / nu */
 

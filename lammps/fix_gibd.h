@@ -1,6 +1,6 @@
 // fix gibd: GI-BD (Padding & Briels 2014; Ahuja et al. 2016) on LAMMPS's
-// engine, with the pair equations and the noise of hcbd.h.  See the
-// README, "Past one machine".
+// engine, with the pair equations and the noise of hcbd.h.  See
+// docs/LAMMPS.md.
 #ifdef FIX_CLASS
 // clang-format off
 FixStyle(gibd,FixGIBD);

@@ -732,7 +732,7 @@ static int transverse_nu(int nb, double block_time, double *nu, double *err)
    5) does not.  Reflecting walls are reported: the velocity part of the
    carriers' motion is damped next to the wall, so ideal carriers pile up
    there (an Ito drift: density ~ 1 / local diffusivity) and the flow
-   sticks slightly (README).
+   sticks slightly (docs/GUIDE.md).
    One transport coefficient, three measurements: the curvature of the
    reflecting channel's profile, the Lees-Edwards stress and the late decay
    of the transverse current give the same kinematic viscosity within

@@ -1,0 +1,28 @@
+#!/bin/sh
+# make test, part "docs": the header's banners against its CONTENTS block
+# (tests/banners.sh), and every program the docs quote (build/NAME in
+# README.md and docs/*.md) is one make knows how to build, so that a quoted
+# command cannot outlive its program.  build/logs, build/prefix and
+# build/lammps are folders that make test and make lammps create.
+# Ends with "N passed, N failed".
+cd "$(dirname "$0")/.." || exit 1
+out=$(tests/banners.sh hcbd.h)
+echo "$out"
+last=$(echo "$out" | tail -n 1)
+passed=${last%% passed*}
+failed=${last#*passed, }
+failed=${failed%% failed*}
+progs=$(grep -ohE '(^|[ `(])(\./)?build/[A-Za-z0-9_]+([^A-Za-z0-9_/.]|$)' README.md docs/*.md |
+    sed -E 's#^[ `(]?(\./)?##; s#^(build/[A-Za-z0-9_]+).*#\1#' | sort -u)
+for p in $progs; do
+    case "$p" in build/logs | build/prefix | build/lammps) continue ;; esac
+    if make -n "$p" >/dev/null 2>&1; then
+        passed=$((passed + 1))
+    else
+        echo "docs: the docs quote $p, which make cannot build"
+        failed=$((failed + 1))
+    fi
+done
+echo "docs: $(echo "$progs" | wc -w) programs quoted in README.md and docs/"
+echo "$passed passed, $failed failed"
+[ "$failed" = 0 ]
