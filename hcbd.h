@@ -163,7 +163,8 @@
      >>slab profiles [hcbd_profile_]
      >>slabs [hcbd_slabs_]
      >>checkpoint
-     >>world kinds
+     >>world kinds [hcbd_world_create hcbd_world_destroy hcbd_set_threads hcbd_checkpoint_
+        hcbd_save hcbd_load]
      >>extended XYZ and thermo lines [hcbd_xyz_ hcbd_thermo_]
      >>HCBD (2018): the fluid and polymer world
      >>HCBD: kernels [hcbd_m4 hcbd_rapid_w hcbd_flory_]
@@ -177,10 +178,13 @@
      >>HCBD: observables [hcbd_hc_lambda hcbd_hc_set_lambda hcbd_hc_temperature
         hcbd_hc_momentum hcbd_hc_transverse_current hcbd_hc_polymer_energy
         hcbd_hc_density_range hcbd_hc_stress_ hcbd_hc_state_checksum]
-     >>HCBD: checkpoints, lifecycle, XYZ and thermo [hcbd_hc_xyz_ hcbd_hc_thermo_]
+     >>HCBD: checkpoints, lifecycle, XYZ and thermo [hcbd_hc_world_create
+        hcbd_hc_world_destroy hcbd_hc_set_threads hcbd_hc_checkpoint_ hcbd_hc_save hcbd_hc_load
+        hcbd_hc_xyz_ hcbd_hc_thermo_]
      The shared code: both worlds embed one hcbd__core (w->core) and share
-     the code written over it; the world kinds generate the lifecycle,
-     thread and checkpoint functions of both.
+     the code written over it; a world kind (hcbd__kind) tells that code
+     the world's size, checks and checkpoint fields, and each public
+     lifecycle, thread and checkpoint function is one line calling it.
 
    NAMING
      hcbd_<thing>_<verb>, the thing first.  A world: hcbd_world_def_default,
@@ -6451,7 +6455,7 @@ typedef struct hcbd__kind {
     hcbd__self (*self)(void *w);
     hcbd_result (*check)(const void *def, char *msg, size_t n);
     size_t (*bytes)(const void *def);
-    hcbd_result (*init)(void *w, const void *def, void *mem, size_t bytes);
+    hcbd_result (*init_world)(void *w, const void *def, void *mem, size_t bytes);
     hcbd__walk_fn walk;      /* writes, or with c->out NULL measures, fields  */
     hcbd_result (*load)(void *w, const void *buf, size_t size); /* into a
                                 zeroed world; may fail leaving it live      */
@@ -6483,7 +6487,7 @@ static hcbd_result hcbd__create(const hcbd__kind *k, void *w, const void *def)
     need = k->bytes(def);
     if (!(mem = HCBD_MALLOC(need)))
         return hcbd__fail(s.err, HCBD_ERR_MEMORY, -1, -1, "malloc of %zu bytes failed", need);
-    r = k->init(w, def, mem, need);
+    r = k->init_world(w, def, mem, need);
     if (r != HCBD_OK) {
         HCBD_FREE(mem);
         return r;
@@ -6612,14 +6616,13 @@ static hcbd_result hcbd__load(const hcbd__kind *k, void *w, const char *path)
     return hcbd__adopt(k, w, &t, r);
 }
 
-/* One world type's kind and its public lifecycle, thread and checkpoint
-   functions, all of them one-line calls of the shared code above:
-   K names the kind, W and D the world and definition types, check, bytes,
-   init, walk and load its own functions, tag its checkpoint kind, then the
-   public names (create, destroy, threads, checkpoint size/save/load, file
-   save/load). */
-#define HCBD__WORLD_KIND(K, W, D, check, bytes, init, walk, load, tag, create, destroy,      \
-                         set_threads, ck_size, ck_save, ck_load, save, load_file)            \
+/* One world type's kind, the table through which the shared code above
+   reaches it: K names the kind, W and D the world and definition types,
+   check, bytes, init, walk and load its own functions, tag its checkpoint
+   kind, size_fn the size function its messages name.  The public
+   lifecycle, thread and checkpoint functions follow each kind, written out
+   so that grep and tags find them. */
+#define HCBD__WORLD_KIND(K, W, D, check, bytes, init, walk, load, tag, size_fn)              \
     static hcbd_result K##_check(const void *def, char *msg, size_t n)                     \
     {                                                                                      \
         return check((const D *)def, msg, n);                                              \
@@ -6643,24 +6646,44 @@ static hcbd_result hcbd__load(const hcbd__kind *k, void *w, const char *path)
         s.core = &w->core;                                                                 \
         return s;                                                                          \
     }                                                                                      \
-    static const hcbd__kind K = {sizeof(W), tag, #ck_size, K##_self, K##_check,            \
-                                 K##_bytes, K##_init, walk, K##_load};                      \
-    hcbd_result create(W *w, const D *def) { return hcbd__create(&K, w, def); }            \
-    void destroy(W *w) { hcbd__destroy(&K, w); }                                           \
-    hcbd_result set_threads(W *w, int n) { return hcbd__set_threads(&K, w, n); }           \
-    size_t ck_size(const W *w) { return hcbd__ck_size(&K, w); }                            \
-    hcbd_result ck_save(W *w, void *buf, size_t n) { return hcbd__ck_put(&K, w, buf, n); } \
-    hcbd_result ck_load(W *w, const void *buf, size_t n)                                   \
-    {                                                                                      \
-        return hcbd__ck_get(&K, w, buf, n);                                                \
-    }                                                                                      \
-    hcbd_result save(W *w, const char *path) { return hcbd__save(&K, w, path); }           \
-    hcbd_result load_file(W *w, const char *path) { return hcbd__load(&K, w, path); }
+    static const hcbd__kind K = {sizeof(W), tag, size_fn, K##_self, K##_check,             \
+                                 K##_bytes, K##_init, walk, K##_load};
 
 HCBD__WORLD_KIND(hcbd__kind_bd, hcbd_world, hcbd_world_def, hcbd__check_def, hcbd_world_bytes,
-                 hcbd_world_init, hcbd__ck_walk, hcbd__ck_load, HCBD__CK_WORLD, hcbd_world_create,
-                 hcbd_world_destroy, hcbd_set_threads, hcbd_checkpoint_size, hcbd_checkpoint_save,
-                 hcbd_checkpoint_load, hcbd_save, hcbd_load)
+                 hcbd_world_init, hcbd__ck_walk, hcbd__ck_load, HCBD__CK_WORLD, "hcbd_checkpoint_size")
+
+hcbd_result hcbd_world_create(hcbd_world *w, const hcbd_world_def *def)
+{
+    return hcbd__create(&hcbd__kind_bd, w, def);
+}
+void hcbd_world_destroy(hcbd_world *w)
+{
+    hcbd__destroy(&hcbd__kind_bd, w);
+}
+hcbd_result hcbd_set_threads(hcbd_world *w, int n)
+{
+    return hcbd__set_threads(&hcbd__kind_bd, w, n);
+}
+size_t hcbd_checkpoint_size(const hcbd_world *w)
+{
+    return hcbd__ck_size(&hcbd__kind_bd, w);
+}
+hcbd_result hcbd_checkpoint_save(hcbd_world *w, void *buf, size_t n)
+{
+    return hcbd__ck_put(&hcbd__kind_bd, w, buf, n);
+}
+hcbd_result hcbd_checkpoint_load(hcbd_world *w, const void *buf, size_t n)
+{
+    return hcbd__ck_get(&hcbd__kind_bd, w, buf, n);
+}
+hcbd_result hcbd_save(hcbd_world *w, const char *path)
+{
+    return hcbd__save(&hcbd__kind_bd, w, path);
+}
+hcbd_result hcbd_load(hcbd_world *w, const char *path)
+{
+    return hcbd__load(&hcbd__kind_bd, w, path);
+}
 
 /* >>extended XYZ and thermo lines */
 static void hcbd__xyz_head(FILE *f, int n, const double L[3], double time, int64_t step,
@@ -9136,9 +9159,40 @@ static hcbd_result hcbd__hc_ck_load(hcbd_hc_world *w, const void *buf, size_t si
 
 HCBD__WORLD_KIND(hcbd__kind_hc, hcbd_hc_world, hcbd_hc_def, hcbd__hc_check_def,
                  hcbd_hc_world_bytes, hcbd_hc_world_init, hcbd__ck_hc_walk, hcbd__hc_ck_load,
-                 HCBD__CK_HC, hcbd_hc_world_create, hcbd_hc_world_destroy, hcbd_hc_set_threads,
-                 hcbd_hc_checkpoint_size, hcbd_hc_checkpoint_save, hcbd_hc_checkpoint_load,
-                 hcbd_hc_save, hcbd_hc_load)
+                 HCBD__CK_HC, "hcbd_hc_checkpoint_size")
+
+hcbd_result hcbd_hc_world_create(hcbd_hc_world *w, const hcbd_hc_def *def)
+{
+    return hcbd__create(&hcbd__kind_hc, w, def);
+}
+void hcbd_hc_world_destroy(hcbd_hc_world *w)
+{
+    hcbd__destroy(&hcbd__kind_hc, w);
+}
+hcbd_result hcbd_hc_set_threads(hcbd_hc_world *w, int n)
+{
+    return hcbd__set_threads(&hcbd__kind_hc, w, n);
+}
+size_t hcbd_hc_checkpoint_size(const hcbd_hc_world *w)
+{
+    return hcbd__ck_size(&hcbd__kind_hc, w);
+}
+hcbd_result hcbd_hc_checkpoint_save(hcbd_hc_world *w, void *buf, size_t n)
+{
+    return hcbd__ck_put(&hcbd__kind_hc, w, buf, n);
+}
+hcbd_result hcbd_hc_checkpoint_load(hcbd_hc_world *w, const void *buf, size_t n)
+{
+    return hcbd__ck_get(&hcbd__kind_hc, w, buf, n);
+}
+hcbd_result hcbd_hc_save(hcbd_hc_world *w, const char *path)
+{
+    return hcbd__save(&hcbd__kind_hc, w, path);
+}
+hcbd_result hcbd_hc_load(hcbd_hc_world *w, const char *path)
+{
+    return hcbd__load(&hcbd__kind_hc, w, path);
+}
 
 hcbd_result hcbd_hc_xyz_write(const hcbd_hc_world *w, FILE *f)
 {
