@@ -3412,21 +3412,41 @@ static inline int hcbd__nl_cell(const hcbd__nlist *nl, const double L[3], double
     return (c[2] * nl->nc[1] + c[1]) * nl->nc[0] + c[0];
 }
 
+/* Stable counting sort of the items 0..n-1 by key[item] in [0, nk): out
+   lists them bucket by bucket, in the order of `order` within a bucket
+   (order[k] is the k-th item to place; NULL: 0..n-1); start[0..nk] the
+   bucket starts.  cur (nk ints) is the placing cursor, or NULL to place
+   with start itself and shift it back after. */
+static void hcbd__count_sort(const int32_t *key, int n, const int32_t *order, int nk,
+                             int32_t *start, int32_t *cur, int32_t *out)
+{
+    int k;
+    for (k = 0; k <= nk; ++k) start[k] = 0;
+    for (k = 0; k < n; ++k) start[key[k] + 1]++;
+    for (k = 0; k < nk; ++k) start[k + 1] += start[k];
+    if (cur) {
+        for (k = 0; k < nk; ++k) cur[k] = start[k];
+        for (k = 0; k < n; ++k) {
+            const int i = order ? order[k] : k;
+            out[cur[key[i]]++] = i;
+        }
+    } else {
+        for (k = 0; k < n; ++k) {
+            const int i = order ? order[k] : k;
+            out[start[key[i]]++] = i;
+        }
+        for (k = nk; k > 0; --k) start[k] = start[k - 1];
+        start[0] = 0;
+    }
+}
+
 /* Counting sort of the set into the cells: perm lists the slots cell by
    cell, in slot order within a cell. */
 static void hcbd__nl_sort(hcbd__nlist *nl, const double L[3], const hcbd__pset *s)
 {
-    int i, c;
-    for (c = 0; c <= nl->ncell; ++c) nl->cell_start[c] = 0;
-    for (i = 0; i < s->n; ++i) {
-        nl->cell_of[i] = hcbd__nl_cell(nl, L, s->x[i], s->y[i], s->z[i]);
-        nl->cell_start[nl->cell_of[i] + 1]++;
-    }
-    for (c = 0; c < nl->ncell; ++c) {
-        nl->cell_start[c + 1] += nl->cell_start[c];
-        nl->cell_cursor[c] = nl->cell_start[c];
-    }
-    for (i = 0; i < s->n; ++i) nl->perm[nl->cell_cursor[nl->cell_of[i]]++] = i;
+    int i;
+    for (i = 0; i < s->n; ++i) nl->cell_of[i] = hcbd__nl_cell(nl, L, s->x[i], s->y[i], s->z[i]);
+    hcbd__count_sort(nl->cell_of, s->n, NULL, nl->ncell, nl->cell_start, nl->cell_cursor, nl->perm);
 }
 
 /* Moves every per-particle array into the order given by perm (new slot k
@@ -4301,10 +4321,9 @@ static void hcbd__shardlow(hcbd_world *w)
     const double y0 = w->y[w->slot[0]], z0 = w->z[w->slot[0]];
     int32_t *HCBD__RESTRICT row = w->nl.cell_of, *HCBD__RESTRICT start = w->sw_start;
     int32_t *HCBD__RESTRICT list = (int32_t *)w->scratch;
-    int k, r;
+    int k;
     (void)nt;
     /* rows by counting sort, filled in id order */
-    for (r = 0; r <= nrows; ++r) start[r] = 0;
     for (k = 0; k < n; ++k) {
         const int i = w->slot[k];
         const double yy = w->y[i] - y0, zz = w->z[i] - z0;
@@ -4312,15 +4331,8 @@ static void hcbd__shardlow(hcbd_world *w)
         if (a > ny - 1) a = ny - 1;
         if (b > nz - 1) b = nz - 1;
         row[i] = b * ny + a;
-        start[row[i] + 1]++;
     }
-    for (r = 0; r < nrows; ++r) start[r + 1] += start[r];
-    for (k = 0; k < n; ++k) {
-        const int i = w->slot[k];
-        list[start[row[i]]++] = i;
-    }
-    for (r = nrows; r > 0; --r) start[r] = start[r - 1];
-    start[0] = 0;
+    hcbd__count_sort(row, n, w->slot, nrows, start, NULL, list);
     {
         hcbd__trav T = hcbd__trav_make(&w->nl, w->x, w->y, w->z, w->x, w->y, w->z,
                                        hcbd__box_of(w), w->p.Rc);
@@ -7693,14 +7705,7 @@ static hcbd_result hcbd__hc_lists(hcbd_hc_world *w, int64_t step)
                           "= %g): the fluid is far denser than nbar", (long long)w->lx.max_pairs,
                           w->lx.rlist);
     /* the transposes by counting sort; owners come in increasing id */
-    for (a = 0; a <= w->np; ++a) w->rv_start[a] = 0;
-    for (i = 0; i < (int)w->lp.npairs; ++i) w->rv_start[w->lp.nb_j[i] + 1]++;
-    for (a = 0; a < w->np; ++a) {
-        w->rv_start[a + 1] += w->rv_start[a];
-        cur[a] = w->rv_start[a];
-    }
-    for (a = 0; a < w->np; ++a)
-        for (i = w->lp.nb_start[a]; i < w->lp.nb_start[a + 1]; ++i) w->rv_p[cur[w->lp.nb_j[i]]++] = i;
+    hcbd__count_sort(w->lp.nb_j, (int)w->lp.npairs, NULL, w->np, w->rv_start, cur, w->rv_p);
     for (i = 0; i <= w->nf; ++i) w->xt_start[i] = 0;
     for (i = 0; i < (int)w->lx.npairs; ++i) w->xt_start[w->lx.nb_j[i] + 1]++;
     for (i = 0; i < w->nf; ++i) {
@@ -8355,7 +8360,7 @@ static int hcbd__hc_fluid_shardlow(hcbd_hc_world *w, double dt, uint64_t skey)
     int32_t *HCBD__RESTRICT blk = w->sw_blk, *HCBD__RESTRICT start = w->sw_start;
     int32_t *HCBD__RESTRICT list = w->sw_list, *HCBD__RESTRICT fine = w->sw_fine;
     int32_t *HCBD__RESTRICT tmp = w->sw_tmp, *HCBD__RESTRICT fstart = w->sw_fstart;
-    int nb[3], nc[3], nfc[3], nblk, nfine, q, id, b, worst = INT_MAX;
+    int nb[3], nc[3], nfc[3], nblk, nfine, q, worst = INT_MAX;
     double f[3], g[3];
     (void)nt;
     sc.w = w;
@@ -8393,22 +8398,8 @@ static int hcbd__hc_fluid_shardlow(hcbd_hc_world *w, double dt, uint64_t skey)
     }
     /* two stable counting sorts: by fine cell (filled in id order), then
        by block, so that a block's owners go fine cell by fine cell */
-    for (b = 0; b <= nfine; ++b) fstart[b] = 0;
-    for (q = 0; q < n; ++q) fstart[fine[q] + 1]++;
-    for (b = 0; b < nfine; ++b) fstart[b + 1] += fstart[b];
-    for (id = 0; id < n; ++id) {
-        const int i = w->fslot[id];
-        tmp[fstart[fine[i]]++] = i;
-    }
-    for (b = 0; b <= nblk; ++b) start[b] = 0;
-    for (q = 0; q < n; ++q) start[blk[q] + 1]++;
-    for (b = 0; b < nblk; ++b) start[b + 1] += start[b];
-    for (q = 0; q < n; ++q) {
-        const int i = tmp[q];
-        list[start[blk[i]]++] = i;
-    }
-    for (b = nblk; b > 0; --b) start[b] = start[b - 1];
-    start[0] = 0;
+    hcbd__count_sort(fine, n, w->fslot, nfine, fstart, NULL, tmp);
+    hcbd__count_sort(blk, n, tmp, nblk, start, NULL, list);
     HCBD__OMP(omp parallel num_threads(nt) reduction(min:worst))
     {
         /* colour (a0, a1, a2): the blocks a_d + nc_d m_d, m_d < nb_d / nc_d */
