@@ -858,7 +858,7 @@ hcbd_result hcbd_carreau_fit(const double *gdot, const double *eta, const double
    blocks the error of the mean is s / sqrt(nb) (s the blocks' standard
    deviation), itself uncertain by a factor 1 +- 1/sqrt(2 (nb - 1)).  The
    plateau is the first level whose successor no longer rises beyond this
-   uncertainty, and the estimate that successor's (*plateau = 1); when no
+   uncertainty, and the estimate the larger of the two (*plateau = 1); when no
    level reaches one, the largest of them (*plateau = 0: the series is too
    short for its correlation time and err is a lower bound).  *mean and *err;
    *neff (may be NULL) the number of independent samples the series is
@@ -5592,10 +5592,13 @@ hcbd_result hcbd_blocking_error(const double *x, int n, double *mean, double *er
     for (k = 0; k < nl; ++k) if (e[k] > e[best]) best = k;
     for (k = 0; k + 1 < nl; ++k)
         if (e[k + 1] <= e[k] + de[k]) {
-            /* blocks still short of the correlation time read low by about
-               tau / length: of the two levels at the plateau, the longer */
+            /* of the two levels at the plateau the larger: blocks still
+               short of the correlation time read low by about tau / length,
+               and a series that alternates (a stress oscillation aliased
+               by the sampling) makes the pairs' means agree far better
+               than its samples, an error few samples cannot vouch for */
             pl = 1;
-            best = k + 1;
+            best = e[k + 1] >= e[k] ? k + 1 : k;
             break;
         }
     *mean = m;

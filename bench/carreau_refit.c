@@ -4,9 +4,14 @@
    per concentration and rate) and, per concentration, refits with
    eta_inf = 0.9 mPa s (Table II), with eta_inf = 1 mPa s (the solvent), with
    the lowest or the highest rate left out; and scores Table II's own curve
-   against the points (chi^2 per point, with the points' errors).
+   against the points (chi^2 per point, with the points' errors).  With the
+   run's folder as a second argument, each rate's error is first raised to
+   the blocking error (hcbd_blocking_error as this build has it) of the
+   half-block series of its measured window (startup_C<C>.csv), so that
+   the outputs of an older build are scored as the present one would, and
+   each rate's viscosity over Table II's curve is printed.
 
-   usage: carreau_refit FLOWCURVE.csv */
+   usage: carreau_refit FLOWCURVE.csv [RUN_DIR] */
 #include "../hcbd.h"
 #include <math.h>
 #include <stdio.h>
@@ -27,19 +32,47 @@ static void fit(const char *what, const double *g, const double *e, const double
         printf("  %-34s no fit (%d rates)\n", what, n);
         return;
     }
-    printf("  %-34s eta0 %7.3f +- %-6.2g lambda %8.4g +- %-6.2g n %6.3f +- %-6.2g chi2/dof %.2f\n", what, p[0],
-           pe[0], p[1], pe[1], p[2], pe[2], chi2 / (n - 3));
+    {
+        /* in brackets the errors scaled by sqrt(chi^2/dof) where it is above 1 */
+        const double sc = chi2 / (n - 3) > 1 ? sqrt(chi2 / (n - 3)) : 1;
+        printf("  %-34s eta0 %7.3f +- %-6.2g (%-6.2g) lambda %8.4g +- %-6.2g (%-6.2g) n %6.3f +- %-6.2g (%-6.2g) "
+               "chi2/dof %.2f\n", what, p[0], pe[0], pe[0] * sc, p[1], pe[1], pe[1] * sc, p[2], pe[2], pe[2] * sc,
+               chi2 / (n - 3));
+    }
+}
+
+/* the blocking error of rate gdot's window in DIR/startup_C<C>.csv (0 if
+   the file or the series is missing) */
+static double window_error(const char *dir, double conc, double wi)
+{
+    char name[1024], line[512];
+    double x[1024];
+    int n = 0;
+    FILE *f;
+    snprintf(name, sizeof name, "%s/startup_C%g.csv", dir, conc);
+    if (!(f = fopen(name, "r"))) return 0;
+    while (n < 1024 && fgets(line, sizeof line, f)) {
+        double w, t, e, r;
+        int ph;
+        if (sscanf(line, "%lf,%lf,%lf,%lf,%d", &w, &t, &e, &r, &ph) == 5 && ph == 1 && fabs(w - wi) <= 1e-9 * wi)
+            x[n++] = e;
+    }
+    fclose(f);
+    {
+        double m, err;
+        return n >= 8 && hcbd_blocking_error(x, n, &m, &err, NULL, NULL) == HCBD_OK ? err : 0;
+    }
 }
 
 int main(int argc, char **argv)
 {
     static const double table2[2][4] = {{2.5, 2.526, 3.0504, 0.3441}, {5, 6.6688, 2.1408, 0.0008}};
-    double C[MAXP], g[MAXP], e[MAXP], s[MAXP];
+    double C[MAXP], g[MAXP], wi[MAXP], e[MAXP], s[MAXP];
     int n = 0, k, c;
     char line[4096];
     FILE *f;
-    if (argc != 2 || !(f = fopen(argv[1], "r"))) {
-        fprintf(stderr, "usage: carreau_refit FLOWCURVE.csv (hcbd_polymer's)\n");
+    if (argc < 2 || argc > 3 || !(f = fopen(argv[1], "r"))) {
+        fprintf(stderr, "usage: carreau_refit FLOWCURVE.csv [RUN_DIR] (hcbd_polymer's)\n");
         return 2;
     }
     if (!fgets(line, sizeof line, f)) return 2; /* header */
@@ -50,7 +83,8 @@ int main(int argc, char **argv)
         while (tok && m < 32) { v[m++] = atof(tok); tok = strtok(NULL, ","); }
         if (m < 14) continue;
         /* C, gdot_per_s, gdot, Wi, 4 x (eta, err) reduced, then mPa s */
-        C[n] = v[0]; g[n] = v[1]; e[n] = v[12]; s[n] = v[13] > 0 ? v[13] : 1e-9;
+        C[n] = v[0]; g[n] = v[1]; wi[n] = v[3]; e[n] = v[12]; s[n] = v[13] > 0 ? v[13] : 1e-9;
+        if (argc == 3) s[n] = fmax(s[n], window_error(argv[2], C[n], wi[n]));
         ++n;
     }
     fclose(f);
@@ -65,8 +99,15 @@ int main(int argc, char **argv)
             const double d = (ee[k] - carreau(table2[c] + 1, 0.9, gg[k])) / ss[k];
             chi += d * d;
         }
-        printf("  %-34s eta0 %7.3f            lambda %8.4g            n %6.3f            chi2/point %.2f\n",
-               "Table II (against these points)", table2[c][1], table2[c][2], table2[c][3], chi / m);
+        printf("  %-34s eta0 %7.3f                     lambda %8.4g                     n %6.3f                     "
+               "chi2/point %.2f\n", "Table II (against these points)", table2[c][1], table2[c][2], table2[c][3],
+               chi / m);
+        printf("  over Table II's curve:");
+        for (k = 0; k < m; ++k) {
+            const double t2 = carreau(table2[c] + 1, 0.9, gg[k]);
+            printf(" %.3f +- %.3f", ee[k] / t2, ss[k] / t2);
+        }
+        printf("\n");
         fit("fit, eta_inf = 0.9 (Table II)", gg, ee, ss, m, 0.9);
         fit("fit, eta_inf = 1.0 (the solvent)", gg, ee, ss, m, 1.0);
         fit("fit, lowest rate left out", gg + 1, ee + 1, ss + 1, m - 1, 0.9);
