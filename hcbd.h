@@ -503,7 +503,7 @@ typedef struct hcbd__core {
    set's particles listing the other's within rlist) has every pair. */
 typedef struct hcbd__nlist {
     int nc[3], ncell;
-    int32_t *cell_start, *cell_cursor, *cell_of, *perm;
+    int32_t *cell_start, *cell_of, *perm;
     int32_t *nb_start, *nb_j, *nb_tmp;
     hcbd_real *x0, *y0, *z0;     /* positions at the last build              */
     int64_t max_pairs, npairs;
@@ -835,7 +835,6 @@ hcbd_result hcbd_slabs_init(hcbd_slabs *s, const double L[3], int nslab, int nva
 void hcbd_slabs_add(hcbd_slabs *s, double y, const double *vals);
 void hcbd_slabs_end_sample(hcbd_slabs *s);
 int64_t hcbd_slabs_result(const hcbd_slabs *s, double *out);
-
 
 /* >>statistics of a run's results: Carreau fit, blocking error ---------*/
 /* Carreau fit of a flow curve (2016 eq. 34, 2018 eq. 36) with eta_inf
@@ -2902,7 +2901,6 @@ static void hcbd__nl_take(char *base, size_t *off, hcbd__nlist *nl, size_t N, co
     hcbd__take(base, off, N * R, (void **)&nl->y0);
     hcbd__take(base, off, N * R, (void **)&nl->z0);
     hcbd__take(base, off, (ncell + 1) * I, (void **)&nl->cell_start);
-    hcbd__take(base, off, ncell * I, (void **)&nl->cell_cursor);
     hcbd__take(base, off, N * I, (void **)&nl->cell_of);
     hcbd__take(base, off, N * I, (void **)&nl->perm);
     hcbd__take(base, off, (N + 1) * I, (void **)&nl->nb_start);
@@ -3415,29 +3413,20 @@ static inline int hcbd__nl_cell(const hcbd__nlist *nl, const double L[3], double
 /* Stable counting sort of the items 0..n-1 by key[item] in [0, nk): out
    lists them bucket by bucket, in the order of `order` within a bucket
    (order[k] is the k-th item to place; NULL: 0..n-1); start[0..nk] the
-   bucket starts.  cur (nk ints) is the placing cursor, or NULL to place
-   with start itself and shift it back after. */
+   bucket starts (it serves as the placing cursor, then shifts back). */
 static void hcbd__count_sort(const int32_t *key, int n, const int32_t *order, int nk,
-                             int32_t *start, int32_t *cur, int32_t *out)
+                             int32_t *start, int32_t *out)
 {
     int k;
     for (k = 0; k <= nk; ++k) start[k] = 0;
     for (k = 0; k < n; ++k) start[key[k] + 1]++;
     for (k = 0; k < nk; ++k) start[k + 1] += start[k];
-    if (cur) {
-        for (k = 0; k < nk; ++k) cur[k] = start[k];
-        for (k = 0; k < n; ++k) {
-            const int i = order ? order[k] : k;
-            out[cur[key[i]]++] = i;
-        }
-    } else {
-        for (k = 0; k < n; ++k) {
-            const int i = order ? order[k] : k;
-            out[start[key[i]]++] = i;
-        }
-        for (k = nk; k > 0; --k) start[k] = start[k - 1];
-        start[0] = 0;
+    for (k = 0; k < n; ++k) {
+        const int i = order ? order[k] : k;
+        out[start[key[i]]++] = i;
     }
+    for (k = nk; k > 0; --k) start[k] = start[k - 1];
+    start[0] = 0;
 }
 
 /* Counting sort of the set into the cells: perm lists the slots cell by
@@ -3446,7 +3435,7 @@ static void hcbd__nl_sort(hcbd__nlist *nl, const double L[3], const hcbd__pset *
 {
     int i;
     for (i = 0; i < s->n; ++i) nl->cell_of[i] = hcbd__nl_cell(nl, L, s->x[i], s->y[i], s->z[i]);
-    hcbd__count_sort(nl->cell_of, s->n, NULL, nl->ncell, nl->cell_start, nl->cell_cursor, nl->perm);
+    hcbd__count_sort(nl->cell_of, s->n, NULL, nl->ncell, nl->cell_start, nl->perm);
 }
 
 /* Moves every per-particle array into the order given by perm (new slot k
@@ -4332,7 +4321,7 @@ static void hcbd__shardlow(hcbd_world *w)
         if (b > nz - 1) b = nz - 1;
         row[i] = b * ny + a;
     }
-    hcbd__count_sort(row, n, w->slot, nrows, start, NULL, list);
+    hcbd__count_sort(row, n, w->slot, nrows, start, list);
     {
         hcbd__trav T = hcbd__trav_make(&w->nl, w->x, w->y, w->z, w->x, w->y, w->z,
                                        hcbd__box_of(w), w->p.Rc);
@@ -6671,30 +6660,37 @@ hcbd_result hcbd_world_create(hcbd_world *w, const hcbd_world_def *def)
 {
     return hcbd__create(&hcbd__kind_bd, w, def);
 }
+
 void hcbd_world_destroy(hcbd_world *w)
 {
     hcbd__destroy(&hcbd__kind_bd, w);
 }
+
 hcbd_result hcbd_set_threads(hcbd_world *w, int n)
 {
     return hcbd__set_threads(&hcbd__kind_bd, w, n);
 }
+
 size_t hcbd_checkpoint_size(const hcbd_world *w)
 {
     return hcbd__ck_size(&hcbd__kind_bd, w);
 }
+
 hcbd_result hcbd_checkpoint_save(hcbd_world *w, void *buf, size_t n)
 {
     return hcbd__ck_put(&hcbd__kind_bd, w, buf, n);
 }
+
 hcbd_result hcbd_checkpoint_load(hcbd_world *w, const void *buf, size_t n)
 {
     return hcbd__ck_get(&hcbd__kind_bd, w, buf, n);
 }
+
 hcbd_result hcbd_save(hcbd_world *w, const char *path)
 {
     return hcbd__save(&hcbd__kind_bd, w, path);
 }
+
 hcbd_result hcbd_load(hcbd_world *w, const char *path)
 {
     return hcbd__load(&hcbd__kind_bd, w, path);
@@ -7708,7 +7704,7 @@ static hcbd_result hcbd__hc_lists(hcbd_hc_world *w, int64_t step)
                           "= %g): the fluid is far denser than nbar", (long long)w->lx.max_pairs,
                           w->lx.rlist);
     /* the transposes by counting sort; owners come in increasing id */
-    hcbd__count_sort(w->lp.nb_j, (int)w->lp.npairs, NULL, w->np, w->rv_start, cur, w->rv_p);
+    hcbd__count_sort(w->lp.nb_j, (int)w->lp.npairs, NULL, w->np, w->rv_start, w->rv_p);
     for (i = 0; i <= w->nf; ++i) w->xt_start[i] = 0;
     for (i = 0; i < (int)w->lx.npairs; ++i) w->xt_start[w->lx.nb_j[i] + 1]++;
     for (i = 0; i < w->nf; ++i) {
@@ -8401,8 +8397,8 @@ static int hcbd__hc_fluid_shardlow(hcbd_hc_world *w, double dt, uint64_t skey)
     }
     /* two stable counting sorts: by fine cell (filled in id order), then
        by block, so that a block's owners go fine cell by fine cell */
-    hcbd__count_sort(fine, n, w->fslot, nfine, fstart, NULL, tmp);
-    hcbd__count_sort(blk, n, tmp, nblk, start, NULL, list);
+    hcbd__count_sort(fine, n, w->fslot, nfine, fstart, tmp);
+    hcbd__count_sort(blk, n, tmp, nblk, start, list);
     HCBD__OMP(omp parallel num_threads(nt) reduction(min:worst))
     {
         /* colour (a0, a1, a2): the blocks a_d + nc_d m_d, m_d < nb_d / nc_d */
@@ -9159,30 +9155,37 @@ hcbd_result hcbd_hc_world_create(hcbd_hc_world *w, const hcbd_hc_def *def)
 {
     return hcbd__create(&hcbd__kind_hc, w, def);
 }
+
 void hcbd_hc_world_destroy(hcbd_hc_world *w)
 {
     hcbd__destroy(&hcbd__kind_hc, w);
 }
+
 hcbd_result hcbd_hc_set_threads(hcbd_hc_world *w, int n)
 {
     return hcbd__set_threads(&hcbd__kind_hc, w, n);
 }
+
 size_t hcbd_hc_checkpoint_size(const hcbd_hc_world *w)
 {
     return hcbd__ck_size(&hcbd__kind_hc, w);
 }
+
 hcbd_result hcbd_hc_checkpoint_save(hcbd_hc_world *w, void *buf, size_t n)
 {
     return hcbd__ck_put(&hcbd__kind_hc, w, buf, n);
 }
+
 hcbd_result hcbd_hc_checkpoint_load(hcbd_hc_world *w, const void *buf, size_t n)
 {
     return hcbd__ck_get(&hcbd__kind_hc, w, buf, n);
 }
+
 hcbd_result hcbd_hc_save(hcbd_hc_world *w, const char *path)
 {
     return hcbd__save(&hcbd__kind_hc, w, path);
 }
+
 hcbd_result hcbd_hc_load(hcbd_hc_world *w, const char *path)
 {
     return hcbd__load(&hcbd__kind_hc, w, path);
