@@ -3726,7 +3726,7 @@ static int hcbd__density_stale(const hcbd_world *w)
 }
 
 /* >>pair traversal: owners scheduled in slabs, partners gathered in chunks,
-   and the one loop of every pair pass. */
+   the loop of every pair pass, and its streamed form. */
 /* Runs fn over the owners in cell order and returns the least of its
    results (the lowest id of an owner with a term out of range, or INT_MAX).
    With T threads and at least 4T layers of cells along z, the owners are
@@ -3810,7 +3810,7 @@ HCBD__INLINE int hcbd__gather_r2(const int32_t *HCBD__RESTRICT nb, const double 
     return m;
 }
 
-/* The one loop of every pair pass.  Owners come from a
+/* The loop of every pair pass.  Owners come from a
    list of indices (cell order, a sweep block, id order), each meets its
    partners within cut in chunks (hcbd__gather_at), and a pass plugs in
    three inline evaluators: begin (the owner's running state), pairs (one
@@ -3818,7 +3818,9 @@ HCBD__INLINE int hcbd__gather_r2(const int32_t *HCBD__RESTRICT nb, const double 
    id of an owner whose terms left the fixed-point range, or INT_MAX).
    The loop knows lists, orders and chunks; an evaluator knows one
    equation.  The schedulers (slabs: hcbd__nl_owners; colours of the exact
-   sweeps) hand it ranges of owners. */
+   sweeps) hand it ranges of owners.  A pass whose terms need only the
+   separation may take the streamed form below instead (same owners, same
+   partners, same bits). */
 typedef struct hcbd__acc {
     int64_t q[8];                 /* fixed-point sums: weights, forces     */
     double r[8];                  /* double sums, an owner's velocity      */
@@ -3892,6 +3894,75 @@ HCBD__INLINE int hcbd__traverse(const hcbd__trav *T, const int32_t *owners, int 
             pairs(ctx, i, &c, m, &a);
         }
         b = end(ctx, i, &a);
+        if (b < worst) worst = b;
+    }
+    return worst;
+}
+
+/* The stream: the pairs within cut of many owners in one buffer, for a
+   pass whose terms depend on the separation alone, so that its arithmetic
+   runs in SIMD loops of hundreds of pairs instead of one owner's seven.
+   An owner's pairs are a segment (an owner cut by a flush has two), so its
+   own sums are still taken in registers, once per segment. */
+#define HCBD__STREAM 512
+typedef struct hcbd__stream {
+    int32_t j[HCBD__STREAM];
+    double x[HCBD__STREAM], y[HCBD__STREAM], z[HCBD__STREAM], r2[HCBD__STREAM];
+    /* segments: owner, first pair.  Every closed segment holds a pair, so
+       at most HCBD__STREAM of them and the open one */
+    int32_t own[HCBD__STREAM + 1], at[HCBD__STREAM + 2];
+    int m, nseg;
+} hcbd__stream;
+
+/* evaluates pairs [0, m) and adds their terms; returns as end does */
+typedef int (*hcbd__ev_stream)(void *ctx, const hcbd__stream *s);
+
+HCBD__INLINE int hcbd__traverse_stream(const hcbd__trav *T, const int32_t *owners, int q0, int q1,
+                                       void *ctx, hcbd__ev_stream flush)
+{
+    const int32_t *HCBD__RESTRICT nb = T->nb;
+    const hcbd_real *HCBD__RESTRICT x = T->x, *HCBD__RESTRICT y = T->y, *HCBD__RESTRICT z = T->z;
+    double *HCBD__RESTRICT r2out = T->r2out;
+    const double cut2 = T->cut2;
+    hcbd__stream s;
+    int q, worst = INT_MAX, b;
+    s.m = 0;
+    s.nseg = 0;
+    for (q = q0; q < q1; ++q) {
+        const int i = owners[q];
+        const double xi = T->ox[i], yi = T->oy[i], zi = T->oz[i];
+        const int32_t pend = T->start[i + 1];
+        int32_t p = T->start[i];
+        s.own[s.nseg] = i;
+        s.at[s.nseg++] = s.m;
+        while (p < pend) {
+            const int32_t pe = pend - p > HCBD__CHUNK ? p + HCBD__CHUNK : pend;
+            int m = s.m;
+            if (m + HCBD__CHUNK > HCBD__STREAM) {
+                s.at[s.nseg] = m;
+                b = flush(ctx, &s);
+                if (b < worst) worst = b;
+                s.own[0] = i;
+                s.at[0] = m = 0;
+                s.nseg = 1;
+            }
+            for (; p < pe; ++p) { /* as hcbd__gather_at: no branch on the range */
+                const int j = nb[p];
+                double d[3], r2;
+                hcbd__delta_box(&T->box, xi - x[j], yi - y[j], zi - z[j], d);
+                r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+                s.j[m] = j;
+                s.x[m] = d[0]; s.y[m] = d[1]; s.z[m] = d[2]; s.r2[m] = r2;
+                if (r2out) r2out[p] = r2;
+                m += r2 < cut2;
+            }
+            s.m = m;
+        }
+        if (s.at[s.nseg - 1] == s.m) s.nseg--; /* no pair in range: no segment */
+    }
+    if (s.nseg) {
+        s.at[s.nseg] = s.m;
+        b = flush(ctx, &s);
         if (b < worst) worst = b;
     }
     return worst;
@@ -4102,12 +4173,108 @@ HCBD__INLINE int hcbd__force_end(void *ctx, int i, hcbd__acc *a)
     return a->bad ? w->id[i] : INT_MAX;
 }
 
+/* c ? a : b in bit operations: written as a conditional, the compiler
+   turns it back into branches, and the loop around it stops vectorising */
+static inline double hcbd__select(int c, double a, double b)
+{
+    uint64_t ua, ub, mk = (uint64_t)0 - (uint64_t)(c != 0);
+    double r;
+    memcpy(&ua, &a, sizeof ua);
+    memcpy(&ub, &b, sizeof ub);
+    ua = (ua & mk) | (ub & ~mk);
+    memcpy(&r, &ua, sizeof r);
+    return r;
+}
+
+/* The star table's forces and (lag) the density weights of a stream: the
+   operations of hcbd__force_pairs for these switches, pair by pair, so the
+   same bits.  Both branches of the table are computed and one selected;
+   the index is clamped so that a pair outside the table reads inside it
+   (its value is then not taken; inside, the clamp changes nothing). */
+HCBD__INLINE int hcbd__force_stream_run(const hcbd__force_ctx *f, const hcbd__stream *s, const int pot,
+                                        const int lag)
+{
+    hcbd_world *w = f->w;
+    int64_t *HCBD__RESTRICT aFx = w->aF[0], *HCBD__RESTRICT aFy = w->aF[1];
+    int64_t *HCBD__RESTRICT aFz = w->aF[2], *HCBD__RESTRICT aW = w->aW;
+    const double *HCBD__RESTRICT tab = w->star_tab;
+    const double u0 = w->star_u0, ih = w->star_ih, sa = w->star.a;
+    const int64_t kmax = w->star_kmax;
+    const double rc2 = f->rc2, Rc2 = f->Rc2, invRc = f->invRc, cwq = f->cwq, qF = f->qF, limF = f->limF;
+    const int m = s->m;
+    int64_t ux[HCBD__STREAM], uy[HCBD__STREAM], uz[HCBD__STREAM], uw[HCBD__STREAM];
+    double fin[HCBD__STREAM];
+    int bd[HCBD__STREAM];
+    int t, g, worst = INT_MAX;
+    /* the inner branch in a loop of its own: inside the next one the
+       compiler sinks the division under its condition, and a division
+       that may trap stops the loop from vectorising */
+    if (pot) {
+        HCBD__OMP(omp simd)
+        for (t = 0; t < m; ++t) fin[t] = sa / s->r2[t];
+    }
+    HCBD__OMP(omp simd)
+    for (t = 0; t < m; ++t) {
+        const double r2 = s->r2[t];
+        if (pot) {
+            double tt = (r2 - u0) * ih, fr, Fx, Fy, Fz;
+            int64_t k = (int64_t)tt, b;
+            k &= ~(k >> 63);
+            k = k < kmax ? k : kmax;
+            b = 4 * k;
+            tt -= (double)k;
+            fr = tab[b] + tt * (tab[b + 1] + tt * (tab[b + 2] + tt * tab[b + 3]));
+            fr = hcbd__select(r2 <= u0, fin[t], fr);
+            fr = hcbd__select(r2 < rc2, fr, 0.0);
+            Fx = fr * s->x[t]; Fy = fr * s->y[t]; Fz = fr * s->z[t];
+            bd[t] = !((fabs(Fx) <= limF) & (fabs(Fy) <= limF) & (fabs(Fz) <= limF));
+            ux[t] = hcbd__fix(Fx * qF); uy[t] = hcbd__fix(Fy * qF); uz[t] = hcbd__fix(Fz * qF);
+        }
+        if (lag) {
+            const double qq = sqrt(r2) * invRc, aa = 1.0 - qq;
+            uw[t] = hcbd__fix(hcbd__weight(cwq, qq, aa)) & -(int64_t)(r2 < Rc2);
+        }
+    }
+    for (g = 0; g < s->nseg; ++g) {
+        const int i = s->own[g], t1 = s->at[g + 1];
+        int64_t q0 = 0, q1 = 0, q2 = 0, q6 = 0;
+        int bad = 0;
+        for (t = s->at[g]; t < t1; ++t) {
+            const int j = s->j[t];
+            if (pot) {
+                q0 += ux[t]; aFx[j] -= ux[t];
+                q1 += uy[t]; aFy[j] -= uy[t];
+                q2 += uz[t]; aFz[j] -= uz[t];
+                bad |= bd[t];
+            }
+            if (lag) { q6 += uw[t]; aW[j] += uw[t]; }
+        }
+        if (pot) { aFx[i] += q0; aFy[i] += q1; aFz[i] += q2; }
+        if (lag) aW[i] += q6;
+        if (bad && w->id[i] < worst) worst = w->id[i];
+    }
+    return worst;
+}
+
+static int hcbd__force_stream_pot(void *ctx, const hcbd__stream *s)
+{
+    return hcbd__force_stream_run((const hcbd__force_ctx *)ctx, s, 1, 0);
+}
+
+static int hcbd__force_stream_dens(void *ctx, const hcbd__stream *s)
+{
+    return hcbd__force_stream_run((const hcbd__force_ctx *)ctx, s, 1, 1);
+}
+
 HCBD__INLINE int hcbd__forces_run(hcbd_world *w, int q0, int q1, const int pot, const int fric,
                                   const int lag, const int flux, const int store)
 {
     hcbd__force_ctx f = hcbd__force_ctx_of(w, pot, fric, lag, flux);
     hcbd__trav T = hcbd__trav_make(&w->nl, w->x, w->y, w->z, w->x, w->y, w->z, f.box, w->cutmax);
     T.r2out = store && w->pr2_ok ? w->pr2 : NULL;
+    if (pot && !fric && !flux && f.table && w->p.rcut > w->p.sigma)
+        return hcbd__traverse_stream(&T, w->nl.perm, q0, q1, &f,
+                                     lag ? hcbd__force_stream_dens : hcbd__force_stream_pot);
     return hcbd__traverse(&T, w->nl.perm, q0, q1, &f, hcbd__force_begin, hcbd__force_pairs,
                           hcbd__force_end);
 }

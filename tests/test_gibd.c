@@ -200,7 +200,8 @@ void test_determinism(void)
 
 /* Every fast path of a GI-BD step gives the bits of the general path.
    The stress accumulation is an observable, but it switches the step's
-   passes: without it the forces and this step's densities share one pass
+   passes: without it the forces and this step's densities share one pass,
+   which with the star table streams many owners' pairs through SIMD loops,
    and the exact sweep takes each pair's r^2 from that pass (unsheared);
    with it the densities have a pass of their own, the general force pass
    runs and the sweep measures every pair again.  So a run with the stress
