@@ -3772,7 +3772,32 @@ typedef struct hcbd__near {
     double x[HCBD__CHUNK], y[HCBD__CHUNK], z[HCBD__CHUNK], r2[HCBD__CHUNK];
 } hcbd__near;
 
-/* r2out: r^2 of every entry is also stored there, by entry */
+/* Entries [p, pe) of an owner at (xi, yi, zi) into the arrays from place
+   m on, each written and kept only if within cut2; returns the new count.
+   r2out: r^2 of every entry is also stored there, by entry. */
+HCBD__INLINE int hcbd__gather_into(const hcbd_real *HCBD__RESTRICT x, const hcbd_real *HCBD__RESTRICT y,
+                                   const hcbd_real *HCBD__RESTRICT z, const int32_t *HCBD__RESTRICT nb,
+                                   const hcbd__box *box, double xi, double yi, double zi, int32_t p,
+                                   int32_t pe, double cut2, double *HCBD__RESTRICT r2out, int m,
+                                   int32_t *HCBD__RESTRICT oj, int32_t *HCBD__RESTRICT ok,
+                                   int32_t *HCBD__RESTRICT oe, double *HCBD__RESTRICT ox,
+                                   double *HCBD__RESTRICT oy, double *HCBD__RESTRICT oz,
+                                   double *HCBD__RESTRICT or2)
+{
+    for (; p < pe; ++p) {
+        const int j = nb[p];
+        double d[3], r2;
+        const int k = hcbd__delta_box(box, xi - x[j], yi - y[j], zi - z[j], d);
+        r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+        oj[m] = j;
+        if (ok) { ok[m] = k; oe[m] = p; }
+        ox[m] = d[0]; oy[m] = d[1]; oz[m] = d[2]; or2[m] = r2;
+        if (r2out) r2out[p] = r2;
+        m += r2 < cut2;
+    }
+    return m;
+}
+
 HCBD__INLINE int hcbd__gather_at(const hcbd_real *HCBD__RESTRICT x, const hcbd_real *HCBD__RESTRICT y,
                                  const hcbd_real *HCBD__RESTRICT z, const int32_t *HCBD__RESTRICT nb,
                                  const hcbd__box *box, double xi, double yi, double zi, int32_t *p,
@@ -3780,17 +3805,9 @@ HCBD__INLINE int hcbd__gather_at(const hcbd_real *HCBD__RESTRICT x, const hcbd_r
                                  hcbd__near *c)
 {
     const int32_t pe = pend - *p > HCBD__CHUNK ? *p + HCBD__CHUNK : pend;
-    int m = 0;
-    for (; *p < pe; ++*p) {
-        const int j = nb[*p];
-        double d[3], r2;
-        const int k = hcbd__delta_box(box, xi - x[j], yi - y[j], zi - z[j], d);
-        r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-        c->j[m] = j; c->k[m] = k; c->e[m] = *p;
-        c->x[m] = d[0]; c->y[m] = d[1]; c->z[m] = d[2]; c->r2[m] = r2;
-        if (r2out) r2out[*p] = r2;
-        m += r2 < cut2;
-    }
+    const int m = hcbd__gather_into(x, y, z, nb, box, xi, yi, zi, *p, pe, cut2, r2out, 0, c->j, c->k,
+                                    c->e, c->x, c->y, c->z, c->r2);
+    *p = pe;
     return m;
 }
 
@@ -3920,10 +3937,6 @@ typedef int (*hcbd__ev_stream)(void *ctx, const hcbd__stream *s);
 HCBD__INLINE int hcbd__traverse_stream(const hcbd__trav *T, const int32_t *owners, int q0, int q1,
                                        void *ctx, hcbd__ev_stream flush)
 {
-    const int32_t *HCBD__RESTRICT nb = T->nb;
-    const hcbd_real *HCBD__RESTRICT x = T->x, *HCBD__RESTRICT y = T->y, *HCBD__RESTRICT z = T->z;
-    double *HCBD__RESTRICT r2out = T->r2out;
-    const double cut2 = T->cut2;
     hcbd__stream s;
     int q, worst = INT_MAX, b;
     s.m = 0;
@@ -3946,17 +3959,9 @@ HCBD__INLINE int hcbd__traverse_stream(const hcbd__trav *T, const int32_t *owner
                 s.at[0] = m = 0;
                 s.nseg = 1;
             }
-            for (; p < pe; ++p) { /* as hcbd__gather_at: no branch on the range */
-                const int j = nb[p];
-                double d[3], r2;
-                hcbd__delta_box(&T->box, xi - x[j], yi - y[j], zi - z[j], d);
-                r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-                s.j[m] = j;
-                s.x[m] = d[0]; s.y[m] = d[1]; s.z[m] = d[2]; s.r2[m] = r2;
-                if (r2out) r2out[p] = r2;
-                m += r2 < cut2;
-            }
-            s.m = m;
+            s.m = hcbd__gather_into(T->x, T->y, T->z, T->nb, &T->box, xi, yi, zi, p, pe, T->cut2,
+                                    T->r2out, m, s.j, NULL, NULL, s.x, s.y, s.z, s.r2);
+            p = pe;
         }
         if (s.at[s.nseg - 1] == s.m) s.nseg--; /* no pair in range: no segment */
     }
