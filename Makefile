@@ -368,7 +368,7 @@ $(B)/bench_wp_hcbd_float: bench/bench_wp_hcbd.c hcbd_impl.c $(HEADERS) bench/ben
 	$(CC) $(HC_CFLAGS) -DHCBD_REAL=float $< hcbd_impl.c -o $@ $(LDLIBS)
 
 # Stability map: the largest dt before a guard or a 10 % temperature error,
-# against hcbd_stability's limits (bench/stability.sh).
+# against hcbd_params_stability's limits (bench/stability.sh).
 bench-stability: $(B)/bench_stability $(B)/bench_stability_hcbd
 	bench/stability.sh out/bench
 

@@ -31,7 +31,7 @@
                    code and have no params.wall.
                    HCBD_MODEL_HCBD: the GI-BD API plus the 2018 model, a
                    world of SPH fluid blobs and RaPiD polymer blobs
-                   (hcbd_hc_world, hcbd_hc_step; no wall code).
+                   (hcbd_hc_world, hcbd_hc_world_step; no wall code).
      HCBD_REAL     double (default) or float: storage and pair arithmetic.
                    Conservation sums and observables are accumulated in
                    double either way.
@@ -53,10 +53,10 @@
        }
        hcbd_world_place_lattice(&w, 512);        // ids 0..511, v Maxwellian
        for (int block = 0; block < 100; ++block) {
-           if (hcbd_step(&w, 100) != HCBD_OK) {
+           if (hcbd_world_step(&w, 100) != HCBD_OK) {
                fprintf(stderr, "%s\n", w.err.msg); break;
            }
-           printf("T = %g\n", hcbd_temperature(&w));
+           printf("T = %g\n", hcbd_world_temperature(&w));
        }
        hcbd_world_destroy(&w);
 
@@ -72,7 +72,7 @@
      step, id), a pair's noise by one of (seed, step, min id, max id); the
      stream is splitmix64 started at the key.  A draw is therefore a pure
      function of ids and step, independent of threads and storage order
-     (hcbd_particle_normals and hcbd_pair_normals return it).  Gaussians:
+     (hcbd_world_particle_normals and hcbd_world_pair_normals return it).  Gaussians:
      256-layer ziggurat (Marsaglia & Tsang 2000, Doornik's layout): one
      64-bit draw gives the layer (low 8 bits) and a 53-bit uniform; 99% of
      draws return after one multiply and compare, the rest use the wedge or
@@ -104,57 +104,59 @@
      >>results [hcbd_result_name]
      >>parameters [hcbd_params_ hcbd_world_def_]
      >>world [hcbd_world_]
-     >>step [hcbd_step]
-     >>observables [hcbd_world_get_ hcbd_temperature hcbd_momentum hcbd_virial_stress
-        hcbd_friction_average hcbd_transverse_current hcbd_potential_energy
-        hcbd_config_temperature hcbd_forces hcbd_stress_ hcbd_wall_ hcbd_state_checksum]
-     >>theory and stability limits [hcbd_theory_of hcbd_stability hcbd_limits_format]
+     >>step [hcbd_world_step]
+     >>observables [hcbd_world_get_ hcbd_world_temperature hcbd_world_momentum hcbd_world_virial_stress
+        hcbd_world_friction_average hcbd_world_transverse_current hcbd_world_potential_energy
+        hcbd_world_config_temperature hcbd_world_forces hcbd_world_stress_ hcbd_world_wall_penetrations
+        hcbd_params_wall_potential hcbd_world_checksum]
+     >>theory and stability limits [hcbd_params_theory hcbd_params_stability hcbd_limits_format]
      >>accumulators [hcbd_profile_ hcbd_rdf_ hcbd_mtcorr_ hcbd_msd_ hcbd_slabs_]
      >>statistics of a run's results [hcbd_carreau_fit hcbd_blocking_error]
-     >>random numbers [hcbd_splitmix64 hcbd_rng_ hcbd_pair_normals hcbd_particle_normals
+     >>random numbers [hcbd_splitmix64 hcbd_rng_ hcbd_world_rng_normal hcbd_world_pair_normals hcbd_world_particle_normals
         hcbd_noise_]
-     >>GI-BD equations without a world [hcbd_gibd_]
+     >>GI-BD equations without a world [hcbd_params_gibd_coef hcbd_gibd_]
      >>walls without a world [hcbd_walls_]
      >>kernels [hcbd_wendland hcbd_star_]
-     >>HCBD (2018) [hcbd_hc_si_table1 hcbd_hc_params_ hcbd_hc_def_default]
-     >>HCBD: world [hcbd_hc_world_ hcbd_hc_set_fluid hcbd_hc_set_polymers hcbd_hc_place_
-        hcbd_hc_refresh]
-     >>HCBD: step [hcbd_hc_step]
-     >>HCBD: observables [hcbd_hc_lambda hcbd_hc_set_lambda hcbd_hc_temperature
-        hcbd_hc_momentum hcbd_hc_transverse_current hcbd_hc_polymer_energy
-        hcbd_hc_density_range hcbd_hc_stress_ hcbd_hc_state_checksum]
-     >>HCBD: theory and stability limits [hcbd_hc_theory_of hcbd_hc_stability]
+     >>HCBD (2018) [hcbd_hc_si_ hcbd_hc_params_ hcbd_hc_world_def_default]
+     >>HCBD: world [hcbd_hc_world_ hcbd_hc_world_set_fluid hcbd_hc_world_set_polymers hcbd_hc_world_place_
+        hcbd_hc_world_get_fluid hcbd_hc_world_get_polymers hcbd_hc_world_refresh]
+     >>HCBD: step [hcbd_hc_world_step]
+     >>HCBD: observables [hcbd_hc_world_get_lambda hcbd_hc_world_set_lambda hcbd_hc_world_temperature
+        hcbd_hc_world_momentum hcbd_hc_world_transverse_current hcbd_hc_world_polymer_energy
+        hcbd_hc_world_density_range hcbd_hc_world_stress_ hcbd_hc_world_checksum]
+     >>HCBD: theory and stability limits [hcbd_hc_params_theory hcbd_hc_params_stability]
      >>HCBD: kernels of the 2018 model [hcbd_m4 hcbd_rapid_w hcbd_flory_]
-     >>checkpoint/restart [hcbd_checkpoint_ hcbd_save hcbd_load hcbd_set_threads]
-     >>trajectories and logs [hcbd_xyz_ hcbd_thermo_]
-     >>HCBD: checkpoints, threads, XYZ and thermo [hcbd_hc_checkpoint_ hcbd_hc_save
-        hcbd_hc_load hcbd_hc_set_threads hcbd_hc_xyz_ hcbd_hc_thermo_]
+     >>checkpoint/restart [hcbd_world_checkpoint_ hcbd_world_save hcbd_world_load hcbd_world_set_threads]
+     >>trajectories and logs [hcbd_world_write_ hcbd_thermo_header hcbd_world_thermo_line]
+     >>HCBD: checkpoints, threads, XYZ and thermo [hcbd_hc_world_checkpoint_ hcbd_hc_world_save
+        hcbd_hc_world_load hcbd_hc_world_set_threads hcbd_hc_world_write_xyz hcbd_hc_thermo_header
+        hcbd_hc_world_thermo_line]
      >>old names
      The implementation:
      >>implementation
      >>errors [hcbd_result_name]
      >>parameters [hcbd_params_ hcbd_world_def_]
-     >>random numbers [hcbd_splitmix64 hcbd_rng_ hcbd_pair_normals hcbd_particle_normals
+     >>random numbers [hcbd_splitmix64 hcbd_rng_ hcbd_world_rng_normal hcbd_world_pair_normals hcbd_world_particle_normals
         hcbd_noise_]
      >>kernels [hcbd_wendland]
-     >>GI-BD equations [hcbd_gibd_]
+     >>GI-BD equations [hcbd_params_gibd_coef hcbd_gibd_]
      >>star potential [hcbd_star_]
      >>fixed-point pair sums
      >>box and minimum image
-     >>walls [hcbd_wall_]
-     >>theory and stability limits [hcbd_theory_of hcbd_stability hcbd_limits_format]
+     >>walls [hcbd_params_wall_potential hcbd_world_wall_penetrations]
+     >>theory and stability limits [hcbd_params_theory hcbd_params_stability hcbd_limits_format]
      >>world and storage [hcbd_world_]
      >>walls without a world [hcbd_walls_]
      >>neighbour search
      >>pair traversal
      >>pair passes
      >>integrator
-     >>stress a run accumulates [hcbd_stress_]
+     >>stress a run accumulates [hcbd_world_stress_]
      >>run-time guard
-     >>step [hcbd_step]
-     >>observables [hcbd_world_get_ hcbd_temperature hcbd_momentum hcbd_virial_stress
-        hcbd_friction_average hcbd_transverse_current hcbd_potential_energy
-        hcbd_config_temperature hcbd_forces hcbd_state_checksum]
+     >>step [hcbd_world_step]
+     >>observables [hcbd_world_get_ hcbd_world_temperature hcbd_world_momentum hcbd_world_virial_stress
+        hcbd_world_friction_average hcbd_world_transverse_current hcbd_world_potential_energy
+        hcbd_world_config_temperature hcbd_world_forces hcbd_world_checksum]
      >>g(r) [hcbd_rdf_]
      >>multiple-tau correlator [hcbd_mtcorr_]
      >>Carreau fit [hcbd_carreau_fit]
@@ -163,49 +165,59 @@
      >>slab profiles [hcbd_profile_]
      >>slabs [hcbd_slabs_]
      >>checkpoint
-     >>world kinds [hcbd_world_create hcbd_world_destroy hcbd_set_threads hcbd_checkpoint_
-        hcbd_save hcbd_load]
-     >>extended XYZ and thermo lines [hcbd_xyz_ hcbd_thermo_]
+     >>world kinds [hcbd_world_create hcbd_world_destroy hcbd_world_set_threads hcbd_world_checkpoint_
+        hcbd_world_save hcbd_world_load]
+     >>extended XYZ and thermo lines [hcbd_world_write_ hcbd_thermo_header hcbd_world_thermo_line]
      >>HCBD (2018): the fluid and polymer world
      >>HCBD: kernels [hcbd_m4 hcbd_rapid_w hcbd_flory_]
-     >>HCBD: parameters and units [hcbd_hc_si_table1 hcbd_hc_params_ hcbd_hc_def_default
-        hcbd_hc_theory_of hcbd_hc_stability]
+     >>HCBD: parameters and units [hcbd_hc_si_ hcbd_hc_params_ hcbd_hc_world_def_default
+        hcbd_hc_params_theory hcbd_hc_params_stability]
      >>HCBD: storage [hcbd_hc_world_]
-     >>HCBD: set-up [hcbd_hc_set_fluid hcbd_hc_set_polymers hcbd_hc_place_]
+     >>HCBD: set-up [hcbd_hc_world_set_fluid hcbd_hc_world_set_polymers hcbd_hc_world_place_
+        hcbd_hc_world_get_fluid hcbd_hc_world_get_polymers]
      >>HCBD: lists and pair passes
-     >>HCBD: integrator [hcbd_hc_refresh]
-     >>HCBD: the step and its guard [hcbd_hc_step]
-     >>HCBD: observables [hcbd_hc_lambda hcbd_hc_set_lambda hcbd_hc_temperature
-        hcbd_hc_momentum hcbd_hc_transverse_current hcbd_hc_polymer_energy
-        hcbd_hc_density_range hcbd_hc_stress_ hcbd_hc_state_checksum]
+     >>HCBD: integrator [hcbd_hc_world_refresh]
+     >>HCBD: the step and its guard [hcbd_hc_world_step]
+     >>HCBD: observables [hcbd_hc_world_get_lambda hcbd_hc_world_set_lambda hcbd_hc_world_temperature
+        hcbd_hc_world_momentum hcbd_hc_world_transverse_current hcbd_hc_world_polymer_energy
+        hcbd_hc_world_density_range hcbd_hc_world_stress_ hcbd_hc_world_checksum]
      >>HCBD: checkpoints, lifecycle, XYZ and thermo [hcbd_hc_world_create
-        hcbd_hc_world_destroy hcbd_hc_set_threads hcbd_hc_checkpoint_ hcbd_hc_save hcbd_hc_load
-        hcbd_hc_xyz_ hcbd_hc_thermo_]
+        hcbd_hc_world_destroy hcbd_hc_world_set_threads hcbd_hc_world_checkpoint_ hcbd_hc_world_save hcbd_hc_world_load
+        hcbd_hc_world_write_xyz hcbd_hc_thermo_header hcbd_hc_world_thermo_line]
      The shared code: both worlds embed one hcbd__core (w->core) and share
      the code written over it; a world kind (hcbd__kind) tells that code
      the world's size, checks and checkpoint fields, and each public
      lifecycle, thread and checkpoint function is one line calling it.
 
    NAMING
-     hcbd_<thing>_<verb>, the thing first.  A world: hcbd_world_def_default,
-     hcbd_world_bytes, _init (in the caller's memory), _create (allocated),
-     _destroy; particles in and out in id order with hcbd_world_set_* /
-     hcbd_world_get_* / hcbd_world_place_*.  The calls that run or measure
-     a world take it first and say what they do: hcbd_step,
-     hcbd_temperature, hcbd_forces, hcbd_save, hcbd_xyz_write, ...  The
-     stress a run accumulates: hcbd_stress_enable / hcbd_stress_read; the
-     pair virial of one configuration: hcbd_virial_stress.  The HCBD world
-     repeats this under hcbd_hc_ (hcbd_hc_world_create, hcbd_hc_step,
-     hcbd_hc_stress_enable, ...).  Accumulators (g(r), correlators, MSD,
-     profiles, slabs): _bytes, _init, then _add or _sample to feed them and
-     _result to read them (never changing them); a correlator's series ends
-     with hcbd_mtcorr_finalize, a slab sample of per-particle adds with
-     hcbd_slabs_end_sample.  Parameters: *_default() and *_check().
-     Functions of numbers alone (kernels, the star force, Flory-Huggins)
-     are named by what they compute.  Old names kept for one version, with
-     a deprecation warning: hcbd_get_positions, hcbd_get_velocities,
-     hcbd_stress, hcbd_flux_enable, hcbd_flux_read.  For engines of their
-     own (lammps/), the pieces of a step without a world: hcbd_gibd_*
+     One rule, Box2D's object-verb: hcbd_<object>_<verb>, where the object
+     is the type of the first argument and the verb what the call does or
+     computes.  Objects: world (GI-BD and walled), hc_world (HCBD), params,
+     hc_params, hc_si, the accumulators (rdf, mtcorr, msd, profile, slabs),
+     rng, noise (a counter-based stream), walls, gibd_coef, star_coef.
+     - Life cycle: hcbd_<object>_def_default() or _default() (a value),
+       _bytes, _init (the object in the caller's memory, first argument),
+       _create (allocated) and _destroy; parameters _check.
+     - A world: hcbd_world_step, _forces, _temperature, _save, _load,
+       _checkpoint_*, _write_xyz, _thermo_line, _checksum, ...; particles in
+       and out in id order with _set_*, _get_* and _place_*.  The HCBD world
+       is the same under hcbd_hc_world_ (hcbd_hc_world_step,
+       hcbd_hc_world_set_fluid, hcbd_hc_world_get_fluid, ...).
+     - What parameters imply: hcbd_params_theory, _stability, _gibd_coef,
+       _wall_potential (hcbd_hc_params_theory, _stability; hcbd_hc_si_params
+       converts SI).
+     - Accumulators: _add feeds values, _sample a world's configuration
+       (g(r) takes the world non-const: it builds the world's pair list),
+       _result reads without changing them and returns the rows (or
+       samples) it wrote; a correlator's series ends with _finalize, a slab
+       sample of per-particle adds with _end_sample.
+     - Functions of numbers alone (kernels, the star force, Flory-Huggins)
+       are named by what they compute.
+     Errors: a call on a world reports in w->err; a call without a world
+     (params, coefficients, walls) in msg, msg_size: there is no world to
+     hold it.  Old names are kept for one version as deprecated wrappers
+     (">>old names"; CHANGELOG.md lists them).  For engines of their own
+     (lammps/), the pieces of a step without a world: hcbd_gibd_*
      (equations), hcbd_noise_* (noise), hcbd_walls_* (walls).
 
    ERRORS
@@ -217,13 +229,13 @@
      argument) or nothing (_destroy, _add).  The library never exits or
      aborts.  Run-time guards (guard_every,
      guard_step, wall.guard) stop a step with the step, the particle and
-     the cause; hcbd_xyz_offenders writes the offenders as an XYZ frame.
+     the cause; hcbd_world_write_offenders writes the offenders as an XYZ frame.
 
    RESTART AND OUTPUT
-     hcbd_save/hcbd_load (and the hcbd_hc_ pair) write and read the whole
+     hcbd_world_save/hcbd_world_load (and the hcbd_hc_ pair) write and read the whole
      state in a versioned, portable format; n + n steps equal n steps,
-     save, load, n steps, bit for bit.  hcbd_xyz_write writes extended XYZ
-     frames (OVITO); hcbd_thermo_line a log line.
+     save, load, n steps, bit for bit.  hcbd_world_write_xyz writes extended XYZ
+     frames (OVITO); hcbd_world_thermo_line a log line.
 */
 #ifndef HCBD_H_INCLUDED
 #define HCBD_H_INCLUDED
@@ -472,7 +484,7 @@ typedef struct hcbd__wallset {
 
 /* What both worlds keep alike, embedded in each as w->core: the box's
    Lees-Edwards state, the Verlet skin, the fixed-point scales of the pair
-   sums, the stress accumulation (hcbd_stress_enable, hcbd_hc_stress_enable),
+   sums, the stress accumulation (hcbd_world_stress_enable, hcbd_hc_world_stress_enable),
    the Gaussian table and the memory block.  The public face of a world (p,
    err, step) stays a member of its own, since C99 has no anonymous members:
    w.err and w.step read as before.  The functions written once for both
@@ -514,7 +526,7 @@ typedef struct hcbd__nlist {
 
 /* The constants of the star potential (2014 eq. 28) for f arms, core size
    sigma and energy eps: a = eps (5/18) f^(3/2), b = 1 / (1 + sqrt(f) / 2),
-   s = sqrt(f) / 2, ab = a b, s_sigma = s / sigma (hcbd_star_coef_of). */
+   s = sqrt(f) / 2, ab = a b, s_sigma = s / sigma (hcbd_star_coef_init). */
 typedef struct hcbd_star_coef {
     double sigma, a, b, s, ab, s_sigma;
 } hcbd_star_coef;
@@ -553,7 +565,7 @@ typedef struct hcbd_world {
     /* Lees-Edwards: per-particle x shifts applied at crossings (unwrapped
        x); the offset is in the core */
     double *lx;
-    /* per-particle parts of the shear-stress flux (hcbd_stress_enable) */
+    /* per-particle parts of the shear-stress flux (hcbd_world_stress_enable) */
     hcbd_real *fl_p, *fl_b, *fl_c;
     /* walls: their interfaces and this step's artificial particles, real
        particles found inside a wall */
@@ -599,7 +611,7 @@ hcbd_result hcbd_world_set_velocities(hcbd_world *w, const double *v);
    when the neighbour list overflows; w->err names the step, the particle
    and the limit.  After a run-time error the state is that of the failed
    step and should not be stepped further. */
-hcbd_result hcbd_step(hcbd_world *w, int nsteps);
+hcbd_result hcbd_world_step(hcbd_world *w, int nsteps);
 
 /* >>observables (cost nothing unless called) ------------------------------*/
 /* Positions (unwrapped if unwrapped != 0) and velocities, id order, 3n. */
@@ -608,24 +620,24 @@ hcbd_result hcbd_world_get_velocities(const hcbd_world *w, double *v);
 /* Background kinetic temperature sum m u^2 / (3 (n - 1)) of the peculiar
    velocities u (relative to the mean and, under shear, to the imposed
    profile gdot (y - Ly/2)); 0 in BD. */
-double hcbd_temperature(const hcbd_world *w);
+double hcbd_world_temperature(const hcbd_world *w);
 /* Total momentum sum m v, accumulated in double. */
-void hcbd_momentum(const hcbd_world *w, double p[3]);
+void hcbd_world_momentum(const hcbd_world *w, double p[3]);
 /* Pair-virial stress of the conservative pair forces,
    s[3a+b] = -(1/V) sum_{i<j} x_ij,a F_ij,b. */
-hcbd_result hcbd_virial_stress(hcbd_world *w, double s[9]);
+hcbd_result hcbd_world_virial_stress(hcbd_world *w, double s[9]);
 /* Configurational friction averages over particles, with the densities the
    next step's friction uses: out[0] = <sum_j f_ij>, out[1] = <sum_j f_ij
    r_ij^2>, out[2] = <sum_j f_ij (1 - cos k.x_ij)> averaged over k along x,
    y, z with |k| = 2 pi nk / L_d.  nu_meanfield = out[2] / (tau k^2) and
    nu_eff = out[1] / (6 tau).  GI-BD only. */
-hcbd_result hcbd_friction_average(hcbd_world *w, int nk, double out[3]);
+hcbd_result hcbd_world_friction_average(hcbd_world *w, int nk, double out[3]);
 /* Transverse background current at k = 2 pi nk / L_d along each axis d:
    out[4d + 2c + 0/1] = Re/Im of sum_i v_i,a exp(-i k x_i,d) for the two
    transverse components a (c = 0, 1).  C_t(k,t) = <Re(j(t) j*(0))> / n. */
-hcbd_result hcbd_transverse_current(const hcbd_world *w, int nk, double out[12]);
+hcbd_result hcbd_world_transverse_current(const hcbd_world *w, int nk, double out[12]);
 /* Total potential energy of the pair potential. */
-double hcbd_potential_energy(hcbd_world *w);
+double hcbd_world_potential_energy(hcbd_world *w);
 /* Configurational temperature (Rugh 1997; Butler, Ayton, Jepps and Evans
    1998), kT_conf = <|grad U|^2> / <lap U>, of the pair potential and the
    Gaussian walls (the constant body force is not a potential in a
@@ -635,37 +647,37 @@ double hcbd_potential_energy(hcbd_world *w);
    velocities: equal to kT in a Boltzmann state, above it by the O(dt)
    excess of an explicit step.  Uses the world's scratch array (no
    allocation); HCBD_ERR_STATE without a potential. */
-hcbd_result hcbd_config_temperature(hcbd_world *w, double out[2]);
+hcbd_result hcbd_world_config_temperature(hcbd_world *w, double out[2]);
 /* The conservative force on every particle at the present positions, the
    one a step's drift uses: pair potential, Gaussian wall repulsion and
    the body force fext (unless it drives only the background), in id
    order, f[3 id + d].  Pair sums go owner by owner in increasing id, so
    the bits do not depend on the storage order. */
-hcbd_result hcbd_forces(hcbd_world *w, double *f);
+hcbd_result hcbd_world_forces(hcbd_world *w, double *f);
 /* Shear-stress flux, accumulated every step while enabled (off by default,
-   and then it costs nothing).  hcbd_stress_enable(w, 1) clears the sums and
-   starts; hcbd_stress_read gives the averages over the steps since:
+   and then it costs nothing).  hcbd_world_stress_enable(w, 1) clears the sums and
+   starts; hcbd_world_stress_read gives the averages over the steps since:
    out[0] pair forces (2016 eq. 26), out[1] background friction and noise
    exchanges, out[2] momentum carried across the Lees-Edwards boundary by
    crossing particles (MODEL 5), out[3] their sum; each as the shear stress
    S_yx = -(1/V) sum_{i<j} y_ij F_ij,x, so the viscosity is out / gdot. */
-hcbd_result hcbd_stress_enable(hcbd_world *w, int on);
-hcbd_result hcbd_stress_read(const hcbd_world *w, double out[4], int64_t *nsteps);
+hcbd_result hcbd_world_stress_enable(hcbd_world *w, int on);
+hcbd_result hcbd_world_stress_read(const hcbd_world *w, double out[4], int64_t *nsteps);
 /* Real particles found inside a wall after a step (particle-steps; never
    silently accepted, but not an error: the Gaussian repulsion is soft), and
    the last one's step and id (-1 if none). */
-int64_t hcbd_wall_penetrations(const hcbd_world *w, int64_t *last_step, int *last_id);
+int64_t hcbd_world_wall_penetrations(const hcbd_world *w, int64_t *last_step, int *last_id);
 /* Wall repulsion on a particle at height y (MODEL 4, every plane at its
    minimum-image distance): returns the energy, *fy the force (may be NULL).
    0 without Gaussian walls. */
 #if HCBD_MODEL == HCBD_MODEL_WALLED
-double hcbd_wall_potential(const hcbd_params *p, double y, double *fy);
+double hcbd_params_wall_potential(const hcbd_params *p, double y, double *fy);
 #endif
 
 /* 64-bit hash of the step, positions, images, Lees-Edwards shifts and
    velocities in id order: equal checksums mean bit-identical states (the
    noise is keyed by step and ids, so there is no generator state). */
-uint64_t hcbd_state_checksum(const hcbd_world *w);
+uint64_t hcbd_world_checksum(const hcbd_world *w);
 
 /* >>theory and stability limits ------------------------------------------*/
 /* Mean-field predictions for a channel or a sheared bulk (MODEL 3, 4):
@@ -677,7 +689,7 @@ uint64_t hcbd_state_checksum(const hcbd_world *w);
 typedef struct hcbd_theory {
     double nu, eta_inf, m, width, g, v_max, re_max, depletion_width;
 } hcbd_theory;
-hcbd_result hcbd_theory_of(const hcbd_params *p, hcbd_theory *t);
+hcbd_result hcbd_params_theory(const hcbd_params *p, hcbd_theory *t);
 
 /* The limits of a scene, each as a value against its bound in
    the same units (mostly dt against a largest dt) with margin bound/value
@@ -691,7 +703,7 @@ typedef struct hcbd_limit {
 } hcbd_limit;
 #define HCBD_MAX_LIMITS 8
 /* Fills out[0..*n-1] (room for HCBD_MAX_LIMITS). */
-hcbd_result hcbd_stability(const hcbd_params *p, hcbd_limit *out, int *n);
+hcbd_result hcbd_params_stability(const hcbd_params *p, hcbd_limit *out, int *n);
 /* One line per limit into buf (always terminated); returns the length
    the full text needs, as snprintf does. */
 int hcbd_limits_format(const hcbd_limit *l, int n, char *buf, size_t size);
@@ -872,18 +884,18 @@ uint64_t hcbd_splitmix64(uint64_t *state);
 void hcbd_rng_seed(hcbd_rng *r, uint64_t seed);
 uint64_t hcbd_rng_next(hcbd_rng *r);
 double hcbd_rng_uniform(hcbd_rng *r);               /* [0, 1)              */
-double hcbd_rng_normal(const hcbd_world *w, hcbd_rng *r);
+double hcbd_world_rng_normal(const hcbd_world *w, hcbd_rng *r);
 /* The pair noise of pair (a, b) at step s, exactly as the step draws it. */
-void hcbd_pair_normals(const hcbd_world *w, int64_t s, int32_t a, int32_t b,
+void hcbd_world_pair_normals(const hcbd_world *w, int64_t s, int32_t a, int32_t b,
                        double out[3]);
 /* The Brownian displacement noise of particle id at step s (unit variance;
    Gaussian, or uniform with HCBD_NOISE_UNIFORM), exactly as the step draws
    it. */
-void hcbd_particle_normals(const hcbd_world *w, int64_t s, int32_t id, double out[3]);
+void hcbd_world_particle_normals(const hcbd_world *w, int64_t s, int32_t id, double out[3]);
 
 /* The same noise without a world, for codes that run GI-BD on an engine of
    their own (lammps/): a stream of this seed and noise kind gives the
-   numbers hcbd_pair_normals and hcbd_particle_normals give for a world with
+   numbers hcbd_world_pair_normals and hcbd_world_particle_normals give for a world with
    that seed, keyed by (seed, step, min id, max id) and (seed, step, id). */
 typedef struct hcbd_noise_stream {
     uint64_t pair_key, particle_key;
@@ -896,7 +908,7 @@ void hcbd_noise_particle(const hcbd_noise_stream *ns, int64_t s, int32_t id, dou
 
 /* >>GI-BD equations without a world (for engines of their own) ---------*/
 /* The GI-BD pair equations (MODEL 2-3) for the same kind of engine, from
-   the one place the library writes them: with c from hcbd_gibd_coef_of
+   the one place the library writes them: with c from hcbd_params_gibd_coef
    (params checked as hcbd_world_create checks them; m = xi' tau),
    rho_i = hcbd_gibd_density(c, sum_j w(r_ij)) (the sum without the self
    term; 2014 or 2016 normalisation) and the pair's S_ij dt / tau =
@@ -905,7 +917,7 @@ void hcbd_noise_particle(const hcbd_noise_stream *ns, int64_t s, int32_t id, dou
 typedef struct hcbd_gibd_coef {
     double Rc, m, cw, cf, cs, rho_norm;
 } hcbd_gibd_coef;
-hcbd_result hcbd_gibd_coef_of(const hcbd_params *p, hcbd_gibd_coef *c, char *msg, size_t msg_size);
+hcbd_result hcbd_params_gibd_coef(const hcbd_params *p, hcbd_gibd_coef *c, char *msg, size_t msg_size);
 double hcbd_gibd_weight(const hcbd_gibd_coef *c, double r);
 double hcbd_gibd_density(const hcbd_gibd_coef *c, double wsum);
 double hcbd_gibd_sdt(const hcbd_gibd_coef *c, double r, double inv_rho_i, double inv_rho_j);
@@ -937,7 +949,7 @@ void hcbd_gibd_pair_exact(const hcbd_gibd_coef *c, double kT, double sdt, const 
    sweep's) on v in place, right after the particle's own pairs as an
    owner in the sweep (MODEL 13.2); with exact = 0 (Euler) it adds the
    momentum exchanges of the velocities v of the step's start to P.  Both
-   do nothing away from the walls; the repulsion is hcbd_wall_potential. */
+   do nothing away from the walls; the repulsion is hcbd_params_wall_potential. */
 typedef struct hcbd_walls {
     hcbd_params p;
     hcbd_gibd_coef c;
@@ -962,9 +974,9 @@ double hcbd_star_potential(double r, double f, double sigma, double eps);
 double hcbd_star_force(double r, double f, double sigma, double eps);
 /* The same force divided by r, at r^2 = r2, from precomputed constants, as
    the world's pair pass evaluates it (for a pair style: no pow per pair).
-   hcbd_star_coef_of names a bad f, sigma or eps in msg (may be NULL). */
-hcbd_result hcbd_star_coef_of(double f, double sigma, double eps, hcbd_star_coef *c,
-                              char *msg, size_t msg_size);
+   hcbd_star_coef_init names a bad f, sigma or eps in msg (may be NULL). */
+hcbd_result hcbd_star_coef_init(hcbd_star_coef *c, double f, double sigma, double eps,
+                                char *msg, size_t msg_size);
 double hcbd_star_force_over_r(const hcbd_star_coef *c, double r2);
 
 #if HCBD_MODEL == HCBD_MODEL_HCBD
@@ -972,7 +984,7 @@ double hcbd_star_force_over_r(const hcbd_star_coef *c, double r2);
    ------------------------------------------------------------------------
    Two species in one world, stored in id order and never re-sorted, so
    w->fx[i] etc. may be read directly (i = id).  The caller's units must be
-   consistent; hcbd_hc_params_si converts the paper's SI Table I. */
+   consistent; hcbd_hc_si_params converts the paper's SI Table I. */
 typedef enum hcbd_coupling {
     HCBD_COUPLE_SHEPARD = 0, /* psi_ai normalised per polymer (default):
                                 exact momentum conservation and exact
@@ -1009,7 +1021,7 @@ typedef struct hcbd_hc_params {
        over blocks of one colour; no O(dt) temperature excess, stable at
        any viscous dt); the pressure stays explicit.  HCBD_PAIR_EULER is
        the paper's explicit pair step (2018 eq. 18-19): its temperature
-       runs hot by about 0.33 dt/dt_visc (hcbd_hc_stability), and it is
+       runs hot by about 0.33 dt/dt_visc (hcbd_hc_params_stability), and it is
        unstable beyond about 2.8 dt_visc.  substeps: fluid steps of dt/substeps per polymer step of
        dt (multiple time stepping); the polymer forces on the fluid are
        held over the step and the polymers move with the fluid velocity
@@ -1029,17 +1041,17 @@ typedef struct hcbd_hc_si {
     double sigma, dt, T, rho, eta, nbar, P0, xi, alpha_kT, tau_lambda, p_kuhn,
         n_max_cstar, chi, h_sigma, rc_sigma;
 } hcbd_hc_si;
-hcbd_hc_si hcbd_hc_si_table1(void);
+hcbd_hc_si hcbd_hc_si_default(void);
 /* Reduced units: length sigma, energy kT, time time_unit (seconds); the
    mass unit follows as kT time_unit^2 / sigma^2.  The box is the pure-fluid
    box of 2018 sec. IV A (33.75 x 10 x 10 sigma). */
-hcbd_result hcbd_hc_params_si(const hcbd_hc_si *si, double time_unit,
+hcbd_result hcbd_hc_si_params(const hcbd_hc_si *si, double time_unit,
                               hcbd_hc_params *p, char *msg, size_t msg_size);
 /* Table I with time unit dt = 1 us (so dt = 1, nu = 0.04 sigma^2/dt). */
 hcbd_hc_params hcbd_hc_params_default(void);
 hcbd_result hcbd_hc_params_check(const hcbd_hc_params *p, char *msg, size_t msg_size);
 
-typedef struct hcbd_hc_def {
+typedef struct hcbd_hc_world_def {
     int fluid_capacity, polymer_capacity;
     int pair_capacity;    /* transient pairs a polymer owns (partners of
                              higher id); HCBD_AUTO sizes it from the densest
@@ -1049,8 +1061,8 @@ typedef struct hcbd_hc_def {
                              mean count at nbar, plus 16 per blob (not kept
                              in checkpoints: a loaded world has HCBD_AUTO)  */
     hcbd_hc_params params;
-} hcbd_hc_def;
-hcbd_hc_def hcbd_hc_def_default(void);
+} hcbd_hc_world_def;
+hcbd_hc_world_def hcbd_hc_world_def_default(void);
 
 /* >>HCBD: world -----------------------------------------------------------*/
 /* Stress contributions, S_yx = -(1/V) sum y_ij F_ij,x (the flux of x
@@ -1137,30 +1149,35 @@ typedef struct hcbd_hc_world {
     int ready;                   /* densities, pairs and forces are current */
 } hcbd_hc_world;
 
-size_t hcbd_hc_world_bytes(const hcbd_hc_def *def);
-hcbd_result hcbd_hc_world_init(hcbd_hc_world *w, const hcbd_hc_def *def, void *mem,
+size_t hcbd_hc_world_bytes(const hcbd_hc_world_def *def);
+hcbd_result hcbd_hc_world_init(hcbd_hc_world *w, const hcbd_hc_world_def *def, void *mem,
                                size_t bytes);
-hcbd_result hcbd_hc_world_create(hcbd_hc_world *w, const hcbd_hc_def *def);
+hcbd_result hcbd_hc_world_create(hcbd_hc_world *w, const hcbd_hc_world_def *def);
 void hcbd_hc_world_destroy(hcbd_hc_world *w);
 
 /* Fluid blobs with ids 0..n-1 at xyz (3n, interleaved, inside [0, L)).
    v (3n, may be NULL): NULL gives the Lees-Edwards profile gdot (y - L/2)
    plus, with fluctuations, Maxwellian velocities of variance kT/m (total
    momentum removed).  Resets the step counter and the pair variables. */
-hcbd_result hcbd_hc_set_fluid(hcbd_hc_world *w, int n, const double *xyz, const double *v);
+hcbd_result hcbd_hc_world_set_fluid(hcbd_hc_world *w, int n, const double *xyz, const double *v);
 /* n fluid blobs on a simple orthorhombic lattice with spacings as even as
    the box allows and at least n sites (n spread evenly over them: exactly
    uniform when n fills the lattice; otherwise the vacancies relax slowly),
    rows in y a quarter spacing off centre; v as for NULL. */
-hcbd_result hcbd_hc_place_fluid_lattice(hcbd_hc_world *w, int n);
+hcbd_result hcbd_hc_world_place_fluid_lattice(hcbd_hc_world *w, int n);
 /* Polymer blobs with ids 0..n-1 (n may be 0).  Every polymer needs a fluid
    blob within rc and phi < 1: set the fluid first. */
-hcbd_result hcbd_hc_set_polymers(hcbd_hc_world *w, int n, const double *xyz);
-hcbd_result hcbd_hc_place_polymers_random(hcbd_hc_world *w, int n);
+hcbd_result hcbd_hc_world_set_polymers(hcbd_hc_world *w, int n, const double *xyz);
+hcbd_result hcbd_hc_world_place_polymers_random(hcbd_hc_world *w, int n);
+/* The particles out, in id order and interleaved as the setters take them:
+   fluid positions (3 nf, in [0, L)) and velocities (3 nf; v may be NULL),
+   polymer positions (3 np). */
+hcbd_result hcbd_hc_world_get_fluid(const hcbd_hc_world *w, double *xyz, double *v);
+hcbd_result hcbd_hc_world_get_polymers(const hcbd_hc_world *w, double *xyz);
 /* Recomputes densities, transient pairs (kept where they persist, created
    at lambda_eq, deleted beyond rc) and forces at the present positions
    without moving anything: the neighbour rebuild the step does first. */
-hcbd_result hcbd_hc_refresh(hcbd_hc_world *w);
+hcbd_result hcbd_hc_world_refresh(hcbd_hc_world *w);
 /* >>HCBD: step ------------------------------------------------------------*/
 /* Advances nsteps.  HCBD_ERR_PARAM when phi >= 1 or a polymer has no fluid
    blob within rc, HCBD_ERR_CAPACITY on pair or neighbour-list overflow,
@@ -1168,33 +1185,33 @@ hcbd_result hcbd_hc_refresh(hcbd_hc_world *w);
    in one step, a fluid density n_i leaves (nbar/3, 3 nbar) or a fluid pair
    force leaves the fixed-point range (one that alone would move a blob 16 h
    in a step), HCBD_ERR_NONFINITE on non-finite state. */
-hcbd_result hcbd_hc_step(hcbd_hc_world *w, int nsteps);
+hcbd_result hcbd_hc_world_step(hcbd_hc_world *w, int nsteps);
 
 /* >>HCBD: observables -----------------------------------------------------*/
 /* Pair variable of polymers a, b (any order); HCBD_ERR_STATE if the pair
    does not exist. */
-hcbd_result hcbd_hc_lambda(const hcbd_hc_world *w, int a, int b, double *lambda);
-hcbd_result hcbd_hc_set_lambda(hcbd_hc_world *w, int a, int b, double lambda);
+hcbd_result hcbd_hc_world_get_lambda(const hcbd_hc_world *w, int a, int b, double *lambda);
+hcbd_result hcbd_hc_world_set_lambda(hcbd_hc_world *w, int a, int b, double lambda);
 
 /* Fluid kinetic temperature sum m u^2 / (3 (nf - 1)), u relative to the mean
    and the Lees-Edwards profile. */
-double hcbd_hc_temperature(const hcbd_hc_world *w);
+double hcbd_hc_world_temperature(const hcbd_hc_world *w);
 /* Total momentum (the fluid's; polymers are massless). */
-void hcbd_hc_momentum(const hcbd_hc_world *w, double p[3]);
-/* Fluid transverse current, as hcbd_transverse_current. */
-hcbd_result hcbd_hc_transverse_current(const hcbd_hc_world *w, int nk, double out[12]);
+void hcbd_hc_world_momentum(const hcbd_hc_world *w, double p[3]);
+/* Fluid transverse current, as hcbd_world_transverse_current. */
+hcbd_result hcbd_hc_world_transverse_current(const hcbd_hc_world *w, int nk, double out[12]);
 /* Conservative polymer energy p kT sum_a (g(phi_a) + 1) + (alpha/2)
    sum_pairs (lambda - lambda_eq)^2 at the present state (needs refresh or
    a step after moving particles). */
-double hcbd_hc_polymer_energy(const hcbd_hc_world *w);
+double hcbd_hc_world_polymer_energy(const hcbd_hc_world *w);
 /* out[0] min n_i/nbar, out[1] max n_i/nbar, out[2] min pressure. */
-hcbd_result hcbd_hc_density_range(const hcbd_hc_world *w, double out[3]);
+hcbd_result hcbd_hc_world_density_range(const hcbd_hc_world *w, double out[3]);
 /* Stress split (the HCBD_HC_S_* indices) averaged over the steps since
-   hcbd_hc_stress_enable(w, 1); off by default, and then it costs nothing. */
-hcbd_result hcbd_hc_stress_enable(hcbd_hc_world *w, int on);
-hcbd_result hcbd_hc_stress_read(const hcbd_hc_world *w, double out[HCBD_HC_NSTRESS],
+   hcbd_hc_world_stress_enable(w, 1); off by default, and then it costs nothing. */
+hcbd_result hcbd_hc_world_stress_enable(hcbd_hc_world *w, int on);
+hcbd_result hcbd_hc_world_stress_read(const hcbd_hc_world *w, double out[HCBD_HC_NSTRESS],
                                 int64_t *nsteps);
-uint64_t hcbd_hc_state_checksum(const hcbd_hc_world *w);
+uint64_t hcbd_hc_world_checksum(const hcbd_hc_world *w);
 
 /* >>HCBD: theory and stability limits ------------------------------------*/
 /* Flow predictions: nu = eta/rho, c_s, blob mass, the reverse-Poiseuille
@@ -1203,10 +1220,10 @@ uint64_t hcbd_hc_state_checksum(const hcbd_hc_world *w);
 typedef struct hcbd_hc_theory {
     double nu, cs, m, v_max_rp, dt_visc, dt_sound;
 } hcbd_hc_theory;
-hcbd_result hcbd_hc_theory_of(const hcbd_hc_params *p, hcbd_hc_theory *t);
-/* The 2018 model's limits (see hcbd_stability); fluid limits apply to the
+hcbd_result hcbd_hc_params_theory(const hcbd_hc_params *p, hcbd_hc_theory *t);
+/* The 2018 model's limits (see hcbd_params_stability); fluid limits apply to the
    fluid sub-step dt/substeps. */
-hcbd_result hcbd_hc_stability(const hcbd_hc_params *p, hcbd_limit *out, int *n);
+hcbd_result hcbd_hc_params_stability(const hcbd_hc_params *p, hcbd_limit *out, int *n);
 
 /* >>HCBD: kernels of the 2018 model --------------------------------------*/
 double hcbd_m4(double r, double h);
@@ -1236,28 +1253,28 @@ double hcbd_flory_g1(double phi, double chi);
    w may be a live world: the new one is built aside and replaces it (and
    frees it) only on success, so a failed load leaves it as it was, with
    only w->err set.
-   hcbd_save writes path.tmp and renames it, so a crash while writing never
+   hcbd_world_save writes path.tmp and renames it, so a crash while writing never
    leaves a truncated checkpoint under path. */
 #define HCBD_CHECKPOINT_VERSION 3
-size_t hcbd_checkpoint_size(const hcbd_world *w);
-hcbd_result hcbd_checkpoint_save(hcbd_world *w, void *buf, size_t size);
-hcbd_result hcbd_checkpoint_load(hcbd_world *w, const void *buf, size_t size);
-hcbd_result hcbd_save(hcbd_world *w, const char *path);
-hcbd_result hcbd_load(hcbd_world *w, const char *path);
+size_t hcbd_world_checkpoint_size(const hcbd_world *w);
+hcbd_result hcbd_world_checkpoint_save(hcbd_world *w, void *buf, size_t size);
+hcbd_result hcbd_world_checkpoint_load(hcbd_world *w, const void *buf, size_t size);
+hcbd_result hcbd_world_save(hcbd_world *w, const char *path);
+hcbd_result hcbd_world_load(hcbd_world *w, const char *path);
 /* The thread count may change at any time (results do not). */
-hcbd_result hcbd_set_threads(hcbd_world *w, int threads);
+hcbd_result hcbd_world_set_threads(hcbd_world *w, int threads);
 
 /* >>trajectories and logs (called by the caller between steps: nothing
    runs, and nothing costs, unless called).
-   hcbd_xyz_write: one extended XYZ frame (OVITO, ASE) of the particles in
+   hcbd_world_write_xyz: one extended XYZ frame (OVITO, ASE) of the particles in
    id order, or of ids[0..nids-1] if ids is non-NULL: Lattice, pbc,
    Properties=species:S:1:pos:R:3:velo:R:3:id:I:1, Time, Step and the
    Lees-Edwards offset le_offset in the comment line; positions wrapped
-   into the box, %.17g.  Species "S" (GI-BD).  hcbd_xyz_offenders writes
+   into the box, %.17g.  Species "S" (GI-BD).  hcbd_world_write_offenders writes
    the particle of the last error (w->err.id) and every particle within
    the interaction range of it, with error=<code> in the comment line. */
-hcbd_result hcbd_xyz_write(const hcbd_world *w, FILE *f, const int *ids, int nids);
-hcbd_result hcbd_xyz_offenders(const hcbd_world *w, FILE *f);
+hcbd_result hcbd_world_write_xyz(const hcbd_world *w, FILE *f, const int *ids, int nids);
+hcbd_result hcbd_world_write_offenders(const hcbd_world *w, FILE *f);
 /* Thermo log: a header line and one line per call, space separated:
    step time T px py pz list_pairs wall_pen ns_per_particle_step
    (list_pairs: the neighbour list's pairs, skin included, so it depends on
@@ -1267,22 +1284,22 @@ hcbd_result hcbd_xyz_offenders(const hcbd_world *w, FILE *f);
    (for the papers' scenes sigma, xi sigma^2/kT or 1 us, kT, and m).  Both
    return the length the full text needs, as snprintf does. */
 int hcbd_thermo_header(char *buf, size_t size);
-int hcbd_thermo_line(const hcbd_world *w, double ns_pstep, char *buf, size_t size);
+int hcbd_world_thermo_line(const hcbd_world *w, double ns_pstep, char *buf, size_t size);
 
 /* >>HCBD: checkpoints, threads, XYZ and thermo ----------------------------*/
 #if HCBD_MODEL == HCBD_MODEL_HCBD
 /* The same for the 2018 world: fluid blobs are species "F", polymers "P"
    (velocity: their drift velocity); the thermo line has step time T_fluid
    px py pz max_phi pairs ns_pstep (polymers are massless: no temperature). */
-size_t hcbd_hc_checkpoint_size(const hcbd_hc_world *w);
-hcbd_result hcbd_hc_checkpoint_save(hcbd_hc_world *w, void *buf, size_t size);
-hcbd_result hcbd_hc_checkpoint_load(hcbd_hc_world *w, const void *buf, size_t size);
-hcbd_result hcbd_hc_save(hcbd_hc_world *w, const char *path);
-hcbd_result hcbd_hc_load(hcbd_hc_world *w, const char *path);
-hcbd_result hcbd_hc_set_threads(hcbd_hc_world *w, int threads);
-hcbd_result hcbd_hc_xyz_write(const hcbd_hc_world *w, FILE *f);
+size_t hcbd_hc_world_checkpoint_size(const hcbd_hc_world *w);
+hcbd_result hcbd_hc_world_checkpoint_save(hcbd_hc_world *w, void *buf, size_t size);
+hcbd_result hcbd_hc_world_checkpoint_load(hcbd_hc_world *w, const void *buf, size_t size);
+hcbd_result hcbd_hc_world_save(hcbd_hc_world *w, const char *path);
+hcbd_result hcbd_hc_world_load(hcbd_hc_world *w, const char *path);
+hcbd_result hcbd_hc_world_set_threads(hcbd_hc_world *w, int threads);
+hcbd_result hcbd_hc_world_write_xyz(const hcbd_hc_world *w, FILE *f);
 int hcbd_hc_thermo_header(char *buf, size_t size);
-int hcbd_hc_thermo_line(const hcbd_hc_world *w, double ns_pstep, char *buf, size_t size);
+int hcbd_hc_world_thermo_line(const hcbd_hc_world *w, double ns_pstep, char *buf, size_t size);
 #endif
 
 /* >>old names, kept for one version (the compiler warns where it can) ----*/
@@ -1301,21 +1318,322 @@ static inline hcbd_result hcbd_get_velocities(const hcbd_world *w, double *v)
 {
     return hcbd_world_get_velocities(w, v);
 }
-HCBD_DEPRECATED("hcbd_virial_stress")
+HCBD_DEPRECATED("hcbd_world_virial_stress")
 static inline hcbd_result hcbd_stress(hcbd_world *w, double s[9])
 {
-    return hcbd_virial_stress(w, s);
+    return hcbd_world_virial_stress(w, s);
 }
-HCBD_DEPRECATED("hcbd_stress_enable")
+HCBD_DEPRECATED("hcbd_world_stress_enable")
 static inline hcbd_result hcbd_flux_enable(hcbd_world *w, int on)
 {
-    return hcbd_stress_enable(w, on);
+    return hcbd_world_stress_enable(w, on);
 }
-HCBD_DEPRECATED("hcbd_stress_read")
+HCBD_DEPRECATED("hcbd_world_stress_read")
 static inline hcbd_result hcbd_flux_read(const hcbd_world *w, double out[4], int64_t *nsteps)
 {
-    return hcbd_stress_read(w, out, nsteps);
+    return hcbd_world_stress_read(w, out, nsteps);
 }
+/* renamed to one rule (issue 42: hcbd_<object>_<verb>, NAMING above) */
+HCBD_DEPRECATED("hcbd_world_step")
+static inline hcbd_result hcbd_step(hcbd_world *w, int nsteps)
+{
+    return hcbd_world_step(w, nsteps);
+}
+HCBD_DEPRECATED("hcbd_world_temperature")
+static inline double hcbd_temperature(const hcbd_world *w)
+{
+    return hcbd_world_temperature(w);
+}
+HCBD_DEPRECATED("hcbd_world_momentum")
+static inline void hcbd_momentum(const hcbd_world *w, double p[3])
+{
+    hcbd_world_momentum(w, p);
+}
+HCBD_DEPRECATED("hcbd_world_virial_stress")
+static inline hcbd_result hcbd_virial_stress(hcbd_world *w, double s[9])
+{
+    return hcbd_world_virial_stress(w, s);
+}
+HCBD_DEPRECATED("hcbd_world_friction_average")
+static inline hcbd_result hcbd_friction_average(hcbd_world *w, int nk, double out[3])
+{
+    return hcbd_world_friction_average(w, nk, out);
+}
+HCBD_DEPRECATED("hcbd_world_transverse_current")
+static inline hcbd_result hcbd_transverse_current(const hcbd_world *w, int nk, double out[12])
+{
+    return hcbd_world_transverse_current(w, nk, out);
+}
+HCBD_DEPRECATED("hcbd_world_potential_energy")
+static inline double hcbd_potential_energy(hcbd_world *w)
+{
+    return hcbd_world_potential_energy(w);
+}
+HCBD_DEPRECATED("hcbd_world_config_temperature")
+static inline hcbd_result hcbd_config_temperature(hcbd_world *w, double out[2])
+{
+    return hcbd_world_config_temperature(w, out);
+}
+HCBD_DEPRECATED("hcbd_world_forces")
+static inline hcbd_result hcbd_forces(hcbd_world *w, double *f)
+{
+    return hcbd_world_forces(w, f);
+}
+HCBD_DEPRECATED("hcbd_world_stress_enable")
+static inline hcbd_result hcbd_stress_enable(hcbd_world *w, int on)
+{
+    return hcbd_world_stress_enable(w, on);
+}
+HCBD_DEPRECATED("hcbd_world_stress_read")
+static inline hcbd_result hcbd_stress_read(const hcbd_world *w, double out[4], int64_t *nsteps)
+{
+    return hcbd_world_stress_read(w, out, nsteps);
+}
+HCBD_DEPRECATED("hcbd_world_wall_penetrations")
+static inline int64_t hcbd_wall_penetrations(const hcbd_world *w, int64_t *last_step, int *last_id)
+{
+    return hcbd_world_wall_penetrations(w, last_step, last_id);
+}
+HCBD_DEPRECATED("hcbd_world_checksum")
+static inline uint64_t hcbd_state_checksum(const hcbd_world *w)
+{
+    return hcbd_world_checksum(w);
+}
+HCBD_DEPRECATED("hcbd_world_checkpoint_size")
+static inline size_t hcbd_checkpoint_size(const hcbd_world *w)
+{
+    return hcbd_world_checkpoint_size(w);
+}
+HCBD_DEPRECATED("hcbd_world_checkpoint_save")
+static inline hcbd_result hcbd_checkpoint_save(hcbd_world *w, void *buf, size_t size)
+{
+    return hcbd_world_checkpoint_save(w, buf, size);
+}
+HCBD_DEPRECATED("hcbd_world_checkpoint_load")
+static inline hcbd_result hcbd_checkpoint_load(hcbd_world *w, const void *buf, size_t size)
+{
+    return hcbd_world_checkpoint_load(w, buf, size);
+}
+HCBD_DEPRECATED("hcbd_world_save")
+static inline hcbd_result hcbd_save(hcbd_world *w, const char *path)
+{
+    return hcbd_world_save(w, path);
+}
+HCBD_DEPRECATED("hcbd_world_load")
+static inline hcbd_result hcbd_load(hcbd_world *w, const char *path)
+{
+    return hcbd_world_load(w, path);
+}
+HCBD_DEPRECATED("hcbd_world_set_threads")
+static inline hcbd_result hcbd_set_threads(hcbd_world *w, int threads)
+{
+    return hcbd_world_set_threads(w, threads);
+}
+HCBD_DEPRECATED("hcbd_world_write_xyz")
+static inline hcbd_result hcbd_xyz_write(const hcbd_world *w, FILE *f, const int *ids, int nids)
+{
+    return hcbd_world_write_xyz(w, f, ids, nids);
+}
+HCBD_DEPRECATED("hcbd_world_write_offenders")
+static inline hcbd_result hcbd_xyz_offenders(const hcbd_world *w, FILE *f)
+{
+    return hcbd_world_write_offenders(w, f);
+}
+HCBD_DEPRECATED("hcbd_world_thermo_line")
+static inline int hcbd_thermo_line(const hcbd_world *w, double ns_pstep, char *buf, size_t size)
+{
+    return hcbd_world_thermo_line(w, ns_pstep, buf, size);
+}
+HCBD_DEPRECATED("hcbd_world_rng_normal")
+static inline double hcbd_rng_normal(const hcbd_world *w, hcbd_rng *r)
+{
+    return hcbd_world_rng_normal(w, r);
+}
+HCBD_DEPRECATED("hcbd_world_pair_normals")
+static inline void hcbd_pair_normals(const hcbd_world *w, int64_t s, int32_t a, int32_t b, double out[3])
+{
+    hcbd_world_pair_normals(w, s, a, b, out);
+}
+HCBD_DEPRECATED("hcbd_world_particle_normals")
+static inline void hcbd_particle_normals(const hcbd_world *w, int64_t s, int32_t id, double out[3])
+{
+    hcbd_world_particle_normals(w, s, id, out);
+}
+HCBD_DEPRECATED("hcbd_params_theory")
+static inline hcbd_result hcbd_theory_of(const hcbd_params *p, hcbd_theory *t)
+{
+    return hcbd_params_theory(p, t);
+}
+HCBD_DEPRECATED("hcbd_params_stability")
+static inline hcbd_result hcbd_stability(const hcbd_params *p, hcbd_limit *out, int *n)
+{
+    return hcbd_params_stability(p, out, n);
+}
+HCBD_DEPRECATED("hcbd_params_gibd_coef")
+static inline hcbd_result hcbd_gibd_coef_of(const hcbd_params *p, hcbd_gibd_coef *c, char *msg, size_t msg_size)
+{
+    return hcbd_params_gibd_coef(p, c, msg, msg_size);
+}
+HCBD_DEPRECATED("hcbd_star_coef_init")
+static inline hcbd_result hcbd_star_coef_of(double f, double sigma, double eps, hcbd_star_coef *c, char *msg, size_t msg_size)
+{
+    return hcbd_star_coef_init(c, f, sigma, eps, msg, msg_size);
+}
+#if HCBD_MODEL == HCBD_MODEL_WALLED
+HCBD_DEPRECATED("hcbd_params_wall_potential")
+static inline double hcbd_wall_potential(const hcbd_params *p, double y, double *fy)
+{
+    return hcbd_params_wall_potential(p, y, fy);
+}
+#endif
+#if HCBD_MODEL == HCBD_MODEL_HCBD
+typedef hcbd_hc_world_def hcbd_hc_def HCBD_DEPRECATED("hcbd_hc_world_def");
+HCBD_DEPRECATED("hcbd_hc_si_default")
+static inline hcbd_hc_si hcbd_hc_si_table1(void)
+{
+    return hcbd_hc_si_default();
+}
+HCBD_DEPRECATED("hcbd_hc_si_params")
+static inline hcbd_result hcbd_hc_params_si(const hcbd_hc_si *si, double time_unit, hcbd_hc_params *p, char *msg, size_t msg_size)
+{
+    return hcbd_hc_si_params(si, time_unit, p, msg, msg_size);
+}
+HCBD_DEPRECATED("hcbd_hc_params_theory")
+static inline hcbd_result hcbd_hc_theory_of(const hcbd_hc_params *p, hcbd_hc_theory *t)
+{
+    return hcbd_hc_params_theory(p, t);
+}
+HCBD_DEPRECATED("hcbd_hc_params_stability")
+static inline hcbd_result hcbd_hc_stability(const hcbd_hc_params *p, hcbd_limit *out, int *n)
+{
+    return hcbd_hc_params_stability(p, out, n);
+}
+HCBD_DEPRECATED("hcbd_hc_world_def_default")
+static inline hcbd_hc_world_def hcbd_hc_def_default(void)
+{
+    return hcbd_hc_world_def_default();
+}
+HCBD_DEPRECATED("hcbd_hc_world_set_fluid")
+static inline hcbd_result hcbd_hc_set_fluid(hcbd_hc_world *w, int n, const double *xyz, const double *v)
+{
+    return hcbd_hc_world_set_fluid(w, n, xyz, v);
+}
+HCBD_DEPRECATED("hcbd_hc_world_place_fluid_lattice")
+static inline hcbd_result hcbd_hc_place_fluid_lattice(hcbd_hc_world *w, int n)
+{
+    return hcbd_hc_world_place_fluid_lattice(w, n);
+}
+HCBD_DEPRECATED("hcbd_hc_world_set_polymers")
+static inline hcbd_result hcbd_hc_set_polymers(hcbd_hc_world *w, int n, const double *xyz)
+{
+    return hcbd_hc_world_set_polymers(w, n, xyz);
+}
+HCBD_DEPRECATED("hcbd_hc_world_place_polymers_random")
+static inline hcbd_result hcbd_hc_place_polymers_random(hcbd_hc_world *w, int n)
+{
+    return hcbd_hc_world_place_polymers_random(w, n);
+}
+HCBD_DEPRECATED("hcbd_hc_world_refresh")
+static inline hcbd_result hcbd_hc_refresh(hcbd_hc_world *w)
+{
+    return hcbd_hc_world_refresh(w);
+}
+HCBD_DEPRECATED("hcbd_hc_world_step")
+static inline hcbd_result hcbd_hc_step(hcbd_hc_world *w, int nsteps)
+{
+    return hcbd_hc_world_step(w, nsteps);
+}
+HCBD_DEPRECATED("hcbd_hc_world_get_lambda")
+static inline hcbd_result hcbd_hc_lambda(const hcbd_hc_world *w, int a, int b, double *lambda)
+{
+    return hcbd_hc_world_get_lambda(w, a, b, lambda);
+}
+HCBD_DEPRECATED("hcbd_hc_world_set_lambda")
+static inline hcbd_result hcbd_hc_set_lambda(hcbd_hc_world *w, int a, int b, double lambda)
+{
+    return hcbd_hc_world_set_lambda(w, a, b, lambda);
+}
+HCBD_DEPRECATED("hcbd_hc_world_temperature")
+static inline double hcbd_hc_temperature(const hcbd_hc_world *w)
+{
+    return hcbd_hc_world_temperature(w);
+}
+HCBD_DEPRECATED("hcbd_hc_world_momentum")
+static inline void hcbd_hc_momentum(const hcbd_hc_world *w, double p[3])
+{
+    hcbd_hc_world_momentum(w, p);
+}
+HCBD_DEPRECATED("hcbd_hc_world_transverse_current")
+static inline hcbd_result hcbd_hc_transverse_current(const hcbd_hc_world *w, int nk, double out[12])
+{
+    return hcbd_hc_world_transverse_current(w, nk, out);
+}
+HCBD_DEPRECATED("hcbd_hc_world_polymer_energy")
+static inline double hcbd_hc_polymer_energy(const hcbd_hc_world *w)
+{
+    return hcbd_hc_world_polymer_energy(w);
+}
+HCBD_DEPRECATED("hcbd_hc_world_density_range")
+static inline hcbd_result hcbd_hc_density_range(const hcbd_hc_world *w, double out[3])
+{
+    return hcbd_hc_world_density_range(w, out);
+}
+HCBD_DEPRECATED("hcbd_hc_world_stress_enable")
+static inline hcbd_result hcbd_hc_stress_enable(hcbd_hc_world *w, int on)
+{
+    return hcbd_hc_world_stress_enable(w, on);
+}
+HCBD_DEPRECATED("hcbd_hc_world_stress_read")
+static inline hcbd_result hcbd_hc_stress_read(const hcbd_hc_world *w, double out[HCBD_HC_NSTRESS], int64_t *nsteps)
+{
+    return hcbd_hc_world_stress_read(w, out, nsteps);
+}
+HCBD_DEPRECATED("hcbd_hc_world_checksum")
+static inline uint64_t hcbd_hc_state_checksum(const hcbd_hc_world *w)
+{
+    return hcbd_hc_world_checksum(w);
+}
+HCBD_DEPRECATED("hcbd_hc_world_checkpoint_size")
+static inline size_t hcbd_hc_checkpoint_size(const hcbd_hc_world *w)
+{
+    return hcbd_hc_world_checkpoint_size(w);
+}
+HCBD_DEPRECATED("hcbd_hc_world_checkpoint_save")
+static inline hcbd_result hcbd_hc_checkpoint_save(hcbd_hc_world *w, void *buf, size_t size)
+{
+    return hcbd_hc_world_checkpoint_save(w, buf, size);
+}
+HCBD_DEPRECATED("hcbd_hc_world_checkpoint_load")
+static inline hcbd_result hcbd_hc_checkpoint_load(hcbd_hc_world *w, const void *buf, size_t size)
+{
+    return hcbd_hc_world_checkpoint_load(w, buf, size);
+}
+HCBD_DEPRECATED("hcbd_hc_world_save")
+static inline hcbd_result hcbd_hc_save(hcbd_hc_world *w, const char *path)
+{
+    return hcbd_hc_world_save(w, path);
+}
+HCBD_DEPRECATED("hcbd_hc_world_load")
+static inline hcbd_result hcbd_hc_load(hcbd_hc_world *w, const char *path)
+{
+    return hcbd_hc_world_load(w, path);
+}
+HCBD_DEPRECATED("hcbd_hc_world_set_threads")
+static inline hcbd_result hcbd_hc_set_threads(hcbd_hc_world *w, int threads)
+{
+    return hcbd_hc_world_set_threads(w, threads);
+}
+HCBD_DEPRECATED("hcbd_hc_world_write_xyz")
+static inline hcbd_result hcbd_hc_xyz_write(const hcbd_hc_world *w, FILE *f)
+{
+    return hcbd_hc_world_write_xyz(w, f);
+}
+HCBD_DEPRECATED("hcbd_hc_world_thermo_line")
+static inline int hcbd_hc_thermo_line(const hcbd_hc_world *w, double ns_pstep, char *buf, size_t size)
+{
+    return hcbd_hc_world_thermo_line(w, ns_pstep, buf, size);
+}
+#endif
 
 #ifdef __cplusplus
 }
@@ -1903,7 +2221,7 @@ static inline double hcbd__normal(const hcbd__zig *z, hcbd__gen *g)
     return hcbd__zig_slow(z, g, u);
 }
 
-double hcbd_rng_normal(const hcbd_world *w, hcbd_rng *r)
+double hcbd_world_rng_normal(const hcbd_world *w, hcbd_rng *r)
 {
     hcbd__gen g;
     if (!w || !w->core.zig || !r) return NAN;
@@ -1980,7 +2298,7 @@ static inline uint64_t hcbd__bd_step_key(const hcbd_world *w, int64_t s)
     return hcbd__mix64(w->bd_key ^ hcbd__mix64((uint64_t)s));
 }
 
-void hcbd_particle_normals(const hcbd_world *w, int64_t s, int32_t id, double out[3])
+void hcbd_world_particle_normals(const hcbd_world *w, int64_t s, int32_t id, double out[3])
 {
     if (!out) return;
     if (!w || !w->core.zig) {
@@ -1990,7 +2308,7 @@ void hcbd_particle_normals(const hcbd_world *w, int64_t s, int32_t id, double ou
     hcbd__noise3(w, hcbd__particle_key(hcbd__bd_step_key(w, s), id), out);
 }
 
-void hcbd_pair_normals(const hcbd_world *w, int64_t s, int32_t a, int32_t b,
+void hcbd_world_pair_normals(const hcbd_world *w, int64_t s, int32_t a, int32_t b,
                        double out[3])
 {
     if (!out) return;
@@ -2066,7 +2384,7 @@ static inline double hcbd__sdt(double cs, double inv_rho_i, double inv_rho_j, do
     return cs * (inv_rho_i + inv_rho_j) * a * a * a;
 }
 
-/* the coefficients of p, unchecked: the world's and hcbd_gibd_coef_of's */
+/* the coefficients of p, unchecked: the world's and hcbd_params_gibd_coef's */
 static void hcbd__gibd_coef(const hcbd_params *p, hcbd_gibd_coef *c)
 {
     c->Rc = p->Rc;
@@ -2077,7 +2395,7 @@ static void hcbd__gibd_coef(const hcbd_params *p, hcbd_gibd_coef *c)
     c->rho_norm = p->density_norm == 2016 ? 1.0 / (1.0 + c->cw / p->density) : 1.0;
 }
 
-hcbd_result hcbd_gibd_coef_of(const hcbd_params *p, hcbd_gibd_coef *c, char *msg, size_t msg_size)
+hcbd_result hcbd_params_gibd_coef(const hcbd_params *p, hcbd_gibd_coef *c, char *msg, size_t msg_size)
 {
     hcbd_result r;
     if (!p || !c) return HCBD_ERR_NULL;
@@ -2232,8 +2550,8 @@ static inline double hcbd__star_force_over_r(const hcbd_star_coef *c, double r, 
     return c->ab * exp(c->s - c->s_sigma * r) * (c->sigma * ir + c->s) * ir * ir;
 }
 
-hcbd_result hcbd_star_coef_of(double f, double sigma, double eps, hcbd_star_coef *c,
-                              char *msg, size_t msg_size)
+hcbd_result hcbd_star_coef_init(hcbd_star_coef *c, double f, double sigma, double eps,
+                                char *msg, size_t msg_size)
 {
     if (!c) {
         if (msg && msg_size) snprintf(msg, msg_size, "c is NULL");
@@ -2403,7 +2721,7 @@ static inline int hcbd__delta(const hcbd_world *w, double dx, double dy, double 
    the depletion width, then the passes of the walled build (artificial
    particles, Morris pairs) */
 #if HCBD__WALLS
-double hcbd_wall_potential(const hcbd_params *p, double y, double *fy)
+double hcbd_params_wall_potential(const hcbd_params *p, double y, double *fy)
 {
     double e = 0.0, f = 0.0, Ly, planes[2];
     int k;
@@ -2433,7 +2751,7 @@ static double hcbd__depletion(const hcbd_params *p)
     if (p->wall.thickness <= 0 || p->wall.mode == HCBD_WALL_REFLECT || p->kT <= 0) return 0.0;
     for (k = 0; k <= n; ++k) {
         double y = a + h * k / n, c = (k == 0 || k == n) ? 1.0 : (k % 2 ? 4.0 : 2.0);
-        s += c * (1.0 - exp(-hcbd_wall_potential(p, y, NULL) / p->kT));
+        s += c * (1.0 - exp(-hcbd_params_wall_potential(p, y, NULL) / p->kT));
     }
     return s * h / (3.0 * n);
 }
@@ -2662,7 +2980,7 @@ static int hcbd__wall_guard(const hcbd_world *w) { return w->walls && w->p.wall.
 static double hcbd__wall_fy(const hcbd_world *w, double y)
 {
     double fy;
-    hcbd_wall_potential(&w->p, y, &fy);
+    hcbd_params_wall_potential(&w->p, y, &fy);
     return fy;
 }
 
@@ -2706,15 +3024,15 @@ static inline int hcbd__wall_guard(const hcbd_world *w) { (void)w; return 0; }
 static inline double hcbd__wall_fy(const hcbd_world *w, double y) { (void)w; (void)y; return 0.0; }
 #endif
 
-int64_t hcbd_wall_penetrations(const hcbd_world *w, int64_t *last_step, int *last_id)
+int64_t hcbd_world_wall_penetrations(const hcbd_world *w, int64_t *last_step, int *last_id)
 {
     if (last_step) *last_step = w ? w->wall_pen_step : -1;
     if (last_id) *last_id = w ? w->wall_pen_id : -1;
     return w ? w->wall_pen : 0;
 }
 
-/* >>theory and stability limits (hcbd_theory_of, hcbd_stability) */
-hcbd_result hcbd_theory_of(const hcbd_params *p, hcbd_theory *t)
+/* >>theory and stability limits (hcbd_params_theory, hcbd_params_stability) */
+hcbd_result hcbd_params_theory(const hcbd_params *p, hcbd_theory *t)
 {
     char msg[8];
     hcbd_result r;
@@ -2816,7 +3134,7 @@ static double hcbd__stiffness(const hcbd_params *p, double r)
     return 0;
 }
 
-hcbd_result hcbd_stability(const hcbd_params *p, hcbd_limit *out, int *n)
+hcbd_result hcbd_params_stability(const hcbd_params *p, hcbd_limit *out, int *n)
 {
     hcbd_theory th;
     hcbd_result r;
@@ -2826,7 +3144,7 @@ hcbd_result hcbd_stability(const hcbd_params *p, hcbd_limit *out, int *n)
     *n = 0;
     memset(&th, 0, sizeof th);
     if ((r = hcbd_params_check(p, NULL, 0)) != HCBD_OK) return r;
-    if (gibd && (r = hcbd_theory_of(p, &th)) != HCBD_OK) return r;
+    if (gibd && (r = hcbd_params_theory(p, &th)) != HCBD_OK) return r;
     if (gibd) m = th.m;
     if (gibd && p->pair_integrator == HCBD_PAIR_EULER) {
         hcbd__limit(out, n, "Euler pair friction: tau >= 10 dt (2014 eq. 27)", "accuracy", p->dt,
@@ -3234,7 +3552,7 @@ static hcbd_result hcbd__set_particles(hcbd_world *w, int n, hcbd__src *src)
         if (w->gibd) {
             double s = w->has_noise ? sqrt(w->p.kT / w->m) : 0.0, v[3] = {0, 0, 0};
             if (s > 0)
-                for (d = 0; d < 3; ++d) v[d] = s * hcbd_rng_normal(w, &g);
+                for (d = 0; d < 3; ++d) v[d] = s * hcbd_world_rng_normal(w, &g);
             /* a sheared run starts on the linear profile (MODEL 5) */
             v[0] += w->p.gdot * (w->y[i] - 0.5 * w->p.L[1]);
             w->vx[i] = (hcbd_real)v[0]; w->vy[i] = (hcbd_real)v[1]; w->vz[i] = (hcbd_real)v[2];
@@ -4783,13 +5101,13 @@ static void hcbd__stress_read(const hcbd__core *c, double *out, int nparts, int6
     if (nsteps) *nsteps = c->stress_steps;
 }
 
-hcbd_result hcbd_stress_enable(hcbd_world *w, int on)
+hcbd_result hcbd_world_stress_enable(hcbd_world *w, int on)
 {
     if (!w) return HCBD_ERR_NULL;
     return hcbd__stress_enable(&w->core, &w->err, w->step, on);
 }
 
-hcbd_result hcbd_stress_read(const hcbd_world *w, double out[4], int64_t *nsteps)
+hcbd_result hcbd_world_stress_read(const hcbd_world *w, double out[4], int64_t *nsteps)
 {
     if (!w || !out) return HCBD_ERR_NULL;
     hcbd__stress_read(&w->core, out, 3, nsteps);
@@ -4878,7 +5196,7 @@ static hcbd_result hcbd__guard(hcbd_world *w)
 }
 
 /* >>step */
-hcbd_result hcbd_step(hcbd_world *w, int nsteps)
+hcbd_result hcbd_world_step(hcbd_world *w, int nsteps)
 {
     int s;
     hcbd_result r;
@@ -4990,7 +5308,7 @@ static double hcbd__temperature(const hcbd__vset *s, double gdot, double Ly)
     return s->m * sum / (3.0 * (s->n - 1));
 }
 
-void hcbd_momentum(const hcbd_world *w, double p[3])
+void hcbd_world_momentum(const hcbd_world *w, double p[3])
 {
     hcbd__vset s;
     if (!p) return;
@@ -5000,7 +5318,7 @@ void hcbd_momentum(const hcbd_world *w, double p[3])
     hcbd__momentum(&s, p);
 }
 
-double hcbd_temperature(const hcbd_world *w)
+double hcbd_world_temperature(const hcbd_world *w)
 {
     hcbd__vset s;
     if (!w) return 0.0;
@@ -5068,7 +5386,7 @@ static void hcbd__energy_fn(void *c, int i, int j, double dx, double dy, double 
     s->e += hcbd__pair_energy(s->w, sqrt(r2));
 }
 
-hcbd_result hcbd_virial_stress(hcbd_world *w, double s[9])
+hcbd_result hcbd_world_virial_stress(hcbd_world *w, double s[9])
 {
     hcbd__stress_ctx c;
     hcbd_result r;
@@ -5086,7 +5404,7 @@ hcbd_result hcbd_virial_stress(hcbd_world *w, double s[9])
     return HCBD_OK;
 }
 
-double hcbd_potential_energy(hcbd_world *w)
+double hcbd_world_potential_energy(hcbd_world *w)
 {
     hcbd__stress_ctx c;
     if (!w) return 0.0;
@@ -5128,7 +5446,7 @@ static void hcbd__tconf_fn(void *c, int i, int j, double dx, double dy, double d
     if (t->c == 0) t->lap += 2.0 * hcbd__pair_lap(t->w, r);
 }
 
-hcbd_result hcbd_config_temperature(hcbd_world *w, double out[2])
+hcbd_result hcbd_world_config_temperature(hcbd_world *w, double out[2])
 {
     hcbd__tconf_ctx t;
     hcbd_result r;
@@ -5184,7 +5502,7 @@ static void hcbd__force_fn(void *c, int i, int j, double dx, double dy, double d
     fj[0] -= fr * dx; fj[1] -= fr * dy; fj[2] -= fr * dz;
 }
 
-hcbd_result hcbd_forces(hcbd_world *w, double *f)
+hcbd_result hcbd_world_forces(hcbd_world *w, double *f)
 {
     hcbd__forces_obs_ctx t;
     hcbd_result r;
@@ -5222,7 +5540,7 @@ static void hcbd__fric_fn(void *c, int i, int j, double dx, double dy, double dz
     f->s[2] += 2.0 * fij * c3 / 3.0;
 }
 
-hcbd_result hcbd_friction_average(hcbd_world *w, int nk, double out[3])
+hcbd_result hcbd_world_friction_average(hcbd_world *w, int nk, double out[3])
 {
     hcbd__fric_ctx c;
     hcbd_result r;
@@ -5275,7 +5593,7 @@ static void hcbd__tcurrent(int n, const int32_t *idx, const hcbd_real *x, const 
     }
 }
 
-hcbd_result hcbd_transverse_current(const hcbd_world *w, int nk, double out[12])
+hcbd_result hcbd_world_transverse_current(const hcbd_world *w, int nk, double out[12])
 {
     int i;
     if (!w || !out) return HCBD_ERR_NULL;
@@ -5294,7 +5612,7 @@ static uint64_t hcbd__hash(uint64_t h, const void *p, size_t n)
     return h;
 }
 
-uint64_t hcbd_state_checksum(const hcbd_world *w)
+uint64_t hcbd_world_checksum(const hcbd_world *w)
 {
     uint64_t h = 0xCBF29CE484222325ULL;
     int i;
@@ -6826,7 +7144,7 @@ static hcbd_result hcbd__load(const hcbd__kind *k, void *w, const char *path)
                                  K##_bytes, K##_init, walk, K##_load};
 
 HCBD__WORLD_KIND(hcbd__kind_bd, hcbd_world, hcbd_world_def, hcbd__check_def, hcbd_world_bytes,
-                 hcbd_world_init, hcbd__ck_walk, hcbd__ck_load, HCBD__CK_WORLD, "hcbd_checkpoint_size")
+                 hcbd_world_init, hcbd__ck_walk, hcbd__ck_load, HCBD__CK_WORLD, "hcbd_world_checkpoint_size")
 
 hcbd_result hcbd_world_create(hcbd_world *w, const hcbd_world_def *def)
 {
@@ -6838,32 +7156,32 @@ void hcbd_world_destroy(hcbd_world *w)
     hcbd__destroy(&hcbd__kind_bd, w);
 }
 
-hcbd_result hcbd_set_threads(hcbd_world *w, int n)
+hcbd_result hcbd_world_set_threads(hcbd_world *w, int n)
 {
     return hcbd__set_threads(&hcbd__kind_bd, w, n);
 }
 
-size_t hcbd_checkpoint_size(const hcbd_world *w)
+size_t hcbd_world_checkpoint_size(const hcbd_world *w)
 {
     return hcbd__ck_size(&hcbd__kind_bd, w);
 }
 
-hcbd_result hcbd_checkpoint_save(hcbd_world *w, void *buf, size_t n)
+hcbd_result hcbd_world_checkpoint_save(hcbd_world *w, void *buf, size_t n)
 {
     return hcbd__ck_put(&hcbd__kind_bd, w, buf, n);
 }
 
-hcbd_result hcbd_checkpoint_load(hcbd_world *w, const void *buf, size_t n)
+hcbd_result hcbd_world_checkpoint_load(hcbd_world *w, const void *buf, size_t n)
 {
     return hcbd__ck_get(&hcbd__kind_bd, w, buf, n);
 }
 
-hcbd_result hcbd_save(hcbd_world *w, const char *path)
+hcbd_result hcbd_world_save(hcbd_world *w, const char *path)
 {
     return hcbd__save(&hcbd__kind_bd, w, path);
 }
 
-hcbd_result hcbd_load(hcbd_world *w, const char *path)
+hcbd_result hcbd_world_load(hcbd_world *w, const char *path)
 {
     return hcbd__load(&hcbd__kind_bd, w, path);
 }
@@ -6902,12 +7220,12 @@ static hcbd_result hcbd__xyz(const hcbd_world *w, FILE *f, const int *ids, int n
     return ferror(f) ? HCBD_ERR_IO : HCBD_OK;
 }
 
-hcbd_result hcbd_xyz_write(const hcbd_world *w, FILE *f, const int *ids, int nids)
+hcbd_result hcbd_world_write_xyz(const hcbd_world *w, FILE *f, const int *ids, int nids)
 {
     return hcbd__xyz(w, f, ids, nids, "");
 }
 
-hcbd_result hcbd_xyz_offenders(const hcbd_world *w, FILE *f)
+hcbd_result hcbd_world_write_offenders(const hcbd_world *w, FILE *f)
 {
     char extra[96];
     int k, m = 0, *ids;
@@ -6940,16 +7258,16 @@ int hcbd_thermo_header(char *buf, size_t size)
                                "ns_per_particle_step");
 }
 
-int hcbd_thermo_line(const hcbd_world *w, double ns_pstep, char *buf, size_t size)
+int hcbd_world_thermo_line(const hcbd_world *w, double ns_pstep, char *buf, size_t size)
 {
     double p[3];
     char ns[32];
     if (!w) return snprintf(buf, size, "# no world");
-    hcbd_momentum(w, p);
+    hcbd_world_momentum(w, p);
     if (isfinite(ns_pstep)) snprintf(ns, sizeof ns, "%.4g", ns_pstep);
     else snprintf(ns, sizeof ns, "-");
     return snprintf(buf, size, "%lld %.9g %.9g %.6e %.6e %.6e %lld %lld %s",
-                    (long long)w->step, (double)w->step * w->p.dt, hcbd_temperature(w), p[0],
+                    (long long)w->step, (double)w->step * w->p.dt, hcbd_world_temperature(w), p[0],
                     p[1], p[2], (long long)w->nl.npairs, (long long)w->wall_pen, ns);
 }
 
@@ -7050,7 +7368,7 @@ double hcbd_flory_g1(double phi, double chi)
 }
 
 /* >>HCBD: parameters and units */
-hcbd_hc_si hcbd_hc_si_table1(void)
+hcbd_hc_si hcbd_hc_si_default(void)
 {
     hcbd_hc_si s;
     s.sigma = 5e-6;
@@ -7071,7 +7389,7 @@ hcbd_hc_si hcbd_hc_si_table1(void)
     return s;
 }
 
-hcbd_result hcbd_hc_params_si(const hcbd_hc_si *si, double time_unit,
+hcbd_result hcbd_hc_si_params(const hcbd_hc_si *si, double time_unit,
                               hcbd_hc_params *p, char *msg, size_t msg_size)
 {
     const double kB = 1.380649e-23;
@@ -7120,14 +7438,14 @@ hcbd_result hcbd_hc_params_si(const hcbd_hc_si *si, double time_unit,
 hcbd_hc_params hcbd_hc_params_default(void)
 {
     hcbd_hc_params p;
-    hcbd_hc_si si = hcbd_hc_si_table1();
-    hcbd_hc_params_si(&si, 1e-6, &p, NULL, 0);
+    hcbd_hc_si si = hcbd_hc_si_default();
+    hcbd_hc_si_params(&si, 1e-6, &p, NULL, 0);
     return p;
 }
 
-hcbd_hc_def hcbd_hc_def_default(void)
+hcbd_hc_world_def hcbd_hc_world_def_default(void)
 {
-    hcbd_hc_def d;
+    hcbd_hc_world_def d;
     memset(&d, 0, sizeof d);
     d.fluid_capacity = 1024;
     d.polymer_capacity = 0;
@@ -7203,7 +7521,7 @@ hcbd_result hcbd_hc_params_check(const hcbd_hc_params *p, char *msg, size_t msg_
     return HCBD_OK;
 }
 
-hcbd_result hcbd_hc_theory_of(const hcbd_hc_params *p, hcbd_hc_theory *t)
+hcbd_result hcbd_hc_params_theory(const hcbd_hc_params *p, hcbd_hc_theory *t)
 {
     hcbd_result r;
     if (!p || !t) return HCBD_ERR_NULL;
@@ -7218,7 +7536,7 @@ hcbd_result hcbd_hc_theory_of(const hcbd_hc_params *p, hcbd_hc_theory *t)
     return HCBD_OK;
 }
 
-hcbd_result hcbd_hc_stability(const hcbd_hc_params *p, hcbd_limit *out, int *n)
+hcbd_result hcbd_hc_params_stability(const hcbd_hc_params *p, hcbd_limit *out, int *n)
 {
     hcbd_hc_theory th;
     hcbd_result r;
@@ -7227,7 +7545,7 @@ hcbd_result hcbd_hc_stability(const hcbd_hc_params *p, hcbd_limit *out, int *n)
     if (!p || !out || !n) return HCBD_ERR_NULL;
     *n = 0;
     if ((r = hcbd_hc_params_check(p, msg, sizeof msg)) != HCBD_OK) return r;
-    hcbd_hc_theory_of(p, &th);
+    hcbd_hc_params_theory(p, &th);
     dtf = p->dt / p->substeps;
     g = sqrt(p->g[0] * p->g[0] + p->g[1] * p->g[1] + p->g[2] * p->g[2]);
     /* Morris et al. 1997 eq. 9-11.  bench/stability: explicit viscous
@@ -7368,7 +7686,7 @@ static void hcbd__hc_fixed_scales(hcbd_hc_world *w)
    16 per blob), the polymers' half list (twice the mean plus 32 each, at
    most all pairs) and the cross list (twice the fluid blobs within rc +
    skin of a polymer, plus 32). */
-static void hcbd__hc_rooms(const hcbd_hc_def *def, int64_t mp[3])
+static void hcbd__hc_rooms(const hcbd_hc_world_def *def, int64_t mp[3])
 {
     const hcbd_hc_params *p = &def->params;
     const double V = p->L[0] * p->L[1] * p->L[2], s = hcbd__hc_skin(p), c = 4.0 / 3.0 * HCBD__PI;
@@ -7384,7 +7702,7 @@ static void hcbd__hc_rooms(const hcbd_hc_def *def, int64_t mp[3])
     mp[2] = (int64_t)(np * per_x);
 }
 
-static int hcbd__hc_pair_cap(const hcbd_hc_def *def)
+static int hcbd__hc_pair_cap(const hcbd_hc_world_def *def)
 {
     const hcbd_hc_params *p = &def->params;
     double V = p->L[0] * p->L[1] * p->L[2], nexp;
@@ -7395,7 +7713,7 @@ static int hcbd__hc_pair_cap(const hcbd_hc_def *def)
     return (int)ceil(nexp + 5.0 * sqrt(nexp) + 16.0);
 }
 
-static size_t hcbd__hc_layout(const hcbd_hc_def *def, hcbd_hc_world *t, char *base)
+static size_t hcbd__hc_layout(const hcbd_hc_world_def *def, hcbd_hc_world *t, char *base)
 {
     size_t off = 0, R = sizeof(hcbd_real), I = sizeof(int32_t), D = sizeof(double);
     size_t nf = (size_t)def->fluid_capacity, np = (size_t)def->polymer_capacity;
@@ -7454,7 +7772,7 @@ static size_t hcbd__hc_layout(const hcbd_hc_def *def, hcbd_hc_world *t, char *ba
     return off + HCBD__ALIGN;
 }
 
-static hcbd_result hcbd__hc_check_def(const hcbd_hc_def *def, char *msg, size_t msg_size)
+static hcbd_result hcbd__hc_check_def(const hcbd_hc_world_def *def, char *msg, size_t msg_size)
 {
     hcbd_result r;
     if (!def) {
@@ -7476,13 +7794,13 @@ static hcbd_result hcbd__hc_check_def(const hcbd_hc_def *def, char *msg, size_t 
     return HCBD_OK;
 }
 
-size_t hcbd_hc_world_bytes(const hcbd_hc_def *def)
+size_t hcbd_hc_world_bytes(const hcbd_hc_world_def *def)
 {
     if (hcbd__hc_check_def(def, NULL, 0) != HCBD_OK) return 0;
     return hcbd__hc_layout(def, NULL, NULL);
 }
 
-hcbd_result hcbd_hc_world_init(hcbd_hc_world *w, const hcbd_hc_def *def, void *mem,
+hcbd_result hcbd_hc_world_init(hcbd_hc_world *w, const hcbd_hc_world_def *def, void *mem,
                                size_t bytes)
 {
     hcbd_result r;
@@ -7583,7 +7901,7 @@ static hcbd_result hcbd__hc_fluid_finish(hcbd_hc_world *w, int n, const double *
             w->fvz[i] = (hcbd_real)(w->fvz[i] - mom[2] / n);
         }
     }
-    return hcbd_hc_refresh(w);
+    return hcbd_hc_world_refresh(w);
 }
 
 static hcbd_result hcbd__hc_fluid_n(hcbd_hc_world *w, int n)
@@ -7599,7 +7917,7 @@ static hcbd_result hcbd__hc_fluid_n(hcbd_hc_world *w, int n)
     return HCBD_OK;
 }
 
-hcbd_result hcbd_hc_set_fluid(hcbd_hc_world *w, int n, const double *xyz, const double *v)
+hcbd_result hcbd_hc_world_set_fluid(hcbd_hc_world *w, int n, const double *xyz, const double *v)
 {
     int i;
     hcbd_result r;
@@ -7621,7 +7939,7 @@ hcbd_result hcbd_hc_set_fluid(hcbd_hc_world *w, int n, const double *xyz, const 
     return hcbd__hc_fluid_finish(w, n, v);
 }
 
-hcbd_result hcbd_hc_place_fluid_lattice(hcbd_hc_world *w, int n)
+hcbd_result hcbd_hc_world_place_fluid_lattice(hcbd_hc_world *w, int n)
 {
     int k[3], i, d;
     double a;
@@ -7699,7 +8017,7 @@ static hcbd_result hcbd__hc_poly_finish(hcbd_hc_world *w, int n)
     hcbd_error e;
     w->np = n;
     w->fresh_pairs = 1;
-    r = hcbd_hc_refresh(w);
+    r = hcbd_hc_world_refresh(w);
     w->fresh_pairs = 0;
     if (r == HCBD_OK) return r;
     e = w->err;
@@ -7709,13 +8027,13 @@ static hcbd_result hcbd__hc_poly_finish(hcbd_hc_world *w, int n)
     memcpy(w->py, w->pby, (size_t)np0 * sizeof(hcbd_real));
     memcpy(w->pz, w->pbz, (size_t)np0 * sizeof(hcbd_real));
     w->npairs = npairs0;
-    hcbd_hc_refresh(w);
+    hcbd_hc_world_refresh(w);
     w->n_created = created0;
     w->err = e;
     return r;
 }
 
-hcbd_result hcbd_hc_set_polymers(hcbd_hc_world *w, int n, const double *xyz)
+hcbd_result hcbd_hc_world_set_polymers(hcbd_hc_world *w, int n, const double *xyz)
 {
     int i;
     hcbd_result r;
@@ -7733,7 +8051,7 @@ hcbd_result hcbd_hc_set_polymers(hcbd_hc_world *w, int n, const double *xyz)
     return hcbd__hc_poly_finish(w, n);
 }
 
-hcbd_result hcbd_hc_place_polymers_random(hcbd_hc_world *w, int n)
+hcbd_result hcbd_hc_world_place_polymers_random(hcbd_hc_world *w, int n)
 {
     int i;
     hcbd_result r;
@@ -7754,6 +8072,34 @@ hcbd_result hcbd_hc_place_polymers_random(hcbd_hc_world *w, int n)
         w->pz[i] = (hcbd_real)r3[2];
     }
     return hcbd__hc_poly_finish(w, n);
+}
+
+hcbd_result hcbd_hc_world_get_fluid(const hcbd_hc_world *w, double *xyz, double *v)
+{
+    int i;
+    if (!w || !xyz) return HCBD_ERR_NULL;
+    for (i = 0; i < w->nf; ++i) {
+        xyz[3 * i] = w->fx[i];
+        xyz[3 * i + 1] = w->fy[i];
+        xyz[3 * i + 2] = w->fz[i];
+        if (!v) continue;
+        v[3 * i] = w->fvx[i];
+        v[3 * i + 1] = w->fvy[i];
+        v[3 * i + 2] = w->fvz[i];
+    }
+    return HCBD_OK;
+}
+
+hcbd_result hcbd_hc_world_get_polymers(const hcbd_hc_world *w, double *xyz)
+{
+    int i;
+    if (!w || !xyz) return HCBD_ERR_NULL;
+    for (i = 0; i < w->np; ++i) {
+        xyz[3 * i] = w->px[i];
+        xyz[3 * i + 1] = w->py[i];
+        xyz[3 * i + 2] = w->pz[i];
+    }
+    return HCBD_OK;
 }
 
 /* >>HCBD: lists and pair passes.  Fluid and polymer pairs run over the
@@ -7854,7 +8200,7 @@ static hcbd_result hcbd__hc_lists(hcbd_hc_world *w, int64_t step)
     if (hcbd__nl_pairs(&w->lf, &w->lf, &ss, &ss, &box, 1, nt) < 0)
         return hcbd__fail(&w->err, HCBD_ERR_CAPACITY, step, -1,
                           "fluid neighbour list needs more than max_pairs = %lld pairs (range "
-                          "2h + skin = %g); raise hcbd_hc_def.max_pairs",
+                          "2h + skin = %g); raise hcbd_hc_world_def.max_pairs",
                           (long long)w->lf.max_pairs, w->lf.rlist);
     if ((bad = hcbd__nl_degree(&w->lf, w->nf, w->scratch, &most)) >= 0)
         return hcbd__fail(&w->err, HCBD_ERR_CAPACITY, step, w->fid[bad],
@@ -8908,7 +9254,7 @@ static hcbd_result hcbd__hc_prepare(hcbd_hc_world *w, int64_t step)
     return HCBD_OK;
 }
 
-hcbd_result hcbd_hc_refresh(hcbd_hc_world *w)
+hcbd_result hcbd_hc_world_refresh(hcbd_hc_world *w)
 {
     if (!w) return HCBD_ERR_NULL;
     if (w->nf < 2) return hcbd__fail(&w->err, HCBD_ERR_STATE, -1, -1, "no fluid blobs set");
@@ -8997,7 +9343,7 @@ static hcbd_result hcbd__hc_guard(hcbd_hc_world *w)
     return HCBD_OK;
 }
 
-hcbd_result hcbd_hc_step(hcbd_hc_world *w, int nsteps)
+hcbd_result hcbd_hc_world_step(hcbd_hc_world *w, int nsteps)
 {
     static const char *why_s[4] = {"fluid velocity is not finite",
                                    "polymer displacement is not finite",
@@ -9061,7 +9407,7 @@ static int hcbd__hc_pair_slot(const hcbd_hc_world *w, int a, int b, int *lo)
     return hcbd__hc_find(w, *lo, a < b ? b : a);
 }
 
-hcbd_result hcbd_hc_lambda(const hcbd_hc_world *w, int a, int b, double *lambda)
+hcbd_result hcbd_hc_world_get_lambda(const hcbd_hc_world *w, int a, int b, double *lambda)
 {
     int lo, k;
     if (!w || !lambda) return HCBD_ERR_NULL;
@@ -9072,7 +9418,7 @@ hcbd_result hcbd_hc_lambda(const hcbd_hc_world *w, int a, int b, double *lambda)
     return HCBD_OK;
 }
 
-hcbd_result hcbd_hc_set_lambda(hcbd_hc_world *w, int a, int b, double lambda)
+hcbd_result hcbd_hc_world_set_lambda(hcbd_hc_world *w, int a, int b, double lambda)
 {
     int lo, k;
     if (!w) return HCBD_ERR_NULL;
@@ -9089,10 +9435,10 @@ hcbd_result hcbd_hc_set_lambda(hcbd_hc_world *w, int a, int b, double lambda)
                           "polymers %d and %d have no pair variable", a, b);
     w->pair_l[(size_t)lo * w->pair_cap + k] = (hcbd_real)lambda;
     w->ready = 0;
-    return hcbd_hc_refresh(w);
+    return hcbd_hc_world_refresh(w);
 }
 
-double hcbd_hc_temperature(const hcbd_hc_world *w)
+double hcbd_hc_world_temperature(const hcbd_hc_world *w)
 {
     hcbd__vset s;
     if (!w) return 0.0;
@@ -9100,7 +9446,7 @@ double hcbd_hc_temperature(const hcbd_hc_world *w)
     return hcbd__temperature(&s, w->p.gdot, w->p.L[1]);
 }
 
-void hcbd_hc_momentum(const hcbd_hc_world *w, double p[3])
+void hcbd_hc_world_momentum(const hcbd_hc_world *w, double p[3])
 {
     hcbd__vset s;
     if (!p) return;
@@ -9110,7 +9456,7 @@ void hcbd_hc_momentum(const hcbd_hc_world *w, double p[3])
     hcbd__momentum(&s, p);
 }
 
-hcbd_result hcbd_hc_transverse_current(const hcbd_hc_world *w, int nk, double out[12])
+hcbd_result hcbd_hc_world_transverse_current(const hcbd_hc_world *w, int nk, double out[12])
 {
     if (!w || !out) return HCBD_ERR_NULL;
     if (nk < 1) return HCBD_ERR_PARAM;
@@ -9118,7 +9464,7 @@ hcbd_result hcbd_hc_transverse_current(const hcbd_hc_world *w, int nk, double ou
     return HCBD_OK;
 }
 
-double hcbd_hc_polymer_energy(const hcbd_hc_world *w)
+double hcbd_hc_world_polymer_energy(const hcbd_hc_world *w)
 {
     double e = 0.0, et = 0.0;
     int a, k;
@@ -9134,7 +9480,7 @@ double hcbd_hc_polymer_energy(const hcbd_hc_world *w)
     return e + 0.5 * w->p.alpha * et;
 }
 
-hcbd_result hcbd_hc_density_range(const hcbd_hc_world *w, double out[3])
+hcbd_result hcbd_hc_world_density_range(const hcbd_hc_world *w, double out[3])
 {
     int i;
     if (!w || !out) return HCBD_ERR_NULL;
@@ -9150,7 +9496,7 @@ hcbd_result hcbd_hc_density_range(const hcbd_hc_world *w, double out[3])
     return HCBD_OK;
 }
 
-hcbd_result hcbd_hc_stress_enable(hcbd_hc_world *w, int on)
+hcbd_result hcbd_hc_world_stress_enable(hcbd_hc_world *w, int on)
 {
     hcbd_result r;
     if (!w) return HCBD_ERR_NULL;
@@ -9159,7 +9505,7 @@ hcbd_result hcbd_hc_stress_enable(hcbd_hc_world *w, int on)
     return r;
 }
 
-hcbd_result hcbd_hc_stress_read(const hcbd_hc_world *w, double out[HCBD_HC_NSTRESS],
+hcbd_result hcbd_hc_world_stress_read(const hcbd_hc_world *w, double out[HCBD_HC_NSTRESS],
                                 int64_t *nsteps)
 {
     if (!w || !out) return HCBD_ERR_NULL;
@@ -9167,7 +9513,7 @@ hcbd_result hcbd_hc_stress_read(const hcbd_hc_world *w, double out[HCBD_HC_NSTRE
     return HCBD_OK;
 }
 
-uint64_t hcbd_hc_state_checksum(const hcbd_hc_world *w)
+uint64_t hcbd_hc_world_checksum(const hcbd_hc_world *w)
 {
     uint64_t h = 0xCBF29CE484222325ULL;
     size_t R = sizeof(hcbd_real), nf, np;
@@ -9260,7 +9606,7 @@ static void hcbd__ck_hc_walk(hcbd__ck *c, void *w)
 static hcbd_result hcbd__hc_ck_load(hcbd_hc_world *w, const void *buf, size_t size)
 {
     hcbd__ck c;
-    hcbd_hc_def def;
+    hcbd_hc_world_def def;
     int64_t cap[3] = {0, 0, 0};
     int nf = 0, np = 0, ready = 0;
     hcbd_result r;
@@ -9319,11 +9665,11 @@ static hcbd_result hcbd__hc_ck_load(hcbd_hc_world *w, const void *buf, size_t si
     return HCBD_OK;
 }
 
-HCBD__WORLD_KIND(hcbd__kind_hc, hcbd_hc_world, hcbd_hc_def, hcbd__hc_check_def,
+HCBD__WORLD_KIND(hcbd__kind_hc, hcbd_hc_world, hcbd_hc_world_def, hcbd__hc_check_def,
                  hcbd_hc_world_bytes, hcbd_hc_world_init, hcbd__ck_hc_walk, hcbd__hc_ck_load,
-                 HCBD__CK_HC, "hcbd_hc_checkpoint_size")
+                 HCBD__CK_HC, "hcbd_hc_world_checkpoint_size")
 
-hcbd_result hcbd_hc_world_create(hcbd_hc_world *w, const hcbd_hc_def *def)
+hcbd_result hcbd_hc_world_create(hcbd_hc_world *w, const hcbd_hc_world_def *def)
 {
     return hcbd__create(&hcbd__kind_hc, w, def);
 }
@@ -9333,37 +9679,37 @@ void hcbd_hc_world_destroy(hcbd_hc_world *w)
     hcbd__destroy(&hcbd__kind_hc, w);
 }
 
-hcbd_result hcbd_hc_set_threads(hcbd_hc_world *w, int n)
+hcbd_result hcbd_hc_world_set_threads(hcbd_hc_world *w, int n)
 {
     return hcbd__set_threads(&hcbd__kind_hc, w, n);
 }
 
-size_t hcbd_hc_checkpoint_size(const hcbd_hc_world *w)
+size_t hcbd_hc_world_checkpoint_size(const hcbd_hc_world *w)
 {
     return hcbd__ck_size(&hcbd__kind_hc, w);
 }
 
-hcbd_result hcbd_hc_checkpoint_save(hcbd_hc_world *w, void *buf, size_t n)
+hcbd_result hcbd_hc_world_checkpoint_save(hcbd_hc_world *w, void *buf, size_t n)
 {
     return hcbd__ck_put(&hcbd__kind_hc, w, buf, n);
 }
 
-hcbd_result hcbd_hc_checkpoint_load(hcbd_hc_world *w, const void *buf, size_t n)
+hcbd_result hcbd_hc_world_checkpoint_load(hcbd_hc_world *w, const void *buf, size_t n)
 {
     return hcbd__ck_get(&hcbd__kind_hc, w, buf, n);
 }
 
-hcbd_result hcbd_hc_save(hcbd_hc_world *w, const char *path)
+hcbd_result hcbd_hc_world_save(hcbd_hc_world *w, const char *path)
 {
     return hcbd__save(&hcbd__kind_hc, w, path);
 }
 
-hcbd_result hcbd_hc_load(hcbd_hc_world *w, const char *path)
+hcbd_result hcbd_hc_world_load(hcbd_hc_world *w, const char *path)
 {
     return hcbd__load(&hcbd__kind_hc, w, path);
 }
 
-hcbd_result hcbd_hc_xyz_write(const hcbd_hc_world *w, FILE *f)
+hcbd_result hcbd_hc_world_write_xyz(const hcbd_hc_world *w, FILE *f)
 {
     int i;
     if (!w || !f) return HCBD_ERR_NULL;
@@ -9384,19 +9730,19 @@ int hcbd_hc_thermo_header(char *buf, size_t size)
                                "ns_per_particle_step");
 }
 
-int hcbd_hc_thermo_line(const hcbd_hc_world *w, double ns_pstep, char *buf, size_t size)
+int hcbd_hc_world_thermo_line(const hcbd_hc_world *w, double ns_pstep, char *buf, size_t size)
 {
     double p[3], phi = 0.0;
     char ns[32];
     int i;
     if (!w) return snprintf(buf, size, "# no world");
-    hcbd_hc_momentum(w, p);
+    hcbd_hc_world_momentum(w, p);
     for (i = 0; w->ready && i < w->np; ++i)
         if (w->pn[i] / w->p.n_max > phi) phi = w->pn[i] / w->p.n_max;
     if (isfinite(ns_pstep)) snprintf(ns, sizeof ns, "%.4g", ns_pstep);
     else snprintf(ns, sizeof ns, "-");
     return snprintf(buf, size, "%lld %.9g %.9g %.6e %.6e %.6e %.6g %lld %s",
-                    (long long)w->step, (double)w->step * w->p.dt, hcbd_hc_temperature(w),
+                    (long long)w->step, (double)w->step * w->p.dt, hcbd_hc_world_temperature(w),
                     p[0], p[1], p[2], phi, (long long)w->npairs, ns);
 }
 #endif /* HCBD_MODEL_HCBD */

@@ -42,7 +42,7 @@ static int disordered(hcbd_hc_world *w, int nf)
     int i, d, c, ok;
     if (!xyz) return 0;
     hcbd_rng_seed(&g, 12345);
-    ok = hcbd_hc_place_fluid_lattice(w, nf) == HCBD_OK;
+    ok = hcbd_hc_world_place_fluid_lattice(w, nf) == HCBD_OK;
     for (c = 0; c < 4 && ok; ++c) {
         double mom[3] = {0, 0, 0};
         for (i = 0; i < nf; ++i) {
@@ -60,7 +60,7 @@ static int disordered(hcbd_hc_world *w, int nf)
             }
         }
         for (i = 0; i < 3 * nf; ++i) v[i] -= mom[i % 3];
-        ok = hcbd_hc_set_fluid(w, nf, xyz, v) == HCBD_OK && hcbd_hc_step(w, 100) == HCBD_OK;
+        ok = hcbd_hc_world_set_fluid(w, nf, xyz, v) == HCBD_OK && hcbd_hc_world_step(w, 100) == HCBD_OK;
     }
     free(xyz);
     return ok;
@@ -70,7 +70,7 @@ static int disordered(hcbd_hc_world *w, int nf)
    fluid + polymers, 3 the same with every optional part off */
 static int time_scene(int kind, int nf, int np, const double L[3], int fluct, int th, result *res)
 {
-    hcbd_hc_def d = hcbd_hc_def_default();
+    hcbd_hc_world_def d = hcbd_hc_world_def_default();
     hcbd_hc_params *p = &d.params;
     hcbd_hc_world w;
     double best = 1e30;
@@ -97,9 +97,9 @@ static int time_scene(int kind, int nf, int np, const double L[3], int fluct, in
     d.polymer_capacity = np;
     ok = hcbd_hc_world_create(&w, &d) == HCBD_OK;
     if (ok && kind == 1) ok = disordered(&w, nf);
-    else if (ok) ok = hcbd_hc_place_fluid_lattice(&w, nf) == HCBD_OK &&
-                      (!np || hcbd_hc_place_polymers_random(&w, np) == HCBD_OK) &&
-                      hcbd_hc_step(&w, 2) == HCBD_OK;
+    else if (ok) ok = hcbd_hc_world_place_fluid_lattice(&w, nf) == HCBD_OK &&
+                      (!np || hcbd_hc_world_place_polymers_random(&w, np) == HCBD_OK) &&
+                      hcbd_hc_world_step(&w, 2) == HCBD_OK;
     if (!ok) {
         fprintf(stderr, "bench_hcbd: %s\n", w.err.msg);
         hcbd_hc_world_destroy(&w);
@@ -107,7 +107,7 @@ static int time_scene(int kind, int nf, int np, const double L[3], int fluct, in
     }
     for (rep = 0; rep < reps; ++rep) {
         double t0 = now();
-        if (hcbd_hc_step(&w, steps) != HCBD_OK) {
+        if (hcbd_hc_world_step(&w, steps) != HCBD_OK) {
             fprintf(stderr, "bench_hcbd: %s\n", w.err.msg);
             hcbd_hc_world_destroy(&w);
             return 0;
@@ -116,7 +116,7 @@ static int time_scene(int kind, int nf, int np, const double L[3], int fluct, in
     }
     res->t = best;
     res->pairs = (double)w.lf.npairs / nf;
-    res->sum = hcbd_hc_state_checksum(&w);
+    res->sum = hcbd_hc_world_checksum(&w);
     hcbd_hc_world_destroy(&w);
     return 1;
 }

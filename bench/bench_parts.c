@@ -27,7 +27,7 @@ static const char *part_name[NPART] = {"all off (Euler pairs, no noise, no polym
 
 static double time_part(int part, double scale, int *n)
 {
-    hcbd_hc_def d = hcbd_hc_def_default();
+    hcbd_hc_world_def d = hcbd_hc_world_def_default();
     hcbd_hc_world w;
     const int nf = 8000, np = 8000;
     const double L = cbrt(nf / (3.0 / (4.0 * 3.14159265358979323846)));
@@ -44,15 +44,15 @@ static double time_part(int part, double scale, int *n)
     d.fluid_capacity = nf;
     d.polymer_capacity = np;
     *n = nf + np;
-    if (hcbd_hc_world_create(&w, &d) != HCBD_OK || hcbd_hc_place_fluid_lattice(&w, nf) != HCBD_OK ||
-        hcbd_hc_place_polymers_random(&w, np) != HCBD_OK ||
-        (part == 6 && hcbd_hc_stress_enable(&w, 1) != HCBD_OK) || hcbd_hc_step(&w, 2) != HCBD_OK) {
+    if (hcbd_hc_world_create(&w, &d) != HCBD_OK || hcbd_hc_world_place_fluid_lattice(&w, nf) != HCBD_OK ||
+        hcbd_hc_world_place_polymers_random(&w, np) != HCBD_OK ||
+        (part == 6 && hcbd_hc_world_stress_enable(&w, 1) != HCBD_OK) || hcbd_hc_world_step(&w, 2) != HCBD_OK) {
         fprintf(stderr, "bench_parts: %s\n", w.err.msg);
         return -1;
     }
     for (rep = 0; rep < 3; ++rep) {
         double t0 = now();
-        if (hcbd_hc_step(&w, steps) != HCBD_OK) {
+        if (hcbd_hc_world_step(&w, steps) != HCBD_OK) {
             fprintf(stderr, "bench_parts: %s\n", w.err.msg);
             best = -1;
             break;
@@ -99,7 +99,7 @@ static double time_part(int part, double scale, int *n)
     }
     if (!melt) {
         melt = (double *)malloc(3 * sizeof(double) * N);
-        if (!melt || hcbd_world_place_lattice(&w, N) != HCBD_OK || hcbd_step(&w, 300) != HCBD_OK ||
+        if (!melt || hcbd_world_place_lattice(&w, N) != HCBD_OK || hcbd_world_step(&w, 300) != HCBD_OK ||
             hcbd_world_get_positions(&w, melt, 0) != HCBD_OK) {
             fprintf(stderr, "bench_parts: melting failed: %s\n", w.err.msg);
             return -1;
@@ -109,7 +109,7 @@ static double time_part(int part, double scale, int *n)
         int i;
         for (i = 0; i < N; ++i) melt[3 * i + 1] += 1.5;
     }
-    if (hcbd_world_set_positions(&w, N, melt) != HCBD_OK || hcbd_step(&w, 20) != HCBD_OK) {
+    if (hcbd_world_set_positions(&w, N, melt) != HCBD_OK || hcbd_world_step(&w, 20) != HCBD_OK) {
         fprintf(stderr, "bench_parts: %s\n", w.err.msg);
         return -1;
     }
@@ -117,10 +117,10 @@ static double time_part(int part, double scale, int *n)
         int i;
         for (i = 0; i < N; ++i) melt[3 * i + 1] -= 1.5;
     }
-    if (part == 5) hcbd_stress_enable(&w, 1);
+    if (part == 5) hcbd_world_stress_enable(&w, 1);
     for (rep = 0; rep < 3; ++rep) {
         double t0 = now();
-        if (hcbd_step(&w, steps) != HCBD_OK) {
+        if (hcbd_world_step(&w, steps) != HCBD_OK) {
             fprintf(stderr, "bench_parts: %s\n", w.err.msg);
             best = -1;
             break;

@@ -121,16 +121,16 @@ int main(int argc, char **argv)
                     return 1;
                 }
                 hcbd_world_place_lattice(&w, N);
-                if (hcbd_step(&w, 200) != HCBD_OK) {
+                if (hcbd_world_step(&w, 200) != HCBD_OK) {
                     fprintf(stderr, "bench_speed: %s\n", w.err.msg);
                     return 1;
                 }
                 r0 = w.nl.n_rebuilds;
-                if (dyn == 2) hcbd_stress_enable(&w, 1);
+                if (dyn == 2) hcbd_world_stress_enable(&w, 1);
                 for (rep = 0; rep < reps; ++rep) {
                     double dtm;
                     t0 = now();
-                    if (hcbd_step(&w, steps) != HCBD_OK) {
+                    if (hcbd_world_step(&w, steps) != HCBD_OK) {
                         fprintf(stderr, "bench_speed: %s\n", w.err.msg);
                         return 1;
                     }
@@ -139,11 +139,11 @@ int main(int argc, char **argv)
                 }
                 printf("%-8s %8d %6d %7d %14.1f %10.1f %10.2f  %016llx\n", names[dyn], N, w.ws.n_art, th,
                        best, 100.0 * (w.nl.n_rebuilds - r0) / (reps * steps), (double)w.nl.npairs / N,
-                       (unsigned long long)hcbd_state_checksum(&w));
+                       (unsigned long long)hcbd_world_checksum(&w));
                 fprintf(csv, "%s,%d,%d,%d,%.2f,%d,%.2f,%.3f,%s,%016llx\n", names[dyn], N, w.ws.n_art, th,
                         best, steps * reps, 100.0 * (w.nl.n_rebuilds - r0) / (reps * steps),
                         (double)w.nl.npairs / N, noise == HCBD_NOISE_UNIFORM ? "uniform" : "gauss",
-                        (unsigned long long)hcbd_state_checksum(&w));
+                        (unsigned long long)hcbd_world_checksum(&w));
                 fflush(stdout);
                 hcbd_world_destroy(&w);
             }

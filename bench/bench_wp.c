@@ -1,7 +1,7 @@
 /* bench_wp: work-precision of GI-BD and the walled channel.  For each
    time step tau/dt = 2.5, 5, 10, 20, 40, 80 at fixed tau, each pair
    integrator (Euler, the papers; Shardlow, exact pairwise OU) and pair
-   noise (Gaussian, uniform), the cost (wall seconds of hcbd_step per unit
+   noise (Gaussian, uniform), the cost (wall seconds of hcbd_world_step per unit
    of simulated time, one thread) against the error from theory (MODEL 10):
 
    gibd temperature   |T/kT - 1| of the background velocities, 1000 ideal
@@ -18,7 +18,7 @@
                       carriers in the no-slip channel (13^3, walls 1.5,
                       tau = 2e-3, xi' = 1.5 as tests/test_walls.c; g = 400
                       for signal over thermal noise), tau/dt <= 20, from the
-                      Newtonian parabola of hcbd_theory_of (mean-field
+                      Newtonian parabola of hcbd_params_theory (mean-field
                       nu = Rc^2/(28 tau), v_max, width).  The measured
                       viscosity of ideal carriers is below mean field
                       (MODEL 10), so this error is mostly a model offset.
@@ -60,11 +60,11 @@ static const char *prec;
 static double equil_arg = -1;
 static int only = 0; /* 1 temperature, 2 nu, 3 channel; 0 all */
 
-/* hcbd_step, timed: only the stepping counts as cost */
+/* hcbd_world_step, timed: only the stepping counts as cost */
 static int step(hcbd_world *w, int n)
 {
     double t0 = now();
-    hcbd_result r = hcbd_step(w, n);
+    hcbd_result r = hcbd_world_step(w, n);
     step_seconds += now() - t0;
     if (r != HCBD_OK) {
         printf("    (failed: %s)\n", w->err.msg);
@@ -159,7 +159,7 @@ static void temperature_point(hcbd_pair_integrator integ, hcbd_noise noise, doub
     ok = step(&w, 20 * every);
     for (k = 0; ok && k < nsamp; ++k) {
         ok = step(&w, every);
-        T[k] = hcbd_temperature(&w);
+        T[k] = hcbd_world_temperature(&w);
     }
     if (ok) {
         block_stats(T, nsamp, 20, &mean, &err);
@@ -214,11 +214,11 @@ static void nu_point(hcbd_pair_integrator integ, hcbd_noise noise, double ratio,
         hcbd_mtcorr_init(&c, 12, P, 2, 1, mem, bytes);
         for (s = 0; ok && s < block_steps; ++s) {
             double j[12], out[3];
-            hcbd_transverse_current(&w, NK, j);
+            hcbd_world_transverse_current(&w, NK, j);
             hcbd_mtcorr_add(&c, j);
             if (s % sample_every == 0) {
                 int i, a;
-                hcbd_friction_average(&w, NK, out);
+                hcbd_world_friction_average(&w, NK, out);
                 mf += out[2] / (p.tau * k * k);
                 hcbd_world_get_positions(&w, xyz, 0);
                 for (a = 0; a < 3; ++a) {
@@ -271,7 +271,7 @@ static void channel_point(hcbd_pair_integrator integ, hcbd_noise noise, double r
     p.wall.beta_max = 5.0;
     p.xip = 1.5;
     p.fext[0] = grav * p.xip * p.tau;
-    hcbd_theory_of(&p, &th);
+    hcbd_params_theory(&p, &th);
     if (!make(&w, p, 406)) return;
     hcbd_world_place_lattice(&w, 406);
     /* start near the developed flow (a parabola with 0.8 of the mean-field
@@ -418,7 +418,7 @@ int main(int argc, char **argv)
     if (quick) tscale *= 0.15;
     ratios = quick ? ratios_quick : ratios_full;
     nr = quick ? 3 : 6;
-    printf("bench_wp: %s build, %s, one thread, cost = hcbd_step seconds per unit simulated time%s\n", prec,
+    printf("bench_wp: %s build, %s, one thread, cost = hcbd_world_step seconds per unit simulated time%s\n", prec,
            HCBD_MODEL == HCBD_MODEL_WALLED ? "GI-BD and walled channel" : "GI-BD only", quick ? " (quick)" : "");
     fflush(stdout);
     /* the float build compares precision on Gaussian noise only */

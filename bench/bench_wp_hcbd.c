@@ -1,6 +1,6 @@
 /* bench_wp_hcbd: work-precision of the HCBD (2018) fluid.  Run time per
    unit of simulated time (wall seconds, one thread, clock_gettime around
-   hcbd_hc_step only) against the error from theory, over the time step dt,
+   hcbd_hc_world_step only) against the error from theory, over the time step dt,
    the kernel support h, the pair integrator (Euler, Shardlow), multiple
    time stepping (substeps) and, through the build, the precision.
 
@@ -15,7 +15,7 @@
                    dt_visc = 0.125 h^2/nu.
      nu            decay of a transverse wave v_y = 0.3 sin(k x) at the
                    smallest k = 2 pi/Lx (20 x 5 x 5 sites, 20 x 7 x 7 at
-                   h = 2.5) by hcbd_hc_transverse_current, from positions
+                   h = 2.5) by hcbd_hc_world_transverse_current, from positions
                    melted with fluctuations, then fluctuations off (no
                    noise: a deterministic fit); the error is |nu_fit/nu - 1|
                    against nu K(k), nu = eta/rho and K(k) the kernel
@@ -75,7 +75,7 @@ static double t_wall, t_sim;
 static int step(hcbd_hc_world *w, int n)
 {
     double t0 = now();
-    hcbd_result r = hcbd_hc_step(w, n);
+    hcbd_result r = hcbd_hc_world_step(w, n);
     t_wall += now() - t0;
     t_sim += n * w->p.dt;
     if (r != HCBD_OK) {
@@ -111,9 +111,9 @@ static void add_row(const char *metric, int integ, double dt, double h, int nsub
 }
 
 /* The fluid scene of tests/test_hcbd.c (fluid_scene) at support h. */
-static hcbd_hc_def scene(int nx, int ny, int nz, double h, double dt, int integ, int nsub, int np)
+static hcbd_hc_world_def scene(int nx, int ny, int nz, double h, double dt, int integ, int nsub, int np)
 {
-    hcbd_hc_def d = hcbd_hc_def_default();
+    hcbd_hc_world_def d = hcbd_hc_world_def_default();
     hcbd_hc_params *p = &d.params;
     p->L[0] = nx * A_LAT;
     p->L[1] = ny * A_LAT;
@@ -150,13 +150,13 @@ static int sites_for(double h, int base)
     return n > base ? n : base;
 }
 
-static int make(hcbd_hc_world *w, const hcbd_hc_def *d)
+static int make(hcbd_hc_world *w, const hcbd_hc_world_def *d)
 {
     if (hcbd_hc_world_create(w, d) != HCBD_OK) {
         printf("    world: %s\n", w->err.msg);
         return 0;
     }
-    if (hcbd_hc_place_fluid_lattice(w, d->fluid_capacity) != HCBD_OK) {
+    if (hcbd_hc_world_place_fluid_lattice(w, d->fluid_capacity) != HCBD_OK) {
         printf("    lattice: %s\n", w->err.msg);
         hcbd_hc_world_destroy(w);
         return 0;
@@ -180,7 +180,7 @@ static void mean_err(const double *x, int n, double *m, double *e)
 static void run_temperature(double dt, double h, int integ)
 {
     const int n = sites_for(h, 6), nb = 10;
-    hcbd_hc_def d = scene(n, n, n, h, dt, integ, 1, 0);
+    hcbd_hc_world_def d = scene(n, n, n, h, dt, integ, 1, 0);
     hcbd_hc_world w;
     hcbd_hc_theory th;
     int every = (int)(0.2 / dt + 0.5), ns, k, b;
@@ -188,7 +188,7 @@ static void run_temperature(double dt, double h, int integ)
     char cfg[128];
     if (every < 1) every = 1;
     ns = (int)(meas / (every * dt) + 0.5) / nb * nb;
-    hcbd_hc_theory_of(&d.params, &th);
+    hcbd_hc_params_theory(&d.params, &th);
     timer_reset();
     if (!make(&w, &d)) return;
     if (!step(&w, (int)(10.0 * tscale / dt + 0.5))) { hcbd_hc_world_destroy(&w); return; }
@@ -196,7 +196,7 @@ static void run_temperature(double dt, double h, int integ)
         double s = 0;
         for (k = 0; k < ns / nb; ++k) {
             if (!step(&w, every)) { hcbd_hc_world_destroy(&w); return; }
-            s += hcbd_hc_temperature(&w) / d.params.kT;
+            s += hcbd_hc_world_temperature(&w) / d.params.kT;
         }
         blk[b] = s / (ns / nb);
     }
@@ -232,7 +232,7 @@ static double *melt_xyz[NMELT];
 
 static const double *melted(double h, int nx, int ny, int nz)
 {
-    hcbd_hc_def d;
+    hcbd_hc_world_def d;
     hcbd_hc_world w;
     int k, i;
     for (k = 0; k < NMELT; ++k)
@@ -241,7 +241,7 @@ static const double *melted(double h, int nx, int ny, int nz)
     if (k == NMELT) return NULL;
     d = scene(nx, ny, nz, h, 0.04, HCBD_PAIR_SHARDLOW, 1, 0);
     if (!make(&w, &d)) return NULL;
-    if (hcbd_hc_step(&w, (int)(10.0 * tscale / 0.04)) != HCBD_OK) {
+    if (hcbd_hc_world_step(&w, (int)(10.0 * tscale / 0.04)) != HCBD_OK) {
         printf("    melt: %s\n", w.err.msg);
         hcbd_hc_world_destroy(&w);
         return NULL;
@@ -260,7 +260,7 @@ static const double *melted(double h, int nx, int ny, int nz)
 static void run_nu(double dt, double h, int integ)
 {
     const int ny = sites_for(h, 5), nx = 20, N = nx * ny * ny, nsamp = 41;
-    hcbd_hc_def d = scene(nx, ny, ny, h, dt, integ, 1, 0);
+    hcbd_hc_world_def d = scene(nx, ny, ny, h, dt, integ, 1, 0);
     hcbd_hc_world w;
     const double Amp = 0.3, k = 2 * PI_ / d.params.L[0], span = 20.0 * (quick ? 0.5 : 1.0);
     const double *xyz = melted(h, nx, ny, ny);
@@ -273,7 +273,7 @@ static void run_nu(double dt, double h, int integ)
     v = (double *)calloc(3 * (size_t)N, sizeof(double));
     for (i = 0; i < N; ++i) v[3 * i + 1] = Amp * sin(k * xyz[3 * i]);
     timer_reset();
-    if (hcbd_hc_world_create(&w, &d) != HCBD_OK || hcbd_hc_set_fluid(&w, N, xyz, v) != HCBD_OK) {
+    if (hcbd_hc_world_create(&w, &d) != HCBD_OK || hcbd_hc_world_set_fluid(&w, N, xyz, v) != HCBD_OK) {
         printf("    nu set-up: %s\n", w.err.msg);
         free(v);
         return;
@@ -281,7 +281,7 @@ static void run_nu(double dt, double h, int integ)
     free(v);
     for (n = 0; n < nsamp; ++n) {
         if (n > 0 && !step(&w, every)) { hcbd_hc_world_destroy(&w); return; }
-        hcbd_hc_transverse_current(&w, 1, j);
+        hcbd_hc_world_transverse_current(&w, 1, j);
         tt[n] = n * every * dt;
         la[n] = log(-2 * j[1] / (Amp * N));
     }
@@ -356,7 +356,7 @@ static void run_poiseuille(const char *metric, double dt, double h, int integ, i
 {
     const int nxz = sites_for(h, 5), N = nxz * nyf * nxz, nb = 5;
     const double g = 0.05, nu = 1.0;
-    hcbd_hc_def d = scene(nxz, nyf, nxz, h, dt, integ, nsub, np);
+    hcbd_hc_world_def d = scene(nxz, nyf, nxz, h, dt, integ, nsub, np);
     hcbd_hc_world w;
     const double L = d.params.L[1], W = 0.5 * L, A = g / (2 * nu);
     double *xyz, *v, mean = 0, l2b[5], l2, el2, tot_v[16] = {0}, tot_f[16] = {0}, tot_y[16] = {0};
@@ -385,8 +385,8 @@ static void run_poiseuille(const char *metric, double dt, double h, int integ, i
     }
     for (i = 0; i < N; ++i) v[3 * i] -= mean;
     /* start on the kernel-smoothed profile: the transient left is small */
-    if (hcbd_hc_set_fluid(&w, N, xyz, v) != HCBD_OK ||
-        (np && hcbd_hc_place_polymers_random(&w, np) != HCBD_OK)) {
+    if (hcbd_hc_world_set_fluid(&w, N, xyz, v) != HCBD_OK ||
+        (np && hcbd_hc_world_place_polymers_random(&w, np) != HCBD_OK)) {
         printf("    Poiseuille set-up: %s\n", w.err.msg);
         free(xyz);
         free(v);

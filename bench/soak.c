@@ -153,7 +153,7 @@ typedef struct gibd_ctx {
     int channel, nslab;
 } gibd_ctx;
 
-static hcbd_result gibd_step(void *ctx, int nsteps) { return hcbd_step(&((gibd_ctx *)ctx)->w, nsteps); }
+static hcbd_result gibd_step(void *ctx, int nsteps) { return hcbd_world_step(&((gibd_ctx *)ctx)->w, nsteps); }
 static const char *gibd_message(void *ctx) { return ((gibd_ctx *)ctx)->w.err.msg; }
 
 static void gibd_destroy(void *ctx)
@@ -174,9 +174,9 @@ static void gibd_sample(void *ctx, double *out)
     double P[3];
     int a;
     hcbd_world_get_positions(&g->w, g->xyz, 0);
-    hcbd_momentum(&g->w, P);
+    hcbd_world_momentum(&g->w, P);
     if (!g->channel) {
-        out[0] = hcbd_temperature(&g->w);
+        out[0] = hcbd_world_temperature(&g->w);
         out[1] = momentum_change(P, g->p0, g->pscale);
         out[2] = 0;
         for (a = 0; a < 3; ++a) out[2] += slab_rms(g->xyz, g->w.n, a, 0, p->L[a], g->nslab) / 3;
@@ -195,7 +195,7 @@ static void gibd_note(void *ctx, char *buf, size_t size)
     gibd_ctx *g = (gibd_ctx *)ctx;
     int64_t last = -1, pen;
     int id = -1;
-    pen = hcbd_wall_penetrations(&g->w, &last, &id);
+    pen = hcbd_world_wall_penetrations(&g->w, &last, &id);
     snprintf(buf, size, "wall penetrations %lld particle-steps (last step %lld, id %d)",
              (long long)pen, (long long)last, id);
 }
@@ -217,7 +217,7 @@ static gibd_ctx *gibd_alloc(const hcbd_world_def *def, int n, int channel, int n
         free(g);
         return NULL;
     }
-    hcbd_momentum(&g->w, g->p0);
+    hcbd_world_momentum(&g->w, g->p0);
     g->pscale = sqrt(n * g->w.m * def->params.kT);
     return g;
 }
@@ -293,7 +293,7 @@ typedef struct hc_ctx {
     double p0[3], pscale;
 } hc_ctx;
 
-static hcbd_result hc_step(void *ctx, int nsteps) { return hcbd_hc_step(&((hc_ctx *)ctx)->w, nsteps); }
+static hcbd_result hc_step(void *ctx, int nsteps) { return hcbd_hc_world_step(&((hc_ctx *)ctx)->w, nsteps); }
 static const char *hc_message(void *ctx) { return ((hc_ctx *)ctx)->w.err.msg; }
 
 static void hc_destroy(void *ctx)
@@ -309,19 +309,19 @@ static void hc_sample(void *ctx, double *out)
 {
     hc_ctx *h = (hc_ctx *)ctx;
     double P[3], r[3];
-    hcbd_hc_momentum(&h->w, P);
-    hcbd_hc_density_range(&h->w, r);
-    out[0] = hcbd_hc_temperature(&h->w);
+    hcbd_hc_world_momentum(&h->w, P);
+    hcbd_hc_world_density_range(&h->w, r);
+    out[0] = hcbd_hc_world_temperature(&h->w);
     out[1] = momentum_change(P, h->p0, h->pscale);
     out[2] = r[1] - r[0];
-    out[3] = hcbd_hc_polymer_energy(&h->w) / (h->w.np * h->w.p.kT);
+    out[3] = hcbd_hc_world_polymer_energy(&h->w) / (h->w.np * h->w.p.kT);
 }
 
 static int scene_hcbd(sim *s, const opts *o, double steps)
 {
     const double pi = 3.14159265358979323846, a = cbrt(4 * pi / 3); /* lattice spacing */
     const int nside = 6, npoly = 108;
-    hcbd_hc_def d = hcbd_hc_def_default();
+    hcbd_hc_world_def d = hcbd_hc_world_def_default();
     hcbd_hc_params *p = &d.params;
     hc_ctx *h = (hc_ctx *)calloc(1, sizeof *h);
     if (!h) return 0;
@@ -347,13 +347,13 @@ static int scene_hcbd(sim *s, const opts *o, double steps)
     d.fluid_capacity = nside * nside * nside;
     d.polymer_capacity = npoly;
     if (hcbd_hc_world_create(&h->w, &d) != HCBD_OK ||
-        hcbd_hc_place_fluid_lattice(&h->w, d.fluid_capacity) != HCBD_OK ||
-        hcbd_hc_place_polymers_random(&h->w, npoly) != HCBD_OK) {
+        hcbd_hc_world_place_fluid_lattice(&h->w, d.fluid_capacity) != HCBD_OK ||
+        hcbd_hc_world_place_polymers_random(&h->w, npoly) != HCBD_OK) {
         fprintf(stderr, "soak: set-up failed: %s\n", h->w.err.msg);
         free(h);
         return 0;
     }
-    hcbd_hc_momentum(&h->w, h->p0);
+    hcbd_hc_world_momentum(&h->w, h->p0);
     h->pscale = sqrt(h->w.nf * h->w.m * p->kT);
     s->ctx = h;
     s->n = h->w.nf + h->w.np;
@@ -514,13 +514,13 @@ static int soak(sim *s, const opts *o, double steps)
     wall = now() - t0;
     ps = (double)k * every * s->n;
     if (s->note) s->note(s->ctx, note, sizeof note);
-    printf("# %s: %d particles, %d steps (%d samples), %.1f s, %.0f ns per particle-step, hcbd_step %s%s%s\n",
+    printf("# %s: %d particles, %d steps (%d samples), %.1f s, %.0f ns per particle-step, hcbd_world_step %s%s%s\n",
            s->name, s->n, k * every, k, wall, 1e9 * wall / fmax(ps, 1), hcbd_result_name(r),
            note[0] ? "; " : "", note);
     if (r != HCBD_OK) {
-        printf("%-8s %10.4g %-20s step error %s: %s  FAIL\n", s->name, ps, "hcbd_step", hcbd_result_name(r),
+        printf("%-8s %10.4g %-20s step error %s: %s  FAIL\n", s->name, ps, "hcbd_world_step", hcbd_result_name(r),
                s->message(s->ctx));
-        if (csv) fprintf(csv, "%s,%.0f,hcbd_step,,,,,,,,,,,,FAIL\n", s->name, ps);
+        if (csv) fprintf(csv, "%s,%.0f,hcbd_world_step,,,,,,,,,,,,FAIL\n", s->name, ps);
         ++fails;
     }
     for (j = 0; j < s->nobs; ++j) {

@@ -1,5 +1,5 @@
 /* bench/stability: where runs really fail, against the limits that
-   hcbd_stability / hcbd_hc_stability predict.
+   hcbd_params_stability / hcbd_hc_params_stability predict.
 
    For each scene the time step is scanned upward, doubling from a quarter
    of the predicted bound until a step returns an error code, and the
@@ -17,7 +17,7 @@
               is wider than 1.5).
 
    The predicted bound of each limit is the dt where its margin reaches 1
-   (found by bisection on hcbd_stability with the scene's dt dependence,
+   (found by bisection on hcbd_params_stability with the scene's dt dependence,
    tau = 36 dt included); the binding limit is the one with the smallest
    bound among those guarded by a result code ("accuracy" and "speed"
    limits are compared with dt_T10 instead).
@@ -43,7 +43,7 @@ typedef struct scene {
     double dt0_factor;  /* first dt = dt0_factor * predicted bound */
     double dtmax_factor;
 #if HCBD_MODEL == HCBD_MODEL_HCBD
-    hcbd_hc_def d;
+    hcbd_hc_world_def d;
 #else
     hcbd_world_def d;
 #endif
@@ -83,7 +83,7 @@ static hcbd_hc_params params_at(const scene *s, double dt)
 static hcbd_result limits_at(const scene *s, double dt, hcbd_limit *l, int *n)
 {
     hcbd_hc_params p = params_at(s, dt);
-    return hcbd_hc_stability(&p, l, n);
+    return hcbd_hc_params_stability(&p, l, n);
 }
 
 /* The lattice of 806 blobs has vacancies that relax slowly, heating the
@@ -100,7 +100,7 @@ static int ncache;
 
 static const double *equilibrated(const scene *s, const double **v)
 {
-    hcbd_hc_def d = s->d;
+    hcbd_hc_world_def d = s->d;
     hcbd_hc_world w;
     hcbd_hc_theory th;
     int k, i;
@@ -110,13 +110,13 @@ static const double *equilibrated(const scene *s, const double **v)
             return cache[k].xyz;
         }
     if (ncache == NCACHE) return *v = NULL, NULL;
-    hcbd_hc_theory_of(&d.params, &th);
+    hcbd_hc_params_theory(&d.params, &th);
     d.params.dt = 4 * th.dt_visc < 2 * th.dt_sound ? 4 * th.dt_visc : 2 * th.dt_sound;
     d.params.pair_integrator = HCBD_PAIR_SHARDLOW;
     d.params.substeps = 1;
     d.params.threads = threads;
-    if (hcbd_hc_world_create(&w, &d) != HCBD_OK || hcbd_hc_place_fluid_lattice(&w, s->n) != HCBD_OK ||
-        hcbd_hc_step(&w, 300) != HCBD_OK) {
+    if (hcbd_hc_world_create(&w, &d) != HCBD_OK || hcbd_hc_world_place_fluid_lattice(&w, s->n) != HCBD_OK ||
+        hcbd_hc_world_step(&w, 300) != HCBD_OK) {
         fprintf(stderr, "bench_stability: equilibration failed: %s\n", w.err.msg);
         hcbd_hc_world_destroy(&w);
         return *v = NULL, NULL;
@@ -143,7 +143,7 @@ static const double *equilibrated(const scene *s, const double **v)
 
 static void run_trial(const scene *s, double dt, trial *t)
 {
-    hcbd_hc_def d = s->d;
+    hcbd_hc_world_def d = s->d;
     hcbd_hc_world w;
     double tsum = 0;
     int k, ns = 0, chunk = 5;
@@ -154,11 +154,11 @@ static void run_trial(const scene *s, double dt, trial *t)
     t->step = 0;
     t->code = hcbd_hc_world_create(&w, &d);
     if (t->code == HCBD_OK)
-        t->code = xyz ? hcbd_hc_set_fluid(&w, s->n, xyz, v) : hcbd_hc_place_fluid_lattice(&w, s->n);
+        t->code = xyz ? hcbd_hc_world_set_fluid(&w, s->n, xyz, v) : hcbd_hc_world_place_fluid_lattice(&w, s->n);
     for (k = 0; t->code == HCBD_OK && k < s->steps; k += chunk) {
-        t->code = hcbd_hc_step(&w, chunk);
+        t->code = hcbd_hc_world_step(&w, chunk);
         if (t->code == HCBD_OK && k >= s->steps / 2) {
-            tsum += hcbd_hc_temperature(&w);
+            tsum += hcbd_hc_world_temperature(&w);
             ++ns;
         }
     }
@@ -180,7 +180,7 @@ static hcbd_params params_at(const scene *s, double dt)
 static hcbd_result limits_at(const scene *s, double dt, hcbd_limit *l, int *n)
 {
     hcbd_params p = params_at(s, dt);
-    return hcbd_stability(&p, l, n);
+    return hcbd_params_stability(&p, l, n);
 }
 
 static void run_trial(const scene *s, double dt, trial *t)
@@ -197,9 +197,9 @@ static void run_trial(const scene *s, double dt, trial *t)
     t->code = hcbd_world_create(&w, &d);
     if (t->code == HCBD_OK) t->code = hcbd_world_place_lattice(&w, s->n);
     for (k = 0; t->code == HCBD_OK && k < s->steps; k += chunk) {
-        t->code = hcbd_step(&w, chunk);
+        t->code = hcbd_world_step(&w, chunk);
         if (t->code == HCBD_OK && k >= s->steps / 2) {
-            tsum += hcbd_temperature(&w);
+            tsum += hcbd_world_temperature(&w);
             ++ns;
         }
     }
@@ -423,7 +423,7 @@ static int build_scenes(scene *sc, int quick)
         for (k = 0; k < nm; ++k) {
             scene *s = sc + n++;
             memset(s, 0, sizeof *s);
-            s->d = hcbd_hc_def_default();
+            s->d = hcbd_hc_world_def_default();
             s->d.fluid_capacity = s->n = 806;
             s->d.params.fluctuations = 1;
             s->d.params.eta *= mul[k][0];
@@ -443,7 +443,7 @@ static int build_scenes(scene *sc, int quick)
         for (k = 0; k < 2; ++k) {
             scene *s = sc + n++;
             memset(s, 0, sizeof *s);
-            s->d = hcbd_hc_def_default();
+            s->d = hcbd_hc_world_def_default();
             s->d.fluid_capacity = s->n = 806;
             s->d.params.fluctuations = 1;
             s->d.params.eta *= mst[k][0];

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # bench/stability.sh: the stability map of both models (bench/stability.c),
 # then, with gnuplot, the figure of the measured failing dt against the
-# limit hcbd_stability predicts; CSVs and figure copied to bench/results/.
+# limit hcbd_params_stability predicts; CSVs and figure copied to bench/results/.
 #
 #   make bench-stability          (builds both binaries, then runs this)
 #   bench/stability.sh [outdir]   (default out/bench; about 3 minutes)

@@ -1,14 +1,14 @@
 /* wp_estimate: the one estimator of bench/peers/wp.sh, applied alike to
    hcbd's and LAMMPS's dumped configurations of the 2014 star fluid.  It
    reads frames of a LAMMPS "dump custom ... id x y z" (sorted or not) or
-   of hcbd's extended XYZ (hcbd_xyz_write), cubic periodic box, and
+   of hcbd's extended XYZ (hcbd_world_write_xyz), cubic periodic box, and
    computes from the positions alone, with the star potential written here
    from 2014 eq. 28 (f arms, sigma = eps = 1, cut rcut):
      T_conf = <sum_i |F_i|^2> / <sum_i lap_i U>   (Rugh; kT = 1)
    as the ratio of block sums over 20 blocks of consecutive frames (error:
    the standard error of the 20 block ratios), and g(r) on [0, rmax) in
    bins of dr, with the error of each bin from the same blocks;
-   T_conf_all is the ratio over every frame read (as hcbd_config_temperature
+   T_conf_all is the ratio over every frame read (as hcbd_world_config_temperature
    summed over the same frames, which wp.sh compares).
    With ref=FILE (a g file of an earlier call) it also prints
      g_err   = sqrt(mean over bins in [rlo, rmax) of (g - g_ref)^2)

@@ -14,7 +14,7 @@
    (data=FILE: positions, velocities and rho_i = m n_i, hcbd's summation
    density at the start, so that LAMMPS's continuity density starts where
    hcbd's summation starts).  Prints seconds_per_time_unit: the wall time
-   of the hcbd_hc_step calls alone per unit of simulated time.
+   of the hcbd_hc_world_step calls alone per unit of simulated time.
 
    Fit mode (both codes): the decay rate G of the amplitude sqrt(S^2+C^2)
    by least squares on its logarithm, nu_fit = G / k^2, and its ratio to
@@ -31,9 +31,9 @@
 #define A_LAT 1.6119919540164696 /* (4 pi / 3)^(1/3): one site per 1/nbar */
 #define H 2.0
 
-static hcbd_hc_def scene(int nx, int ny, double dt, double nu, double c, int integ, unsigned long long seed)
+static hcbd_hc_world_def scene(int nx, int ny, double dt, double nu, double c, int integ, unsigned long long seed)
 {
-    hcbd_hc_def d = hcbd_hc_def_default();
+    hcbd_hc_world_def d = hcbd_hc_world_def_default();
     hcbd_hc_params *p = &d.params;
     p->L[0] = nx * A_LAT;
     p->L[1] = p->L[2] = ny * A_LAT;
@@ -160,7 +160,7 @@ int main(int argc, char **argv)
     int nx = 20, ny = 10, samples = 41, integ = HCBD_PAIR_SHARDLOW, lucy = -1, i, s, every, N, quench;
     unsigned long long seed = 7;
     const char *data = NULL, *series = NULL, *fitf = NULL;
-    hcbd_hc_def d;
+    hcbd_hc_world_def d;
     hcbd_hc_world w;
     FILE *f;
     for (i = 1; i < argc; ++i) {
@@ -201,8 +201,8 @@ int main(int argc, char **argv)
     }
     /* the melt: the same positions whatever nu, c and dt */
     d = scene(nx, ny, 0.04, 1.0, 2.5, HCBD_PAIR_SHARDLOW, seed);
-    if (hcbd_hc_world_create(&w, &d) != HCBD_OK || hcbd_hc_place_fluid_lattice(&w, d.fluid_capacity) != HCBD_OK ||
-        hcbd_hc_step(&w, 250) != HCBD_OK) {
+    if (hcbd_hc_world_create(&w, &d) != HCBD_OK || hcbd_hc_world_place_fluid_lattice(&w, d.fluid_capacity) != HCBD_OK ||
+        hcbd_hc_world_step(&w, 250) != HCBD_OK) {
         fprintf(stderr, "wp_sph: melt: %s\n", w.err.msg);
         return 1;
     }
@@ -226,8 +226,8 @@ int main(int argc, char **argv)
            chaotic one: it differs from step to step); 10 time units
            without fluctuations let the viscosity drain them */
         d.params.fluctuations = 0;
-        if (hcbd_hc_world_create(&w, &d) != HCBD_OK || hcbd_hc_set_fluid(&w, N, xyz, v) != HCBD_OK ||
-            hcbd_hc_step(&w, 250) != HCBD_OK) {
+        if (hcbd_hc_world_create(&w, &d) != HCBD_OK || hcbd_hc_world_set_fluid(&w, N, xyz, v) != HCBD_OK ||
+            hcbd_hc_world_step(&w, 250) != HCBD_OK) {
             fprintf(stderr, "wp_sph: quench: %s\n", w.err.msg);
             return 1;
         }
@@ -245,7 +245,7 @@ int main(int argc, char **argv)
         fprintf(stderr, "wp_sph: cannot write %s\n", data);
         return 1;
     }
-    if (hcbd_hc_world_create(&w, &d) != HCBD_OK || hcbd_hc_set_fluid(&w, N, xyz, v) != HCBD_OK) {
+    if (hcbd_hc_world_create(&w, &d) != HCBD_OK || hcbd_hc_world_set_fluid(&w, N, xyz, v) != HCBD_OK) {
         fprintf(stderr, "wp_sph: %s\n", w.err.msg);
         return 1;
     }
@@ -261,7 +261,7 @@ int main(int argc, char **argv)
     for (s = 0; s < samples; ++s) {
         if (s > 0) {
             const double t0 = now();
-            hcbd_result r = hcbd_hc_step(&w, every);
+            hcbd_result r = hcbd_hc_world_step(&w, every);
             spent += now() - t0;
             if (r != HCBD_OK) {
                 fprintf(f, "# stopped: %s\n", w.err.msg);
@@ -276,7 +276,7 @@ int main(int argc, char **argv)
     fclose(f);
     printf("seconds_per_time_unit=%.6g N=%d L=%.17g steps=%d quench_vrms=%.3g checksum=%016llx\n",
            spent / ((samples - 1) * every * dt), N, d.params.L[0], (samples - 1) * every, vrms,
-           (unsigned long long)hcbd_hc_state_checksum(&w));
+           (unsigned long long)hcbd_hc_world_checksum(&w));
     hcbd_hc_world_destroy(&w);
     return 0;
 }

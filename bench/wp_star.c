@@ -2,10 +2,10 @@
    (bench/peers/wp.sh).  The 2014 star fluid (f = 128, n# = 0.24, Rc =
    rcut = 2.5, tau = 3.6e-3, kT = xi = xi' = 1) of N particles from a
    simple cubic lattice: eq time units of equilibration, then time units
-   timed, with a frame of positions (extended XYZ, hcbd_xyz_write) every
+   timed, with a frame of positions (extended XYZ, hcbd_world_write_xyz) every
    `every` time units written outside the timed calls.  Prints
-   seconds_per_time_unit (the wall time of the hcbd_step calls alone, per
-   unit of simulated time), T_conf_api (hcbd_config_temperature over all
+   seconds_per_time_unit (the wall time of the hcbd_world_step calls alone, per
+   unit of simulated time), T_conf_api (hcbd_world_config_temperature over all
    frames, which wp.sh holds against wp_estimate's reading of the same
    frames) and the state checksum; wp_estimate reads the frames with the
    estimator it applies to LAMMPS's dumps.
@@ -57,7 +57,7 @@ int main(int argc, char **argv)
     d.params.L[0] = d.params.L[1] = d.params.L[2] = L;
     d.params.dt = dt;
     if (hcbd_world_create(&w, &d) != HCBD_OK || hcbd_world_place_lattice(&w, N) != HCBD_OK ||
-        hcbd_step(&w, (int)(eq / dt + 0.5)) != HCBD_OK) {
+        hcbd_world_step(&w, (int)(eq / dt + 0.5)) != HCBD_OK) {
         fprintf(stderr, "wp_star: %s\n", w.err.msg);
         return 1;
     }
@@ -69,18 +69,18 @@ int main(int argc, char **argv)
     blocks = (int)(T / (ke * dt) + 0.5);
     for (k = 0; k < blocks; ++k) {
         const double t0 = now();
-        if (hcbd_step(&w, ke) != HCBD_OK) {
+        if (hcbd_world_step(&w, ke) != HCBD_OK) {
             fprintf(stderr, "wp_star: %s\n", w.err.msg);
             return 1;
         }
         spent += now() - t0;
-        hcbd_xyz_write(&w, f, NULL, 0);
-        if (hcbd_config_temperature(&w, tc) == HCBD_OK) { F2 += tc[0]; lap += tc[1]; }
+        hcbd_world_write_xyz(&w, f, NULL, 0);
+        if (hcbd_world_config_temperature(&w, tc) == HCBD_OK) { F2 += tc[0]; lap += tc[1]; }
     }
     fclose(f);
     printf("seconds_per_time_unit=%.6g steps=%lld frames=%d T_conf_api=%.9f checksum=%016llx\n",
            spent / (blocks * ke * dt), (long long)blocks * ke, blocks, F2 / lap,
-           (unsigned long long)hcbd_state_checksum(&w));
+           (unsigned long long)hcbd_world_checksum(&w));
     hcbd_world_destroy(&w);
     return 0;
 }

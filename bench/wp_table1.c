@@ -71,7 +71,7 @@ static int parse_list(const char *v, double *x, int max)
    per block of half a tau_lambda. */
 static int run(const hcbd_hc_params *base, int np, cfg c, double wi, int startup, int nblk, result *r)
 {
-    hcbd_hc_def def = hcbd_hc_def_default();
+    hcbd_hc_world_def def = hcbd_hc_world_def_default();
     hcbd_hc_world w;
     const double tl = base->tau_lambda; /* in time units of 1 us */
     double *z0 = NULL;
@@ -92,24 +92,24 @@ static int run(const hcbd_hc_params *base, int np, cfg c, double wi, int startup
     }
     /* the same start for every configuration: lattice, random polymers of
        the same seed, lambdas at equilibrium */
-    if (hcbd_hc_place_fluid_lattice(&w, nf) != HCBD_OK || hcbd_hc_place_polymers_random(&w, np) != HCBD_OK ||
+    if (hcbd_hc_world_place_fluid_lattice(&w, nf) != HCBD_OK || hcbd_hc_world_place_polymers_random(&w, np) != HCBD_OK ||
         !(z0 = (double *)malloc(sizeof(double) * (size_t)np)))
         goto fail;
     r->wall = now();
-    if (hcbd_hc_step(&w, startup * 2 * per) != HCBD_OK) goto fail;
+    if (hcbd_hc_world_step(&w, startup * 2 * per) != HCBD_OK) goto fail;
     for (b = 0; b < nblk; ++b) {
         double s[HCBD_HC_NSTRESS], m = 0;
         int k, t;
         for (a = 0; a < np; ++a) z0[a] = w.pz[a];
-        hcbd_hc_stress_enable(&w, 1);
+        hcbd_hc_world_stress_enable(&w, 1);
         r->pairs[b] = r->T[b] = 0;
         for (k = 0; k < 10; ++k) { /* ten samples of the pair count and T */
             t = per / 10 + (k < per % 10);
-            if (hcbd_hc_step(&w, t) != HCBD_OK) goto fail;
+            if (hcbd_hc_world_step(&w, t) != HCBD_OK) goto fail;
             r->pairs[b] += (double)w.npairs / np / 10;
-            r->T[b] += hcbd_hc_temperature(&w) / w.p.kT / 10;
+            r->T[b] += hcbd_hc_world_temperature(&w) / w.p.kT / 10;
         }
-        hcbd_hc_stress_read(&w, s, NULL);
+        hcbd_hc_world_stress_read(&w, s, NULL);
         r->eta[b] = s[HCBD_HC_S_TOTAL] / w.p.gdot / w.p.eta;
         r->fluid[b] = s[HCBD_HC_S_FLUID] / w.p.gdot / w.p.eta;
         r->poly[b] = s[HCBD_HC_S_POLYMER] / w.p.gdot / w.p.eta;
@@ -164,7 +164,7 @@ int main(int argc, char **argv)
     unsigned long long seed = 1;
     const char *out = "bench/results";
     char msg[256], path[512];
-    hcbd_hc_si si = hcbd_hc_si_table1();
+    hcbd_hc_si si = hcbd_hc_si_default();
     hcbd_hc_params p;
     FILE *f;
     for (k = 1; k < argc; ++k) {
@@ -197,7 +197,7 @@ int main(int argc, char **argv)
         fprintf(stderr, "wp_table1: bad Wi, cfg, startup, blocks (2..%d), C or L (>= 8)\n", MAXBLK);
         return 2;
     }
-    if (hcbd_hc_params_si(&si, 1e-6, &p, msg, sizeof msg) != HCBD_OK) {
+    if (hcbd_hc_si_params(&si, 1e-6, &p, msg, sizeof msg) != HCBD_OK) {
         fprintf(stderr, "wp_table1: %s\n", msg);
         return 2;
     }

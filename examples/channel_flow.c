@@ -198,7 +198,7 @@ int main(int argc, char **argv)
         print_limits(p);
         if (!world_start(&c, &w)) return 2;
         if (c.restart[0]) xips[r] = p->xip; /* the checkpoint's parameters, its flow developed */
-        hcbd_theory_of(p, &th);
+        hcbd_params_theory(p, &th);
         mem = (double *)malloc(bytes);
         out = (double *)malloc((size_t)nslab * 8 * sizeof(double));
         if (!mem || !out || (!c.restart[0] && hcbd_world_place_lattice(&w, c.N) != HCBD_OK) ||
@@ -273,8 +273,8 @@ int main(int argc, char **argv)
         slip_err = fit_err(C, gs);
         memcpy(fig_q[r], q, sizeof q);
         fig_vmax[r][0] = vmax; fig_vmax[r][1] = vmax_err; fig_vmax[r][2] = th.v_max;
-        pen = hcbd_wall_penetrations(&w, NULL, NULL);
-        checksum = (checksum ^ hcbd_state_checksum(&w)) * 0x100000001B3ULL;
+        pen = hcbd_world_wall_penetrations(&w, NULL, NULL);
+        checksum = (checksum ^ hcbd_world_checksum(&w)) * 0x100000001B3ULL;
         {
             char name[64];
             snprintf(name, sizeof name, "profile_xip%g.csv", xips[r]);

@@ -476,19 +476,19 @@ static inline void progress(const config *c, int done, int total, const struct t
    traj.gdot2.xyz); label NULL keeps the names.  Step through run_steps. */
 #if HCBD_MODEL == HCBD_MODEL_HCBD
 typedef hcbd_hc_world ex_world;
-#define EX_STEP hcbd_hc_step
-#define EX_XYZ(w, f) hcbd_hc_xyz_write(w, f)
+#define EX_STEP hcbd_hc_world_step
+#define EX_XYZ(w, f) hcbd_hc_world_write_xyz(w, f)
 #define EX_THERMO_HEADER hcbd_hc_thermo_header
-#define EX_THERMO_LINE hcbd_hc_thermo_line
-#define EX_SAVE hcbd_hc_save
+#define EX_THERMO_LINE hcbd_hc_world_thermo_line
+#define EX_SAVE hcbd_hc_world_save
 #define EX_NPART(w) ((w)->nf + (w)->np)
 #else
 typedef hcbd_world ex_world;
-#define EX_STEP hcbd_step
-#define EX_XYZ(w, f) hcbd_xyz_write(w, f, NULL, 0)
+#define EX_STEP hcbd_world_step
+#define EX_XYZ(w, f) hcbd_world_write_xyz(w, f, NULL, 0)
 #define EX_THERMO_HEADER hcbd_thermo_header
-#define EX_THERMO_LINE hcbd_thermo_line
-#define EX_SAVE hcbd_save
+#define EX_THERMO_LINE hcbd_world_thermo_line
+#define EX_SAVE hcbd_world_save
 #define EX_NPART(w) ((w)->n)
 #endif
 
@@ -630,11 +630,11 @@ static inline int world_start(config *c, hcbd_world *w)
             return 0;
         }
     }
-    if (hcbd_load(w, c->restart) != HCBD_OK) {
+    if (hcbd_world_load(w, c->restart) != HCBD_OK) {
         fprintf(stderr, "%s: restart=%s: %s\n", c->name, c->restart, w->err.msg);
         return 0;
     }
-    if (hcbd_set_threads(w, threads) != HCBD_OK) {
+    if (hcbd_world_set_threads(w, threads) != HCBD_OK) {
         fprintf(stderr, "%s: %s\n", c->name, w->err.msg);
         hcbd_world_destroy(w);
         return 0;
@@ -657,9 +657,8 @@ typedef struct { int nf, np; double *fluid, *poly; } hc_config;
 static inline int hc_restart(const config *c, hc_config *r)
 {
     hcbd_hc_world w;
-    int i;
     memset(r, 0, sizeof *r);
-    if (hcbd_hc_load(&w, c->restart) != HCBD_OK) {
+    if (hcbd_hc_world_load(&w, c->restart) != HCBD_OK) {
         fprintf(stderr, "%s: restart=%s: %s\n", c->name, c->restart, w.err.msg);
         return 0;
     }
@@ -672,14 +671,8 @@ static inline int hc_restart(const config *c, hc_config *r)
         hcbd_hc_world_destroy(&w);
         return 0;
     }
-    for (i = 0; i < w.nf; ++i) {
-        double *x = r->fluid + 3 * i, *v = r->fluid + 3 * ((size_t)w.nf + i);
-        x[0] = w.fx[i]; x[1] = w.fy[i]; x[2] = w.fz[i];
-        v[0] = w.fvx[i]; v[1] = w.fvy[i]; v[2] = w.fvz[i];
-    }
-    for (i = 0; i < w.np; ++i) {
-        r->poly[3 * i] = w.px[i]; r->poly[3 * i + 1] = w.py[i]; r->poly[3 * i + 2] = w.pz[i];
-    }
+    hcbd_hc_world_get_fluid(&w, r->fluid, r->fluid + 3 * (size_t)w.nf);
+    hcbd_hc_world_get_polymers(&w, r->poly);
     printf("restart=%s: step %lld, %d fluid blobs, %d polymers\n", c->restart, (long long)w.step, w.nf, w.np);
     hcbd_hc_world_destroy(&w);
     return 1;
@@ -693,8 +686,8 @@ static inline int hc_place(const config *c, const hc_config *r, hcbd_hc_world *w
                 c->name, c->restart, r->nf, r->np, nf, np);
         return 0;
     }
-    if (hcbd_hc_set_fluid(w, nf, r->fluid, r->fluid + 3 * (size_t)nf) != HCBD_OK ||
-        (np && hcbd_hc_set_polymers(w, np, r->poly) != HCBD_OK)) {
+    if (hcbd_hc_world_set_fluid(w, nf, r->fluid, r->fluid + 3 * (size_t)nf) != HCBD_OK ||
+        (np && hcbd_hc_world_set_polymers(w, np, r->poly) != HCBD_OK)) {
         fprintf(stderr, "%s: restart=%s: %s\n", c->name, c->restart, w->err.msg);
         return 0;
     }
@@ -718,7 +711,7 @@ static inline int run_out_close(const config *c, run_out *o, ex_world *w)
     return 1;
 }
 
-/* The scene's stability limits with their margins (hcbd_stability),
+/* The scene's stability limits with their margins (hcbd_params_stability),
    printed at start. */
 #if HCBD_MODEL == HCBD_MODEL_HCBD
 static inline void print_limits(const hcbd_hc_params *p)
@@ -730,9 +723,9 @@ static inline void print_limits(const hcbd_params *p)
     char buf[4096];
     int n = 0;
 #if HCBD_MODEL == HCBD_MODEL_HCBD
-    if (hcbd_hc_stability(p, l, &n) != HCBD_OK) return;
+    if (hcbd_hc_params_stability(p, l, &n) != HCBD_OK) return;
 #else
-    if (hcbd_stability(p, l, &n) != HCBD_OK) return;
+    if (hcbd_params_stability(p, l, &n) != HCBD_OK) return;
 #endif
     static char last[4096];
     hcbd_limits_format(l, n, buf, sizeof buf);

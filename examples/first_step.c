@@ -36,14 +36,14 @@ int main(int argc, char **argv)
     }
     hcbd_world_def_set_density(&def, N, 0.24); /* the box follows; create names a bad value */
     if (hcbd_world_create(&w, &def) != HCBD_OK) return fprintf(stderr, "first_step: %s\n", w.err.msg), 2;
-    if (hcbd_world_place_random(&w, N) != HCBD_OK || hcbd_step(&w, 2000) != HCBD_OK)
+    if (hcbd_world_place_random(&w, N) != HCBD_OK || hcbd_world_step(&w, 2000) != HCBD_OK)
         return fprintf(stderr, "first_step: %s\n", w.err.msg), 1; /* 2000 steps forget the start */
     k = 2 * 3.14159265358979 / w.p.L[0];
     for (b = 0; b < 10; ++b) /* 10 blocks of 20 samples */
         for (s = 0; s < 20; ++s) {
-            if (hcbd_step(&w, steps / 200) != HCBD_OK || hcbd_friction_average(&w, 1, f) != HCBD_OK)
+            if (hcbd_world_step(&w, steps / 200) != HCBD_OK || hcbd_world_friction_average(&w, 1, f) != HCBD_OK)
                 return fprintf(stderr, "first_step: %s\n", w.err.msg), 1;
-            T[b] += hcbd_temperature(&w) / w.p.kT / 20;
+            T[b] += hcbd_world_temperature(&w) / w.p.kT / 20;
             nu[b] += f[2] / (w.p.tau * k * k) / 20;
         }
     for (b = 0; b < 10; ++b) mT += T[b] / 10, mn += nu[b] / 10;
@@ -53,7 +53,7 @@ int main(int argc, char **argv)
     for (r = w.p.Rc / 2000; r < w.p.Rc; r += w.p.Rc / 1000)
         a += pow(1 - r / w.p.Rc, 3) * r * r * (1 - sin(k * r) / (k * r)),
         q += pow(1 - r / w.p.Rc, 3) * pow(r, 4) * k * k / 6;
-    hcbd_theory_of(&w.p, &th);
+    hcbd_params_theory(&w.p, &th);
     printf("N = %d, box %.4g, tau = %g, dt = %g\n", w.n, w.p.L[0], w.p.tau, w.p.dt);
     printf("temperature %.4f +- %.4f   (T / kT; 1 expected)\n", mT, sqrt(eT));
     printf("viscosity   %.4g +- %.2g   (mean field Rc^2/(28 tau) = %.4g, at k = 2 pi/L %.4g)\n",

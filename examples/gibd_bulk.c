@@ -233,13 +233,13 @@ int main(int argc, char **argv)
                "and thermo's Step= count them: the measured steps are %d..%d)\n", eq, eq, eq + c.steps);
         fflush(stdout);
         hcbd_world_place_lattice(&w, c.N);
-        if (hcbd_step(&w, eq) != HCBD_OK) {
+        if (hcbd_world_step(&w, eq) != HCBD_OK) {
             fprintf(stderr, "gibd_bulk: %s\n", w.err.msg);
             return 1;
         }
     }
     if (!run_out_open(&c, &ro, &w, NULL)) return 2;
-    if (p->gdot != 0.0 && !w.core.stress_on) hcbd_stress_enable(&w, 1); /* a restart keeps its sums */
+    if (p->gdot != 0.0 && !w.core.stress_on) hcbd_world_stress_enable(&w, 1); /* a restart keeps its sums */
     clock_gettime(CLOCK_MONOTONIC, &t0);
     for (b = 0; b < NB; ++b) {
         double Tb = 0, mfb = 0, effb = 0, sfb = 0, fk[3] = {0, 0, 0}, skb[3] = {0, 0, 0};
@@ -251,12 +251,12 @@ int main(int argc, char **argv)
             if (gibd) {
                 double j[12];
                 for (k = 0; k < 3; ++k) {
-                    hcbd_transverse_current(&w, k + 1, j);
+                    hcbd_world_transverse_current(&w, k + 1, j);
                     hcbd_mtcorr_add(&ct[b][k], j);
                 }
                 hcbd_world_get_velocities(&w, vel);
                 hcbd_mtcorr_add(&vacf, vel);
-                if (g % 10 == 0) { Tb += hcbd_temperature(&w); ++nTb; }
+                if (g % 10 == 0) { Tb += hcbd_world_temperature(&w); ++nTb; }
                 if (g % 50 == 0) {
                     double out[3];
                     int i, a;
@@ -264,7 +264,7 @@ int main(int argc, char **argv)
                        zero, C_t(k,0) = (kT/m)(1 - S(k)/N) */
                     hcbd_world_get_positions(&w, xyz, 0);
                     for (k = 2; k >= 0; --k) {
-                        hcbd_friction_average(&w, k + 1, out);
+                        hcbd_world_friction_average(&w, k + 1, out);
                         fk[k] += out[2];
                         for (a = 0; a < 3; ++a) {
                             double re = 0, im = 0, ka = 2 * PI * (k + 1) / p->L[a];
@@ -284,7 +284,7 @@ int main(int argc, char **argv)
             }
             if (p->potential != HCBD_POT_IDEAL && g % 5 == 0) {
                 double st[9], o[3];
-                hcbd_virial_stress(&w, st);
+                hcbd_world_virial_stress(&w, st);
                 o[0] = st[1]; o[1] = st[2]; o[2] = st[5];
                 hcbd_mtcorr_add(&gt, o);
             }
@@ -629,7 +629,7 @@ int main(int argc, char **argv)
     if (p->gdot != 0.0) {
         /* shear stress / gdot for each contribution (MODEL 5) */
         double fl[4];
-        hcbd_stress_read(&w, fl, NULL);
+        hcbd_world_stress_read(&w, fl, NULL);
         printf("eta_particle_measured=%.6g\neta_background_measured=%.6g\n", fl[0] / p->gdot, fl[1] / p->gdot);
         printf("eta_carrier_measured=%.6g\neta_total_measured=%.6g\n", fl[2] / p->gdot, fl[3] / p->gdot);
         printf("eta_background_theory=%.6g\n", p->Rc * p->Rc * c.density * p->xip / 28);
@@ -646,7 +646,7 @@ int main(int argc, char **argv)
               "the structure of the star liquid (2014 Fig. 2)", NULL);
     }
     printf("neighbour_rebuilds=%lld\n", (long long)w.nl.n_rebuilds);
-    printf("state_checksum=%016llx\n", (unsigned long long)hcbd_state_checksum(&w));
+    printf("state_checksum=%016llx\n", (unsigned long long)hcbd_world_checksum(&w));
     if (!run_out_close(&c, &ro, &w)) return 1;
     summary_end(&c, 1);
     hcbd_world_destroy(&w);

@@ -15,7 +15,7 @@
              fluctuations, against (g / 2 nu) y' (L/2 - y')         fig3_poiseuille.csv
      Fig. 6  (its fluid curve) slab density across y             density_profile.csv
 
-   Preparation.  The blobs start on hcbd_hc_place_fluid_lattice's 21 x 7 x 6
+   Preparation.  The blobs start on hcbd_hc_world_place_fluid_lattice's 21 x 7 x 6
    lattice, which 806 blobs do not fill: the start is not in mechanical
    equilibrium.  At Table I the density relaxation is overdamped (c_s h / nu
    = 0.3) and slow: after 5000 steps the flow it leaves still carries 0.03
@@ -173,7 +173,7 @@ static int own_key(config *c, const char *key, const char *v)
    progress and the combined checksum. */
 typedef struct {
     config *c;
-    hcbd_hc_def def;             /* Table I, fluctuations on               */
+    hcbd_hc_world_def def;             /* Table I, fluctuations on               */
     hcbd_hc_theory th;
     int N;
     double *xyz, *vel;           /* the fluid at the end of the equilibrium run */
@@ -202,7 +202,7 @@ static int advance(ctx *x, hcbd_hc_world *w, int n, const char *what)
 
 static void add_checksum(ctx *x, const hcbd_hc_world *w)
 {
-    x->checksum = (x->checksum ^ hcbd_hc_state_checksum(w)) * 0x100000001B3ULL;
+    x->checksum = (x->checksum ^ hcbd_hc_world_checksum(w)) * 0x100000001B3ULL;
 }
 
 static void save_fluid(const hcbd_hc_world *w, double *xyz, double *vel)
@@ -220,15 +220,15 @@ static void log_state(FILE *f, const char *phase, int step, const hcbd_hc_world 
 {
     double dr[3];
     if (!f) return;
-    hcbd_hc_density_range(w, dr);
-    fprintf(f, "%s,%d,%.6g,%.6g,%.6g,%.6g\n", phase, step, hcbd_hc_temperature(w) / w->p.kT, dr[0],
+    hcbd_hc_world_density_range(w, dr);
+    fprintf(f, "%s,%d,%.6g,%.6g,%.6g,%.6g\n", phase, step, hcbd_hc_world_temperature(w) / w->p.kT, dr[0],
             dr[1], dr[2]);
 }
 
 /* Leaves w as the equilibrated Table I fluid. */
 static int prepare(ctx *x, hcbd_hc_world *w)
 {
-    hcbd_hc_def d = x->def;
+    hcbd_hc_world_def d = x->def;
     FILE *f = open_out(x->c, "equilibration.csv");
     double dr[3];
     int s, n;
@@ -244,7 +244,7 @@ static int prepare(ctx *x, hcbd_hc_world *w)
         return hc_place(x->c, &x->rst, w, x->N, 0) && run_out_open(x->c, &x->ro, w, "equilibrium");
     }
     if (hcbd_hc_world_create(w, &d) != HCBD_OK) return fail("world", w);
-    if (hcbd_hc_place_fluid_lattice(w, x->N) != HCBD_OK) return fail("lattice", w);
+    if (hcbd_hc_world_place_fluid_lattice(w, x->N) != HCBD_OK) return fail("lattice", w);
     if (!run_out_open(x->c, &x->ro, w, "quench")) return 0;
     for (s = 0; s < opt.relax_steps; s += n) {
         n = opt.relax_steps - s < 100 ? opt.relax_steps - s : 100;
@@ -252,7 +252,7 @@ static int prepare(ctx *x, hcbd_hc_world *w)
         log_state(f, "quench", s + n, w);
     }
     if (opt.relax_steps > 0) {
-        hcbd_hc_density_range(w, dr);
+        hcbd_hc_world_density_range(w, dr);
         printf("# quench: %d steps at %g P0 without noise: n_i/nbar in [%.4f, %.4f]\n",
                opt.relax_steps, opt.relax_stiffness, dr[0], dr[1]);
         save_fluid(w, x->xyz, NULL);
@@ -261,7 +261,7 @@ static int prepare(ctx *x, hcbd_hc_world *w)
         hcbd_hc_world_destroy(w);
         if (hcbd_hc_world_create(w, &x->def) != HCBD_OK) return fail("world", w);
         /* NULL velocities: Maxwellian at kT, total momentum removed */
-        if (hcbd_hc_set_fluid(w, x->N, x->xyz, NULL) != HCBD_OK) return fail("restart", w);
+        if (hcbd_hc_world_set_fluid(w, x->N, x->xyz, NULL) != HCBD_OK) return fail("restart", w);
         if (!run_out_open(x->c, &x->ro, w, "equilibrium")) return 0;
     }
     for (s = 0; s < opt.eq_steps; s += n) {
@@ -271,10 +271,10 @@ static int prepare(ctx *x, hcbd_hc_world *w)
         if ((s / 100) % 10 == 9) progress(x->c, x->done, x->total, &x->t0);
     }
     if (f) fclose(f);
-    hcbd_hc_density_range(w, dr);
+    hcbd_hc_world_density_range(w, dr);
     printf("# equilibration: %d steps at Table I: T/kT = %.4f (one sample, spread sqrt(2/3N) = "
            "%.3f), n_i/nbar in [%.4f, %.4f]\n",
-           opt.eq_steps, hcbd_hc_temperature(w) / w->p.kT, sqrt(2.0 / (3 * x->N)), dr[0], dr[1]);
+           opt.eq_steps, hcbd_hc_world_temperature(w) / w->p.kT, sqrt(2.0 / (3 * x->N)), dr[0], dr[1]);
     fflush(stdout);
     return 1;
 }
@@ -420,11 +420,11 @@ static int equilibrium_run(ctx *x, hcbd_hc_world *w, eq_result *e)
             /* k along x (d = 0): Re and Im of j_y and of j_z, four channels
                of the same C_t */
             for (k = 0; k < NK; ++k) {
-                hcbd_hc_transverse_current(w, k + 1, j);
+                hcbd_hc_world_transverse_current(w, k + 1, j);
                 hcbd_mtcorr_add(&mc[k], j);
             }
             e->nsamp++;
-            if (s % 10 == 0) { Ts += hcbd_hc_temperature(w); ++nT; }
+            if (s % 10 == 0) { Ts += hcbd_hc_world_temperature(w); ++nT; }
             if (s % 20 == 0) {
                 double dr[3];
                 for (i = 0; i < x->N; ++i) {
@@ -434,7 +434,7 @@ static int equilibrium_run(ctx *x, hcbd_hc_world *w, eq_result *e)
                     hcbd_slabs_add(&sl, w->fy[i], val);
                 }
                 hcbd_slabs_end_sample(&sl);
-                hcbd_hc_density_range(w, dr);
+                hcbd_hc_world_density_range(w, dr);
                 e->dens_dev_max = fmax(e->dens_dev_max, fmax(fabs(dr[0] - 1), fabs(dr[1] - 1)));
             }
             if (!advance(x, w, 1, "equilibrium run")) { free(mem); return 0; }
@@ -487,7 +487,7 @@ static int lees_edwards_run(ctx *x, double gd, int fl, double eta[MAXB][HCBD_HC_
        follows the imposed profile within ~h^2/nu */
     const int bl = (opt.le_steps - opt.le_steps / 5) / opt.nblk, start = opt.le_steps - opt.nblk * bl;
     const double Ly = x->def.params.L[1];
-    hcbd_hc_def d = x->def;
+    hcbd_hc_world_def d = x->def;
     hcbd_hc_world w;
     char label[64];
     int i, b, k;
@@ -501,15 +501,15 @@ static int lees_edwards_run(ctx *x, double gd, int fl, double eta[MAXB][HCBD_HC_
         x->v0[3 * i + 1] = fl ? x->vel[3 * i + 1] : 0;
         x->v0[3 * i + 2] = fl ? x->vel[3 * i + 2] : 0;
     }
-    if (hcbd_hc_set_fluid(&w, x->N, x->xyz, x->v0) != HCBD_OK) return fail("Lees-Edwards set-up", &w);
+    if (hcbd_hc_world_set_fluid(&w, x->N, x->xyz, x->v0) != HCBD_OK) return fail("Lees-Edwards set-up", &w);
     snprintf(label, sizeof label, "le_gdot%g_fl%d", gd / opt.time_unit, fl); /* 1/s */
     if (!run_out_open(x->c, &x->ro, &w, label)) return 0;
     if (!advance(x, &w, start, "Lees-Edwards start-up")) return 0;
     for (b = 0; b < opt.nblk; ++b) {
         double st[HCBD_HC_NSTRESS];
-        hcbd_hc_stress_enable(&w, 1); /* restarts the average: one per block */
+        hcbd_hc_world_stress_enable(&w, 1); /* restarts the average: one per block */
         if (!advance(x, &w, bl, "Lees-Edwards run")) return 0;
-        hcbd_hc_stress_read(&w, st, NULL);
+        hcbd_hc_world_stress_read(&w, st, NULL);
         for (k = 0; k < HCBD_HC_NSTRESS; ++k) eta[b][k] = st[k] / gd;
     }
     progress(x->c, x->done, x->total, &x->t0);
@@ -590,7 +590,7 @@ static int poiseuille_run(ctx *x, double g, int fl, double shift, rp_result *res
        viscous time (L/2)^2/nu of a half is ten of its e-foldings */
     const int wait = (int)ceil(fmin(0.25 * L * L / nu, 0.5 * opt.rp_steps));
     const int nsamp = (opt.rp_steps - wait) / every, start = opt.rp_steps - nsamp * every;
-    hcbd_hc_def d = x->def;
+    hcbd_hc_world_def d = x->def;
     hcbd_hc_world w;
     hcbd_slabs sl;
     /* zeroed: gcc cannot see that the fit reads only the nfit filled */
@@ -608,7 +608,7 @@ static int poiseuille_run(ctx *x, double g, int fl, double shift, rp_result *res
     }
     for (i = 0; i < 3 * x->N; ++i) x->v0[i] = fl ? x->vel[i] : 0;
     if (hcbd_hc_world_create(&w, &d) != HCBD_OK) return fail("Poiseuille world", &w);
-    if (hcbd_hc_set_fluid(&w, x->N, shifted, x->v0) != HCBD_OK) return fail("Poiseuille set-up", &w);
+    if (hcbd_hc_world_set_fluid(&w, x->N, shifted, x->v0) != HCBD_OK) return fail("Poiseuille set-up", &w);
     snprintf(label, sizeof label, "rp_fl%d", fl);
     if (!run_out_open(x->c, &x->ro, &w, label)) return 0;
     if (!advance(x, &w, start, "Poiseuille start-up")) return 0;
@@ -832,7 +832,7 @@ int main(int argc, char **argv)
     if (!expand_args(&c, &argc, &argv)) return 2;
     for (k = 1; k < argc; ++k) /* the preset first: explicit keys override it */
         if (!strcmp(argv[k], "preset=paper")) paper = 1;
-    si = hcbd_hc_si_table1();
+    si = hcbd_hc_si_default();
     opt.time_unit = 1e-6;
     opt.relax_steps = paper ? 3000 : 1500;
     opt.relax_stiffness = 25;
@@ -857,16 +857,16 @@ int main(int argc, char **argv)
 
     /* ---- units ---- */
     x.c = &c;
-    x.def = hcbd_hc_def_default();
+    x.def = hcbd_hc_world_def_default();
     p = &x.def.params;
-    if (hcbd_hc_params_si(&si, opt.time_unit, p, msg, sizeof msg) != HCBD_OK) {
+    if (hcbd_hc_si_params(&si, opt.time_unit, p, msg, sizeof msg) != HCBD_OK) {
         fprintf(stderr, "hcbd_fluid: %s\n", msg);
         return 2;
     }
     p->seed = c.def.params.seed;
     p->threads = c.def.params.threads;
     p->fluctuations = 1;
-    hcbd_hc_theory_of(p, &x.th);
+    hcbd_hc_params_theory(p, &x.th);
     u_len = si.sigma;
     u_t = opt.time_unit;
     M = kB * si.T * u_t * u_t / (u_len * u_len);
@@ -1015,7 +1015,7 @@ int main(int argc, char **argv)
         hcbd_hc_params pr = *p;
         pr.reverse_poiseuille = 1;
         pr.g[0] = g_red;
-        hcbd_hc_theory_of(&pr, &thr);
+        hcbd_hc_params_theory(&pr, &thr);
     }
     if (opt.rp_gap) shift = rp_gap_shift(x.xyz, x.N, p->L[1]);
     gap = rp_plane_gap(x.xyz, x.N, p->L[1], shift);

@@ -139,6 +139,7 @@ static struct {
     int substeps;             /* fluid steps per polymer step              */
     int coupling;             /* hcbd_coupling: Shepard (default) or raw    */
     int pair_euler;           /* the fluid's pair step: 0 the exact sweep, 1 Euler */
+    int fluid_random;         /* the fluid's start: 0 a lattice, 1 disordered */
     /* plateau=1: a Lees-Edwards run is start-up chunks of block_tau
        tau_lambda until the stress levels off (startup_bias; at most
        startup_max), then
@@ -243,6 +244,9 @@ static void usage(FILE *f)
     fprintf(f,
             "  pair=shardlow|euler the fluid's pair step: the exact sweep (default) or the\n"
             "                      paper's explicit Euler pairs (stable to about 2.8 dt_visc)\n"
+            "  fluid_start=lattice|random  the fluid blobs' start: hcbd_hc_world_place_fluid_lattice\n"
+            "                      (default) or disordered (random, no two within half the\n"
+            "                      lattice spacing), both at rest\n"
             "  coupling=shepard|raw  polymer-fluid weights: psi_ai normalised per polymer\n"
             "                      (default; momentum exact) or the paper's w(r_ai)/n_i\n"
             "  plateau=0|1         1: each Lees-Edwards run starts up in chunks of block_tau until\n"
@@ -338,6 +342,14 @@ static int own_key(config *c, const char *key, const char *v)
         fprintf(stderr, "%s: pair=%s must be shardlow or euler\n", c->name, v);
         return 0;
     }
+    if (!strcmp(key, "fluid_start")) {
+        if (!strcmp(v, "lattice") || !strcmp(v, "random")) {
+            opt.fluid_random = v[0] == 'r';
+            return 1;
+        }
+        fprintf(stderr, "%s: fluid_start=%s must be lattice or random\n", c->name, v);
+        return 0;
+    }
     if (!strcmp(key, "coupling")) {
         if (!strcmp(v, "shepard") || !strcmp(v, "raw")) {
             opt.coupling = v[0] == 'r' ? HCBD_COUPLE_RAW : HCBD_COUPLE_SHEPARD;
@@ -426,13 +438,55 @@ static int advance(hcbd_hc_world *w, run_out *o, int n, const char *what)
     return 1;
 }
 
+/* The fluid of fluid_start=random: without fluctuations the blobs keep
+   the rows of a start lattice, so this start tells what the rows do to the
+   stress.  Random sequential addition with no two blobs closer than half
+   the lattice spacing (excluded spheres fill pi/48 of the box, so it never
+   stalls),
+   at rest; the pressure differences of the disorder relax within a viscous
+   time L^2 / nu (a few ms at Table I), far inside the start-up. */
+static hcbd_result place_fluid_random(hcbd_hc_world *w, int nf)
+{
+    double *xv = (double *)calloc(6 * (size_t)nf + 1, sizeof(double));
+    const double *L = w->p.L;
+    double dmin = 0.5 * cbrt(L[0] * L[1] * L[2] / nf);
+    hcbd_rng g;
+    hcbd_result r;
+    int i = 0, tries = 0;
+    if (!xv) {
+        fprintf(stderr, "hcbd_polymer: fluid_start=random: out of memory\n");
+        return HCBD_ERR_MEMORY;
+    }
+    hcbd_rng_seed(&g, w->p.seed ^ 0x6a09e667f3bcc909ULL);
+    while (i < nf && tries < 1000 * nf) {
+        double *x = xv + 3 * i;
+        int j, d, ok = 1;
+        ++tries;
+        for (d = 0; d < 3; ++d) x[d] = hcbd_rng_uniform(&g) * L[d];
+        for (j = 0; j < i && ok; ++j) {
+            double r2 = 0;
+            for (d = 0; d < 3; ++d) {
+                double dx = x[d] - xv[3 * j + d];
+                dx -= L[d] * floor(dx / L[d] + 0.5);
+                r2 += dx * dx;
+            }
+            ok = r2 >= dmin * dmin;
+        }
+        i += ok;
+    }
+    if (i < nf) fprintf(stderr, "hcbd_polymer: fluid_start=random placed %d of %d blobs\n", i, nf);
+    r = i < nf ? HCBD_ERR_OVERLAP : hcbd_hc_world_set_fluid(w, nf, xv, xv + 3 * (size_t)nf);
+    free(xv);
+    return r;
+}
+
 /* A run's world: Table I at p, the fluid on a lattice and the polymers at
    random, or restart='s configuration when its counts are the run's; its
    run output opens under label. */
 static int new_world(hcbd_hc_world *w, run_out *o, const hcbd_hc_params *p, int nf, int np, const char *what,
                      const char *label)
 {
-    hcbd_hc_def def = hcbd_hc_def_default();
+    hcbd_hc_world_def def = hcbd_hc_world_def_default();
     def.params = *p;
     def.fluid_capacity = nf;
     def.polymer_capacity = np;
@@ -448,7 +502,8 @@ static int new_world(hcbd_hc_world *w, run_out *o, const hcbd_hc_params *p, int 
         }
     } else {
         if (rst.fluid) printf("# restart: %s has %d fluid blobs and %d polymers: started fresh\n", what, nf, np);
-        if (hcbd_hc_place_fluid_lattice(w, nf) != HCBD_OK || hcbd_hc_place_polymers_random(w, np) != HCBD_OK) {
+        if ((opt.fluid_random ? place_fluid_random(w, nf) : hcbd_hc_world_place_fluid_lattice(w, nf)) != HCBD_OK ||
+            hcbd_hc_world_place_polymers_random(w, np) != HCBD_OK) {
             fprintf(stderr, "hcbd_polymer: %s: %s\n", what, w->err.msg);
             hcbd_hc_world_destroy(w);
             return 0;
@@ -507,9 +562,9 @@ static int half_steps(const hcbd_hc_params *p)
    restarted). */
 static int stress_chunk(hcbd_hc_world *w, run_out *o, int n, const char *what, double s[HCBD_HC_NSTRESS])
 {
-    hcbd_hc_stress_enable(w, 1);
+    hcbd_hc_world_stress_enable(w, 1);
     if (!advance(w, o, n, what)) return 0;
-    hcbd_hc_stress_read(w, s, NULL);
+    hcbd_hc_world_stress_read(w, s, NULL);
     return 1;
 }
 
@@ -677,7 +732,7 @@ static int shear_run(const hcbd_hc_params *base, conc_run *cr, int r, double gd,
         }
     }
     cr->rise[r] = (blk[0][nb - 1] - blk[0][0]) / cr->eta[0][r];
-    *checksum = hcbd_hc_state_checksum(&w);
+    *checksum = hcbd_hc_world_checksum(&w);
     return end_world(&w, &ro, 1);
 fail:
     return end_world(&w, &ro, 0);
@@ -692,21 +747,26 @@ static int high_shear(double y, double Ly)
 
 /* Height of the reverse-Poiseuille box: base->L[1], stretched by whole
    lattice rows (spacing nbar^(-1/3)) until no blob of the start lattice
-   lies within a quarter row of y = 0 or L/2. */
+   lies within a quarter row of y = 0 or L/2 (fluid_start=random: no rows,
+   base->L[1]). */
 static int rp_height(const hcbd_hc_params *base, double *Ly)
 {
     hcbd_hc_params p = *base;
     double a = 1 / cbrt(p.nbar);
     int k, i;
     p.gdot = 0;
+    if (opt.fluid_random) {
+        *Ly = base->L[1];
+        return 1;
+    }
     for (k = 0; k < 4; ++k, p.L[1] += a) {
-        hcbd_hc_def def = hcbd_hc_def_default();
+        hcbd_hc_world_def def = hcbd_hc_world_def_default();
         hcbd_hc_world w;
         int on_plane = 0, nf = blobs_in(&p);
         def.params = p;
         def.fluid_capacity = nf;
         def.polymer_capacity = 0;
-        if (hcbd_hc_world_create(&w, &def) != HCBD_OK || hcbd_hc_place_fluid_lattice(&w, nf) != HCBD_OK) {
+        if (hcbd_hc_world_create(&w, &def) != HCBD_OK || hcbd_hc_world_place_fluid_lattice(&w, nf) != HCBD_OK) {
             fprintf(stderr, "hcbd_polymer: reverse-Poiseuille box: %s\n", w.err.msg);
             hcbd_hc_world_destroy(&w);
             return 0;
@@ -854,7 +914,7 @@ static int rp_run(const hcbd_hc_params *base, conc_run *cr, uint64_t *checksum)
     cr->nf_kernel = sum_nf / ((double)nf * nsamp);
     cr->np_kernel = sum_np / ((double)cr->np_rp * nsamp);
     for (d = 0; d < ND; ++d) mean_err(blk[d], nb, &cr->dep[d][0], &cr->dep[d][1]);
-    *checksum = hcbd_hc_state_checksum(&w);
+    *checksum = hcbd_hc_world_checksum(&w);
     ok = 1;
 fail:
     ok = end_world(&w, &ro, ok);
@@ -978,7 +1038,7 @@ static int momentum_run(const hcbd_hc_params *base, int np, double *dp, double *
     p.reverse_poiseuille = 0;
     p.g[0] = p.g[1] = p.g[2] = 0;
     if (!new_world(&w, &ro, &p, blobs_in(&p), np, "momentum run", "momentum")) return 0;
-    hcbd_hc_momentum(&w, P0);
+    hcbd_hc_world_momentum(&w, P0);
     *scale = 0;
     for (s = 0; s < opt.eq_steps; ++s) {
         for (a = 0; a < w.np; ++a)
@@ -986,10 +1046,10 @@ static int momentum_run(const hcbd_hc_params *base, int np, double *dp, double *
                                   (double)w.pFz[a] * w.pFz[a]);
         if (!advance(&w, &ro, 1, "momentum run")) return end_world(&w, &ro, 0);
     }
-    hcbd_hc_momentum(&w, P1);
+    hcbd_hc_world_momentum(&w, P1);
     *dp = sqrt((P1[0] - P0[0]) * (P1[0] - P0[0]) + (P1[1] - P0[1]) * (P1[1] - P0[1]) +
                (P1[2] - P0[2]) * (P1[2] - P0[2]));
-    *checksum = hcbd_hc_state_checksum(&w);
+    *checksum = hcbd_hc_world_checksum(&w);
     return end_world(&w, &ro, 1);
 }
 
@@ -1197,7 +1257,7 @@ static void print_summary(const conc_run *cr, const hcbd_hc_params *p, const rp_
                dep_name[k], cr->dep0[k]);
     printf("rp_center_change=%.3g\n", m->change);
     if (table2(cr->C, t2)) {
-        const int table1 = fabs(p->tau_lambda * u->t - hcbd_hc_si_table1().tau_lambda) < 1e-9;
+        const int table1 = fabs(p->tau_lambda * u->t - hcbd_hc_si_default().tau_lambda) < 1e-9;
         const char *quick = table1 ? NULL : "this run's tau_lambda (and alpha, P0) are not Table I's (NOTEs above): Table II is for Table I";
         judge("eta0_over_eta", (cr->fitted ? cr->pc[0] : cr->eta0) / p->eta,
               (cr->fitted ? cr->pe[0] : cr->err[0][0]) / p->eta, "1", t2[0], 0,
@@ -1228,7 +1288,7 @@ static void write_plots(const config *c, const conc_run *runs, const hcbd_hc_par
 {
     const double ei = opt.eta_inf * u->eta * 1e3, W = 0.5 * Ly, um = u->len * 1e6, mm = u->v * 1e3;
     const double us = u->t * 1e6, tau_s = p->tau_lambda * u->t, eta_f = p->eta * u->eta * 1e3;
-    const hcbd_hc_si t1 = hcbd_hc_si_table1();
+    const hcbd_hc_si t1 = hcbd_hc_si_default();
     const int ny = 121;
     char scene[400], tl[64] = "";
     double ylo = HUGE_VAL, yhi = 0, t2[3];
@@ -1474,7 +1534,7 @@ int main(int argc, char **argv)
 {
     static conc_run runs[MAXC];
     config c;
-    const hcbd_hc_si si1 = hcbd_hc_si_table1();
+    const hcbd_hc_si si1 = hcbd_hc_si_default();
     hcbd_hc_params tab, par, prp, *p = &par;
     hcbd_hc_theory th;
     units u, ut;
@@ -1551,8 +1611,8 @@ int main(int argc, char **argv)
     }
 
     /* ---- units and parameters ---- */
-    if (hcbd_hc_params_si(&si, opt.time_unit, &par, msg, sizeof msg) != HCBD_OK ||
-        hcbd_hc_params_si(&si1, opt.time_unit, &tab, msg, sizeof msg) != HCBD_OK) {
+    if (hcbd_hc_si_params(&si, opt.time_unit, &par, msg, sizeof msg) != HCBD_OK ||
+        hcbd_hc_si_params(&si1, opt.time_unit, &tab, msg, sizeof msg) != HCBD_OK) {
         fprintf(stderr, "hcbd_polymer: %s\n", msg);
         return 2;
     }
@@ -1578,7 +1638,7 @@ int main(int argc, char **argv)
         fprintf(stderr, "hcbd_polymer: %s\n", msg);
         return 2;
     }
-    hcbd_hc_theory_of(p, &th);
+    hcbd_hc_params_theory(p, &th);
     prp = par;
     if (!rp_height(p, &prp.L[1])) return 2;
     for (ci = 0; ci < opt.nconc; ++ci) {
@@ -1604,7 +1664,8 @@ int main(int argc, char **argv)
            "%.4g m/s), dt limits: viscous %.4g, sound %.4g (dt = %g)\n", th.m, th.m * u.M, th.nu, th.cs,
            th.cs * u.v, sqrt(7 * si.P0 / si.rho), th.dt_visc, th.dt_sound, p->dt);
     printf("# kT = %g for the polymer noise and pair variables; fluid fluctuations off (as in the paper with "
-           "polymers)\n", p->kT);
+           "polymers); fluid start: %s\n", p->kT,
+           opt.fluid_random ? "disordered (fluid_start=random)" : "a lattice (fluid_start=lattice)");
     if (fabs(p->tau_lambda - tab.tau_lambda) > 1e-12 * tab.tau_lambda)
         printf("# NOTE tau_lambda = %g s = %g steps here; the paper's is %g s = %g steps\n", opt.tau_si,
                p->tau_lambda / p->dt, si.tau_lambda, tab.tau_lambda / p->dt);

@@ -58,7 +58,7 @@ static int own_key(config *c, const char *key, const char *v)
 int main(int argc, char **argv)
 {
     config c;
-    hcbd_hc_def d = hcbd_hc_def_default();
+    hcbd_hc_world_def d = hcbd_hc_world_def_default();
     hcbd_hc_theory th;
     hcbd_hc_world w;
     hc_config rst;
@@ -68,16 +68,16 @@ int main(int argc, char **argv)
     int N, i, s, nz = 0, ne = 0;
     memset(&c, 0, sizeof c);
     c.name = "hcbd_sound", c.def = hcbd_world_def_default(), c.N = 2, c.density = 1, c.steps = 12000;
-    si = hcbd_hc_si_table1();
+    si = hcbd_hc_si_default();
     si.eta = 1e-4;
     if (!expand_args(&c, &argc, &argv)) return 2;
     if (!parse_args(argc, argv, &c, own_key, usage)) return c.help ? 0 : 2;
-    if (hcbd_hc_params_si(&si, 1e-6, &d.params, msg, sizeof msg) != HCBD_OK)
+    if (hcbd_hc_si_params(&si, 1e-6, &d.params, msg, sizeof msg) != HCBD_OK)
         return fprintf(stderr, "hcbd_sound: %s\n", msg), 2;
     d.params.fluctuations = 0;
     d.params.seed = c.def.params.seed;
     d.params.threads = c.def.params.threads;
-    hcbd_hc_theory_of(&d.params, &th);
+    hcbd_hc_params_theory(&d.params, &th);
     N = d.fluid_capacity = (int)floor(d.params.nbar * d.params.L[0] * d.params.L[1] * d.params.L[2] + 0.5);
     d.polymer_capacity = 0;
     k = 2 * PI / d.params.L[0];
@@ -93,17 +93,17 @@ int main(int argc, char **argv)
         memcpy(xyz, rst.fluid, 3 * (size_t)N * sizeof(double));
         free(rst.fluid), free(rst.poly);
     } else { /* the lattice relaxes at 25 P0: its force balance holds at any P0 */
-        hcbd_hc_def q = d;
+        hcbd_hc_world_def q = d;
         q.params.P0 *= 25;
-        if (hcbd_hc_world_create(&w, &q) != HCBD_OK || hcbd_hc_place_fluid_lattice(&w, N) != HCBD_OK ||
-            hcbd_hc_step(&w, relax) != HCBD_OK)
+        if (hcbd_hc_world_create(&w, &q) != HCBD_OK || hcbd_hc_world_place_fluid_lattice(&w, N) != HCBD_OK ||
+            hcbd_hc_world_step(&w, relax) != HCBD_OK)
             return fprintf(stderr, "hcbd_sound: quench: %s\n", w.err.msg), 1;
         for (i = 0; i < N; ++i) xyz[3 * i] = w.fx[i], xyz[3 * i + 1] = w.fy[i], xyz[3 * i + 2] = w.fz[i];
         hcbd_hc_world_destroy(&w);
     }
     for (i = 0; i < N; ++i)
         vel[3 * i] = amp * th.cs * sin(k * xyz[3 * i]), vel[3 * i + 1] = vel[3 * i + 2] = 0;
-    if (hcbd_hc_world_create(&w, &d) != HCBD_OK || hcbd_hc_set_fluid(&w, N, xyz, vel) != HCBD_OK)
+    if (hcbd_hc_world_create(&w, &d) != HCBD_OK || hcbd_hc_world_set_fluid(&w, N, xyz, vel) != HCBD_OK)
         return fprintf(stderr, "hcbd_sound: %s\n", w.err.msg), 2;
     if (!run_out_open(&c, &o, &w, NULL)) return 2;
     for (s = 0; s <= c.steps; ++s) {
@@ -133,7 +133,7 @@ int main(int argc, char **argv)
     printf("c_s=%.6g\nkernel_factor=%.5f\nc_expected=%.6g\nc_measured=%.6g\nc_ratio=%.5f\n", th.cs, Wk,
            th.cs * Wk, c_meas, c_meas / (th.cs * Wk));
     printf("damping_measured=%.4g\ndamping_expected=%.4g\n", gam, th.nu * k * k / 2);
-    printf("state_checksum=%016llx\n", (unsigned long long)hcbd_hc_state_checksum(&w));
+    printf("state_checksum=%016llx\n", (unsigned long long)hcbd_hc_world_checksum(&w));
     judge("c_measured", c_meas, NAN, "sigma/time", th.cs * Wk, 0.02 * th.cs * Wk,
           "c_s W~(k), the kernel-smoothed sound speed, allowance 2 % for one fit of the crossings", NULL);
     judge("damping_measured", gam, NAN, "1/time", th.nu * k * k / 2, 0.1 * th.nu * k * k / 2,

@@ -129,16 +129,16 @@ int main(int argc, char **argv)
             }
             for (b = 0; b < NB; ++b) {
                 double fl[4];
-                hcbd_stress_enable(&w, 1);
+                hcbd_world_stress_enable(&w, 1);
                 if (run_steps(&c, &ro, &w, (c.steps - start) / NB) != HCBD_OK) {
                     fprintf(stderr, "shear_flow: xip = %g, gdot = %g: %s\n", xips[x], rates[r], w.err.msg);
                     return 1;
                 }
-                hcbd_stress_read(&w, fl, NULL);
+                hcbd_world_stress_read(&w, fl, NULL);
                 for (k = 0; k < 4; ++k) blk[k][b] = fl[k] / rates[r];
             }
             for (k = 0; k < 4; ++k) mean_err(blk[k], NB, &eta[x][k][r], &err[x][k][r]);
-            checksum = (checksum ^ hcbd_state_checksum(&w)) * 0x100000001B3ULL;
+            checksum = (checksum ^ hcbd_world_checksum(&w)) * 0x100000001B3ULL;
             if (!run_out_close(&c, &ro, &w)) return 1;
             hcbd_world_destroy(&w);
             progress(&c, (x * nrates + r + 1) * c.steps, nxip * nrates * c.steps, &t0);
@@ -159,7 +159,7 @@ int main(int argc, char **argv)
         double pc[3], pe[3], chi2, e[MAXR], re;
         p->xip = xips[x];
         p->gdot = 0;
-        hcbd_theory_of(p, &th);
+        hcbd_params_theory(p, &th);
         printf("# summary xip=%g (xi'/xi = %g; lowest shear rate; Carreau fit of the total)\n", xips[x],
                xips[x] / p->xi);
         printf("gdot_lowest=%g\n", rates[0]);

@@ -85,8 +85,8 @@ expect "pair_coeff I J f sigma" 's/${f} ${sigma} ${eps}/${f}/' star
 # same atoms, 20 steps, every coefficient away from 1 (a 10 % error in any
 # term moves the atoms by 1e-4 or more; the two codes' fixed-point sums
 # differ by 1e-11 per pair); pair_style star's energy against
-# hcbd_potential_energy and the fix's friction averages (fric) against
-# hcbd_friction_average
+# hcbd_world_potential_energy and the fix's friction averages (fric) against
+# hcbd_world_friction_average
 cc -O2 -std=c99 -DHCBD_MODEL=HCBD_MODEL_WALLED -I"$root" -o "$t/gibd_ref" "$root/lammps/gibd_ref.c" -lm
 # agree A B TOL: the numbers of the strings A and B, one by one, within TOL
 # relative (and as many, and positive)
@@ -131,18 +131,18 @@ compare() {
     fr1=$(cat "$t/fr.txt"); rfr1=$(sed -n 2p "$t/ref.txt")
     if [ "$wall" != 0 ]; then :
     elif agree "$fr0" "$rfr0" 1e-10 && agree "$fr1" "$rfr1" 1e-10; then
-        ok "$name: fric's friction averages at the start and the end = hcbd_friction_average ($fr1)"
+        ok "$name: fric's friction averages at the start and the end = hcbd_world_friction_average ($fr1)"
     else bad "$name: fric's friction averages $fr0 / $fr1, hcbd's $rfr0 / $rfr1"; fi
     # the shear stress of the 20 steps: the background exchanges (and, under
-    # shear, the carriers crossing y) as hcbd_stress_read's
+    # shear, the carriers crossing y) as hcbd_world_stress_read's
     read -r s1 s2 < "$t/st.txt"; read -r rs1 rs2 < <(sed -n 3p "$t/ref.txt")
     if awk -v a="$s1" -v b="$s2" -v ra="$rs1" -v rb="$rs2" -v g="$gdot" 'BEGIN {
         d1 = a - ra; d2 = b - rb; if (d1 < 0) d1 = -d1; if (d2 < 0) d2 = -d2; s = ra < 0 ? -ra : ra
         exit !(ra != 0 && d1 <= 1e-9 * s && d2 <= 1e-9 * s + 1e-12 && (g == 0 || rb != 0)) }'; then
-        ok "$name: the shear stress of the steps = hcbd_stress_read's ($s1 $s2)"
+        ok "$name: the shear stress of the steps = hcbd_world_stress_read's ($s1 $s2)"
     else bad "$name: shear stress $s1 $s2, hcbd's $rs1 $rs2"; fi
     if [ "$f" != 0 ]; then
-        if agree "$pe0" "$rpe" 1e-12; then ok "$name: pair_style star energy = hcbd_potential_energy ($rpe)"
+        if agree "$pe0" "$rpe" 1e-12; then ok "$name: pair_style star energy = hcbd_world_potential_energy ($rpe)"
         else bad "$name: pair_style star energy $pe0, hcbd's $rpe"; fi
     fi
 }

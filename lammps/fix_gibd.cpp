@@ -38,7 +38,7 @@
 // walls mirror the step, and atoms found inside a wall are counted.
 //
 // With fric N, on every N-th step, the fix's global vector holds
-// hcbd_friction_average (nk = 1) of the configuration the step starts from
+// hcbd_world_friction_average (nk = 1) of the configuration the step starts from
 // (at a run's first step, by setup(), of that step's configuration):
 // <sum_j f_ij>, <sum_j f_ij r_ij^2>, <sum_j f_ij (1 - cos k.x_ij)>, f_ij =
 // S_ij / m, k = 2 pi / L_d averaged over d; nu_meanfield = [3] / (tau k^2).
@@ -196,7 +196,7 @@ void FixGIBD::init()
   p.dt = update->dt;
   for (int d = 0; d < 3; ++d) p.L[d] = domain->prd[d];
   p.rcut = p.Rc; // no hcbd pair potential: its cut-off only has to be valid
-  if (hcbd_gibd_coef_of(&p, &c, msg, sizeof msg) != HCBD_OK) error->all(FLERR, "fix gibd: {}", msg);
+  if (hcbd_params_gibd_coef(&p, &c, msg, sizeof msg) != HCBD_OK) error->all(FLERR, "fix gibd: {}", msg);
   if (walls) {
     // hcbd's walls lie across y's periodic edge; Lees-Edwards is the other
     // boundary condition in y (hcbd refuses the two together)
@@ -331,7 +331,7 @@ void FixGIBD::densities()
   comm->forward_comm_fix(this, 1);
 }
 
-// fric: hcbd_friction_average (nk = 1) of the positions and densities of now
+// fric: hcbd_world_friction_average (nk = 1) of the positions and densities of now
 void FixGIBD::friction_averages()
 {
   const double fscale = p.tau / (p.dt * c.m); // f_ij = S_ij / m = sdt tau / (m dt)
@@ -633,7 +633,7 @@ void FixGIBD::final_integrate()
       double F[3] = {f[i][0], f[i][1], f[i][2]};
       if (gauss) {
         double fy;
-        hcbd_wall_potential(&p, xw[3 * i + 1], &fy);
+        hcbd_params_wall_potential(&p, xw[3 * i + 1], &fy);
         F[1] += fy;
       }
       for (int d = 0; d < 3; ++d) uk[3 * i + d] = vc[3 * i + d] += F[d] * dt_m;
@@ -655,7 +655,7 @@ void FixGIBD::final_integrate()
     const double y0 = x[i][1];
     if (gauss) {
       double fy;
-      hcbd_wall_potential(&p, xw[3 * i + 1], &fy);
+      hcbd_params_wall_potential(&p, xw[3 * i + 1], &fy);
       F[1] += fy;
     }
     if (exact) {
@@ -703,7 +703,7 @@ void FixGIBD::final_integrate()
   }
   if (stress) {
     // this step's shear stress S_yx: the background exchanges and the
-    // carriers' flux across y, as hcbd_stress_read's [1] and [2]
+    // carriers' flux across y, as hcbd_world_stress_read's [1] and [2]
     double loc[2] = {sbg, scr}, tot[2];
     MPI_Allreduce(loc, tot, 2, MPI_DOUBLE, MPI_SUM, world);
     sfl[0] = -tot[0] / (p.L[0] * p.L[1] * p.L[2] * dt);

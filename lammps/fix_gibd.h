@@ -46,7 +46,7 @@ class FixGIBD : public Fix {
   int y_wraps(double y) const;
   void canonical();
   hcbd_params p;            // the model's parameters (dt and box from LAMMPS)
-  hcbd_gibd_coef c;         // its pair coefficients (hcbd_gibd_coef_of)
+  hcbd_gibd_coef c;         // its pair coefficients (hcbd_params_gibd_coef)
   hcbd_noise_stream ns;     // pair and Brownian noise keyed by (seed, step, ids)
   class NeighList *list;    // half list: densities, Euler pairs, fric
   class NeighList *glist;   // full list with ghosts: the exact sweep's partners

@@ -4,10 +4,10 @@
               pair brownian gdot [wall mode vlo vhi fx]
    IN: write_dump custom id x y z vx vy vz, sorted by id (tags 1..n); OUT:
    "id x y z vx vy vz" after `steps` steps, wrapped into the box; stdout:
-   the pair energy and hcbd_friction_average (nk = 1) of IN, then that of
+   the pair energy and hcbd_world_friction_average (nk = 1) of IN, then that of
    the configuration the last step starts from (fix gibd's vector, fric),
    then the shear stress of the background exchanges and of the carriers
-   crossing y, averaged over the steps (hcbd_stress_read's [1] and [2]).  f = 0:
+   crossing y, averaged over the steps (hcbd_world_stress_read's [1] and [2]).  f = 0:
    ideal carriers; otherwise the star potential (2014 eq. 28, from the
    formula, not the force table).  noise: gauss or uniform; pair: exact
    (HCBD_PAIR_SHARDLOW, the world's sweep) or euler; brownian: lm or euler;
@@ -94,21 +94,21 @@ int main(int argc, char **argv)
         fprintf(stderr, "gibd_ref: %s\n", w.err.msg);
         return 1;
     }
-    if (hcbd_friction_average(&w, 1, fr) != HCBD_OK) {
+    if (hcbd_world_friction_average(&w, 1, fr) != HCBD_OK) {
         fprintf(stderr, "gibd_ref: %s\n", w.err.msg);
         return 1;
     }
-    printf("%.17g %.17g %.17g %.17g\n", hcbd_potential_energy(&w), fr[0], fr[1], fr[2]);
-    hcbd_stress_enable(&w, 1);
-    if (steps < 1 || hcbd_step(&w, steps - 1) != HCBD_OK || hcbd_friction_average(&w, 1, fr) != HCBD_OK ||
-        hcbd_step(&w, 1) != HCBD_OK) {
+    printf("%.17g %.17g %.17g %.17g\n", hcbd_world_potential_energy(&w), fr[0], fr[1], fr[2]);
+    hcbd_world_stress_enable(&w, 1);
+    if (steps < 1 || hcbd_world_step(&w, steps - 1) != HCBD_OK || hcbd_world_friction_average(&w, 1, fr) != HCBD_OK ||
+        hcbd_world_step(&w, 1) != HCBD_OK) {
         fprintf(stderr, "gibd_ref: %s\n", w.err.msg);
         return 1;
     }
     printf("%.17g %.17g %.17g\n", fr[0], fr[1], fr[2]);
     {
         double st[4];
-        hcbd_stress_read(&w, st, NULL);
+        hcbd_world_stress_read(&w, st, NULL);
         printf("%.17g %.17g\n", st[1], st[2]);
     }
     hcbd_world_get_positions(&w, x, 0);

@@ -130,7 +130,7 @@ double PairStar::init_one(int i, int j)
   // the potential has no mixing rule: every type pair is given
   if (!setflag[i][j]) error->all(FLERR, "pair star: pair_coeff {} {} is not set", i, j);
   char msg[256];
-  if (hcbd_star_coef_of(f_arms[i][j], sigma[i][j], eps[i][j], &coef[i][j], msg, sizeof msg) != HCBD_OK)
+  if (hcbd_star_coef_init(&coef[i][j], f_arms[i][j], sigma[i][j], eps[i][j], msg, sizeof msg) != HCBD_OK)
     error->all(FLERR, "pair star: {}", msg);
   coef[j][i] = coef[i][j];
   offset[i][j] = offset_flag ? hcbd_star_potential(cut[i][j], f_arms[i][j], sigma[i][j], eps[i][j]) : 0.0;

@@ -36,7 +36,7 @@ class PairStar : public Pair {
  private:
   double cut_global;
   double **f_arms, **sigma, **eps, **cut, **offset;
-  hcbd_star_coef **coef;    // hcbd_star_coef_of of each type pair
+  hcbd_star_coef **coef;    // hcbd_star_coef_init of each type pair
   void allocate();
 };
 

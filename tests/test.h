@@ -83,7 +83,7 @@ static inline int make_world(hcbd_world *w, const hcbd_world_def *d)
 
 static inline int run(hcbd_world *w, int steps)
 {
-    if (hcbd_step(w, steps) != HCBD_OK) {
+    if (hcbd_world_step(w, steps) != HCBD_OK) {
         printf("    step: %s\n", w->err.msg);
         t_fail = 1;
         return 0;
@@ -92,7 +92,7 @@ static inline int run(hcbd_world *w, int steps)
 }
 
 #if HCBD_MODEL == HCBD_MODEL_HCBD
-static inline int hc_create(hcbd_hc_world *w, const hcbd_hc_def *d)
+static inline int hc_create(hcbd_hc_world *w, const hcbd_hc_world_def *d)
 {
     if (hcbd_hc_world_create(w, d) != HCBD_OK) {
         printf("    world: %s\n", w->err.msg);
@@ -104,7 +104,7 @@ static inline int hc_create(hcbd_hc_world *w, const hcbd_hc_def *d)
 
 static inline int hc_run(hcbd_hc_world *w, int steps)
 {
-    if (hcbd_hc_step(w, steps) != HCBD_OK) {
+    if (hcbd_hc_world_step(w, steps) != HCBD_OK) {
         printf("    step: %s\n", w->err.msg);
         t_fail = 1;
         return 0;
@@ -115,9 +115,9 @@ static inline int hc_run(hcbd_hc_world *w, int steps)
 /* A reduced HCBD scene: m = 1, kT = 1, nbar = 3/(4 pi) (lattice spacing
    a = 1.612), h = 2, nu = 1, c_s = 5 (c_s h / nu = 10), dt = 0.02; the box
    holds nx x ny x nz lattice sites exactly. */
-static inline hcbd_hc_def hc_scene(int nx, int ny, int nz, int npoly)
+static inline hcbd_hc_world_def hc_scene(int nx, int ny, int nz, int npoly)
 {
-    hcbd_hc_def d = hcbd_hc_def_default();
+    hcbd_hc_world_def d = hcbd_hc_world_def_default();
     hcbd_hc_params *p = &d.params;
     const double a = 1.6119919540164696; /* (4 pi / 3)^(1/3) */
     p->L[0] = nx * a;

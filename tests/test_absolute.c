@@ -3,7 +3,7 @@
    in long double, from the positions and velocities the world holds; none
    comes from the library's own constants.  The identities are one-step and
    deterministic where the library exposes its random numbers (pair normals
-   by hcbd_pair_normals, Brownian normals from the per-particle generator
+   by hcbd_world_pair_normals, Brownian normals from the per-particle generator
    states), so an error of a single coefficient by 10 % fails by orders of
    magnitude more than round-off; the noise amplitudes are also measured
    statistically (one-step variances from v = 0), against errors from block
@@ -86,8 +86,8 @@ static void abs_bd_normals(const hcbd_world *w, int id, ld out[3])
 {
     double z[3], z1[3];
     int c;
-    hcbd_particle_normals(w, w->step, id, z);
-    hcbd_particle_normals(w, w->step + 1, id, z1);
+    hcbd_world_particle_normals(w, w->step, id, z);
+    hcbd_world_particle_normals(w, w->step + 1, id, z1);
     for (c = 0; c < 3; ++c) out[c] = w->p.brownian == HCBD_BROWNIAN_LM ? ((ld)z[c] + z1[c]) / 2 : z[c];
 }
 
@@ -147,7 +147,7 @@ static void abs_ref_step(const hcbd_world *w, const double *x, const double *v, 
                 r = abs_sep(x, i, j, p->L, d);
                 if (r >= Rc) continue;
                 fij = abs_f(r, Rc, m, rho[i], rho[j]);
-                if (noise) hcbd_pair_normals(w, w->step, i < j ? i : j, i < j ? j : i, z);
+                if (noise) hcbd_world_pair_normals(w, w->step, i < j ? i : j, i < j ? j : i, z);
                 for (c = 0; c < 3; ++c) {
                     v1[3 * i + c] += fij / tau * ((ld)v[3 * j + c] - v[3 * i + c]) * dt;
                     if (noise) /* S_ij = m_i f_ij */
@@ -191,7 +191,7 @@ static void abs_ref_step(const hcbd_world *w, const double *x, const double *v, 
                 r = abs_sep(x, i, j, p->L, d);
                 if (r >= Rc) continue;
                 e = expl(-2 * m * abs_f(r, Rc, m, rho[i], rho[j]) * dt / (m * tau));
-                if (noise) hcbd_pair_normals(w, w->step, i, j, z);
+                if (noise) hcbd_world_pair_normals(w, w->step, i, j, z);
                 for (c = 0; c < 3; ++c) {
                     ld u = vs[i][c] - vs[j][c], up = u * e + sqrtl(2 * kT / m * (1 - e * e)) * z[c];
                     vs[i][c] += (up - u) / 2;
@@ -577,8 +577,8 @@ void test_abs_bd_noise_variance(void)
    Star potential (2014 eq. 28) written here in long double: the library's
    hcbd_star_potential and hcbd_star_force on both branches and at sigma,
    for three (f, sigma, eps); then the force a BD step applies (one step,
-   kT = 0: dR = F dt/xi along the pair), hcbd_potential_energy,
-   hcbd_virial_stress and hcbd_config_temperature of a pair at the same
+   kT = 0: dR = F dt/xi along the pair), hcbd_world_potential_energy,
+   hcbd_world_virial_stress and hcbd_world_config_temperature of a pair at the same
    distances, and nothing beyond rcut. */
 void test_abs_star_potential(void)
 {
@@ -626,18 +626,18 @@ void test_abs_star_potential(void)
                 hcbd_world_get_positions(&w, xyz, 0);
                 rr = abs_sep(xyz, 0, 1, d.params.L, dd);
                 Fr = rr < d.params.rcut ? abs_star_F(rr, f, sg, eps) : 0;
-                Vb = hcbd_potential_energy(&w);
+                Vb = hcbd_world_potential_energy(&w);
                 if (rr < d.params.rcut)
                     worst_e = fmax(worst_e, (double)fabsl(Vb / abs_star_V(rr, f, sg, eps) - 1));
                 else if (Vb != 0)
                     worst_e = HUGE_VAL;
-                hcbd_virial_stress(&w, s9);
+                hcbd_world_virial_stress(&w, s9);
                 for (c = 0; c < 9; ++c) {
                     ld want = -(dd[c / 3] * Fr * dd[c % 3] / rr) / (12.0L * 12 * 12);
                     worst_s = fmax(worst_s, (double)(fabsl(s9[c] - want) /
                                                      (1e-300 + fabsl(Fr * rr) / (12.0L * 12 * 12))));
                 }
-                if (rr < d.params.rcut && hcbd_config_temperature(&w, tc) == HCBD_OK) {
+                if (rr < d.params.rcut && hcbd_world_config_temperature(&w, tc) == HCBD_OK) {
                     ld lap = abs_star_lap(rr, f, sg, eps);
                     worst_t = fmax(worst_t, (double)fabsl(tc[0] / (2 * Fr * Fr) - 1));
                     /* (the difference quotient would straddle the kink of F' at sigma) */
@@ -666,11 +666,11 @@ void test_abs_star_potential(void)
     CHECK(worst_step[0] < (ABS_FLOAT ? 1e-4 : 1e-10), "step force (formula) off by %g", worst_step[0]);
     /* the cubic table in r^2 (hcbd.h, kernels) promises 1e-9 */
     CHECK(worst_step[1] < (ABS_FLOAT ? 1e-4 : 1e-9), "step force (table) off by %g", worst_step[1]);
-    CHECK(worst_e < (ABS_FLOAT ? 1e-5 : 1e-12), "hcbd_potential_energy off by %g", worst_e);
-    CHECK(worst_s < (ABS_FLOAT ? 1e-5 : 1e-12), "hcbd_virial_stress off by %g", worst_s);
-    CHECK(worst_t < (ABS_FLOAT ? 1e-5 : 1e-12), "hcbd_config_temperature sum |F|^2 off by %g", worst_t);
+    CHECK(worst_e < (ABS_FLOAT ? 1e-5 : 1e-12), "hcbd_world_potential_energy off by %g", worst_e);
+    CHECK(worst_s < (ABS_FLOAT ? 1e-5 : 1e-12), "hcbd_world_virial_stress off by %g", worst_s);
+    CHECK(worst_t < (ABS_FLOAT ? 1e-5 : 1e-12), "hcbd_world_config_temperature sum |F|^2 off by %g", worst_t);
     /* the lap reference is a difference quotient, good to ~1e-8 */
-    CHECK(worst_l < 1e-6, "hcbd_config_temperature sum lap U off by %g", worst_l);
+    CHECK(worst_l < 1e-6, "hcbd_world_config_temperature sum lap U off by %g", worst_l);
     CHECK(beyond_moved == 0, "%d components moved beyond rcut", beyond_moved);
 }
 

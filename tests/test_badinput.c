@@ -322,10 +322,10 @@ static void bi_param_table(void)
             r = hcbd_params_check(&d.params, msg, sizeof msg);
             snprintf(n2, sizeof n2, "hcbd_params_check %s", name);
             bi_judge(n2, t->want, want, r, msg, NULL);
-            snprintf(n2, sizeof n2, "hcbd_stability %s", name);
-            bi_judge(n2, t->want, NULL, hcbd_stability(&d.params, lim, &nl), NULL, NULL);
-            snprintf(n2, sizeof n2, "hcbd_theory_of %s", name);
-            bi_judge(n2, t->want, NULL, hcbd_theory_of(&d.params, &th), NULL, NULL);
+            snprintf(n2, sizeof n2, "hcbd_params_stability %s", name);
+            bi_judge(n2, t->want, NULL, hcbd_params_stability(&d.params, lim, &nl), NULL, NULL);
+            snprintf(n2, sizeof n2, "hcbd_params_theory %s", name);
+            bi_judge(n2, t->want, NULL, hcbd_params_theory(&d.params, &th), NULL, NULL);
         }
         {
             char n2[200];
@@ -356,7 +356,7 @@ static int bi_make(hcbd_world *w, int kind)
         return 0;
     }
     if (kind == WK_EMPTY) return 1;
-    if (hcbd_world_place_lattice(w, 64) != HCBD_OK || hcbd_step(w, 3) != HCBD_OK) {
+    if (hcbd_world_place_lattice(w, 64) != HCBD_OK || hcbd_world_step(w, 3) != HCBD_OK) {
         printf("    set-up: %s\n", w->err.msg);
         hcbd_world_destroy(w);
         return 0;
@@ -439,10 +439,10 @@ WF(c_setvel_inf)
 }
 WF(c_setvel_zero) { double v[3 * 64] = {0}; (void)msg; return hcbd_world_set_velocities(w, v); }
 /* step */
-WF(c_step_m1) { (void)msg; return hcbd_step(w, -1); }
-WF(c_step_min) { (void)msg; return hcbd_step(w, INT_MIN); }
-WF(c_step_nullw) { NOMSG; return hcbd_step(NULL, 1); }
-WF(c_step_1) { (void)msg; return hcbd_step(w, 1); }
+WF(c_step_m1) { (void)msg; return hcbd_world_step(w, -1); }
+WF(c_step_min) { (void)msg; return hcbd_world_step(w, INT_MIN); }
+WF(c_step_nullw) { NOMSG; return hcbd_world_step(NULL, 1); }
+WF(c_step_1) { (void)msg; return hcbd_world_step(w, 1); }
 /* world memory */
 WF(c_init_nullmem)
 {
@@ -496,19 +496,19 @@ WF(c_check_null)
 WF(c_getpos_null) { NOMSG; return hcbd_world_get_positions(w, NULL, 0); }
 WF(c_getpos_nullw) { double x[3]; NOMSG; return hcbd_world_get_positions(NULL, x, 1); }
 WF(c_getvel_null) { NOMSG; return hcbd_world_get_velocities(w, NULL); }
-WF(c_stress_null) { (void)msg; return hcbd_virial_stress(w, NULL); }
-WF(c_stress_nullw) { double s[9]; NOMSG; return hcbd_virial_stress(NULL, s); }
-WF(c_fric_nk0) { double o[3]; (void)msg; return hcbd_friction_average(w, 0, o); }
-WF(c_fric_nkm1) { double o[3]; (void)msg; return hcbd_friction_average(w, -1, o); }
-WF(c_fric_null) { (void)msg; return hcbd_friction_average(w, 1, NULL); }
-WF(c_fric_ok) { double o[3]; (void)msg; return hcbd_friction_average(w, 1, o); }
-WF(c_tc_nk0) { double o[12]; NOMSG; return hcbd_transverse_current(w, 0, o); }
-WF(c_tc_nkm1) { double o[12]; NOMSG; return hcbd_transverse_current(w, -1, o); }
-WF(c_tc_null) { NOMSG; return hcbd_transverse_current(w, 1, NULL); }
-WF(c_flux_2) { (void)msg; return hcbd_stress_enable(w, 2); }
-WF(c_flux_m1) { (void)msg; return hcbd_stress_enable(w, -1); }
-WF(c_flux_nullw) { NOMSG; return hcbd_stress_enable(NULL, 1); }
-WF(c_fluxread_null) { NOMSG; return hcbd_stress_read(w, NULL, NULL); }
+WF(c_stress_null) { (void)msg; return hcbd_world_virial_stress(w, NULL); }
+WF(c_stress_nullw) { double s[9]; NOMSG; return hcbd_world_virial_stress(NULL, s); }
+WF(c_fric_nk0) { double o[3]; (void)msg; return hcbd_world_friction_average(w, 0, o); }
+WF(c_fric_nkm1) { double o[3]; (void)msg; return hcbd_world_friction_average(w, -1, o); }
+WF(c_fric_null) { (void)msg; return hcbd_world_friction_average(w, 1, NULL); }
+WF(c_fric_ok) { double o[3]; (void)msg; return hcbd_world_friction_average(w, 1, o); }
+WF(c_tc_nk0) { double o[12]; NOMSG; return hcbd_world_transverse_current(w, 0, o); }
+WF(c_tc_nkm1) { double o[12]; NOMSG; return hcbd_world_transverse_current(w, -1, o); }
+WF(c_tc_null) { NOMSG; return hcbd_world_transverse_current(w, 1, NULL); }
+WF(c_flux_2) { (void)msg; return hcbd_world_stress_enable(w, 2); }
+WF(c_flux_m1) { (void)msg; return hcbd_world_stress_enable(w, -1); }
+WF(c_flux_nullw) { NOMSG; return hcbd_world_stress_enable(NULL, 1); }
+WF(c_fluxread_null) { NOMSG; return hcbd_world_stress_read(w, NULL, NULL); }
 static hcbd_result bi_rdf(hcbd_world *w, double rmax, int nbins, int null_g, int null_h)
 {
     static double hist[64];
@@ -680,12 +680,12 @@ WF(c_car_p2inf) { NOMSG; return bi_carreau(6, 7, INFINITY); }
 WF(c_car_nullg) { NOMSG; return bi_carreau(6, 8, 0); }
 WF(c_car_nullp) { NOMSG; return bi_carreau(6, 9, 0); }
 /* limits and theory */
-WF(c_stab_nullp) { hcbd_limit l[HCBD_MAX_LIMITS]; int n; NOMSG; return hcbd_stability(NULL, l, &n); }
-WF(c_stab_nullout) { int n; NOMSG; return hcbd_stability(&w->p, NULL, &n); }
-WF(c_stab_nulln) { hcbd_limit l[HCBD_MAX_LIMITS]; NOMSG; return hcbd_stability(&w->p, l, NULL); }
-WF(c_stab_ok) { hcbd_limit l[HCBD_MAX_LIMITS]; int n; NOMSG; return hcbd_stability(&w->p, l, &n); }
-WF(c_theory_nullp) { hcbd_theory t; NOMSG; return hcbd_theory_of(NULL, &t); }
-WF(c_theory_nullt) { NOMSG; return hcbd_theory_of(&w->p, NULL); }
+WF(c_stab_nullp) { hcbd_limit l[HCBD_MAX_LIMITS]; int n; NOMSG; return hcbd_params_stability(NULL, l, &n); }
+WF(c_stab_nullout) { int n; NOMSG; return hcbd_params_stability(&w->p, NULL, &n); }
+WF(c_stab_nulln) { hcbd_limit l[HCBD_MAX_LIMITS]; NOMSG; return hcbd_params_stability(&w->p, l, NULL); }
+WF(c_stab_ok) { hcbd_limit l[HCBD_MAX_LIMITS]; int n; NOMSG; return hcbd_params_stability(&w->p, l, &n); }
+WF(c_theory_nullp) { hcbd_theory t; NOMSG; return hcbd_params_theory(NULL, &t); }
+WF(c_theory_nullt) { NOMSG; return hcbd_params_theory(&w->p, NULL); }
 
 static const bi_wentry bi_calls[] = {
     {"set_positions w NULL", WK_GIBD, c_setpos_nullw, HCBD_ERR_NULL, NULL},
@@ -834,7 +834,7 @@ typedef struct {
 
 static void bi_take(const hcbd_world *w, bi_snap *s)
 {
-    s->sum = hcbd_state_checksum(w);
+    s->sum = hcbd_world_checksum(w);
     s->n = w->n;
     s->step = w->step;
     memcpy(s->p, &w->p, sizeof s->p);
@@ -886,18 +886,18 @@ void test_bad_input(void)
 
 #if HCBD_MODEL == HCBD_MODEL_HCBD
 /* ---- the 2018 world ---------------------------------------------------- */
-#define HD(f, v) {#f, offsetof(hcbd_hc_def, params.f), 'd', (v), NULL}
-#define HI(f, v) {#f, offsetof(hcbd_hc_def, params.f), 'i', (v), NULL}
-#define HE(f, v) {#f, offsetof(hcbd_hc_def, params.f), 'e', (v), NULL}
-#define HW(f, v) {#f, offsetof(hcbd_hc_def, f), 'i', (v), NULL}
+#define HD(f, v) {#f, offsetof(hcbd_hc_world_def, params.f), 'd', (v), NULL}
+#define HI(f, v) {#f, offsetof(hcbd_hc_world_def, params.f), 'i', (v), NULL}
+#define HE(f, v) {#f, offsetof(hcbd_hc_world_def, params.f), 'e', (v), NULL}
+#define HW(f, v) {#f, offsetof(hcbd_hc_world_def, f), 'i', (v), NULL}
 
 enum { HB_DEF, HB_RP, HB_NBASE };
 static const char *bi_hbase_name[HB_NBASE] = {"", "reverse-Poiseuille "};
 
 /* the reduced scene of test.h on a 5 x 5 x 5 lattice */
-static hcbd_hc_def bi_hc_base(int base)
+static hcbd_hc_world_def bi_hc_base(int base)
 {
-    hcbd_hc_def d = hc_scene(5, 5, 5, 200);
+    hcbd_hc_world_def d = hc_scene(5, 5, 5, 200);
     if (base == HB_RP) d.params.reverse_poiseuille = 1;
     return d;
 }
@@ -1000,12 +1000,12 @@ static void bi_hparam_table(void)
     size_t e;
     for (e = 0; e < sizeof bi_hparams / sizeof bi_hparams[0]; ++e) {
         const bi_hentry *t = &bi_hparams[e];
-        hcbd_hc_def d = bi_hc_base(t->base);
+        hcbd_hc_world_def d = bi_hc_base(t->base);
         hcbd_hc_world w;
         hcbd_limit lim[HCBD_MAX_LIMITS];
         char name[160], val[64], want[128], msg[256], n2[200];
-        int nl, in_params = t->bad.off >= offsetof(hcbd_hc_def, params) &&
-                            t->bad.off < offsetof(hcbd_hc_def, params) + sizeof(hcbd_hc_params);
+        int nl, in_params = t->bad.off >= offsetof(hcbd_hc_world_def, params) &&
+                            t->bad.off < offsetof(hcbd_hc_world_def, params) + sizeof(hcbd_hc_params);
         hcbd_result r;
         bi_apply(&d, &t->bad);
         bi_valstr(val, sizeof val, t->bad.k, t->bad.v, t->bad.ptr);
@@ -1017,8 +1017,8 @@ static void bi_hparam_table(void)
             r = hcbd_hc_params_check(&d.params, msg, sizeof msg);
             snprintf(n2, sizeof n2, "hcbd_hc_params_check %s", name);
             bi_judge(n2, t->want, want, r, msg, NULL);
-            snprintf(n2, sizeof n2, "hcbd_hc_stability %s", name);
-            bi_judge(n2, t->want, NULL, hcbd_hc_stability(&d.params, lim, &nl), NULL, NULL);
+            snprintf(n2, sizeof n2, "hcbd_hc_params_stability %s", name);
+            bi_judge(n2, t->want, NULL, hcbd_hc_params_stability(&d.params, lim, &nl), NULL, NULL);
         }
         snprintf(n2, sizeof n2, "hcbd_hc_world_create %s", name);
         r = hcbd_hc_world_create(&w, &d);
@@ -1034,7 +1034,7 @@ enum { HK_FP, HK_EMPTY, HK_HOLE, HK_NMAX };
 
 static int bi_hmake(hcbd_hc_world *w, int kind)
 {
-    hcbd_hc_def d = bi_hc_base(HB_DEF);
+    hcbd_hc_world_def d = bi_hc_base(HB_DEF);
     hcbd_result r = HCBD_OK;
     if (kind == HK_NMAX) d.params.n_max = 1e6;
     if (hcbd_hc_world_create(w, &d) != HCBD_OK) {
@@ -1058,12 +1058,12 @@ static int bi_hmake(hcbd_hc_world *w, int kind)
             p[3 * i + 1] = 0.2 * L * i + 0.1;
             p[3 * i + 2] = 0.5 * L;
         }
-        r = hcbd_hc_set_fluid(w, k, f, NULL);
-        if (r == HCBD_OK) r = hcbd_hc_set_polymers(w, 5, p);
+        r = hcbd_hc_world_set_fluid(w, k, f, NULL);
+        if (r == HCBD_OK) r = hcbd_hc_world_set_polymers(w, 5, p);
     } else {
-        r = hcbd_hc_place_fluid_lattice(w, 125);
-        if (r == HCBD_OK) r = hcbd_hc_place_polymers_random(w, 20);
-        if (r == HCBD_OK) r = hcbd_hc_step(w, 2);
+        r = hcbd_hc_world_place_fluid_lattice(w, 125);
+        if (r == HCBD_OK) r = hcbd_hc_world_place_polymers_random(w, 20);
+        if (r == HCBD_OK) r = hcbd_hc_world_step(w, 2);
     }
     if (r != HCBD_OK) {
         printf("    hc set-up: %s\n", w->err.msg);
@@ -1100,10 +1100,10 @@ static hcbd_result bi_setfluid(hcbd_hc_world *w, int n, int i, double v, int vel
     memset(u, 0, sizeof u);
     if (i >= 0 && !vel) x[i] = v;
     if (i >= 0 && vel) u[i] = v;
-    return hcbd_hc_set_fluid(w, n, x, vel ? u : NULL);
+    return hcbd_hc_world_set_fluid(w, n, x, vel ? u : NULL);
 }
-HF(h_fl_nullw) { (void)w; *msg = NULL; return hcbd_hc_set_fluid(NULL, 2, bi_xyz, NULL); }
-HF(h_fl_null) { (void)msg; return hcbd_hc_set_fluid(w, 125, NULL, NULL); }
+HF(h_fl_nullw) { (void)w; *msg = NULL; return hcbd_hc_world_set_fluid(NULL, 2, bi_xyz, NULL); }
+HF(h_fl_null) { (void)msg; return hcbd_hc_world_set_fluid(w, 125, NULL, NULL); }
 HF(h_fl_1) { (void)msg; return bi_setfluid(w, 1, -1, 0, 0); }
 HF(h_fl_m1) { (void)msg; return bi_setfluid(w, -1, -1, 0, 0); }
 HF(h_fl_126) { (void)msg; return bi_setfluid(w, 126, -1, 0, 0); }
@@ -1111,9 +1111,9 @@ HF(h_fl_nan) { (void)msg; return bi_setfluid(w, 125, 3 * 4 + 1, NAN, 0); }
 HF(h_fl_out) { (void)msg; return bi_setfluid(w, 125, 3 * 4, w->p.L[0], 0); }
 HF(h_fl_neg) { (void)msg; return bi_setfluid(w, 125, 3 * 4 + 2, -0.5, 0); }
 HF(h_fl_vnan) { (void)msg; return bi_setfluid(w, 125, 3 * 3, NAN, 1); }
-HF(h_lat_126) { (void)msg; return hcbd_hc_place_fluid_lattice(w, 126); }
-HF(h_lat_0) { (void)msg; return hcbd_hc_place_fluid_lattice(w, 0); }
-HF(h_lat_nullw) { (void)w; *msg = NULL; return hcbd_hc_place_fluid_lattice(NULL, 8); }
+HF(h_lat_126) { (void)msg; return hcbd_hc_world_place_fluid_lattice(w, 126); }
+HF(h_lat_0) { (void)msg; return hcbd_hc_world_place_fluid_lattice(w, 0); }
+HF(h_lat_nullw) { (void)w; *msg = NULL; return hcbd_hc_world_place_fluid_lattice(NULL, 8); }
 static hcbd_result bi_setpoly(hcbd_hc_world *w, int n, int i, double v)
 {
     static double x[3 * 210];
@@ -1125,12 +1125,12 @@ static hcbd_result bi_setpoly(hcbd_hc_world *w, int n, int i, double v)
         x[3 * k + 2] = w->pz[k];
     }
     if (i >= 0) x[i] = v;
-    return hcbd_hc_set_polymers(w, n, x);
+    return hcbd_hc_world_set_polymers(w, n, x);
 }
 HF(h_po_201) { (void)msg; return bi_setpoly(w, 201, -1, 0); }
 HF(h_po_m1) { (void)msg; return bi_setpoly(w, -1, -1, 0); }
-HF(h_po_null) { (void)msg; return hcbd_hc_set_polymers(w, 5, NULL); }
-HF(h_po_nullw) { (void)w; *msg = NULL; return hcbd_hc_set_polymers(NULL, 0, NULL); }
+HF(h_po_null) { (void)msg; return hcbd_hc_world_set_polymers(w, 5, NULL); }
+HF(h_po_nullw) { (void)w; *msg = NULL; return hcbd_hc_world_set_polymers(NULL, 0, NULL); }
 HF(h_po_nan) { (void)msg; return bi_setpoly(w, 20, 3 * 2 + 1, NAN); }
 HF(h_po_out) { (void)msg; return bi_setpoly(w, 20, 3 * 2, -0.25); }
 HF(h_po_dense)
@@ -1161,88 +1161,88 @@ HF(h_po_nofluid)
     x[15] = 0.75 * w->p.L[0];
     x[16] = 0.5 * w->p.L[1];
     x[17] = 0.8 * w->p.L[2];
-    return hcbd_hc_set_polymers(w, 6, x);
+    return hcbd_hc_world_set_polymers(w, 6, x);
 }
-HF(h_prand_201) { (void)msg; return hcbd_hc_place_polymers_random(w, 201); }
-HF(h_prand_m1) { (void)msg; return hcbd_hc_place_polymers_random(w, -1); }
-HF(h_prand_nullw) { (void)w; *msg = NULL; return hcbd_hc_place_polymers_random(NULL, 1); }
-HF(h_po_empty) { double x[3] = {1, 1, 1}; (void)msg; return hcbd_hc_set_polymers(w, 1, x); }
-HF(h_prand_empty) { (void)msg; return hcbd_hc_place_polymers_random(w, 1); }
-HF(h_refresh_empty) { (void)msg; return hcbd_hc_refresh(w); }
-HF(h_refresh_nullw) { (void)w; *msg = NULL; return hcbd_hc_refresh(NULL); }
-HF(h_step_empty) { (void)msg; return hcbd_hc_step(w, 1); }
-HF(h_step_m1) { (void)msg; return hcbd_hc_step(w, -1); }
-HF(h_step_nullw) { (void)w; *msg = NULL; return hcbd_hc_step(NULL, 1); }
+HF(h_prand_201) { (void)msg; return hcbd_hc_world_place_polymers_random(w, 201); }
+HF(h_prand_m1) { (void)msg; return hcbd_hc_world_place_polymers_random(w, -1); }
+HF(h_prand_nullw) { (void)w; *msg = NULL; return hcbd_hc_world_place_polymers_random(NULL, 1); }
+HF(h_po_empty) { double x[3] = {1, 1, 1}; (void)msg; return hcbd_hc_world_set_polymers(w, 1, x); }
+HF(h_prand_empty) { (void)msg; return hcbd_hc_world_place_polymers_random(w, 1); }
+HF(h_refresh_empty) { (void)msg; return hcbd_hc_world_refresh(w); }
+HF(h_refresh_nullw) { (void)w; *msg = NULL; return hcbd_hc_world_refresh(NULL); }
+HF(h_step_empty) { (void)msg; return hcbd_hc_world_step(w, 1); }
+HF(h_step_m1) { (void)msg; return hcbd_hc_world_step(w, -1); }
+HF(h_step_nullw) { (void)w; *msg = NULL; return hcbd_hc_world_step(NULL, 1); }
 /* pair variables: a pair that exists and one that does not */
 static int bi_pair(const hcbd_hc_world *w, int exists, int *b)
 {
     int k;
     for (k = 1; k < w->np; ++k) {
         double l;
-        if ((hcbd_hc_lambda(w, 0, k, &l) == HCBD_OK) == exists) {
+        if ((hcbd_hc_world_get_lambda(w, 0, k, &l) == HCBD_OK) == exists) {
             *b = k;
             return 1;
         }
     }
     return 0;
 }
-HF(h_lam_nullout) { int b = 1; *msg = NULL; bi_pair(w, 1, &b); return hcbd_hc_lambda(w, 0, b, NULL); }
-HF(h_lam_nullw) { double l; (void)w; *msg = NULL; return hcbd_hc_lambda(NULL, 0, 1, &l); }
-HF(h_lam_am1) { double l; *msg = NULL; return hcbd_hc_lambda(w, -1, 1, &l); }
-HF(h_lam_bnp) { double l; *msg = NULL; return hcbd_hc_lambda(w, 0, w->np, &l); }
-HF(h_lam_aa) { double l; *msg = NULL; return hcbd_hc_lambda(w, 3, 3, &l); }
+HF(h_lam_nullout) { int b = 1; *msg = NULL; bi_pair(w, 1, &b); return hcbd_hc_world_get_lambda(w, 0, b, NULL); }
+HF(h_lam_nullw) { double l; (void)w; *msg = NULL; return hcbd_hc_world_get_lambda(NULL, 0, 1, &l); }
+HF(h_lam_am1) { double l; *msg = NULL; return hcbd_hc_world_get_lambda(w, -1, 1, &l); }
+HF(h_lam_bnp) { double l; *msg = NULL; return hcbd_hc_world_get_lambda(w, 0, w->np, &l); }
+HF(h_lam_aa) { double l; *msg = NULL; return hcbd_hc_world_get_lambda(w, 3, 3, &l); }
 HF(h_lam_none)
 {
     double l;
     int b = -1;
     *msg = NULL;
     if (!bi_pair(w, 0, &b)) return HCBD_ERR_MODEL; /* the test world has no such pair */
-    return hcbd_hc_lambda(w, 0, b, &l);
+    return hcbd_hc_world_get_lambda(w, 0, b, &l);
 }
 HF(h_slam_nan)
 {
     int b = -1;
     (void)msg;
     if (!bi_pair(w, 1, &b)) return HCBD_ERR_MODEL;
-    return hcbd_hc_set_lambda(w, 0, b, NAN);
+    return hcbd_hc_world_set_lambda(w, 0, b, NAN);
 }
 HF(h_slam_inf)
 {
     int b = -1;
     (void)msg;
     if (!bi_pair(w, 1, &b)) return HCBD_ERR_MODEL;
-    return hcbd_hc_set_lambda(w, 0, b, -INFINITY);
+    return hcbd_hc_world_set_lambda(w, 0, b, -INFINITY);
 }
-HF(h_slam_am1) { (void)msg; return hcbd_hc_set_lambda(w, -1, 1, 0.5); }
-HF(h_slam_b20) { (void)msg; return hcbd_hc_set_lambda(w, 0, 20, 0.5); }
-HF(h_slam_aa) { (void)msg; return hcbd_hc_set_lambda(w, 3, 3, 0.5); }
+HF(h_slam_am1) { (void)msg; return hcbd_hc_world_set_lambda(w, -1, 1, 0.5); }
+HF(h_slam_b20) { (void)msg; return hcbd_hc_world_set_lambda(w, 0, 20, 0.5); }
+HF(h_slam_aa) { (void)msg; return hcbd_hc_world_set_lambda(w, 3, 3, 0.5); }
 HF(h_slam_none)
 {
     int b = -1;
     (void)msg;
     if (!bi_pair(w, 0, &b)) return HCBD_ERR_MODEL;
-    return hcbd_hc_set_lambda(w, 0, b, 0.5);
+    return hcbd_hc_world_set_lambda(w, 0, b, 0.5);
 }
-HF(h_slam_nullw) { (void)w; *msg = NULL; return hcbd_hc_set_lambda(NULL, 0, 1, 0.5); }
-HF(h_stress_2) { (void)msg; return hcbd_hc_stress_enable(w, 2); }
-HF(h_stress_m1) { (void)msg; return hcbd_hc_stress_enable(w, -1); }
-HF(h_stress_nullw) { (void)w; *msg = NULL; return hcbd_hc_stress_enable(NULL, 1); }
-HF(h_sread_null) { *msg = NULL; return hcbd_hc_stress_read(w, NULL, NULL); }
-HF(h_tc_nk0) { double o[12]; *msg = NULL; return hcbd_hc_transverse_current(w, 0, o); }
-HF(h_tc_null) { *msg = NULL; return hcbd_hc_transverse_current(w, 1, NULL); }
-HF(h_dr_null) { *msg = NULL; return hcbd_hc_density_range(w, NULL); }
-HF(h_dr_empty) { double o[3]; *msg = NULL; return hcbd_hc_density_range(w, o); }
+HF(h_slam_nullw) { (void)w; *msg = NULL; return hcbd_hc_world_set_lambda(NULL, 0, 1, 0.5); }
+HF(h_stress_2) { (void)msg; return hcbd_hc_world_stress_enable(w, 2); }
+HF(h_stress_m1) { (void)msg; return hcbd_hc_world_stress_enable(w, -1); }
+HF(h_stress_nullw) { (void)w; *msg = NULL; return hcbd_hc_world_stress_enable(NULL, 1); }
+HF(h_sread_null) { *msg = NULL; return hcbd_hc_world_stress_read(w, NULL, NULL); }
+HF(h_tc_nk0) { double o[12]; *msg = NULL; return hcbd_hc_world_transverse_current(w, 0, o); }
+HF(h_tc_null) { *msg = NULL; return hcbd_hc_world_transverse_current(w, 1, NULL); }
+HF(h_dr_null) { *msg = NULL; return hcbd_hc_world_density_range(w, NULL); }
+HF(h_dr_empty) { double o[3]; *msg = NULL; return hcbd_hc_world_density_range(w, o); }
 static hcbd_result bi_htheory(int what, double v)
 {
-    hcbd_hc_def d = bi_hc_base(HB_DEF);
+    hcbd_hc_world_def d = bi_hc_base(HB_DEF);
     hcbd_hc_theory t;
     if (what == 1) d.params.eta = v;
     if (what == 2) d.params.rho = v;
     if (what == 3) d.params.P0 = v;
     if (what == 4) d.params.g[0] = v;
-    if (what == 5) return hcbd_hc_theory_of(NULL, &t);
-    if (what == 6) return hcbd_hc_theory_of(&d.params, NULL);
-    return hcbd_hc_theory_of(&d.params, &t);
+    if (what == 5) return hcbd_hc_params_theory(NULL, &t);
+    if (what == 6) return hcbd_hc_params_theory(&d.params, NULL);
+    return hcbd_hc_params_theory(&d.params, &t);
 }
 HF(h_th_eta) { (void)w; *msg = NULL; return bi_htheory(1, NAN); }
 HF(h_th_etaneg) { (void)w; *msg = NULL; return bi_htheory(1, -1); }
@@ -1251,7 +1251,7 @@ HF(h_th_P0) { (void)w; *msg = NULL; return bi_htheory(3, -1); }
 HF(h_th_g) { (void)w; *msg = NULL; return bi_htheory(4, NAN); }
 HF(h_th_nullp) { (void)w; *msg = NULL; return bi_htheory(5, 0); }
 HF(h_th_nullt) { (void)w; *msg = NULL; return bi_htheory(6, 0); }
-HF(h_stab_null) { int n; (void)w; *msg = NULL; return hcbd_hc_stability(&w->p, NULL, &n); }
+HF(h_stab_null) { int n; (void)w; *msg = NULL; return hcbd_hc_params_stability(&w->p, NULL, &n); }
 HF(h_check_null)
 {
     (void)w;
@@ -1261,7 +1261,7 @@ HF(h_check_null)
 }
 static hcbd_result bi_si(int what, double v)
 {
-    hcbd_hc_si si = hcbd_hc_si_table1();
+    hcbd_hc_si si = hcbd_hc_si_default();
     hcbd_hc_params p;
     double tu = 1e-6;
     strcpy(bi_msg, "(untouched)");
@@ -1270,8 +1270,8 @@ static hcbd_result bi_si(int what, double v)
     if (what == 3) si.T = v;
     if (what == 4) si.rho = v;
     if (what == 5) si.dt = v;
-    if (what == 6) return hcbd_hc_params_si(NULL, tu, &p, bi_msg, sizeof bi_msg);
-    return hcbd_hc_params_si(&si, tu, &p, bi_msg, sizeof bi_msg);
+    if (what == 6) return hcbd_hc_si_params(NULL, tu, &p, bi_msg, sizeof bi_msg);
+    return hcbd_hc_si_params(&si, tu, &p, bi_msg, sizeof bi_msg);
 }
 HF(h_si_tu0) { (void)w; *msg = bi_msg; return bi_si(1, 0); }
 HF(h_si_tunan) { (void)w; *msg = bi_msg; return bi_si(1, NAN); }
@@ -1283,7 +1283,7 @@ HF(h_si_null) { (void)w; *msg = bi_msg; return bi_si(6, 0); }
 HF(h_init_nullmem)
 {
     hcbd_hc_world v;
-    hcbd_hc_def d = bi_hc_base(HB_DEF);
+    hcbd_hc_world_def d = bi_hc_base(HB_DEF);
     hcbd_result r = hcbd_hc_world_init(&v, &d, NULL, 1 << 20);
     (void)w;
     snprintf(bi_msg, sizeof bi_msg, "%s", v.err.msg);
@@ -1293,7 +1293,7 @@ HF(h_init_nullmem)
 HF(h_init_short)
 {
     hcbd_hc_world v;
-    hcbd_hc_def d = bi_hc_base(HB_DEF);
+    hcbd_hc_world_def d = bi_hc_base(HB_DEF);
     size_t need = hcbd_hc_world_bytes(&d);
     char *mem = (char *)malloc(need);
     hcbd_result r = hcbd_hc_world_init(&v, &d, mem, need - 64);
@@ -1400,7 +1400,7 @@ typedef struct {
 
 static void bi_htake(const hcbd_hc_world *w, bi_hsnap *s)
 {
-    s->sum = hcbd_hc_state_checksum(w);
+    s->sum = hcbd_hc_world_checksum(w);
     s->nf = w->nf;
     s->np = w->np;
     s->step = w->step;
@@ -1456,7 +1456,7 @@ static hcbd_result bi_load_buf(const void *buf, size_t size)
     hcbd_world v;
     hcbd_result r;
     memset(&v, 0, sizeof v);
-    r = hcbd_checkpoint_load(&v, buf, size);
+    r = hcbd_world_checkpoint_load(&v, buf, size);
     snprintf(bi_msg, sizeof bi_msg, "%s", v.err.msg);
     if (r == HCBD_OK) hcbd_world_destroy(&v);
     return r;
@@ -1464,13 +1464,13 @@ static hcbd_result bi_load_buf(const void *buf, size_t size)
 /* a real checkpoint of the test world, spoilt as asked */
 static hcbd_result bi_ck_take(hcbd_world *w)
 {
-    bi_ck_n = hcbd_checkpoint_size(w);
+    bi_ck_n = hcbd_world_checkpoint_size(w);
     if (bi_ck_n == 0 || bi_ck_n > sizeof bi_ck) return HCBD_ERR_MEMORY;
-    return hcbd_checkpoint_save(w, bi_ck, bi_ck_n);
+    return hcbd_world_checkpoint_save(w, bi_ck, bi_ck_n);
 }
-WF(io_save_short) { unsigned char b[16]; (void)msg; return hcbd_checkpoint_save(w, b, sizeof b); }
-WF(io_save_null) { (void)msg; return hcbd_checkpoint_save(w, NULL, 1 << 16); }
-WF(io_save_size0) { unsigned char b[16]; (void)msg; return hcbd_checkpoint_save(w, b, 0); }
+WF(io_save_short) { unsigned char b[16]; (void)msg; return hcbd_world_checkpoint_save(w, b, sizeof b); }
+WF(io_save_null) { (void)msg; return hcbd_world_checkpoint_save(w, NULL, 1 << 16); }
+WF(io_save_size0) { unsigned char b[16]; (void)msg; return hcbd_world_checkpoint_save(w, b, 0); }
 WF(io_load_null) { (void)w; *msg = bi_msg; return bi_load_buf(NULL, 1 << 16); }
 WF(io_load_0) { (void)w; *msg = bi_msg; return bi_load_buf(bi_ck, 0); }
 WF(io_load_garbage)
@@ -1502,7 +1502,7 @@ WF(io_load_missing)
     hcbd_result r;
     (void)w;
     memset(&v, 0, sizeof v);
-    r = hcbd_load(&v, "/nonexistent-hcbd-dir/missing.chk");
+    r = hcbd_world_load(&v, "/nonexistent-hcbd-dir/missing.chk");
     snprintf(bi_msg, sizeof bi_msg, "%s", v.err.msg);
     *msg = bi_msg;
     if (r == HCBD_OK) hcbd_world_destroy(&v);
@@ -1514,15 +1514,15 @@ WF(io_load_nullpath)
     hcbd_result r;
     (void)w;
     memset(&v, 0, sizeof v);
-    r = hcbd_load(&v, NULL);
+    r = hcbd_world_load(&v, NULL);
     snprintf(bi_msg, sizeof bi_msg, "%s", v.err.msg);
     *msg = bi_msg;
     if (r == HCBD_OK) hcbd_world_destroy(&v);
     return r;
 }
-WF(io_save_baddir) { (void)msg; return hcbd_save(w, "/nonexistent-hcbd-dir/x.chk"); }
-WF(io_save_nullpath) { (void)msg; return hcbd_save(w, NULL); }
-WF(io_xyz_nullf) { *msg = NULL; return hcbd_xyz_write(w, NULL, NULL, 0); }
+WF(io_save_baddir) { (void)msg; return hcbd_world_save(w, "/nonexistent-hcbd-dir/x.chk"); }
+WF(io_save_nullpath) { (void)msg; return hcbd_world_save(w, NULL); }
+WF(io_xyz_nullf) { *msg = NULL; return hcbd_world_write_xyz(w, NULL, NULL, 0); }
 static hcbd_result bi_xyz_ids(const hcbd_world *w, int id, int nids)
 {
     int ids[2] = {0, 0};
@@ -1530,14 +1530,14 @@ static hcbd_result bi_xyz_ids(const hcbd_world *w, int id, int nids)
     hcbd_result r;
     if (!f) return HCBD_ERR_MODEL;
     ids[1] = id;
-    r = hcbd_xyz_write(w, f, ids, nids);
+    r = hcbd_world_write_xyz(w, f, ids, nids);
     fclose(f);
     return r;
 }
 WF(io_xyz_id64) { *msg = NULL; return bi_xyz_ids(w, 64, 2); }
 WF(io_xyz_idm1) { *msg = NULL; return bi_xyz_ids(w, -1, 2); }
 WF(io_xyz_nidsm1) { *msg = NULL; return bi_xyz_ids(w, 1, -1); }
-WF(io_off_nullf) { *msg = NULL; return hcbd_xyz_offenders(w, NULL); }
+WF(io_off_nullf) { *msg = NULL; return hcbd_world_write_offenders(w, NULL); }
 
 static const bi_wentry bi_iocalls[] = {
     {"checkpoint_save 16-byte buffer", WK_GIBD, io_save_short, HCBD_ERR_MEMORY, "16"},
@@ -1567,13 +1567,13 @@ static hcbd_result bi_hload_buf(const void *buf, size_t size)
     hcbd_hc_world v;
     hcbd_result r;
     memset(&v, 0, sizeof v);
-    r = hcbd_hc_checkpoint_load(&v, buf, size);
+    r = hcbd_hc_world_checkpoint_load(&v, buf, size);
     snprintf(bi_msg, sizeof bi_msg, "%s", v.err.msg);
     if (r == HCBD_OK) hcbd_hc_world_destroy(&v);
     return r;
 }
-HF(hio_save_short) { unsigned char b[16]; (void)msg; return hcbd_hc_checkpoint_save(w, b, sizeof b); }
-HF(hio_save_null) { (void)msg; return hcbd_hc_checkpoint_save(w, NULL, 1 << 16); }
+HF(hio_save_short) { unsigned char b[16]; (void)msg; return hcbd_hc_world_checkpoint_save(w, b, sizeof b); }
+HF(hio_save_null) { (void)msg; return hcbd_hc_world_checkpoint_save(w, NULL, 1 << 16); }
 HF(hio_load_0) { (void)w; *msg = bi_msg; return bi_hload_buf(bi_ck, 0); }
 HF(hio_load_garbage)
 {
@@ -1585,9 +1585,9 @@ HF(hio_load_garbage)
 }
 HF(hio_load_flip)
 {
-    size_t n = hcbd_hc_checkpoint_size(w);
+    size_t n = hcbd_hc_world_checkpoint_size(w);
     *msg = bi_msg;
-    if (n == 0 || n > sizeof bi_ck || hcbd_hc_checkpoint_save(w, bi_ck, n) != HCBD_OK)
+    if (n == 0 || n > sizeof bi_ck || hcbd_hc_world_checkpoint_save(w, bi_ck, n) != HCBD_OK)
         return HCBD_ERR_MODEL;
     bi_ck[n / 2] ^= 0x04;
     return bi_hload_buf(bi_ck, n);
@@ -1601,8 +1601,8 @@ HF(hio_load_gibd)
     (void)w;
     *msg = bi_msg;
     if (!bi_make(&g, WK_GIBD)) return HCBD_ERR_STATE;
-    n = hcbd_checkpoint_size(&g);
-    r = n > 0 && n <= sizeof bi_ck ? hcbd_checkpoint_save(&g, bi_ck, n) : HCBD_ERR_MEMORY;
+    n = hcbd_world_checkpoint_size(&g);
+    r = n > 0 && n <= sizeof bi_ck ? hcbd_world_checkpoint_save(&g, bi_ck, n) : HCBD_ERR_MEMORY;
     hcbd_world_destroy(&g);
     if (r != HCBD_OK) return HCBD_ERR_STATE;
     return bi_hload_buf(bi_ck, n);
@@ -1613,14 +1613,14 @@ HF(hio_load_missing)
     hcbd_result r;
     (void)w;
     memset(&v, 0, sizeof v);
-    r = hcbd_hc_load(&v, "/nonexistent-hcbd-dir/missing.chk");
+    r = hcbd_hc_world_load(&v, "/nonexistent-hcbd-dir/missing.chk");
     snprintf(bi_msg, sizeof bi_msg, "%s", v.err.msg);
     *msg = bi_msg;
     if (r == HCBD_OK) hcbd_hc_world_destroy(&v);
     return r;
 }
-HF(hio_save_baddir) { (void)msg; return hcbd_hc_save(w, "/nonexistent-hcbd-dir/x.chk"); }
-HF(hio_xyz_nullf) { *msg = NULL; return hcbd_hc_xyz_write(w, NULL); }
+HF(hio_save_baddir) { (void)msg; return hcbd_hc_world_save(w, "/nonexistent-hcbd-dir/x.chk"); }
+HF(hio_xyz_nullf) { *msg = NULL; return hcbd_hc_world_write_xyz(w, NULL); }
 
 static const bi_hwentry bi_hiocalls[] = {
     {"checkpoint_save 16-byte buffer", HK_FP, hio_save_short, HCBD_ERR_MEMORY, "16"},

@@ -22,7 +22,7 @@ void test_density_normalisation(void)
             int i, j;
             w.p.seed = 1000 + s;
             hcbd_world_place_random(&w, 1000);
-            hcbd_friction_average(&w, 1, out);
+            hcbd_world_friction_average(&w, 1, out);
             hcbd_world_get_positions(&w, xyz, 0);
             for (i = 0; i < 1000; ++i) {
                 double sw = w0;
@@ -76,9 +76,9 @@ void test_momentum_conservation(void)
     d.params.pair_integrator = integ ? HCBD_PAIR_SHARDLOW : HCBD_PAIR_EULER;
     if (!make_world(&w, &d)) return;
     hcbd_world_place_lattice(&w, 512);
-    hcbd_momentum(&w, p0);
+    hcbd_world_momentum(&w, p0);
     if (!run(&w, steps)) return;
-    hcbd_momentum(&w, p1);
+    hcbd_world_momentum(&w, p1);
     hcbd_world_get_velocities(&w, v);
     for (i = 0; i < 3 * 512; ++i) scale += w.m * fabs(v[i]);
     for (i = 0; i < 3; ++i)
@@ -151,13 +151,13 @@ static uint64_t run_hash(hcbd_world_def d, int steps)
     if (!make_world(&w, &d)) return 0;
     hcbd_world_place_lattice(&w, d.capacity);
     run(&w, steps);
-    h = hcbd_state_checksum(&w);
-    hcbd_virial_stress(&w, obs);
-    hcbd_transverse_current(&w, 1, obs + 9);
-    hcbd_momentum(&w, obs + 21);
-    if (w.gibd) hcbd_friction_average(&w, 1, obs + 24);
+    h = hcbd_world_checksum(&w);
+    hcbd_world_virial_stress(&w, obs);
+    hcbd_world_transverse_current(&w, 1, obs + 9);
+    hcbd_world_momentum(&w, obs + 21);
+    if (w.gibd) hcbd_world_friction_average(&w, 1, obs + 24);
     else obs[24] = obs[25] = obs[26] = 0;
-    obs[27] = hcbd_temperature(&w);
+    obs[27] = hcbd_world_temperature(&w);
     for (k = 0; k < 28; ++k) {
         uint64_t u;
         memcpy(&u, &obs[k], 8);
@@ -249,10 +249,10 @@ void test_fast_paths_stress_bits(void)
                         if (!make_world(&b, &d)) { hcbd_world_destroy(&a); return; }
                         hcbd_world_place_lattice(&a, d.capacity);
                         hcbd_world_place_lattice(&b, d.capacity);
-                        hcbd_stress_enable(&b, 1);
+                        hcbd_world_stress_enable(&b, 1);
                         run(&a, steps);
                         run(&b, steps);
-                        CHECK(hcbd_state_checksum(&a) == hcbd_state_checksum(&b),
+                        CHECK(hcbd_world_checksum(&a) == hcbd_world_checksum(&b),
                               "%s%s%s, potential %d%s: stress accumulation changes the state",
                               dyn == 0 ? "BD" : dyn == 1 ? "GI-BD sweep" : "GI-BD Euler", shear ? ", sheared" : "",
                               lag ? ", lagged densities" : "", pot, walls ? ", walls" : "");
@@ -306,9 +306,9 @@ void test_skipped_work(void)
     hcbd_world_place_lattice(&w2, 512);
     run(&w, 50);
     run(&w2, 50);
-    CHECK(hcbd_state_checksum(&w) == hcbd_state_checksum(&w2), "kT = 0 depends on the seed");
+    CHECK(hcbd_world_checksum(&w) == hcbd_world_checksum(&w2), "kT = 0 depends on the seed");
     hcbd_world_destroy(&w2);
-    CHECK(hcbd_temperature(&w) < 1e-20, "kT = 0 lattice start has T = %g", hcbd_temperature(&w));
+    CHECK(hcbd_world_temperature(&w) < 1e-20, "kT = 0 lattice start has T = %g", hcbd_world_temperature(&w));
     hcbd_world_destroy(&w);
     d = star_scene();
     d.params.dynamics = HCBD_DYN_BD;
@@ -337,15 +337,15 @@ void test_lagged_density(void)
     run(&a, 1);
     run(&b, 1);
     /* first step: no lag yet, identical */
-    CHECK(hcbd_state_checksum(&a) == hcbd_state_checksum(&b), "first step differs");
+    CHECK(hcbd_world_checksum(&a) == hcbd_world_checksum(&b), "first step differs");
     run(&a, 200);
     run(&b, 200);
-    hcbd_momentum(&b, pb);
-    hcbd_momentum(&a, pa);
-    ta = hcbd_temperature(&a);
-    tb = hcbd_temperature(&b);
+    hcbd_world_momentum(&b, pb);
+    hcbd_world_momentum(&a, pa);
+    ta = hcbd_world_temperature(&a);
+    tb = hcbd_world_temperature(&b);
     CHECK(fabs(pb[0]) < 1e-12 && fabs(pb[1]) < 1e-12, "lagged momentum %g %g", pb[0], pb[1]);
-    CHECK(hcbd_state_checksum(&a) != hcbd_state_checksum(&b), "lag has no effect");
+    CHECK(hcbd_world_checksum(&a) != hcbd_world_checksum(&b), "lag has no effect");
     /* the densities held for the next step are those of the positions
        before the last step (2014's lag), by an independent O(N^2) sum */
     {

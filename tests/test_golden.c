@@ -45,17 +45,17 @@ static uint64_t golden_run(int sc, int threads, int *skip)
            default, in a scene whose sweep runs in 21 x 14 x 1 blocks of
            7 x 7 colours (h = 1.3), so that 2 and 3 threads sweep side by
            side; owners in a block go by fine cell, then id */
-        hcbd_hc_def d = hc_scene(12, 8, 5, 60);
+        hcbd_hc_world_def d = hc_scene(12, 8, 5, 60);
         hcbd_hc_world w;
         d.params.threads = threads;
         d.params.gdot = 0.05;
         d.params.h = 1.3;
-        if (hcbd_hc_world_create(&w, &d) != HCBD_OK || hcbd_hc_place_fluid_lattice(&w, d.fluid_capacity) != HCBD_OK ||
-            hcbd_hc_place_polymers_random(&w, 60) != HCBD_OK || hcbd_hc_step(&w, 200) != HCBD_OK) {
+        if (hcbd_hc_world_create(&w, &d) != HCBD_OK || hcbd_hc_world_place_fluid_lattice(&w, d.fluid_capacity) != HCBD_OK ||
+            hcbd_hc_world_place_polymers_random(&w, 60) != HCBD_OK || hcbd_hc_world_step(&w, 200) != HCBD_OK) {
             CHECK(0, "%s: %s", g_name[sc], w.err.msg);
             return 0;
         }
-        h = hcbd_hc_state_checksum(&w);
+        h = hcbd_hc_world_checksum(&w);
         hcbd_hc_world_destroy(&w);
 #else
         *skip = 1;
@@ -89,12 +89,12 @@ static uint64_t golden_run(int sc, int threads, int *skip)
             p->tau = 3e-3;
         }
         if (!make_world(&w, &d)) return 0;
-        if (hcbd_world_place_lattice(&w, 512) != HCBD_OK || hcbd_step(&w, 300) != HCBD_OK) {
+        if (hcbd_world_place_lattice(&w, 512) != HCBD_OK || hcbd_world_step(&w, 300) != HCBD_OK) {
             CHECK(0, "%s: %s", g_name[sc], w.err.msg);
             hcbd_world_destroy(&w);
             return 0;
         }
-        h = hcbd_state_checksum(&w);
+        h = hcbd_world_checksum(&w);
         hcbd_world_destroy(&w);
         return h;
     }

@@ -146,7 +146,7 @@ static void a_polymer(const hcbd_hc_world *w, const double *nfl, double *pn, dou
             double fr = 0, lam;
             if (b == a || r >= rc) continue;
             fr = -cfh * (mu[a] + mu[b]) * a_rapidd(r, sg, rc);
-            if (p->alpha > 0 && hcbd_hc_lambda(w, a, b, &lam) == HCBD_OK) {
+            if (p->alpha > 0 && hcbd_hc_world_get_lambda(w, a, b, &lam) == HCBD_OK) {
                 const double leq = (1 - r / rc) * (1 - r / rc), dleq = -2.0 * (1 - r / rc) / rc;
                 fr += p->alpha * (lam - leq) * dleq;
             }
@@ -200,9 +200,9 @@ static int a_ok(hcbd_hc_world *w, hcbd_result r, const char *what)
 
 /* The statistical fluid scene (as test_hcbd.c's): nu = eta/rho = 1,
    c_s = 2.5, h = 2, lattice spacing 1.612, blob mass `mass`. */
-static hcbd_hc_def a_fluid_scene(int nx, double mass, double dt, int fluct, hcbd_pair_integrator pi)
+static hcbd_hc_world_def a_fluid_scene(int nx, double mass, double dt, int fluct, hcbd_pair_integrator pi)
 {
-    hcbd_hc_def d = hc_scene(nx, 5, 5, 0);
+    hcbd_hc_world_def d = hc_scene(nx, 5, 5, 0);
     d.params.rho = mass * d.params.nbar;
     d.params.eta = d.params.rho;
     d.params.P0 = 2.5 * 2.5 * d.params.rho / 7.0;
@@ -239,13 +239,13 @@ static double a_lattice_rate(const hcbd_hc_world *w, const double *n, double k)
 }
 
 /* The M4 density of the scene's lattice (blob 0 of a lattice world). */
-static double a_lattice_density(const hcbd_hc_def *d)
+static double a_lattice_density(const hcbd_hc_world_def *d)
 {
     hcbd_hc_world w;
     double s = 0, dd[3];
     int j;
     if (!hc_create(&w, d)) return d->params.nbar;
-    if (a_ok(&w, hcbd_hc_place_fluid_lattice(&w, d->fluid_capacity), "lattice"))
+    if (a_ok(&w, hcbd_hc_world_place_fluid_lattice(&w, d->fluid_capacity), "lattice"))
         for (j = 0; j < w.nf; ++j) s += a_m4(a_ff(&w, 0, j, dd), w.p.h);
     hcbd_hc_world_destroy(&w);
     return s;
@@ -267,7 +267,7 @@ void test_hc_abs_eos(void)
     hcbd_hc_params p0;
     int q;
     for (q = 0; q < 5; ++q) {
-        hcbd_hc_def d = hc_scene(6, 6, 6, 0);
+        hcbd_hc_world_def d = hc_scene(6, 6, 6, 0);
         hcbd_hc_world w;
         double *n;
         int i, c;
@@ -275,7 +275,7 @@ void test_hc_abs_eos(void)
         d.params.fluctuations = 0;
         p0 = d.params;
         if (!hc_create(&w, &d)) return;
-        if (!a_ok(&w, hcbd_hc_place_fluid_lattice(&w, d.fluid_capacity), "lattice")) return;
+        if (!a_ok(&w, hcbd_hc_world_place_fluid_lattice(&w, d.fluid_capacity), "lattice")) return;
         n = (double *)malloc(sizeof(double) * w.nf);
         a_fluid_density(&w, n);
         for (i = 0; i < w.nf; ++i) {
@@ -330,7 +330,7 @@ void test_hc_abs_polymer_pair_forces(void)
     int q, kind;
     for (kind = 0; kind < 3; ++kind)
         for (q = 0; q < 3; ++q) {
-            hcbd_hc_def d = hc_scene(5, 5, 5, 2);
+            hcbd_hc_world_def d = hc_scene(5, 5, 5, 2);
             hcbd_hc_world w;
             hcbd_hc_params *p = &d.params;
             const double r = rs[q], sg = p->sigma, rc = p->rc, leq = (1 - r / rc) * (1 - r / rc);
@@ -344,9 +344,9 @@ void test_hc_abs_polymer_pair_forces(void)
             if (kind == 2) { p->kT = 0; p->alpha = 50; p->tau_lambda = 0.05; } /* relaxation */
             for (c = 0; c < 3; ++c) xyz[3 + c] = xyz[c] + r * e[c];
             if (!hc_create(&w, &d)) return;
-            if (!a_ok(&w, hcbd_hc_place_fluid_lattice(&w, d.fluid_capacity), "lattice") ||
-                !a_ok(&w, hcbd_hc_set_polymers(&w, 2, xyz), "polymers") ||
-                (p->alpha > 0 && !a_ok(&w, hcbd_hc_set_lambda(&w, 0, 1, lam), "set_lambda"))) {
+            if (!a_ok(&w, hcbd_hc_world_place_fluid_lattice(&w, d.fluid_capacity), "lattice") ||
+                !a_ok(&w, hcbd_hc_world_set_polymers(&w, 2, xyz), "polymers") ||
+                (p->alpha > 0 && !a_ok(&w, hcbd_hc_world_set_lambda(&w, 0, 1, lam), "set_lambda"))) {
                 hcbd_hc_world_destroy(&w);
                 return;
             }
@@ -372,7 +372,7 @@ void test_hc_abs_polymer_pair_forces(void)
             } else {
                 double l1, pred = leq + (lam - leq) * exp(-p->dt / p->tau_lambda);
                 hc_run(&w, 1);
-                hcbd_hc_lambda(&w, 0, 1, &l1);
+                hcbd_hc_world_get_lambda(&w, 0, 1, &l1);
                 if (fabs(l1 - pred) / fabs(lam - leq) > worst_l) worst_l = fabs(l1 - pred) / fabs(lam - leq);
             }
             hcbd_hc_world_destroy(&w);
@@ -404,7 +404,7 @@ void test_hc_abs_one_step(void)
     const double tol = ABS_FLOAT ? 1e-4 : 1e-9;
     int var;
     for (var = 0; var < 3; ++var) {
-        hcbd_hc_def d = hc_scene(5, 5, 5, 6);
+        hcbd_hc_world_def d = hc_scene(5, 5, 5, 6);
         hcbd_hc_params *p = &d.params;
         hcbd_hc_world w;
         hcbd_rng g;
@@ -433,7 +433,7 @@ void test_hc_abs_one_step(void)
         m = A_MASS(p);
         hcbd_rng_seed(&g, 11 + var);
         if (!hc_create(&w, &d)) return;
-        ok = a_ok(&w, hcbd_hc_place_fluid_lattice(&w, nf), "lattice");
+        ok = a_ok(&w, hcbd_hc_world_place_fluid_lattice(&w, nf), "lattice");
         for (i = 0; i < nf && ok; ++i)
             for (c = 0; c < 3; ++c) {
                 double x = (c == 0 ? w.fx[i] : (c == 1 ? w.fy[i] : w.fz[i])) + 0.6 * (hcbd_rng_uniform(&g) - 0.5);
@@ -441,10 +441,10 @@ void test_hc_abs_one_step(void)
                 if (xyz[3 * i + c] >= p->L[c]) xyz[3 * i + c] = 0;
                 v[3 * i + c] = hcbd_rng_uniform(&g) - 0.5;
             }
-        ok = ok && a_ok(&w, hcbd_hc_set_fluid(&w, nf, xyz, v), "fluid");
+        ok = ok && a_ok(&w, hcbd_hc_world_set_fluid(&w, nf, xyz, v), "fluid");
         for (a = 0; a < np; ++a)
             for (c = 0; c < 3; ++c) pxyz[3 * a + c] = 0.5 * p->L[c] + cl[a][c];
-        ok = ok && a_ok(&w, hcbd_hc_set_polymers(&w, np, pxyz), "polymers");
+        ok = ok && a_ok(&w, hcbd_hc_world_set_polymers(&w, np, pxyz), "polymers");
         for (a = 0; a < np && ok; ++a)
             for (b = a + 1; b < np; ++b) {
                 double dd[3], r = a_sep(p->L, pxyz[3 * a], pxyz[3 * a + 1], pxyz[3 * a + 2], pxyz[3 * b],
@@ -452,7 +452,7 @@ void test_hc_abs_one_step(void)
                 lam0[6 * a + b] = NAN;
                 if (r >= p->rc) continue;
                 lam0[6 * a + b] = (1 - r / p->rc) * (1 - r / p->rc) + 0.3 - 0.1 * ((a + b) % 4);
-                ok = a_ok(&w, hcbd_hc_set_lambda(&w, a, b, lam0[6 * a + b]), "set_lambda");
+                ok = a_ok(&w, hcbd_hc_world_set_lambda(&w, a, b, lam0[6 * a + b]), "set_lambda");
                 ++npair;
             }
         if (!ok) break;
@@ -522,7 +522,7 @@ void test_hc_abs_one_step(void)
                         if (isnan(lam0[6 * a + b])) continue;
                         r = a_sep(p->L, px0[a], py0[a], pz0[a], px0[b], py0[b], pz0[b], dd);
                         leq = (1 - r / p->rc) * (1 - r / p->rc);
-                        if (hcbd_hc_lambda(&w, a, b, &l1) != HCBD_OK) continue;
+                        if (hcbd_hc_world_get_lambda(&w, a, b, &l1) != HCBD_OK) continue;
                         l1 -= leq + (lam0[6 * a + b] - leq) * exp(-p->dt / p->tau_lambda);
                         if (fabs(l1) > e_l) e_l = fabs(l1);
                     }
@@ -565,7 +565,7 @@ void test_hc_abs_one_step(void)
 void test_hc_abs_polymer_diffusion(void)
 {
     const int np = 200, ns = t_quick ? 40 : 100, nb = 20;
-    hcbd_hc_def d = hc_scene(5, 5, 5, np);
+    hcbd_hc_world_def d = hc_scene(5, 5, 5, np);
     hcbd_hc_world w;
     double *sq = (double *)malloc(sizeof(double) * np), *q4 = (double *)malloc(sizeof(double) * np);
     double *R = (double *)calloc(3 * np, sizeof(double)), *msd = (double *)malloc(sizeof(double) * np);
@@ -575,8 +575,8 @@ void test_hc_abs_polymer_diffusion(void)
     d.params.p_kuhn = 0;
     d.params.alpha = 0;
     if (!hc_create(&w, &d)) return;
-    if (!a_ok(&w, hcbd_hc_place_fluid_lattice(&w, d.fluid_capacity), "lattice") ||
-        !a_ok(&w, hcbd_hc_place_polymers_random(&w, np), "polymers")) {
+    if (!a_ok(&w, hcbd_hc_world_place_fluid_lattice(&w, d.fluid_capacity), "lattice") ||
+        !a_ok(&w, hcbd_hc_world_place_polymers_random(&w, np), "polymers")) {
         hcbd_hc_world_destroy(&w);
         return;
     }
@@ -635,7 +635,7 @@ void test_hc_abs_viscosity_lattice(void)
 {
     int var;
     for (var = 0; var < 2; ++var) {
-        hcbd_hc_def d = a_fluid_scene(20, 100, 0.04, 0, var ? HCBD_PAIR_SHARDLOW : HCBD_PAIR_EULER);
+        hcbd_hc_world_def d = a_fluid_scene(20, 100, 0.04, 0, var ? HCBD_PAIR_SHARDLOW : HCBD_PAIR_EULER);
         hcbd_hc_world w;
         const double nbar = a_lattice_density(&d), A = 1e-3, k = 2 * PI_A / d.params.L[0], dt = d.params.dt, nu0 = d.params.eta / d.params.rho;
         const int ns = 100;
@@ -643,12 +643,12 @@ void test_hc_abs_viscosity_lattice(void)
         int i, s;
         d.params.nbar = nbar;
         if (!hc_create(&w, &d)) return;
-        if (!a_ok(&w, hcbd_hc_place_fluid_lattice(&w, d.fluid_capacity), "lattice")) return;
+        if (!a_ok(&w, hcbd_hc_world_place_fluid_lattice(&w, d.fluid_capacity), "lattice")) return;
         xyz = (double *)malloc(sizeof(double) * 3 * w.nf);
         v = (double *)malloc(sizeof(double) * 3 * w.nf);
         n = (double *)malloc(sizeof(double) * w.nf);
         a_lattice_wave(&w, A, k, 1, xyz, v);
-        if (!a_ok(&w, hcbd_hc_set_fluid(&w, w.nf, xyz, v), "fluid")) return;
+        if (!a_ok(&w, hcbd_hc_world_set_fluid(&w, w.nf, xyz, v), "fluid")) return;
         a_fluid_density(&w, n);
         G = a_lattice_rate(&w, n, k);
         for (i = 1; i < w.nf; ++i) {
@@ -687,14 +687,14 @@ void test_hc_abs_viscosity_lattice(void)
    within 3 % of that (the lattice quadrature makes it 1.7 % low). */
 void test_hc_abs_sound_lattice(void)
 {
-    hcbd_hc_def d = a_fluid_scene(20, 100, 0.04, 0, HCBD_PAIR_EULER);
+    hcbd_hc_world_def d = a_fluid_scene(20, 100, 0.04, 0, HCBD_PAIR_EULER);
     hcbd_hc_world w;
     const double A = 0.01, k = 2 * PI_A / d.params.L[0], dt = d.params.dt;
     const double cs = sqrt(7 * d.params.P0 / d.params.rho);
     double *xyz, *v, *X, *n, *Fp, *Fv, K = 0, ss = 0, G, wd, wc, wk = 0, t0 = -1, prev = 0, om;
     int i, s;
     if (!hc_create(&w, &d)) return;
-    if (!a_ok(&w, hcbd_hc_place_fluid_lattice(&w, d.fluid_capacity), "lattice")) return;
+    if (!a_ok(&w, hcbd_hc_world_place_fluid_lattice(&w, d.fluid_capacity), "lattice")) return;
     xyz = (double *)malloc(sizeof(double) * 3 * w.nf);
     v = (double *)malloc(sizeof(double) * 3 * w.nf);
     X = (double *)malloc(sizeof(double) * 3 * w.nf);
@@ -730,7 +730,7 @@ void test_hc_abs_sound_lattice(void)
         const double r = (i + 0.5) * 2 * d.params.h / 4000;
         wk += 4 * PI_A * r * r * a_m4(r, d.params.h) * sin(k * r) / (k * r) * 2 * d.params.h / 4000;
     }
-    if (!a_ok(&w, hcbd_hc_set_fluid(&w, w.nf, X, v), "fluid")) return;
+    if (!a_ok(&w, hcbd_hc_world_set_fluid(&w, w.nf, X, v), "fluid")) return;
     for (s = 1; s <= 400 && t0 < 0; ++s) {
         double D = 0;
         if (!hc_run(&w, 1)) break;
@@ -769,20 +769,20 @@ static void a_fluct_wave(hcbd_pair_integrator pi)
 {
     const int melt = t_quick ? 40 : 100, skip = t_quick ? 15 : 20, meas = t_quick ? 100 : 250;
     const int every = 5, ns = meas / every + 1, nT = melt - skip;
-    hcbd_hc_def d = a_fluid_scene(20, 400, 0.08, 1, pi);
+    hcbd_hc_world_def d = a_fluid_scene(20, 400, 0.08, 1, pi);
     hcbd_hc_world w;
     const double a = sqrt(0.5), k = 2 * PI_A / d.params.L[0], nu0 = d.params.eta / d.params.rho, dt = d.params.dt;
     double *t = (double *)malloc(sizeof(double) * ns), *j = (double *)malloc(sizeof(double) * 4 * ns);
     double *T = (double *)malloc(sizeof(double) * nT), *n, nu[4], m, e, Tm, Te, g0 = 0;
     int s, i, ch;
     if (!hc_create(&w, &d)) return;
-    if (!a_ok(&w, hcbd_hc_place_fluid_lattice(&w, d.fluid_capacity), "lattice")) {
+    if (!a_ok(&w, hcbd_hc_world_place_fluid_lattice(&w, d.fluid_capacity), "lattice")) {
         hcbd_hc_world_destroy(&w);
         return;
     }
     for (s = 0; s < melt; ++s) {
         if (!hc_run(&w, 1)) break;
-        if (s >= skip) T[s - skip] = hcbd_hc_temperature(&w) / d.params.kT;
+        if (s >= skip) T[s - skip] = hcbd_hc_world_temperature(&w) / d.params.kT;
     }
     n = (double *)malloc(sizeof(double) * w.nf);
     a_fluid_density(&w, n);
@@ -848,15 +848,15 @@ void test_hc_abs_default_statics(void)
         {1.0, 1.0, 1.0, 1.0}, {0.5, 1.3, 1.0, 1.0}, {1.7, 0.85, 0.8, 1.15}};
     int v;
     for (v = 0; v < 3; ++v) {
-        hcbd_hc_si si = hcbd_hc_si_table1();
-        hcbd_hc_def d = hcbd_hc_def_default(), q;
+        hcbd_hc_si si = hcbd_hc_si_default();
+        hcbd_hc_world_def d = hcbd_hc_world_def_default(), q;
         hcbd_hc_params *p = &d.params;
         hcbd_hc_world w;
         const int nb = 10, every = 10, ns = t_quick ? 300 : 800;
         double *xyz, *Ts, *dens, Tm, Te, st[HCBD_HC_NSTRESS], eta, gd, eta_pos;
         int n, i, k, ok;
         si.eta *= var[v].eta; si.nbar *= var[v].nbar; si.rho *= var[v].rho; si.T *= var[v].T;
-        CHECK(hcbd_hc_params_si(&si, 1e-6, p, NULL, 0) == HCBD_OK, "variant %d: parameters", v);
+        CHECK(hcbd_hc_si_params(&si, 1e-6, p, NULL, 0) == HCBD_OK, "variant %d: parameters", v);
         CHECK(p->pair_integrator == HCBD_PAIR_SHARDLOW && p->fluctuations == 1, "the defaults");
         p->L[0] = p->L[1] = p->L[2] = 10.0;
         n = (int)(p->nbar * 1000.0 + 0.5);
@@ -865,7 +865,7 @@ void test_hc_abs_default_statics(void)
         q.params.P0 *= 25.0;
         q.params.fluctuations = 0;
         if (!hc_create(&w, &q)) return;
-        ok = hcbd_hc_place_fluid_lattice(&w, n) == HCBD_OK && hc_run(&w, 1500);
+        ok = hcbd_hc_world_place_fluid_lattice(&w, n) == HCBD_OK && hc_run(&w, 1500);
         xyz = (double *)malloc(sizeof(double) * 3 * (size_t)n);
         Ts = (double *)malloc(sizeof(double) * (size_t)ns);
         dens = (double *)malloc(sizeof(double) * (size_t)n);
@@ -875,10 +875,10 @@ void test_hc_abs_default_statics(void)
         hcbd_hc_world_destroy(&w);
         /* equilibrium at the defaults: Maxwellian start, 1000 steps, then T */
         if (ok && hc_create(&w, &d)) {
-            ok = hcbd_hc_set_fluid(&w, n, xyz, NULL) == HCBD_OK && hc_run(&w, 1000);
+            ok = hcbd_hc_world_set_fluid(&w, n, xyz, NULL) == HCBD_OK && hc_run(&w, 1000);
             for (k = 0; k < ns && ok; ++k) {
                 ok = hc_run(&w, every);
-                Ts[k] = hcbd_hc_temperature(&w);
+                Ts[k] = hcbd_hc_world_temperature(&w);
             }
             hcbd_hc_world_destroy(&w);
         } else ok = 0;
@@ -890,10 +890,10 @@ void test_hc_abs_default_statics(void)
         gd = q.params.gdot = 2e-5;
         eta = NAN;
         if (ok && hc_create(&w, &q)) {
-            ok = hcbd_hc_set_fluid(&w, n, xyz, NULL) == HCBD_OK && hc_run(&w, 300);
-            hcbd_hc_stress_enable(&w, 1);
+            ok = hcbd_hc_world_set_fluid(&w, n, xyz, NULL) == HCBD_OK && hc_run(&w, 300);
+            hcbd_hc_world_stress_enable(&w, 1);
             ok = ok && hc_run(&w, 500);
-            hcbd_hc_stress_read(&w, st, NULL);
+            hcbd_hc_world_stress_read(&w, st, NULL);
             eta = st[HCBD_HC_S_TOTAL] / gd;
             hcbd_hc_world_destroy(&w);
         } else ok = 0;

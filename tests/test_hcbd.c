@@ -7,11 +7,11 @@
 /* hc_scene (test.h) is the reduced scene */
 static const double PI_ = 3.14159265358979323846;
 
-static int hc_make(hcbd_hc_world *w, const hcbd_hc_def *d, int npoly)
+static int hc_make(hcbd_hc_world *w, const hcbd_hc_world_def *d, int npoly)
 {
     if (!hc_create(w, d)) return 0;
-    if (hcbd_hc_place_fluid_lattice(w, d->fluid_capacity) != HCBD_OK ||
-        (npoly > 0 && hcbd_hc_place_polymers_random(w, npoly) != HCBD_OK)) {
+    if (hcbd_hc_world_place_fluid_lattice(w, d->fluid_capacity) != HCBD_OK ||
+        (npoly > 0 && hcbd_hc_world_place_polymers_random(w, npoly) != HCBD_OK)) {
         printf("    set-up: %s\n", w->err.msg);
         t_fail = 1;
         hcbd_hc_world_destroy(w);
@@ -114,7 +114,7 @@ void test_hc_flory_huggins_mu(void)
 /* Polymer forces equal minus the gradient of Phi_c + Phi_t, lambda fixed. */
 void test_hc_polymer_forces_vs_energy(void)
 {
-    hcbd_hc_def d = hc_scene(5, 5, 5, 150);
+    hcbd_hc_world_def d = hc_scene(5, 5, 5, 150);
     hcbd_hc_world w;
     int a, c, checked = 0;
     double worst = 0;
@@ -129,15 +129,15 @@ void test_hc_polymer_forces_vs_energy(void)
             double F = c == 0 ? w.pFx[a] : (c == 1 ? w.pFy[a] : w.pFz[a]), Ep, Em, fd;
             int64_t np0 = w.npairs;
             x[a] = (hcbd_real)(x0 + e);
-            hcbd_hc_refresh(&w);
-            Ep = hcbd_hc_polymer_energy(&w);
-            if (w.npairs != np0) { x[a] = (hcbd_real)x0; hcbd_hc_refresh(&w); continue; }
+            hcbd_hc_world_refresh(&w);
+            Ep = hcbd_hc_world_polymer_energy(&w);
+            if (w.npairs != np0) { x[a] = (hcbd_real)x0; hcbd_hc_world_refresh(&w); continue; }
             x[a] = (hcbd_real)(x0 - e);
-            hcbd_hc_refresh(&w);
-            Em = hcbd_hc_polymer_energy(&w);
+            hcbd_hc_world_refresh(&w);
+            Em = hcbd_hc_world_polymer_energy(&w);
             x[a] = (hcbd_real)x0;
-            if (w.npairs != np0) { hcbd_hc_refresh(&w); continue; }
-            hcbd_hc_refresh(&w);
+            if (w.npairs != np0) { hcbd_hc_world_refresh(&w); continue; }
+            hcbd_hc_world_refresh(&w);
             fd = -(Ep - Em) / (2 * e);
             if (fabs(fd - F) / (1 + fabs(F)) > worst) worst = fabs(fd - F) / (1 + fabs(F));
             ++checked;
@@ -153,7 +153,7 @@ void test_hc_polymer_forces_vs_energy(void)
    lambda_eq(r) and variance kT/alpha. */
 void test_hc_lambda_statistics(void)
 {
-    hcbd_hc_def d = hc_scene(4, 4, 4, 2);
+    hcbd_hc_world_def d = hc_scene(4, 4, 4, 2);
     hcbd_hc_world w;
     const double r = 1.7, leq = (1 - r / 2.5) * (1 - r / 2.5);
     double xyz[6], *lam, m, me, v = 0, ve, *dev2;
@@ -169,12 +169,12 @@ void test_hc_lambda_statistics(void)
     xyz[0] = 2.0; xyz[1] = 3.0; xyz[2] = 3.0;
     xyz[3] = 2.0 + r; xyz[4] = 3.0; xyz[5] = 3.0;
     if (!hc_make(&w, &d, 0)) return;
-    if (hcbd_hc_set_polymers(&w, 2, xyz) != HCBD_OK) { printf("    %s\n", w.err.msg); t_fail = 1; return; }
+    if (hcbd_hc_world_set_polymers(&w, 2, xyz) != HCBD_OK) { printf("    %s\n", w.err.msg); t_fail = 1; return; }
     lam = (double *)malloc(ns * sizeof(double));
     dev2 = (double *)malloc(ns * sizeof(double));
     for (k = 0; k < ns; ++k) {
         if (!hc_run(&w, every)) break;
-        hcbd_hc_lambda(&w, 0, 1, &lam[k]);
+        hcbd_hc_world_get_lambda(&w, 0, 1, &lam[k]);
     }
     block_stats(lam, ns, 20, &m, &me);
     for (k = 0; k < ns; ++k) dev2[k] = (lam[k] - leq) * (lam[k] - leq);
@@ -192,7 +192,7 @@ void test_hc_lambda_statistics(void)
    and comes back starts at lambda_eq; overflow is an error. */
 void test_hc_pair_lifecycle(void)
 {
-    hcbd_hc_def d = hc_scene(5, 5, 5, 200);
+    hcbd_hc_world_def d = hc_scene(5, 5, 5, 200);
     hcbd_hc_world w;
     int a, k, same = 1, partner = -1;
     double l, x0, y0, z0, r;
@@ -200,14 +200,14 @@ void test_hc_pair_lifecycle(void)
     if (!hc_make(&w, &d, 200)) return;
     for (a = 0; a < 200; ++a)
         for (k = 0; k < w.pair_n[a]; ++k) w.pair_l[a * w.pair_cap + k] = (hcbd_real)(0.001 * (a + 3 * k));
-    hcbd_hc_refresh(&w);
+    hcbd_hc_world_refresh(&w);
     for (a = 0; a < 200; ++a)
         for (k = 0; k < w.pair_n[a]; ++k)
             same &= w.pair_l[a * w.pair_cap + k] == (hcbd_real)(0.001 * (a + 3 * k));
     CHECK(same, "lambda changed by a rebuild");
     /* shift every polymer by the same small vector: all pairs persist */
     for (a = 0; a < 200; ++a) w.px[a] = (hcbd_real)fmod(w.px[a] + 1e-3, d.params.L[0]);
-    hcbd_hc_refresh(&w);
+    hcbd_hc_world_refresh(&w);
     for (a = 0; a < 200; ++a)
         for (k = 0; k < w.pair_n[a]; ++k)
             same &= w.pair_l[a * w.pair_cap + k] == (hcbd_real)(0.001 * (a + 3 * k));
@@ -216,15 +216,15 @@ void test_hc_pair_lifecycle(void)
     CHECK(w.pair_n[0] > 0, "polymer 0 has partners");
     partner = w.pair_b[0];
     x0 = w.px[0]; y0 = w.py[0]; z0 = w.pz[0];
-    hcbd_hc_lambda(&w, 0, partner, &l);
+    hcbd_hc_world_get_lambda(&w, 0, partner, &l);
     CHECK(l == (hcbd_real)0.0, "pair (0, %d) holds its set value %g", partner, l);
     w.px[0] = (hcbd_real)fmod(x0 + 0.5 * d.params.L[0], d.params.L[0]);
     w.py[0] = (hcbd_real)fmod(y0 + 0.5 * d.params.L[1], d.params.L[1]);
-    hcbd_hc_refresh(&w);
-    CHECK(hcbd_hc_lambda(&w, 0, partner, &l) == HCBD_ERR_STATE, "pair deleted beyond rc");
+    hcbd_hc_world_refresh(&w);
+    CHECK(hcbd_hc_world_get_lambda(&w, 0, partner, &l) == HCBD_ERR_STATE, "pair deleted beyond rc");
     w.px[0] = (hcbd_real)x0; w.py[0] = (hcbd_real)y0; w.pz[0] = (hcbd_real)z0;
-    hcbd_hc_refresh(&w);
-    CHECK(hcbd_hc_lambda(&w, 0, partner, &l) == HCBD_OK, "pair back");
+    hcbd_hc_world_refresh(&w);
+    CHECK(hcbd_hc_world_get_lambda(&w, 0, partner, &l) == HCBD_OK, "pair back");
     {
         double dx = w.px[0] - w.px[partner], dy = w.py[0] - w.py[partner], dz = w.pz[0] - w.pz[partner];
         dx -= d.params.L[0] * round(dx / d.params.L[0]);
@@ -238,8 +238,8 @@ void test_hc_pair_lifecycle(void)
     /* a capacity too small for the partners is an error naming it */
     d.pair_capacity = 3;
     if (hcbd_hc_world_create(&w, &d) != HCBD_OK) { t_fail = 1; return; }
-    hcbd_hc_place_fluid_lattice(&w, d.fluid_capacity);
-    CHECK(hcbd_hc_place_polymers_random(&w, 200) == HCBD_ERR_CAPACITY, "overflow is an error");
+    hcbd_hc_world_place_fluid_lattice(&w, d.fluid_capacity);
+    CHECK(hcbd_hc_world_place_polymers_random(&w, 200) == HCBD_ERR_CAPACITY, "overflow is an error");
     NOTE("%s", w.err.msg);
     CHECK(strstr(w.err.msg, "pair_capacity") != NULL, "message names pair_capacity");
     CHECK(w.np == 0, "refused polymers are not kept");
@@ -254,7 +254,7 @@ void test_hc_coupling_momentum(void)
     int c;
     /* c = 2: Shepard with the Shardlow sweep and 3 fluid sub-steps */
     for (c = 0; c < 3; ++c) {
-        hcbd_hc_def d = hc_scene(5, 5, 5, 150);
+        hcbd_hc_world_def d = hc_scene(5, 5, 5, 150);
         hcbd_hc_world w;
         double p0[3], p1[3];
         d.params.n_max = 3.0;
@@ -264,9 +264,9 @@ void test_hc_coupling_momentum(void)
             d.params.substeps = 3;
         }
         if (!hc_make(&w, &d, 150)) return;
-        hcbd_hc_momentum(&w, p0);
+        hcbd_hc_world_momentum(&w, p0);
         hc_run(&w, t_quick ? 50 : 200);
-        hcbd_hc_momentum(&w, p1);
+        hcbd_hc_world_momentum(&w, p1);
         drift[c] = sqrt((p1[0] - p0[0]) * (p1[0] - p0[0]) + (p1[1] - p0[1]) * (p1[1] - p0[1]) +
                         (p1[2] - p0[2]) * (p1[2] - p0[2]));
         scale = sqrt(w.nf * w.m * d.params.kT); /* thermal momentum of the fluid */
@@ -283,7 +283,7 @@ void test_hc_coupling_momentum(void)
    drift of forced ones minus F/xi is U to round-off. */
 void test_hc_uniform_flow(void)
 {
-    hcbd_hc_def d = hc_scene(5, 5, 5, 100);
+    hcbd_hc_world_def d = hc_scene(5, 5, 5, 100);
     hcbd_hc_world w;
     double *xyz, *v, U[3] = {0.37, -0.21, 0.05}, worst = 0;
     int i, a, exact = 1, f;
@@ -293,15 +293,15 @@ void test_hc_uniform_flow(void)
         d.params.alpha = f ? 50 : 0;
         d.params.n_max = 3.0;
         if (hcbd_hc_world_create(&w, &d) != HCBD_OK) { t_fail = 1; return; }
-        hcbd_hc_place_fluid_lattice(&w, d.fluid_capacity);
+        hcbd_hc_world_place_fluid_lattice(&w, d.fluid_capacity);
         xyz = (double *)malloc(3 * sizeof(double) * w.nf);
         v = (double *)malloc(3 * sizeof(double) * w.nf);
         for (i = 0; i < w.nf; ++i) {
             xyz[3 * i] = w.fx[i]; xyz[3 * i + 1] = w.fy[i]; xyz[3 * i + 2] = w.fz[i];
             v[3 * i] = U[0]; v[3 * i + 1] = U[1]; v[3 * i + 2] = U[2];
         }
-        hcbd_hc_set_fluid(&w, w.nf, xyz, v);
-        if (hcbd_hc_place_polymers_random(&w, 100) != HCBD_OK) { printf("    %s\n", w.err.msg); t_fail = 1; }
+        hcbd_hc_world_set_fluid(&w, w.nf, xyz, v);
+        if (hcbd_hc_world_place_polymers_random(&w, 100) != HCBD_OK) { printf("    %s\n", w.err.msg); t_fail = 1; }
         for (a = 0; a < w.np; ++a) {
             if (!f) exact &= w.pux[a] == U[0] && w.puy[a] == U[1] && w.puz[a] == U[2];
             else {
@@ -326,7 +326,7 @@ void test_hc_uniform_flow(void)
    velocity-shifted images (checked against an independent sum). */
 void test_hc_lees_edwards_two_species(void)
 {
-    hcbd_hc_def d = hc_scene(5, 5, 5, 1);
+    hcbd_hc_world_def d = hc_scene(5, 5, 5, 1);
     hcbd_hc_world w;
     const double gdot = 0.3;
     double *xyz, *v, Ly, Lx, s, poly[3], S = 0, V[3] = {0, 0, 0};
@@ -339,7 +339,7 @@ void test_hc_lees_edwards_two_species(void)
     n = d.fluid_capacity;
     Lx = d.params.L[0];
     Ly = d.params.L[1];
-    hcbd_hc_place_fluid_lattice(&w, n);
+    hcbd_hc_world_place_fluid_lattice(&w, n);
     /* fluid on the linear profile, blob 0 about to cross the top */
     xyz = (double *)malloc(3 * sizeof(double) * n);
     v = (double *)malloc(3 * sizeof(double) * n);
@@ -350,9 +350,9 @@ void test_hc_lees_edwards_two_species(void)
     xyz[1] = Ly - 1e-3;
     v[0] = gdot * (xyz[1] - 0.5 * Ly);
     v[1] = 0.1; /* crosses within one step (dt = 0.02) */
-    hcbd_hc_set_fluid(&w, n, xyz, v);
+    hcbd_hc_world_set_fluid(&w, n, xyz, v);
     poly[0] = 3.3; poly[1] = 0.2; poly[2] = 4.1; /* near y = 0: images above matter */
-    if (hcbd_hc_set_polymers(&w, 1, poly) != HCBD_OK) { printf("    %s\n", w.err.msg); t_fail = 1; }
+    if (hcbd_hc_world_set_polymers(&w, 1, poly) != HCBD_OK) { printf("    %s\n", w.err.msg); t_fail = 1; }
     /* independent interpolation: every image of every blob within rc */
     for (i = 0; i < n; ++i) {
         int ky, kx, kz;
@@ -406,7 +406,7 @@ void test_hc_determinism(void)
         uint64_t sum[3];
         int t;
         for (t = 0; t < 3; ++t) {
-            hcbd_hc_def d = hc_scene(5, 5, 6, 120);
+            hcbd_hc_world_def d = hc_scene(5, 5, 6, 120);
             hcbd_hc_world w;
             d.params.fluctuations = f > 0;
             if (f == 2) {
@@ -423,12 +423,12 @@ void test_hc_determinism(void)
                 int s;
                 for (s = 0; s < (t_quick ? 20 : 60); s += 5) {
                     hc_run(&w, 5);
-                    CHECK(hcbd_hc_refresh(&w) == HCBD_OK, "refresh: %s", w.err.msg);
+                    CHECK(hcbd_hc_world_refresh(&w) == HCBD_OK, "refresh: %s", w.err.msg);
                 }
                 CHECK(w.lf.n_rebuilds >= (t_quick ? 4 : 12), "only %lld list builds",
                       (long long)w.lf.n_rebuilds);
             }
-            sum[t] = hcbd_hc_state_checksum(&w);
+            sum[t] = hcbd_hc_world_checksum(&w);
             hcbd_hc_world_destroy(&w);
         }
         CHECK(sum[0] == sum[1] && sum[0] == sum[2], "fluctuations %d: %llx %llx %llx", f,
@@ -449,7 +449,7 @@ void test_hc_sweep_blocks_determinism(void)
     double p0[3], p1[3], drift = 0, scale = 1;
     int t, d;
     for (t = 0; t < 4; ++t) {
-        hcbd_hc_def dd = hc_scene(12, 5, 5, 60);
+        hcbd_hc_world_def dd = hc_scene(12, 5, 5, 60);
         hcbd_hc_world w;
         dd.params.h = 1.3;
         dd.params.gdot = 1.0;
@@ -458,14 +458,14 @@ void test_hc_sweep_blocks_determinism(void)
         dd.params.n_max = 3.0;
         dd.params.threads = t == 1 ? 2 : (t == 2 ? 3 : 1);
         if (!hc_make(&w, &dd, 60)) return;
-        hcbd_hc_momentum(&w, p0);
+        hcbd_hc_world_momentum(&w, p0);
         if (t < 3) {
             hc_run(&w, steps);
         } else {
             int s;
             for (s = 0; s < steps; s += 7) {
                 hc_run(&w, 7);
-                CHECK(hcbd_hc_refresh(&w) == HCBD_OK, "refresh: %s", w.err.msg);
+                CHECK(hcbd_hc_world_refresh(&w) == HCBD_OK, "refresh: %s", w.err.msg);
             }
         }
         if (t == 0) {
@@ -473,10 +473,10 @@ void test_hc_sweep_blocks_determinism(void)
             const double travel = dd.params.gdot * dd.params.L[1] * dd.params.dt * steps;
             CHECK(travel > dd.params.L[0], "the offset moved %.2f, less than Lx", travel);
         }
-        hcbd_hc_momentum(&w, p1);
+        hcbd_hc_world_momentum(&w, p1);
         for (d = 1; d < 3; ++d) drift += fabs(p1[d] - p0[d]);
         scale = sqrt(w.nf * w.m * dd.params.kT);
-        sum[t] = hcbd_hc_state_checksum(&w);
+        sum[t] = hcbd_hc_world_checksum(&w);
         hcbd_hc_world_destroy(&w);
     }
     NOTE("checksums %llx %llx %llx %llx; y, z momentum change %.1e of sqrt(N m kT)", (unsigned long long)sum[0],
@@ -486,7 +486,7 @@ void test_hc_sweep_blocks_determinism(void)
     CHECK(drift < 1e-11 * scale, "momentum drift %g", drift / scale);
 }
 
-static void expect_param(const hcbd_hc_def *d, hcbd_result code, const char *name)
+static void expect_param(const hcbd_hc_world_def *d, hcbd_result code, const char *name)
 {
     hcbd_hc_world w;
     hcbd_result r = hcbd_hc_world_create(&w, d);
@@ -497,7 +497,7 @@ static void expect_param(const hcbd_hc_def *d, hcbd_result code, const char *nam
 
 void test_hc_bad_inputs(void)
 {
-    hcbd_hc_def d = hc_scene(5, 5, 5, 10), e;
+    hcbd_hc_world_def d = hc_scene(5, 5, 5, 10), e;
     hcbd_hc_world w;
     double xyz[3] = {1, 1, 1};
     e = d; e.params.h = 0; expect_param(&e, HCBD_ERR_PARAM, "h");
@@ -510,25 +510,25 @@ void test_hc_bad_inputs(void)
     e = d; e.params.tau_lambda = 0; expect_param(&e, HCBD_ERR_PARAM, "tau_lambda");
     e = d; e.params.gdot = 0.1; e.params.reverse_poiseuille = 1; expect_param(&e, HCBD_ERR_PARAM, "gdot");
     if (hcbd_hc_world_create(&w, &d) != HCBD_OK) { t_fail = 1; return; }
-    CHECK(hcbd_hc_set_polymers(&w, 1, xyz) == HCBD_ERR_STATE, "polymers before fluid");
-    hcbd_hc_place_fluid_lattice(&w, d.fluid_capacity);
+    CHECK(hcbd_hc_world_set_polymers(&w, 1, xyz) == HCBD_ERR_STATE, "polymers before fluid");
+    hcbd_hc_world_place_fluid_lattice(&w, d.fluid_capacity);
     xyz[1] = d.params.L[1] + 0.1;
-    CHECK(hcbd_hc_set_polymers(&w, 1, xyz) == HCBD_ERR_PARAM, "polymer outside the box");
+    CHECK(hcbd_hc_world_set_polymers(&w, 1, xyz) == HCBD_ERR_PARAM, "polymer outside the box");
     NOTE("%s", w.err.msg);
     CHECK(strstr(w.err.msg, "outside the box") != NULL, "message: %s", w.err.msg);
     xyz[1] = NAN;
-    CHECK(hcbd_hc_set_polymers(&w, 1, xyz) == HCBD_ERR_NONFINITE, "non-finite polymer");
-    CHECK(hcbd_hc_set_polymers(&w, 11, xyz) == HCBD_ERR_CAPACITY, "above capacity");
+    CHECK(hcbd_hc_world_set_polymers(&w, 1, xyz) == HCBD_ERR_NONFINITE, "non-finite polymer");
+    CHECK(hcbd_hc_world_set_polymers(&w, 11, xyz) == HCBD_ERR_CAPACITY, "above capacity");
     hcbd_hc_world_destroy(&w);
     /* phi >= 1 at the start: ten polymers in one spot with n_max = 1 */
     d.params.n_max = 1.0;
     if (hcbd_hc_world_create(&w, &d) != HCBD_OK) { t_fail = 1; return; }
-    hcbd_hc_place_fluid_lattice(&w, d.fluid_capacity);
+    hcbd_hc_world_place_fluid_lattice(&w, d.fluid_capacity);
     {
         double many[30];
         int k;
         for (k = 0; k < 30; ++k) many[k] = 3.0 + 0.01 * (k % 3) + 0.001 * k;
-        CHECK(hcbd_hc_set_polymers(&w, 10, many) == HCBD_ERR_PARAM, "phi >= 1");
+        CHECK(hcbd_hc_world_set_polymers(&w, 10, many) == HCBD_ERR_PARAM, "phi >= 1");
         NOTE("%s", w.err.msg);
         CHECK(strstr(w.err.msg, "phi") != NULL, "message names phi");
     }
@@ -538,8 +538,8 @@ void test_hc_bad_inputs(void)
     if (hcbd_hc_world_create(&w, &d) != HCBD_OK) { t_fail = 1; return; }
     {
         double f[6] = {0.5, 0.5, 0.5, 0.6, 0.5, 0.5}, p[3] = {5.0, 5.0, 5.0};
-        hcbd_hc_set_fluid(&w, 2, f, NULL);
-        CHECK(hcbd_hc_set_polymers(&w, 1, p) == HCBD_ERR_PARAM, "no fluid neighbour");
+        hcbd_hc_world_set_fluid(&w, 2, f, NULL);
+        CHECK(hcbd_hc_world_set_polymers(&w, 1, p) == HCBD_ERR_PARAM, "no fluid neighbour");
         NOTE("%s", w.err.msg);
         CHECK(strstr(w.err.msg, "no fluid blob") != NULL, "message: %s", w.err.msg);
     }
@@ -560,7 +560,7 @@ void test_hc_coincident_blobs(void)
         double v_out[2][5 * 5 * 5 * 3];
         int c;
         for (c = 0; c < 2; ++c) {
-            hcbd_hc_def d = hc_scene(5, 5, 5, 0);
+            hcbd_hc_world_def d = hc_scene(5, 5, 5, 0);
             hcbd_hc_world w;
             double xyz[3 * 125], v[3 * 125];
             int i;
@@ -576,7 +576,7 @@ void test_hc_coincident_blobs(void)
             xyz[5] = xyz[2];
             v[0] = 1.0;
             v[3] = -1.0;
-            if (hcbd_hc_set_fluid(&w, w.nf, xyz, v) != HCBD_OK) {
+            if (hcbd_hc_world_set_fluid(&w, w.nf, xyz, v) != HCBD_OK) {
                 CHECK(0, "set_fluid: %s", w.err.msg);
                 hcbd_hc_world_destroy(&w);
                 return;
@@ -610,21 +610,21 @@ void test_hc_density_guard(void)
     double n0;
     int k;
     {
-        hcbd_hc_def d = hc_scene(5, 5, 5, 0);
+        hcbd_hc_world_def d = hc_scene(5, 5, 5, 0);
         hcbd_hc_world w;
         if (!hc_make(&w, &d, 0)) return;
-        hcbd_hc_refresh(&w);
+        hcbd_hc_world_refresh(&w);
         n0 = w.fn[0];
         hcbd_hc_world_destroy(&w);
     }
     for (k = 0; k < 4; ++k) {
-        hcbd_hc_def d = hc_scene(5, 5, 5, 0);
+        hcbd_hc_world_def d = hc_scene(5, 5, 5, 0);
         hcbd_hc_world w;
         hcbd_result r;
         d.params.nbar = n0 / f[k];
         d.params.fluctuations = 0;
         if (!hc_make(&w, &d, 0)) return;
-        r = hcbd_hc_step(&w, 1);
+        r = hcbd_hc_world_step(&w, 1);
         if (k % 2 == 0) CHECK(r == HCBD_OK, "n/nbar = %g refused: %s", f[k], w.err.msg);
         else
             CHECK(r == HCBD_ERR_UNSTABLE && strstr(w.err.msg, "density"),
@@ -633,9 +633,9 @@ void test_hc_density_guard(void)
     }
 }
 
-static hcbd_hc_def fluid_scene(int nx, int ny, int nz, double dt)
+static hcbd_hc_world_def fluid_scene(int nx, int ny, int nz, double dt)
 {
-    hcbd_hc_def d = hc_scene(nx, ny, nz, 0);
+    hcbd_hc_world_def d = hc_scene(nx, ny, nz, 0);
     d.params.rho = 100 * d.params.nbar;
     d.params.eta = d.params.rho;
     d.params.P0 = 2.5 * 2.5 * d.params.rho / 7;
@@ -648,7 +648,7 @@ static hcbd_hc_def fluid_scene(int nx, int ny, int nz, double dt)
 static void temperature_run(double dt, hcbd_pair_integrator integ, int nsub, double time,
                             double len, double *T, double *Terr)
 {
-    hcbd_hc_def d = fluid_scene(6, 6, 6, dt);
+    hcbd_hc_world_def d = fluid_scene(6, 6, 6, dt);
     hcbd_hc_world w;
     d.params.pair_integrator = integ;
     d.params.substeps = nsub;
@@ -662,7 +662,7 @@ static void temperature_run(double dt, hcbd_pair_integrator integ, int nsub, dou
     hc_run(&w, (int)(20 / dt)); /* the lattice melts, sound waves damp */
     for (k = 0; k < ns; ++k) {
         if (!hc_run(&w, every)) break;
-        s[k] = hcbd_hc_temperature(&w);
+        s[k] = hcbd_hc_world_temperature(&w);
     }
     block_stats(s, ns, nb, T, Terr);
     free(s);
@@ -723,7 +723,7 @@ void test_hc_fluid_viscosity(void)
     int q = t_quick;
     { /* transverse wave v_y = A sin(k x), k = 2 pi / Lx (a fit to one decay,
          the same in make test) */
-        hcbd_hc_def d = fluid_scene(20, 5, 5, dt);
+        hcbd_hc_world_def d = fluid_scene(20, 5, 5, dt);
         hcbd_hc_world w;
         const double A = 1.0, k = 2 * PI_ / d.params.L[0];
         double j[12], tt[64], la[64], sx = 0, sy = 0, sxx = 0, sxy = 0, res = 0;
@@ -732,7 +732,7 @@ void test_hc_fluid_viscosity(void)
         hc_run(&w, (int)(20 / dt));
         for (i = 0; i < w.nf; ++i) w.fvy[i] += (hcbd_real)(A * sin(k * w.fx[i]));
         for (n = 0; n < 40; ++n) {
-            hcbd_hc_transverse_current(&w, 1, j);
+            hcbd_hc_world_transverse_current(&w, 1, j);
             /* Im of sum v_y exp(-i k x) is -A N / 2 for the wave */
             tt[n] = n * every * dt;
             la[n] = log(-2 * j[1] / (A * w.nf));
@@ -748,7 +748,7 @@ void test_hc_fluid_viscosity(void)
         hcbd_hc_world_destroy(&w);
     }
     { /* Lees-Edwards */
-        hcbd_hc_def d = fluid_scene(6, 6, 6, dt);
+        hcbd_hc_world_def d = fluid_scene(6, 6, 6, dt);
         hcbd_hc_world w;
         const double gdot = 0.05;
         double eta[20], s[HCBD_HC_NSTRESS];
@@ -757,9 +757,9 @@ void test_hc_fluid_viscosity(void)
         if (!hc_make(&w, &d, 0)) return;
         hc_run(&w, (int)(40 / dt));
         for (b = 0; b < nb; ++b) {
-            hcbd_hc_stress_enable(&w, 1);
+            hcbd_hc_world_stress_enable(&w, 1);
             hc_run(&w, q ? 50 : 150);
-            hcbd_hc_stress_read(&w, s, NULL);
+            hcbd_hc_world_stress_read(&w, s, NULL);
             eta[b] = s[HCBD_HC_S_TOTAL] / gdot / d.params.rho;
         }
         block_stats(eta, nb, nb, &nu_le, &ele);
@@ -776,7 +776,7 @@ void test_hc_fluid_viscosity(void)
          make test too: its blocks (8 time units) are barely longer than
          the slowest flow mode, L^2/(4 pi^2 nu) = 6.6, and the flatness
          bound needs their precision */
-        hcbd_hc_def d = fluid_scene(5, 10, 5, dt);
+        hcbd_hc_world_def d = fluid_scene(5, 10, 5, dt);
         hcbd_hc_world w;
         const int nslab = 10, nb = 10, ns = q ? 10 : 40;
         const double g = 0.05, W = 0.5 * d.params.L[1];
@@ -854,7 +854,7 @@ static double rapid_r2(double r, double sg, double rc) { return r * r * hcbd_rap
    allowed for with 1 % of v_max. */
 void test_hc_poiseuille_no_lag(void)
 {
-    hcbd_hc_def d = fluid_scene(5, 10, 5, 0.04);
+    hcbd_hc_world_def d = fluid_scene(5, 10, 5, 0.04);
     hcbd_hc_world w;
     /* full length in make test too (not scaled by t_len): the lag wanders
        with a correlation time of 10-20 time units, longer than a block (8);
@@ -915,7 +915,7 @@ void test_hc_poiseuille_no_lag(void)
     hcbd_hc_world_destroy(&w);
 }
 
-/* hcbd_hc_stability's viscous limit against Table I runs (806 blobs): half
+/* hcbd_hc_params_stability's viscous limit against Table I runs (806 blobs): half
    of it runs, four times it is stopped by a guard; sub-steps scale the
    fluid limits. */
 void test_hc_stability_limits(void)
@@ -923,14 +923,14 @@ void test_hc_stability_limits(void)
     hcbd_limit l[HCBD_MAX_LIMITS];
     int n = 0, visc = -1, k;
     double f, b;
-    hcbd_hc_def d = hcbd_hc_def_default();
-    CHECK(hcbd_hc_stability(&d.params, l, &n) == HCBD_OK && n >= 4, "%d limits", n);
+    hcbd_hc_world_def d = hcbd_hc_world_def_default();
+    CHECK(hcbd_hc_params_stability(&d.params, l, &n) == HCBD_OK && n >= 4, "%d limits", n);
     for (k = 0; k < n; ++k)
         if (strstr(l[k].name, "viscous: dt_f")) visc = k;
     if (visc < 0) { CHECK(0, "no viscous limit"); return; }
     b = l[visc].bound;
     d.params.substeps = 4;
-    hcbd_hc_stability(&d.params, l, &n);
+    hcbd_hc_params_stability(&d.params, l, &n);
     CHECK(fabs(l[visc].margin / (4 * b / d.params.dt) - 1) < 1e-12, "sub-steps: margin %g", l[visc].margin);
     /* the paper's explicit pairs (the last pass: the exact sweep, stable
        where Euler is not) */
@@ -938,22 +938,22 @@ void test_hc_stability_limits(void)
         hcbd_hc_world w;
         hcbd_result r;
         const int exact = f > 5;
-        d = hcbd_hc_def_default();
+        d = hcbd_hc_world_def_default();
         d.fluid_capacity = 806;
         d.params.pair_integrator = exact ? HCBD_PAIR_SHARDLOW : HCBD_PAIR_EULER;
         d.params.dt = (exact ? 4 : f) * b;
-        if (hcbd_hc_world_create(&w, &d) != HCBD_OK || hcbd_hc_place_fluid_lattice(&w, 806) != HCBD_OK) {
+        if (hcbd_hc_world_create(&w, &d) != HCBD_OK || hcbd_hc_world_place_fluid_lattice(&w, 806) != HCBD_OK) {
             CHECK(0, "%s", w.err.msg);
             return;
         }
-        r = hcbd_hc_step(&w, t_quick ? 100 : 300);
+        r = hcbd_hc_world_step(&w, t_quick ? 100 : 300);
         NOTE("%s, dt = %.2f x viscous limit: %s at step %lld, T/kT %.3g", exact ? "exact sweep" : "Euler",
              exact ? 4.0 : f, hcbd_result_name(r),
-             (long long)w.err.step, hcbd_hc_temperature(&w));
+             (long long)w.err.step, hcbd_hc_world_temperature(&w));
         if (f < 1) CHECK(r == HCBD_OK, "half the viscous limit: %s", w.err.msg);
         else if (!exact) CHECK(r == HCBD_ERR_UNSTABLE || r == HCBD_ERR_NONFINITE, "4x the limit: %s", hcbd_result_name(r));
         else { /* one sample of T: relative error sqrt(2 / (3 N)) */
-            const double T = hcbd_hc_temperature(&w), e = sqrt(2.0 / (3.0 * 806));
+            const double T = hcbd_hc_world_temperature(&w), e = sqrt(2.0 / (3.0 * 806));
             CHECK(r == HCBD_OK, "the exact sweep at 4x the limit: %s", w.err.msg);
             CHECK(fabs(T - 1) < 4 * e, "the exact sweep at 4x the limit: T/kT %.3f (+- %.3f)", T, e);
         }
@@ -969,7 +969,7 @@ void test_hc_checkpoint_restart_bits(void)
     const int n = t_quick ? 5 : 20;
     int f;
     for (f = 0; f < 2; ++f) {
-        hcbd_hc_def d = hc_scene(5, 5, 6, 120);
+        hcbd_hc_world_def d = hc_scene(5, 5, 6, 120);
         hcbd_hc_world a, b;
         unsigned char *buf;
         size_t size;
@@ -982,22 +982,22 @@ void test_hc_checkpoint_restart_bits(void)
             d.params.substeps = 3;
         }
         if (!hc_make(&a, &d, 120)) return;
-        hcbd_hc_stress_enable(&a, 1);
+        hcbd_hc_world_stress_enable(&a, 1);
         hc_run(&a, n);
-        size = hcbd_hc_checkpoint_size(&a);
+        size = hcbd_hc_world_checkpoint_size(&a);
         buf = (unsigned char *)malloc(size);
-        CHECK(hcbd_hc_checkpoint_save(&a, buf, size) == HCBD_OK, "%s", a.err.msg);
+        CHECK(hcbd_hc_world_checkpoint_save(&a, buf, size) == HCBD_OK, "%s", a.err.msg);
         CHECK(a.npairs > 0, "the scene should hold transient pairs");
         hc_run(&a, n);
-        ca = hcbd_hc_state_checksum(&a);
-        hcbd_hc_stress_read(&a, sa, NULL);
-        if (hcbd_hc_checkpoint_load(&b, buf, size) != HCBD_OK) {
+        ca = hcbd_hc_world_checksum(&a);
+        hcbd_hc_world_stress_read(&a, sa, NULL);
+        if (hcbd_hc_world_checkpoint_load(&b, buf, size) != HCBD_OK) {
             CHECK(0, "load: %s", b.err.msg);
         } else {
-            hcbd_hc_set_threads(&b, 2);
+            hcbd_hc_world_set_threads(&b, 2);
             hc_run(&b, n);
-            hcbd_hc_stress_read(&b, sb, NULL);
-            CHECK(hcbd_hc_state_checksum(&b) == ca, "variant %d: restart changed the bits", f);
+            hcbd_hc_world_stress_read(&b, sb, NULL);
+            CHECK(hcbd_hc_world_checksum(&b) == ca, "variant %d: restart changed the bits", f);
             CHECK(!memcmp(sa, sb, sizeof sa), "variant %d: stress sums differ", f);
             CHECK(a.n_created == b.n_created && a.npairs == b.npairs, "pairs %lld/%lld created %lld/%lld",
                   (long long)a.npairs, (long long)b.npairs, (long long)a.n_created, (long long)b.n_created);
@@ -1007,16 +1007,16 @@ void test_hc_checkpoint_restart_bits(void)
         {
             hcbd_world g;
             hcbd_result r;
-            r = hcbd_checkpoint_load(&g, buf, size); /* the GI-BD world's loader */
+            r = hcbd_world_checkpoint_load(&g, buf, size); /* the GI-BD world's loader */
             CHECK(r == HCBD_ERR_MODEL && strstr(g.err.msg, "kind"), "kind: %s", g.err.msg);
             buf[16] = HCBD_MODEL_WALLED;
-            r = hcbd_hc_checkpoint_load(&b, buf, size);
+            r = hcbd_hc_world_checkpoint_load(&b, buf, size);
             CHECK(r == HCBD_ERR_MODEL && strstr(b.err.msg, "walled"), "model: %s", b.err.msg);
             buf[16] = HCBD_MODEL_HCBD;
             buf[size / 2] ^= 4;
-            r = hcbd_hc_checkpoint_load(&b, buf, size);
+            r = hcbd_hc_world_checkpoint_load(&b, buf, size);
             CHECK(r == HCBD_ERR_FORMAT && strstr(b.err.msg, "checksum"), "bit: %s", b.err.msg);
-            r = hcbd_hc_checkpoint_load(&b, buf, size / 2);
+            r = hcbd_hc_world_checkpoint_load(&b, buf, size / 2);
             CHECK(r == HCBD_ERR_FORMAT, "truncated: %s", b.err.msg);
         }
         free(buf);
@@ -1028,7 +1028,7 @@ void test_hc_checkpoint_restart_bits(void)
    fluid's fields against the world. */
 void test_hc_xyz_frame(void)
 {
-    hcbd_hc_def d = hc_scene(5, 5, 5, 20);
+    hcbd_hc_world_def d = hc_scene(5, 5, 5, 20);
     hcbd_hc_world w;
     FILE *f;
     char line[512], sp[8];
@@ -1036,7 +1036,7 @@ void test_hc_xyz_frame(void)
     if (!hc_make(&w, &d, 20)) return;
     hc_run(&w, 3);
     f = tmpfile();
-    CHECK(hcbd_hc_xyz_write(&w, f) == HCBD_OK, "write");
+    CHECK(hcbd_hc_world_write_xyz(&w, f) == HCBD_OK, "write");
     rewind(f);
     CHECK(fgets(line, sizeof line, f) && sscanf(line, "%d", &n) == 1 && n == w.nf + w.np, "count");
     CHECK(fgets(line, sizeof line, f) && strstr(line, "Properties=species:S:1:pos:R:3:velo:R:3:id:I:1") &&
@@ -1060,7 +1060,7 @@ void test_hc_xyz_frame(void)
     }
     CHECK(nF == w.nf && nP == w.np && bad == 0, "%d F, %d P, %d bad lines", nF, nP, bad);
     fclose(f);
-    hcbd_hc_thermo_line(&w, NAN, line, sizeof line);
+    hcbd_hc_world_thermo_line(&w, NAN, line, sizeof line);
     CHECK(!strcmp(strrchr(line, ' '), " -") && atoi(line) == 3, "thermo: %s", line);
     hcbd_hc_world_destroy(&w);
 }

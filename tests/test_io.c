@@ -94,7 +94,7 @@ static int sc_make(hcbd_world *w, int sc, int threads)
         t_fail = 1;
         return 0;
     }
-    if (sc == SC_SHEAR) hcbd_stress_enable(w, 1);
+    if (sc == SC_SHEAR) hcbd_world_stress_enable(w, 1);
     return 1;
 }
 
@@ -112,26 +112,26 @@ void test_checkpoint_restart_bits(void)
             double fa[4], fb[4];
             if (!sc_make(&a, sc, 1)) continue;
             run(&a, n);
-            size = hcbd_checkpoint_size(&a);
+            size = hcbd_world_checkpoint_size(&a);
             buf = (unsigned char *)malloc(size);
-            CHECK(hcbd_checkpoint_save(&a, buf, size) == HCBD_OK, "%s: %s", sc_name[sc], a.err.msg);
+            CHECK(hcbd_world_checkpoint_save(&a, buf, size) == HCBD_OK, "%s: %s", sc_name[sc], a.err.msg);
             run(&a, n);
-            ca = hcbd_state_checksum(&a);
+            ca = hcbd_world_checksum(&a);
             /* the loaded world continues on t threads */
-            if (hcbd_checkpoint_load(&b, buf, size) != HCBD_OK) {
+            if (hcbd_world_checkpoint_load(&b, buf, size) != HCBD_OK) {
                 CHECK(0, "%s: load: %s", sc_name[sc], b.err.msg);
             } else {
                 CHECK(b.step == n && b.n == 512, "%s: step %lld n %d", sc_name[sc], (long long)b.step, b.n);
                 CHECK(!memcmp(&b.p.L, &a.p.L, sizeof a.p.L) && b.p.seed == a.p.seed &&
                           b.p.dt == a.p.dt && b.p.potential == a.p.potential,
                       "%s: parameters differ after load", sc_name[sc]);
-                hcbd_set_threads(&b, t);
+                hcbd_world_set_threads(&b, t);
                 run(&b, n);
-                cb = hcbd_state_checksum(&b);
+                cb = hcbd_world_checksum(&b);
                 CHECK(ca == cb, "%s, %d threads: 2n steps %llx, n + save + load + n %llx",
                       sc_name[sc], t, (unsigned long long)ca, (unsigned long long)cb);
-                hcbd_stress_read(&a, fa, NULL);
-                hcbd_stress_read(&b, fb, NULL);
+                hcbd_world_stress_read(&a, fa, NULL);
+                hcbd_world_stress_read(&b, fb, NULL);
                 CHECK(!memcmp(fa, fb, sizeof fa), "%s: flux sums differ", sc_name[sc]);
                 CHECK(a.wall_pen == b.wall_pen, "%s: wall penetrations %lld vs %lld", sc_name[sc],
                       (long long)a.wall_pen, (long long)b.wall_pen);
@@ -147,7 +147,7 @@ static void expect_load(const unsigned char *buf, size_t size, hcbd_result code,
                         const char *word, const char *what)
 {
     hcbd_world w;
-    hcbd_result r = hcbd_checkpoint_load(&w, buf, size);
+    hcbd_result r = hcbd_world_checkpoint_load(&w, buf, size);
     CHECK(r == code, "%s: %s (%s), expected %s", what, hcbd_result_name(r), w.err.msg,
           hcbd_result_name(code));
     CHECK(r != HCBD_OK || code == HCBD_OK, "%s loaded", what);
@@ -165,11 +165,11 @@ void test_checkpoint_rejects_bad_files(void)
     char path[256];
     if (!sc_make(&w, SC_SHEAR, 1)) return;
     run(&w, 5);
-    size = hcbd_checkpoint_size(&w);
+    size = hcbd_world_checkpoint_size(&w);
     buf = (unsigned char *)malloc(size);
     bad = (unsigned char *)malloc(size + 8);
-    CHECK(hcbd_checkpoint_save(&w, buf, size - 1) == HCBD_ERR_MEMORY, "short buffer accepted");
-    CHECK(hcbd_checkpoint_save(&w, buf, size) == HCBD_OK, "%s", w.err.msg);
+    CHECK(hcbd_world_checkpoint_save(&w, buf, size - 1) == HCBD_ERR_MEMORY, "short buffer accepted");
+    CHECK(hcbd_world_checkpoint_save(&w, buf, size) == HCBD_OK, "%s", w.err.msg);
     expect_load(buf, size, HCBD_OK, "", "intact");
     /* truncated anywhere, including inside the header */
     hcbd_rng_seed(&g, seed);
@@ -255,33 +255,33 @@ void test_checkpoint_rejects_bad_files(void)
         int64_t sb;
         if (sc_make(&b, SC_BD, 1)) {
             run(&b, 3);
-            cb = hcbd_state_checksum(&b);
+            cb = hcbd_world_checksum(&b);
             sb = b.step;
             memcpy(bad, buf, size);
             bad[size / 2] ^= 1;
-            CHECK(hcbd_checkpoint_load(&b, bad, size) == HCBD_ERR_FORMAT, "bad file loaded");
-            CHECK(hcbd_load(&b, io_path("missing.hcbd")) == HCBD_ERR_IO, "missing file loaded");
-            CHECK(b.step == sb && hcbd_state_checksum(&b) == cb && b.n == 512,
+            CHECK(hcbd_world_checkpoint_load(&b, bad, size) == HCBD_ERR_FORMAT, "bad file loaded");
+            CHECK(hcbd_world_load(&b, io_path("missing.hcbd")) == HCBD_ERR_IO, "missing file loaded");
+            CHECK(b.step == sb && hcbd_world_checksum(&b) == cb && b.n == 512,
                   "a failed load changed the live world");
             CHECK(run(&b, 1), "the live world no longer steps after a failed load");
-            CHECK(hcbd_checkpoint_load(&b, buf, size) == HCBD_OK, "%s", b.err.msg);
-            CHECK(hcbd_state_checksum(&b) == hcbd_state_checksum(&w) && b.step == w.step,
+            CHECK(hcbd_world_checkpoint_load(&b, buf, size) == HCBD_OK, "%s", b.err.msg);
+            CHECK(hcbd_world_checksum(&b) == hcbd_world_checksum(&w) && b.step == w.step,
                   "load into a live world did not give the saved state");
             hcbd_world_destroy(&b);
         }
     }
     /* files: a round trip, a missing file, an unwritable path */
     snprintf(path, sizeof path, "%s", io_path("ck.hcbd"));
-    CHECK(hcbd_save(&w, path) == HCBD_OK, "%s", w.err.msg);
+    CHECK(hcbd_world_save(&w, path) == HCBD_OK, "%s", w.err.msg);
     {
         hcbd_world b;
-        CHECK(hcbd_load(&b, path) == HCBD_OK, "%s", b.err.msg);
-        CHECK(hcbd_state_checksum(&b) == hcbd_state_checksum(&w), "file round trip changed the state");
+        CHECK(hcbd_world_load(&b, path) == HCBD_OK, "%s", b.err.msg);
+        CHECK(hcbd_world_checksum(&b) == hcbd_world_checksum(&w), "file round trip changed the state");
         hcbd_world_destroy(&b);
-        CHECK(hcbd_load(&b, io_path("missing.hcbd")) == HCBD_ERR_IO &&
+        CHECK(hcbd_world_load(&b, io_path("missing.hcbd")) == HCBD_ERR_IO &&
                   strstr(b.err.msg, "missing.hcbd"), "missing file: %s", b.err.msg);
     }
-    CHECK(hcbd_save(&w, io_path("no/such/dir/ck.hcbd")) == HCBD_ERR_IO, "unwritable: %s", w.err.msg);
+    CHECK(hcbd_world_save(&w, io_path("no/such/dir/ck.hcbd")) == HCBD_ERR_IO, "unwritable: %s", w.err.msg);
     free(buf);
     free(bad);
     hcbd_world_destroy(&w);
@@ -388,7 +388,7 @@ void test_xyz_frame_fields(void)
     if (!sc_make(&w, SC_SHEAR, 1)) return;
     run(&w, 20);
     f = tmpfile();
-    CHECK(hcbd_xyz_write(&w, f, NULL, 0) == HCBD_OK, "xyz_write");
+    CHECK(hcbd_world_write_xyz(&w, f, NULL, 0) == HCBD_OK, "xyz_write");
     rewind(f);
     frame_alloc(&fr, 512);
     CHECK(read_frame(f, &fr, 512), "frame does not parse");
@@ -403,13 +403,13 @@ void test_xyz_frame_fields(void)
         long long step;
         double t, T;
         hcbd_thermo_header(head, sizeof head);
-        hcbd_thermo_line(&w, 123.0, line, sizeof line);
+        hcbd_world_thermo_line(&w, 123.0, line, sizeof line);
         for (tok = strtok(head, " "); tok; tok = strtok(NULL, " ")) nh++;
         CHECK(sscanf(line, "%lld %lf %lf", &step, &t, &T) == 3, "thermo: %s", line);
-        CHECK(step == w.step && fabs(T - hcbd_temperature(&w)) < 1e-8 * T, "thermo: %s", line);
+        CHECK(step == w.step && fabs(T - hcbd_world_temperature(&w)) < 1e-8 * T, "thermo: %s", line);
         for (tok = strtok(line, " "); tok; tok = strtok(NULL, " ")) nl++;
         CHECK(nh - 1 == nl, "thermo: %d header names (with '#'), %d fields", nh, nl);
-        CHECK(hcbd_thermo_line(&w, NAN, line, 8) > 8, "thermo reports the length it needs");
+        CHECK(hcbd_world_thermo_line(&w, NAN, line, 8) > 8, "thermo reports the length it needs");
     }
     frame_free(&fr);
     hcbd_world_destroy(&w);
@@ -446,7 +446,7 @@ void test_xyz_from_example(void)
     CHECK(read_frame(f, &fr, 1024) && fr.step == 5000, "first frame, step %lld", fr.step);
     CHECK(read_frame(f, &fr, 1024), "second frame");
     fclose(f);
-    if (hcbd_load(&w, io_path("ex/end.hcbd")) != HCBD_OK) {
+    if (hcbd_world_load(&w, io_path("ex/end.hcbd")) != HCBD_OK) {
         CHECK(0, "checkpoint: %s", w.err.msg);
     } else {
         frame_check(&fr, &w, "example frame");
@@ -470,13 +470,13 @@ void test_runtime_guards(void)
     w.p.guard_every = 4;
     run(&w, 1);
     w.ix[w.slot[7]] = 0x40000000;
-    r = hcbd_step(&w, 10);
+    r = hcbd_world_step(&w, 10);
     CHECK(r == HCBD_ERR_OUTSIDE && w.err.id == 7 && w.err.step == 4 && w.step == 4,
           "image overflow: %s at step %lld id %lld: %s", hcbd_result_name(r),
           (long long)w.err.step, (long long)w.err.id, w.err.msg);
     CHECK(strstr(w.err.msg, "particle 7") != NULL, "%s", w.err.msg);
     f = tmpfile();
-    CHECK(hcbd_xyz_offenders(&w, f) == HCBD_OK, "offenders");
+    CHECK(hcbd_world_write_offenders(&w, f) == HCBD_OK, "offenders");
     rewind(f);
     frame_alloc(&fr, 512);
     CHECK(read_frame(f, &fr, 512), "offenders' frame does not parse");
@@ -492,13 +492,13 @@ void test_runtime_guards(void)
     w.p.guard_every = 0;
     run(&w, 1);
     w.ix[w.slot[7]] = 0x40000000;
-    r = hcbd_step(&w, 10);
+    r = hcbd_world_step(&w, 10);
     CHECK(r == HCBD_OK, "guard_every = 0 still scanned: %s", w.err.msg);
     hcbd_world_destroy(&w);
     /* guard_step: the smallest displacement limit stops the first step */
     if (!sc_make(&w, SC_SHARDLOW, 1)) return;
     w.p.guard_step = 1e-6; /* read at every step, not only at creation */
-    r = hcbd_step(&w, 1);
+    r = hcbd_world_step(&w, 1);
     CHECK(r == HCBD_ERR_UNSTABLE && strstr(w.err.msg, "guard_step"), "guard_step: %s: %s",
           hcbd_result_name(r), w.err.msg);
     hcbd_world_destroy(&w);
@@ -509,10 +509,258 @@ void test_runtime_guards(void)
         w.p.wall.guard = 1;
         run(&w, 1);
         w.y[w.slot[9]] = (hcbd_real)(0.5 * w.p.wall.thickness);
-        r = hcbd_step(&w, 1);
+        r = hcbd_world_step(&w, 1);
         CHECK(r == HCBD_ERR_WALL && w.err.id == 9, "wall: %s id %lld: %s", hcbd_result_name(r),
               (long long)w.err.id, w.err.msg);
         hcbd_world_destroy(&w);
     }
 #endif
 }
+
+/* The old names (deprecated for one version) call the new ones: every
+   wrapper against its new name, on twin worlds where the call changes the
+   world. */
+#if defined(__GNUC__) || defined(__clang__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wdeprecated-declarations"
+#endif
+static int same_file(FILE *a, FILE *b)
+{
+    int ca, cb;
+    rewind(a);
+    rewind(b);
+    do {
+        ca = fgetc(a);
+        cb = fgetc(b);
+    } while (ca == cb && ca != EOF);
+    return ca == cb;
+}
+
+void test_old_names(void)
+{
+    hcbd_world_def d = scene(64, 0.24);
+    hcbd_world w, v;
+    double a[3 * 64], b[3 * 64], s[9], t[9], f[4], g[4], x2[2], y2[2], x3[3], y3[3], x12[12], y12[12];
+    int64_t na, nb;
+    char ba[512], bb[512];
+    hcbd_theory tha, thb;
+    hcbd_limit la[HCBD_MAX_LIMITS], lb[HCBD_MAX_LIMITS];
+    int nla = 0, nlb = 0;
+    hcbd_gibd_coef ca, cb;
+    hcbd_star_coef sa, sb;
+    hcbd_rng ra, rb;
+    FILE *fa, *fb;
+    size_t sz;
+    void *mem;
+    const char *path;
+    d.params.dynamics = HCBD_DYN_GIBD;
+    memset(&tha, 0, sizeof tha); /* compared with memcmp: padding too */
+    memset(&thb, 0, sizeof thb);
+    memset(la, 0, sizeof la);
+    memset(lb, 0, sizeof lb);
+    memset(&ca, 0, sizeof ca);
+    memset(&cb, 0, sizeof cb);
+    memset(&sa, 0, sizeof sa);
+    memset(&sb, 0, sizeof sb);
+    if (!make_world(&w, &d)) return;
+    if (!make_world(&v, &d)) {
+        hcbd_world_destroy(&w);
+        return;
+    }
+    hcbd_world_place_lattice(&w, 64);
+    hcbd_world_place_lattice(&v, 64);
+    CHECK(hcbd_world_stress_enable(&w, 1) == HCBD_OK && hcbd_flux_enable(&v, 1) == HCBD_OK, "stress_enable");
+    CHECK(hcbd_world_step(&w, 20) == HCBD_OK && hcbd_step(&v, 20) == HCBD_OK &&
+          hcbd_world_checksum(&w) == hcbd_state_checksum(&v) && hcbd_state_checksum(&v) != 0, "hcbd_step");
+    CHECK(hcbd_set_threads(&v, 2) == HCBD_OK && hcbd_world_set_threads(&w, 2) == HCBD_OK && run(&v, 3) && run(&w, 3) &&
+          hcbd_world_checksum(&w) == hcbd_world_checksum(&v), "hcbd_set_threads");
+    CHECK(hcbd_get_positions(&w, a, 1) == HCBD_OK && hcbd_world_get_positions(&w, b, 1) == HCBD_OK &&
+          !memcmp(a, b, sizeof a), "hcbd_get_positions");
+    CHECK(hcbd_get_velocities(&w, a) == HCBD_OK && hcbd_world_get_velocities(&w, b) == HCBD_OK &&
+          !memcmp(a, b, sizeof a), "hcbd_get_velocities");
+    CHECK(hcbd_stress(&w, s) == HCBD_OK && hcbd_world_virial_stress(&w, t) == HCBD_OK && !memcmp(s, t, sizeof s),
+          "hcbd_stress");
+    CHECK(hcbd_virial_stress(&w, s) == HCBD_OK && !memcmp(s, t, sizeof s), "hcbd_virial_stress");
+    CHECK(hcbd_flux_read(&w, f, &na) == HCBD_OK && hcbd_world_stress_read(&w, g, &nb) == HCBD_OK &&
+          !memcmp(f, g, sizeof f) && na == 23 && nb == 23, "hcbd_flux_read");
+    CHECK(hcbd_stress_read(&w, f, &na) == HCBD_OK && !memcmp(f, g, sizeof f) && na == nb, "hcbd_stress_read");
+    CHECK(hcbd_flux_enable(&w, 2) == HCBD_ERR_PARAM && hcbd_stress_enable(&w, 2) == HCBD_ERR_PARAM,
+          "the stress wrappers pass their argument on");
+    CHECK(hcbd_temperature(&w) == hcbd_world_temperature(&w) && hcbd_world_temperature(&w) > 0, "hcbd_temperature");
+    hcbd_momentum(&w, x3);
+    hcbd_world_momentum(&w, y3);
+    CHECK(!memcmp(x3, y3, sizeof x3), "hcbd_momentum");
+    CHECK(hcbd_friction_average(&w, 1, x3) == HCBD_OK && hcbd_world_friction_average(&w, 1, y3) == HCBD_OK &&
+          !memcmp(x3, y3, sizeof x3), "hcbd_friction_average");
+    CHECK(hcbd_transverse_current(&w, 1, x12) == HCBD_OK && hcbd_world_transverse_current(&w, 1, y12) == HCBD_OK &&
+          !memcmp(x12, y12, sizeof x12), "hcbd_transverse_current");
+    CHECK(hcbd_potential_energy(&w) == hcbd_world_potential_energy(&w), "hcbd_potential_energy");
+    CHECK(hcbd_config_temperature(&w, x2) == HCBD_OK && hcbd_world_config_temperature(&w, y2) == HCBD_OK &&
+          !memcmp(x2, y2, sizeof x2), "hcbd_config_temperature");
+    CHECK(hcbd_forces(&w, a) == HCBD_OK && hcbd_world_forces(&w, b) == HCBD_OK && !memcmp(a, b, sizeof a),
+          "hcbd_forces");
+    CHECK(hcbd_thermo_line(&w, 1.0, ba, sizeof ba) == hcbd_world_thermo_line(&w, 1.0, bb, sizeof bb) &&
+          !strcmp(ba, bb), "hcbd_thermo_line");
+    sz = hcbd_checkpoint_size(&w);
+    mem = malloc(sz);
+    CHECK(sz == hcbd_world_checkpoint_size(&w) && mem && hcbd_checkpoint_save(&w, mem, sz) == HCBD_OK &&
+          run(&v, 5) && hcbd_checkpoint_load(&v, mem, sz) == HCBD_OK &&
+          hcbd_world_checksum(&v) == hcbd_world_checksum(&w), "hcbd_checkpoint_size, _save, _load");
+    free(mem);
+    fa = tmpfile();
+    fb = tmpfile();
+    CHECK(fa && fb && hcbd_xyz_write(&w, fa, NULL, 0) == HCBD_OK && hcbd_world_write_xyz(&w, fb, NULL, 0) == HCBD_OK &&
+          same_file(fa, fb), "hcbd_xyz_write");
+    if (fa) fclose(fa);
+    if (fb) fclose(fb);
+    fa = tmpfile();
+    fb = tmpfile();
+    CHECK(fa && fb && hcbd_xyz_offenders(&w, fa) == hcbd_world_write_offenders(&w, fb) && same_file(fa, fb),
+          "hcbd_xyz_offenders");
+    if (fa) fclose(fa);
+    if (fb) fclose(fb);
+    hcbd_rng_seed(&ra, 5);
+    hcbd_rng_seed(&rb, 5);
+    CHECK(hcbd_rng_normal(&w, &ra) == hcbd_world_rng_normal(&w, &rb), "hcbd_rng_normal");
+    hcbd_pair_normals(&w, 3, 1, 2, x3);
+    hcbd_world_pair_normals(&w, 3, 1, 2, y3);
+    CHECK(!memcmp(x3, y3, sizeof x3), "hcbd_pair_normals");
+    hcbd_particle_normals(&w, 3, 1, x3);
+    hcbd_world_particle_normals(&w, 3, 1, y3);
+    CHECK(!memcmp(x3, y3, sizeof x3), "hcbd_particle_normals");
+    CHECK(hcbd_theory_of(&w.p, &tha) == HCBD_OK && hcbd_params_theory(&w.p, &thb) == HCBD_OK &&
+          !memcmp(&tha, &thb, sizeof tha), "hcbd_theory_of");
+    CHECK(hcbd_stability(&w.p, la, &nla) == HCBD_OK && hcbd_params_stability(&w.p, lb, &nlb) == HCBD_OK &&
+          nla == nlb && nla > 0 && !memcmp(la, lb, (size_t)nla * sizeof la[0]), "hcbd_stability");
+    CHECK(hcbd_gibd_coef_of(&w.p, &ca, NULL, 0) == HCBD_OK && hcbd_params_gibd_coef(&w.p, &cb, NULL, 0) == HCBD_OK &&
+          !memcmp(&ca, &cb, sizeof ca), "hcbd_gibd_coef_of");
+    CHECK(hcbd_star_coef_of(32, 1.2, 1.5, &sa, NULL, 0) == HCBD_OK &&
+          hcbd_star_coef_init(&sb, 32, 1.2, 1.5, NULL, 0) == HCBD_OK && !memcmp(&sa, &sb, sizeof sa),
+          "hcbd_star_coef_of");
+#if HCBD_MODEL == HCBD_MODEL_WALLED
+    {
+        double fy1 = 0, fy2 = 0;
+        int64_t s1 = 0, s2 = 0;
+        int i1 = 0, i2 = 0;
+        CHECK(hcbd_wall_potential(&w.p, 0.3, &fy1) == hcbd_params_wall_potential(&w.p, 0.3, &fy2) && fy1 == fy2,
+              "hcbd_wall_potential");
+        CHECK(hcbd_wall_penetrations(&w, &s1, &i1) == hcbd_world_wall_penetrations(&w, &s2, &i2) && s1 == s2 &&
+              i1 == i2, "hcbd_wall_penetrations");
+    }
+#endif
+    path = io_path("old_names.hcbd");
+    CHECK(hcbd_save(&w, path) == HCBD_OK && run(&v, 4) && hcbd_load(&v, path) == HCBD_OK &&
+              hcbd_world_checksum(&v) == hcbd_world_checksum(&w) && run(&v, 4) &&
+              hcbd_world_save(&v, path) == HCBD_OK && hcbd_world_load(&w, path) == HCBD_OK &&
+              hcbd_world_checksum(&v) == hcbd_world_checksum(&w),
+          "hcbd_save, hcbd_load");
+    remove(path);
+    hcbd_world_destroy(&w);
+    hcbd_world_destroy(&v);
+}
+
+#if HCBD_MODEL == HCBD_MODEL_HCBD
+/* The HCBD world's old names against the new ones, on twin worlds. */
+void test_hc_old_names(void)
+{
+    hcbd_hc_def d = hcbd_hc_def_default();
+    hcbd_hc_world w, v;
+    hcbd_hc_si si = hcbd_hc_si_table1();
+    hcbd_hc_params pa, pb;
+    hcbd_hc_theory tha, thb;
+    hcbd_limit la[HCBD_MAX_LIMITS], lb[HCBD_MAX_LIMITS];
+    int nla = 0, nlb = 0;
+    double xa[3 * 125], xb[3 * 125], va[3 * 125], vb[3 * 125], s1[HCBD_HC_NSTRESS], s2[HCBD_HC_NSTRESS];
+    double x3[3], y3[3], x12[12], y12[12], l1 = 0, l2 = 0;
+    int64_t n1, n2;
+    char ba[512], bb[512];
+    FILE *fa, *fb;
+    size_t sz;
+    void *mem;
+    const char *path;
+    hcbd_hc_world_def e = hcbd_hc_world_def_default();
+    CHECK(d.fluid_capacity == e.fluid_capacity && d.params.h == e.params.h && d.params.eta == e.params.eta,
+          "hcbd_hc_def_default");
+    memset(&pa, 0, sizeof pa);
+    memset(&pb, 0, sizeof pb);
+    d = hc_scene(5, 5, 5, 8);
+    memset(&tha, 0, sizeof tha);
+    memset(&thb, 0, sizeof thb);
+    memset(la, 0, sizeof la);
+    memset(lb, 0, sizeof lb);
+    CHECK(hcbd_hc_params_si(&si, 1e-6, &pa, NULL, 0) == HCBD_OK &&
+          hcbd_hc_si_params(&si, 1e-6, &pb, NULL, 0) == HCBD_OK && !memcmp(&pa, &pb, sizeof pa), "hcbd_hc_params_si");
+    si = hcbd_hc_si_default();
+    CHECK(hcbd_hc_theory_of(&d.params, &tha) == HCBD_OK && hcbd_hc_params_theory(&d.params, &thb) == HCBD_OK &&
+          !memcmp(&tha, &thb, sizeof tha), "hcbd_hc_theory_of");
+    CHECK(hcbd_hc_stability(&d.params, la, &nla) == HCBD_OK && hcbd_hc_params_stability(&d.params, lb, &nlb) == HCBD_OK &&
+          nla == nlb && nla > 0 && !memcmp(la, lb, (size_t)nla * sizeof la[0]), "hcbd_hc_stability");
+    if (!hc_create(&w, &d)) return;
+    if (!hc_create(&v, &d)) {
+        hcbd_hc_world_destroy(&w);
+        return;
+    }
+    CHECK(hcbd_hc_place_fluid_lattice(&v, 125) == HCBD_OK && hcbd_hc_world_place_fluid_lattice(&w, 125) == HCBD_OK &&
+          hcbd_hc_place_polymers_random(&v, 8) == HCBD_OK && hcbd_hc_world_place_polymers_random(&w, 8) == HCBD_OK &&
+          hcbd_hc_state_checksum(&v) == hcbd_hc_world_checksum(&w), "hcbd_hc_place_*");
+    CHECK(hcbd_hc_world_get_fluid(&w, xa, va) == HCBD_OK && hcbd_hc_set_fluid(&v, 125, xa, va) == HCBD_OK &&
+          hcbd_hc_world_get_polymers(&w, xb) == HCBD_OK && hcbd_hc_set_polymers(&v, 8, xb) == HCBD_OK &&
+          hcbd_hc_refresh(&v) == HCBD_OK && hcbd_hc_world_refresh(&w) == HCBD_OK &&
+          hcbd_hc_state_checksum(&v) == hcbd_hc_world_checksum(&w), "hcbd_hc_set_fluid, _set_polymers, _refresh");
+    CHECK(hcbd_hc_stress_enable(&v, 1) == HCBD_OK && hcbd_hc_world_stress_enable(&w, 1) == HCBD_OK &&
+          hcbd_hc_step(&v, 10) == HCBD_OK && hcbd_hc_world_step(&w, 10) == HCBD_OK &&
+          hcbd_hc_state_checksum(&v) == hcbd_hc_world_checksum(&w), "hcbd_hc_step");
+    CHECK(hcbd_hc_set_threads(&v, 2) == HCBD_OK && hcbd_hc_world_set_threads(&w, 2) == HCBD_OK && hc_run(&v, 2) &&
+          hc_run(&w, 2) && hcbd_hc_world_checksum(&v) == hcbd_hc_world_checksum(&w), "hcbd_hc_set_threads");
+    CHECK(hcbd_hc_world_get_fluid(&w, xa, va) == HCBD_OK && hcbd_hc_world_get_fluid(&v, xb, vb) == HCBD_OK &&
+          !memcmp(xa, xb, sizeof xa) && !memcmp(va, vb, sizeof va) && xa[0] == w.fx[0] && va[5] == w.fvz[1],
+          "hcbd_hc_world_get_fluid");
+    CHECK(hcbd_hc_world_get_polymers(&w, xa) == HCBD_OK && xa[3] == w.px[1] && xa[23] == w.pz[7],
+          "hcbd_hc_world_get_polymers");
+    CHECK(hcbd_hc_stress_read(&w, s1, &n1) == HCBD_OK && hcbd_hc_world_stress_read(&w, s2, &n2) == HCBD_OK &&
+          !memcmp(s1, s2, sizeof s1) && n1 == 12 && n2 == 12, "hcbd_hc_stress_read");
+    CHECK(hcbd_hc_temperature(&w) == hcbd_hc_world_temperature(&w), "hcbd_hc_temperature");
+    hcbd_hc_momentum(&w, x3);
+    hcbd_hc_world_momentum(&w, y3);
+    CHECK(!memcmp(x3, y3, sizeof x3), "hcbd_hc_momentum");
+    CHECK(hcbd_hc_transverse_current(&w, 1, x12) == HCBD_OK && hcbd_hc_world_transverse_current(&w, 1, y12) == HCBD_OK &&
+          !memcmp(x12, y12, sizeof x12), "hcbd_hc_transverse_current");
+    CHECK(hcbd_hc_polymer_energy(&w) == hcbd_hc_world_polymer_energy(&w), "hcbd_hc_polymer_energy");
+    CHECK(hcbd_hc_density_range(&w, x3) == HCBD_OK && hcbd_hc_world_density_range(&w, y3) == HCBD_OK &&
+          !memcmp(x3, y3, sizeof x3), "hcbd_hc_density_range");
+    {
+        int a = 0, b;
+        while (a < 7 && w.pair_n[a] == 0) ++a;
+        b = w.pair_n[a] ? w.pair_b[(size_t)a * w.pair_cap] : a + 1;
+        CHECK(w.pair_n[a] > 0, "a transient pair to read");
+        CHECK(hcbd_hc_lambda(&w, a, b, &l1) == HCBD_OK && hcbd_hc_world_get_lambda(&w, a, b, &l2) == HCBD_OK &&
+              l1 == l2, "hcbd_hc_lambda");
+        CHECK(hcbd_hc_set_lambda(&v, a, b, 0.5) == HCBD_OK && hcbd_hc_world_set_lambda(&w, a, b, 0.5) == HCBD_OK &&
+              hcbd_hc_world_checksum(&v) == hcbd_hc_world_checksum(&w), "hcbd_hc_set_lambda");
+    }
+    CHECK(hcbd_hc_thermo_line(&w, 1.0, ba, sizeof ba) == hcbd_hc_world_thermo_line(&w, 1.0, bb, sizeof bb) &&
+          !strcmp(ba, bb), "hcbd_hc_thermo_line");
+    fa = tmpfile();
+    fb = tmpfile();
+    CHECK(fa && fb && hcbd_hc_xyz_write(&w, fa) == HCBD_OK && hcbd_hc_world_write_xyz(&w, fb) == HCBD_OK &&
+          same_file(fa, fb), "hcbd_hc_xyz_write");
+    if (fa) fclose(fa);
+    if (fb) fclose(fb);
+    sz = hcbd_hc_checkpoint_size(&w);
+    mem = malloc(sz);
+    CHECK(sz == hcbd_hc_world_checkpoint_size(&w) && mem && hcbd_hc_checkpoint_save(&w, mem, sz) == HCBD_OK &&
+          hc_run(&v, 3) && hcbd_hc_checkpoint_load(&v, mem, sz) == HCBD_OK &&
+          hcbd_hc_world_checksum(&v) == hcbd_hc_world_checksum(&w), "hcbd_hc_checkpoint_size, _save, _load");
+    free(mem);
+    path = io_path("hc_old_names.hcbd");
+    CHECK(hcbd_hc_save(&w, path) == HCBD_OK && hc_run(&v, 3) && hcbd_hc_load(&v, path) == HCBD_OK &&
+              hcbd_hc_world_checksum(&v) == hcbd_hc_world_checksum(&w),
+          "hcbd_hc_save, hcbd_hc_load");
+    remove(path);
+    hcbd_hc_world_destroy(&w);
+    hcbd_hc_world_destroy(&v);
+}
+#endif
+#if defined(__GNUC__) || defined(__clang__)
+#pragma GCC diagnostic pop
+#endif

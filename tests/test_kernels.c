@@ -74,7 +74,7 @@ void test_star_force_over_r(void)
     hcbd_star_coef c;
     int k;
     for (k = 0; k < 3; ++k) {
-        CHECK(hcbd_star_coef_of(f[k], sg[k], eps[k], &c, NULL, 0) == HCBD_OK, "coef_of(%g, %g, %g)", f[k], sg[k],
+        CHECK(hcbd_star_coef_init(&c, f[k], sg[k], eps[k], NULL, 0) == HCBD_OK, "coef_of(%g, %g, %g)", f[k], sg[k],
               eps[k]);
         for (r = 0.05 * sg[k]; r < 3 * sg[k]; r += 0.0173 * sg[k]) {
             double ref = hcbd_star_force(r, f[k], sg[k], eps[k]) / r;
@@ -85,13 +85,13 @@ void test_star_force_over_r(void)
     CHECK(worst < 1e-13, "hcbd_star_force_over_r off hcbd_star_force / r by %g", worst);
     {
         char msg[128];
-        CHECK(hcbd_star_coef_of(0, 1, 1, &c, msg, sizeof msg) == HCBD_ERR_PARAM && strstr(msg, "f = 0"),
+        CHECK(hcbd_star_coef_init(&c, 0, 1, 1, msg, sizeof msg) == HCBD_ERR_PARAM && strstr(msg, "f = 0"),
               "f = 0: %s", msg);
-        CHECK(hcbd_star_coef_of(128, -1, 1, &c, msg, sizeof msg) == HCBD_ERR_PARAM && strstr(msg, "sigma = -1"),
+        CHECK(hcbd_star_coef_init(&c, 128, -1, 1, msg, sizeof msg) == HCBD_ERR_PARAM && strstr(msg, "sigma = -1"),
               "sigma = -1: %s", msg);
-        CHECK(hcbd_star_coef_of(128, 1, NAN, &c, msg, sizeof msg) == HCBD_ERR_PARAM && strstr(msg, "eps = nan"),
+        CHECK(hcbd_star_coef_init(&c, 128, 1, NAN, msg, sizeof msg) == HCBD_ERR_PARAM && strstr(msg, "eps = nan"),
               "eps = nan: %s", msg);
-        CHECK(hcbd_star_coef_of(128, 1, 1, NULL, msg, sizeof msg) == HCBD_ERR_NULL && strstr(msg, "NULL"),
+        CHECK(hcbd_star_coef_init(NULL, 128, 1, 1, msg, sizeof msg) == HCBD_ERR_NULL && strstr(msg, "NULL"),
               "c = NULL: %s", msg);
     }
 }
@@ -124,7 +124,7 @@ static void step_forces(hcbd_world_def d, double *xyz, double *F)
 }
 
 /* The forces the step applies are minus the gradient of the total
-   potential energy (finite differences of hcbd_potential_energy). */
+   potential energy (finite differences of hcbd_world_potential_energy). */
 void test_pair_forces_vs_energy(void)
 {
     enum { N = 64 };
@@ -140,10 +140,10 @@ void test_pair_forces_vs_energy(void)
             double h = 1e-6, e1, e0, fd;
             xyz[3 * i + c] += h;
             hcbd_world_set_positions(&w, N, xyz);
-            e1 = hcbd_potential_energy(&w);
+            e1 = hcbd_world_potential_energy(&w);
             xyz[3 * i + c] -= 2 * h;
             hcbd_world_set_positions(&w, N, xyz);
-            e0 = hcbd_potential_energy(&w);
+            e0 = hcbd_world_potential_energy(&w);
             xyz[3 * i + c] += h;
             fd = -(e1 - e0) / (2 * h);
             CHECK(fabs(fd - F[3 * i + c]) < 1e-5 * (1 + fabs(fd)), "particle %d comp %d: -dU/dx %g, F %g",
@@ -152,7 +152,7 @@ void test_pair_forces_vs_energy(void)
     hcbd_world_destroy(&w);
 }
 
-/* hcbd_forces gives the forces the step applies (body force included),
+/* hcbd_world_forces gives the forces the step applies (body force included),
    they sum to N fext (the pair forces cancel in pairs), and they do not
    depend on the storage order. */
 void test_forces_observable(void)
@@ -167,13 +167,13 @@ void test_forces_observable(void)
     step_forces(d, xyz, F);
     d.params.L[0] = d.params.L[1] = d.params.L[2] = 6.5;
     if (!make_world(&w, &d)) return;
-    CHECK(hcbd_forces(&w, NULL) == HCBD_ERR_NULL && strstr(w.err.msg, "f is NULL"), "%s", w.err.msg);
+    CHECK(hcbd_world_forces(&w, NULL) == HCBD_ERR_NULL && strstr(w.err.msg, "f is NULL"), "%s", w.err.msg);
     hcbd_world_set_positions(&w, N, xyz);
-    CHECK(hcbd_forces(&w, G) == HCBD_OK, "%s", w.err.msg);
+    CHECK(hcbd_world_forces(&w, G) == HCBD_OK, "%s", w.err.msg);
     for (i = 0; i < N; ++i)
         for (c = 0; c < 3; ++c) {
             CHECK(fabs(G[3 * i + c] - F[3 * i + c]) < 1e-6 * (1 + fabs(F[3 * i + c])),
-                  "particle %d comp %d: hcbd_forces %g, the step's %g", i, c, G[3 * i + c],
+                  "particle %d comp %d: hcbd_world_forces %g, the step's %g", i, c, G[3 * i + c],
                   F[3 * i + c]);
             sum[c] += G[3 * i + c];
         }
@@ -184,7 +184,7 @@ void test_forces_observable(void)
     for (i = 0; i < N; ++i)
         for (c = 0; c < 3; ++c) xr[3 * i + c] = xyz[3 * (N - 1 - i) + c];
     hcbd_world_set_positions(&w, N, xr);
-    hcbd_forces(&w, H);
+    hcbd_world_forces(&w, H);
     for (i = 0; i < N; ++i)
         for (c = 0; c < 3; ++c)
             CHECK(fabs(H[3 * i + c] - G[3 * (N - 1 - i) + c]) < 1e-12 * (1 + fabs(G[3 * (N - 1 - i) + c])),
@@ -273,7 +273,7 @@ void test_gibd_coef_exported(void)
         if (!make_world(&w, &d)) return;
         hcbd_world_place_random(&w, N);
         hcbd_world_get_positions(&w, xyz, 0);
-        CHECK(hcbd_gibd_coef_of(&d.params, &c, NULL, 0) == HCBD_OK, "coefficients");
+        CHECK(hcbd_params_gibd_coef(&d.params, &c, NULL, 0) == HCBD_OK, "coefficients");
         Rc = d.params.Rc;
         for (i = 0; i < N; ++i) {
             double s = 0, s_ref = 0;
@@ -298,7 +298,7 @@ void test_gibd_coef_exported(void)
                 CHECK(fabs(sdt - m * f * d.params.dt / d.params.tau) <= 1e-12 * (sdt + 1e-300), "S_ij dt/tau");
                 sum += sdt * d.params.tau / (m * d.params.dt) / N;
             }
-        hcbd_friction_average(&w, 1, out);
+        hcbd_world_friction_average(&w, 1, out);
         CHECK(fabs(sum / out[0] - 1) < 1e-9, "norm %d: <sum_j f_ij> %.12g, the world's %.12g", norm ? 2016 : 2014, sum,
               out[0]);
         hcbd_world_destroy(&w);
@@ -334,12 +334,12 @@ void test_gibd_pair_exact_exported(void)
         if (!make_world(&w, &d)) return;
         CHECK(hcbd_world_set_positions(&w, 2, xyz) == HCBD_OK && hcbd_world_set_velocities(&w, v) == HCBD_OK,
               "set-up: %s", w.err.msg);
-        CHECK(hcbd_gibd_coef_of(&d.params, &c, NULL, 0) == HCBD_OK, "coefficients");
+        CHECK(hcbd_params_gibd_coef(&d.params, &c, NULL, 0) == HCBD_OK, "coefficients");
         r = sqrt(1.3 * 1.3 + (cs == 2 ? 1.2 * 1.2 : 0.9 * 0.9) + 0.6 * 0.6);
         rho = hcbd_gibd_density(&c, hcbd_gibd_weight(&c, r));
         sdt = hcbd_gibd_sdt(&c, r, 1 / rho, 1 / rho);
         CHECK(cs == 1 ? 2 * sdt / c.m > 0.125 : 2 * sdt / c.m < 0.125, "rate %g", 2 * sdt / c.m);
-        hcbd_pair_normals(&w, 0, 0, 1, z);
+        hcbd_world_pair_normals(&w, 0, 0, 1, z);
         for (k = 0; k < 3; ++k) {
             vi[k] = v[k];
             vj[k] = v[3 + k];
@@ -352,7 +352,7 @@ void test_gibd_pair_exact_exported(void)
                   "component %d: %.15g %.15g, the formula's %.15g %.15g", k, vi[k], vj[k], v[k] + P / m,
                   v[3 + k] - P / m);
         }
-        CHECK(hcbd_step(&w, 1) == HCBD_OK, "step: %s", w.err.msg);
+        CHECK(hcbd_world_step(&w, 1) == HCBD_OK, "step: %s", w.err.msg);
         hcbd_world_get_velocities(&w, out);
         for (k = 0; k < 3; ++k)
             CHECK(fabs(out[k] - vi[k]) < 1e-12 && fabs(out[3 + k] - vj[k]) < 1e-12,

@@ -61,7 +61,7 @@ static void compare(hcbd_world *w, const char *what)
 static void build(hcbd_world *w)
 {
     double out[9];
-    hcbd_result r = w->gibd ? hcbd_friction_average(w, 1, out) : hcbd_virial_stress(w, out);
+    hcbd_result r = w->gibd ? hcbd_world_friction_average(w, 1, out) : hcbd_world_virial_stress(w, out);
     CHECK(r == HCBD_OK, "%s", w->err.msg);
 }
 
@@ -114,7 +114,7 @@ void test_neighbour_slice_overflow(void)
     build(&w);
     needed = (int)w.nl.npairs;
     run(&w, 1);
-    h1 = hcbd_state_checksum(&w);
+    h1 = hcbd_world_checksum(&w);
     /* exactly enough in total: unless the two shares are equal, one
        thread's half is too small */
     d.max_pairs = needed;
@@ -123,7 +123,7 @@ void test_neighbour_slice_overflow(void)
     build(&v);
     compare(&v, "slice overflow");
     run(&v, 1);
-    h2 = hcbd_state_checksum(&v);
+    h2 = hcbd_world_checksum(&v);
 #ifdef _OPENMP
     CHECK(v.nl.n_rescans == 1, "the fallback did not run (%lld rescans)", (long long)v.nl.n_rescans);
 #endif

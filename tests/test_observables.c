@@ -23,7 +23,7 @@ void test_multiple_tau_correlator(void)
     CHECK(hcbd_mtcorr_init(&mt, 2, P, M, LEV, mem, bytes) == HCBD_OK, "init");
     for (k = 0; k < N; ++k) {
         double two[2];
-        v = a * v + sqrt(1 - a * a) * hcbd_rng_normal(&w, &r);
+        v = a * v + sqrt(1 - a * a) * hcbd_world_rng_normal(&w, &r);
         x[k] = v;
         two[0] = v;
         two[1] = -v; /* a second channel with the same correlation */
@@ -171,7 +171,7 @@ void test_stress_is_strain_derivative(void)
     hcbd_world_place_lattice(&w, N);
     run(&w, 2000); /* a liquid configuration */
     hcbd_world_get_positions(&w, xyz, 1);
-    hcbd_virial_stress(&w, s);
+    hcbd_world_virial_stress(&w, s);
     V = w.p.L[0] * w.p.L[1] * w.p.L[2];
     {
         /* energy as a function of gamma with Lees-Edwards-consistent images:
@@ -233,7 +233,7 @@ void test_carreau_fit(void)
         CHECK(fabs(p[c] / truth[c] - 1) < 1e-6, "noiseless: parameter %d = %g, truth %g", c, p[c], truth[c]);
     for (t = 0; t < TRIALS; ++t) {
         double noisy[NP];
-        for (k = 0; k < NP; ++k) noisy[k] = eta[k] + err[k] * hcbd_rng_normal(&w, &r);
+        for (k = 0; k < NP; ++k) noisy[k] = eta[k] + err[k] * hcbd_world_rng_normal(&w, &r);
         if (hcbd_carreau_fit(g, noisy, err, NP, eta_inf, 0, p, pe, &chi2) != HCBD_OK) {
             CHECK(0, "trial %d: fit failed", t);
             break;
@@ -461,34 +461,6 @@ void test_rdf_blocks(void)
     hcbd_world_destroy(&w);
 }
 
-/* The old names (deprecated for one version) call the new ones. */
-#if defined(__GNUC__) || defined(__clang__)
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wdeprecated-declarations"
-#endif
-void test_old_names(void)
-{
-    hcbd_world_def d = scene(64, 0.24);
-    hcbd_world w;
-    double a[3 * 64], b[3 * 64], s[9], t[9], f[4], g[4];
-    int64_t na, nb;
-    if (!make_world(&w, &d)) return;
-    hcbd_world_place_lattice(&w, 64);
-    CHECK(hcbd_stress_enable(&w, 1) == HCBD_OK && hcbd_step(&w, 20) == HCBD_OK, "%s", w.err.msg);
-    CHECK(hcbd_get_positions(&w, a, 1) == HCBD_OK && hcbd_world_get_positions(&w, b, 1) == HCBD_OK &&
-          !memcmp(a, b, sizeof a), "hcbd_get_positions");
-    CHECK(hcbd_get_velocities(&w, a) == HCBD_OK && hcbd_world_get_velocities(&w, b) == HCBD_OK &&
-          !memcmp(a, b, sizeof a), "hcbd_get_velocities");
-    CHECK(hcbd_stress(&w, s) == HCBD_OK && hcbd_virial_stress(&w, t) == HCBD_OK && !memcmp(s, t, sizeof s),
-          "hcbd_stress");
-    CHECK(hcbd_flux_read(&w, f, &na) == HCBD_OK && hcbd_stress_read(&w, g, &nb) == HCBD_OK &&
-          !memcmp(f, g, sizeof f) && na == 20 && nb == 20, "hcbd_flux_read");
-    CHECK(hcbd_flux_enable(&w, 2) == HCBD_ERR_PARAM, "hcbd_flux_enable passes its argument on");
-    hcbd_world_destroy(&w);
-}
-#if defined(__GNUC__) || defined(__clang__)
-#pragma GCC diagnostic pop
-#endif
 
 /* hcbd_blocking_error against series whose error of the mean is known:
    independent normals (err = 1/sqrt(n)) and AR(1), x' = phi x +
@@ -512,10 +484,10 @@ void test_blocking_error(void)
         double se = 0, sp = 0, sp2 = 0, sn = 0;
         int npl = 0;
         for (t = 0; t < TRIALS; ++t) {
-            double v = hcbd_rng_normal(&w, &r);
+            double v = hcbd_world_rng_normal(&w, &r);
             for (k = 0; k < N; ++k) {
                 x[k] = v;
-                v = phi * v + a * hcbd_rng_normal(&w, &r);
+                v = phi * v + a * hcbd_world_rng_normal(&w, &r);
             }
             if (hcbd_blocking_error(x, N, &m, &e, &neff, &pl) != HCBD_OK) {
                 CHECK(0, "phi %g: blocking failed", phi);
@@ -547,7 +519,7 @@ void test_blocking_error(void)
         double v = 0;
         for (k = 0; k < 256; ++k) {
             x[k] = v;
-            v = 0.9995 * v + 0.0316 * hcbd_rng_normal(&w, &r);
+            v = 0.9995 * v + 0.0316 * hcbd_world_rng_normal(&w, &r);
         }
         CHECK(hcbd_blocking_error(x, 256, &m, &e, NULL, &pl) == HCBD_OK && pl == 0,
               "a 256-sample series with tau ~ 2000 samples reported a plateau");
@@ -558,7 +530,7 @@ void test_blocking_error(void)
        at least the samples' own and n_eff at most their number */
     for (t = 0; t < 100; ++t) {
         double s2 = 0;
-        for (k = 0; k < 8; ++k) x[k] = (k % 2 ? 1.0 : -1.0) + 0.01 * hcbd_rng_normal(&w, &r);
+        for (k = 0; k < 8; ++k) x[k] = (k % 2 ? 1.0 : -1.0) + 0.01 * hcbd_world_rng_normal(&w, &r);
         hcbd_blocking_error(x, 8, &m, &e, &neff, &pl);
         for (k = 0; k < 8; ++k) s2 += (x[k] - m) * (x[k] - m);
         if (!(e >= sqrt(s2 / 7 / 8) * (1 - 1e-12) && neff <= 8 * (1 + 1e-9))) {

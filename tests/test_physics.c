@@ -31,9 +31,9 @@ static void temperature_run(double dt, double tau, hcbd_pair_integrator integ, h
     run(&w, 20 * every);
     for (k = 0; k < nsamp; ++k) {
         run(&w, every);
-        T[k] = hcbd_temperature(&w);
+        T[k] = hcbd_world_temperature(&w);
         if (k % 100 == 0) {
-            hcbd_friction_average(&w, 1, out);
+            hcbd_world_friction_average(&w, 1, out);
             sf += out[0];
         }
     }
@@ -132,11 +132,11 @@ static tc_result transverse_identity(hcbd_world_def d, int nk, int nblocks, int 
         hcbd_mtcorr_init(&c, 12, P, 2, 1, mem, bytes);
         for (s = 0; s < block_steps; ++s) {
             double j[12], out[3];
-            hcbd_transverse_current(&w, nk, j);
+            hcbd_world_transverse_current(&w, nk, j);
             hcbd_mtcorr_add(&c, j);
             if (s % 50 == 0) {
                 int i, a;
-                hcbd_friction_average(&w, nk, out);
+                hcbd_world_friction_average(&w, nk, out);
                 mf += out[2] / (d.params.tau * k * k);
                 hcbd_world_get_positions(&w, xyz, 0);
                 for (a = 0; a < 3; ++a) {
@@ -220,7 +220,7 @@ void test_nu_meanfield_ideal(void)
         double out[3], nu;
         w.p.seed = 500 + s;
         hcbd_world_place_random(&w, 512);
-        hcbd_friction_average(&w, 1, out);
+        hcbd_world_friction_average(&w, 1, out);
         nu = out[2] / (d.params.tau * k * k);
         sum += nu;
         sum2 += nu * nu;
@@ -410,7 +410,7 @@ static void tconf_bd(hcbd_dynamics dyn, hcbd_brownian_integrator bi, double dt, 
         double F2 = 0, lap = 0, out[2];
         for (s = 0; s < per; ++s) {
             if (!run(&w, every)) return;
-            hcbd_config_temperature(&w, out);
+            hcbd_world_config_temperature(&w, out);
             F2 += out[0];
             lap += out[1];
         }
@@ -506,7 +506,7 @@ void test_gibd_harmonic_exact(void)
                 dd[c] -= 9.0 * round(dd[c] / 9.0);
             }
             r2 += dd[0] * dd[0] + dd[1] * dd[1] + dd[2] * dd[2];
-            t += hcbd_temperature(&w);
+            t += hcbd_world_temperature(&w);
         }
         tc[b] = k * r2 / per / 3.0 / d.params.kT;
         tk[b] = t / per;
@@ -530,7 +530,7 @@ void test_gibd_harmonic_exact(void)
    run here must agree with that number.  The configurational temperature
    <sum |F_i|^2> / <sum lap_i U> is computed in the test from positions
    with the analytic derivatives of 2014 eq. 28, and compared once with
-   hcbd_config_temperature. */
+   hcbd_world_config_temperature. */
 typedef struct {
     double g[50], gerr[50], tc, tcerr;
 } gr_result;
@@ -604,7 +604,7 @@ static gr_result gr_run(int kind, int steps, double *api_vs_test)
             lap += lp;
             if (api_vs_test && b == 0 && s == 0) {
                 double out[2];
-                hcbd_config_temperature(&w, out);
+                hcbd_world_config_temperature(&w, out);
                 *api_vs_test = fmax(fabs(out[0] / f2 - 1), fabs(out[1] / lp - 1));
             }
         }
@@ -645,9 +645,9 @@ void test_statics_default_tau(void)
     NOTE("T_conf: BD %.4f +- %.4f, GI-BD Shardlow %.4f +- %.4f, GI-BD Euler %.4f +- %.4f (%d steps)",
          bd.tc, bd.tcerr, sh.tc, sh.tcerr, eu.tc, eu.tcerr, steps);
     NOTE("Shardlow - BD = %.4f +- %.4f; Euler - BD = %.4f +- %.4f (reference 0.013 +- 0.0014)", ds, es, de, ee);
-    NOTE("g(r) Shardlow vs BD: chi2 = %.1f over %d bins; two BD runs: %.1f; hcbd_config_temperature "
+    NOTE("g(r) Shardlow vs BD: chi2 = %.1f over %d bins; two BD runs: %.1f; hcbd_world_config_temperature "
          "vs the test's sums: %.1e", chi2, nbins, chi2_0, api);
-    CHECK(api < 1e-9, "hcbd_config_temperature differs from 2014 eq. 28 evaluated here: %g", api);
+    CHECK(api < 1e-9, "hcbd_world_config_temperature differs from 2014 eq. 28 evaluated here: %g", api);
     if (t_quick) return;
     /* Blocks of 4000 steps are not quite independent (two BD runs with
        different seeds give chi2 ~ 1.6 n, not n), so the chi2 is measured

@@ -31,7 +31,7 @@ void test_rng_gaussians(void)
     if (!make_world(&w, &d)) return;
     hcbd_rng_seed(&r, 42);
     for (k = 0; k < N; ++k) {
-        x[k] = hcbd_rng_normal(&w, &r);
+        x[k] = hcbd_world_rng_normal(&w, &r);
         if (fabs(x[k]) > 3.6541528853610088) ++tail;
     }
     moments(x, N, "xoshiro ziggurat");
@@ -40,7 +40,7 @@ void test_rng_gaussians(void)
         double pe = erfc(3.6541528853610088 / sqrt(2.0)), e = sqrt(pe * N);
         CHECK(fabs(tail - pe * N) < 5 * e, "tail count %d, expected %g", tail, pe * N);
     }
-    for (k = 0; k < N / 3; ++k) hcbd_pair_normals(&w, k / 1000, k % 1000, 1000 + k % 7, x + 3 * k);
+    for (k = 0; k < N / 3; ++k) hcbd_world_pair_normals(&w, k / 1000, k % 1000, 1000 + k % 7, x + 3 * k);
     moments(x, 3 * (N / 3), "pair stream");
     /* neighbouring keys must be independent: correlation of first normals
        of (step, a, b) and (step, a, b+1), and of steps s and s+1 */
@@ -49,9 +49,9 @@ void test_rng_gaussians(void)
         int n = 300000;
         for (k = 0; k < n; ++k) {
             double a[3], b[3], c[3];
-            hcbd_pair_normals(&w, 7, k, k + 1, a);
-            hcbd_pair_normals(&w, 7, k, k + 2, b);
-            hcbd_pair_normals(&w, 8, k, k + 1, c);
+            hcbd_world_pair_normals(&w, 7, k, k + 1, a);
+            hcbd_world_pair_normals(&w, 7, k, k + 2, b);
+            hcbd_world_pair_normals(&w, 8, k, k + 1, c);
             c1 += a[0] * b[0];
             c2 += a[0] * c[0];
         }
@@ -61,8 +61,8 @@ void test_rng_gaussians(void)
     /* symmetric in the ids, and the three components are distinct */
     {
         double a[3], b[3];
-        hcbd_pair_normals(&w, 3, 10, 20, a);
-        hcbd_pair_normals(&w, 3, 20, 10, b);
+        hcbd_world_pair_normals(&w, 3, 10, 20, a);
+        hcbd_world_pair_normals(&w, 3, 20, 10, b);
         CHECK(a[0] == b[0] && a[1] == b[1] && a[2] == b[2], "key (a,b) != (b,a)");
         CHECK(a[0] != a[1] && a[1] != a[2], "components equal");
     }
@@ -79,7 +79,7 @@ void test_rng_uniform_noise(void)
     int k;
     d.params.noise = HCBD_NOISE_UNIFORM;
     if (!make_world(&w, &d)) return;
-    for (k = 0; k < N; ++k) hcbd_pair_normals(&w, k, 1, 2, x + 3 * k);
+    for (k = 0; k < N; ++k) hcbd_world_pair_normals(&w, k, 1, 2, x + 3 * k);
     for (k = 0; k < 3 * N; ++k) {
         m2 += x[k] * x[k];
         if (fabs(x[k]) > mx) mx = fabs(x[k]);
@@ -124,9 +124,9 @@ void test_noise_stream(void)
         for (k = 0; k < 300; ++k) {
             double a[3], b[3], c[3], e[3];
             int64_t s = k * 977LL;
-            hcbd_pair_normals(&w, s, k, 3 * k + 1, a);
+            hcbd_world_pair_normals(&w, s, k, 3 * k + 1, a);
             hcbd_noise_pair(&ns, s, 3 * k + 1, k, b);
-            hcbd_particle_normals(&w, s, k, c);
+            hcbd_world_particle_normals(&w, s, k, c);
             hcbd_noise_particle(&ns, s, k, e);
             same &= !memcmp(a, b, sizeof a) && !memcmp(c, e, sizeof c);
         }

@@ -61,7 +61,7 @@ void test_le_neighbour_list(void)
                     xyz[3 * i + 1] = w.nl.rlist + xyz[3 * i + 1] / w.p.L[1] * (w.p.L[1] - 2 * w.nl.rlist);
             hcbd_world_set_positions(&w, 500, xyz);
             w.core.le_offset = offsets[o];
-            hcbd_friction_average(&w, 1, out); /* builds the list */
+            hcbd_world_friction_average(&w, 1, out); /* builds the list */
             for (i = 0; i < 500; ++i) {
                 int32_t p;
                 for (p = w.nl.nb_start[w.slot[i]]; p < w.nl.nb_start[w.slot[i] + 1]; ++p) {
@@ -124,9 +124,9 @@ void test_le_crossing_jump(void)
         }
         hcbd_world_set_velocities(&w, v);
         hcbd_world_get_positions(&w, u0, 1);
-        hcbd_stress_enable(&w, 1);
+        hcbd_world_stress_enable(&w, 1);
         run(&w, 1);
-        hcbd_stress_read(&w, fl, NULL);
+        hcbd_world_stress_read(&w, fl, NULL);
         hcbd_world_get_positions(&w, x1, 0);
         hcbd_world_get_positions(&w, u1, 1);
         hcbd_world_get_velocities(&w, v1);
@@ -175,7 +175,7 @@ void test_le_list_every_step(void)
         for (step = 0; step < 600; ++step) {
             double out[3];
             run(&w, 1);
-            hcbd_friction_average(&w, 1, out); /* the list the next step will use */
+            hcbd_world_friction_average(&w, 1, out); /* the list the next step will use */
             hcbd_world_get_positions(&w, xyz, 0);
             for (i = 0; i < N; ++i)
                 for (j = i + 1; j < N; ++j)
@@ -217,7 +217,7 @@ void test_le_carrier_flux_planes(void)
     A = w.p.L[0] * w.p.L[2];
     for (b = 0; b < NB; ++b) {
         double c = 0, fl[4];
-        hcbd_stress_enable(&w, 1);
+        hcbd_world_stress_enable(&w, 1);
         hcbd_world_get_positions(&w, xyz, 1);
         for (i = 0; i < N; ++i) y0[i] = xyz[3 * i + 1];
         for (s = 0; s < steps; ++s) {
@@ -236,7 +236,7 @@ void test_le_carrier_flux_planes(void)
                 y0[i] = yb;
             }
         }
-        hcbd_stress_read(&w, fl, NULL);
+        hcbd_world_stress_read(&w, fl, NULL);
         lib[b] = fl[2];
         pl[b] = -c / 3 / (A * w.p.dt * steps);
     }
@@ -295,9 +295,9 @@ void test_le_background_flux(void)
                 direct += S / w.p.tau * 1.5 * dd[1] * dd[1];
             }
         direct /= V;
-        hcbd_stress_enable(&w, 1);
+        hcbd_world_stress_enable(&w, 1);
         run(&w, 1);
-        hcbd_stress_read(&w, flux, NULL);
+        hcbd_world_stress_read(&w, flux, NULL);
         CHECK(fabs(flux[1] / direct - 1) < 1e-9, "background flux %.12g vs direct %.12g", flux[1], direct);
         eta35 = Rc * Rc * 0.24 * w.p.xip / 28;
         ratio_sum += flux[1] / 1.5 / eta35;
@@ -317,7 +317,7 @@ void test_le_linear_profile(void)
     double slopes[NB], xyz[3 * N], v[3 * N], flux[4];
     int b, s, i, steps = t_quick ? 200 : 10 * (int)(100 * t_len + 0.5); /* per block */
     if (!sheared_liquid(&w, N, 2.0, 1000)) return;
-    hcbd_stress_enable(&w, 1);
+    hcbd_world_stress_enable(&w, 1);
     for (b = 0; b < NB; ++b) {
         double sum[NS] = {0}, cnt[NS] = {0}, sy = 0, sv = 0, syy = 0, syv = 0, n = 0;
         for (s = 0; s < steps; s += 10) {
@@ -340,7 +340,7 @@ void test_le_linear_profile(void)
     {
         double m, e;
         block_stats(slopes, NB, NB, &m, &e);
-        hcbd_stress_read(&w, flux, NULL);
+        hcbd_world_stress_read(&w, flux, NULL);
         NOTE("velocity slope %.4f +- %.4f (gdot 2)", m, e);
         NOTE("viscosity: pair 0, background %.4f, carriers %.4f, total %.4f; eq. 35 %.4f",
              flux[1] / 2, flux[2] / 2, flux[3] / 2, 2.5 * 2.5 * 0.24 / 28);
@@ -366,10 +366,10 @@ void test_le_determinism(void)
         d.params.sort = k == 3 ? 0 : 1;
         if (!make_world(&w, &d)) return;
         hcbd_world_place_lattice(&w, 512);
-        hcbd_stress_enable(&w, 1);
+        hcbd_world_stress_enable(&w, 1);
         run(&w, 400);
-        hcbd_stress_read(&w, f, NULL);
-        h[k] = hcbd_state_checksum(&w);
+        hcbd_world_stress_read(&w, f, NULL);
+        h[k] = hcbd_world_checksum(&w);
         {
             uint64_t u;
             int c;

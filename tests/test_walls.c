@@ -21,7 +21,7 @@ void test_model_switch(void)
 #endif
     r = hcbd_params_check(&d.params, msg, sizeof msg);
     CHECK(r == HCBD_OK, "walls rejected: %s", msg);
-    CHECK(hcbd_theory_of(&d.params, &t) == HCBD_OK &&
+    CHECK(hcbd_params_theory(&d.params, &t) == HCBD_OK &&
               t.width == (HCBD_MODEL == HCBD_MODEL_WALLED ? 10.0 : 13.0),
           "channel width %g", t.width);
 }
@@ -94,13 +94,13 @@ void test_wall_potential(void)
     int k;
     for (y = 1.3; y < 11.8; y += 0.173) {
         double f, ep, em;
-        hcbd_wall_potential(p, y, &f);
-        ep = hcbd_wall_potential(p, y + 1e-5, NULL);
-        em = hcbd_wall_potential(p, y - 1e-5, NULL);
+        hcbd_params_wall_potential(p, y, &f);
+        ep = hcbd_params_wall_potential(p, y + 1e-5, NULL);
+        em = hcbd_params_wall_potential(p, y - 1e-5, NULL);
         worst = fmax(worst, fabs(f + (ep - em) / 2e-5) / (1.0 + fabs(f)));
     }
     CHECK(worst < 1e-6, "force vs -dE/dy: worst relative error %g", worst);
-    far = hcbd_wall_potential(p, 1.5, NULL) - 300.0 * exp(-2.0 * 1.2 * 1.2);
+    far = hcbd_params_wall_potential(p, 1.5, NULL) - 300.0 * exp(-2.0 * 1.2 * 1.2);
     CHECK(fabs(far - 300.0 * exp(-2.0 * 1.8 * 1.8)) < 1e-12 && fabs(far - 0.46) < 0.005,
           "far plane at the interface: %g kT", far);
     for (k = 0; k < 50000; ++k) { /* from the interface to the centre */
@@ -115,7 +115,7 @@ void test_wall_potential(void)
         }
         dep += 0.5 * h * ((1 - exp(-e0)) + (1 - exp(-e1)));
     }
-    hcbd_theory_of(p, &th);
+    hcbd_params_theory(p, &th);
     CHECK(fabs(th.depletion_width - dep) < 1e-6, "depletion width %.8f vs %.8f",
           th.depletion_width, dep);
     NOTE("excluded width per wall (Boltzmann, ideal): %.4f sigma", dep);
@@ -195,7 +195,7 @@ void test_wall_morris_friction(void)
             hcbd_world_set_velocities(&w, v);
             if (!run(&w, 1)) return;
             hcbd_world_get_velocities(&w, vnew);
-            hcbd_theory_of(&d.params, &th);
+            hcbd_params_theory(&d.params, &th);
             m = w.m;
             plane = 1.5 + (mode ? th.depletion_width : 0.0);
             rhoA = 0;
@@ -223,7 +223,7 @@ void test_wall_morris_friction(void)
                 P[1] -= beta * f / d.params.tau * v[1] * d.params.dt;
                 P[2] -= beta * f / d.params.tau * v[2] * d.params.dt;
             }
-            hcbd_wall_potential(&d.params, xyz[1], &fy);
+            hcbd_params_wall_potential(&d.params, xyz[1], &fy);
             err = fmax(err, fabs(vnew[0] - (v[0] + P[0])));
             err = fmax(err, fabs(vnew[1] - (v[1] + P[1] + fy * d.params.dt / m)));
             err = fmax(err, fabs(vnew[2] - (v[2] + P[2])));
@@ -273,7 +273,7 @@ void test_walls_exported(void)
             mem = malloc(nb);
             CHECK(nb > 0 && mem && hcbd_walls_init(&wl, &d.params, mem, nb, msg, sizeof msg) == HCBD_OK,
                   "hcbd_walls_init: %s", msg);
-            CHECK(hcbd_walls_draw(&wl, w.step) == HCBD_OK && hcbd_gibd_coef_of(&d.params, &c, NULL, 0) == HCBD_OK,
+            CHECK(hcbd_walls_draw(&wl, w.step) == HCBD_OK && hcbd_params_gibd_coef(&d.params, &c, NULL, 0) == HCBD_OK,
                   "draw");
             if (!run(&w, 1)) return;
             CHECK(wl.ws.n_art == w.ws.n_art, "%d artificial particles, the world's %d", wl.ws.n_art, w.ws.n_art);
@@ -290,7 +290,7 @@ void test_walls_exported(void)
                   hcbd_walls_weights(&wl, r), ws);
             /* the particles are far apart: particle 0 has only wall pairs */
             rho = hcbd_gibd_density(&c, hcbd_walls_weights(&wl, r));
-            hcbd_wall_potential(&d.params, r[1], &fy);
+            hcbd_params_wall_potential(&d.params, r[1], &fy);
             /* the sweep kicks before its pairs; Euler adds the kick and the exchanges after */
             for (k = 0; k < 3; ++k) u[k] = v[k] + (integ ? 0.0 : (k == 1 ? fy : 0.0) * d.params.dt / c.m);
             hcbd_walls_morris(&wl, !integ, 0, r, 1.0 / rho, u, P);
@@ -407,7 +407,7 @@ void test_wall_temperature_profile(void)
     double len = t_quick ? 1.0 : t_len, flat = t_quick ? 1.0 : fmax(t_len, 0.7);
     hcbd_theory th;
     hcbd_params p = channel().params;
-    hcbd_theory_of(&p, &th);
+    hcbd_params_theory(&p, &th);
     if (!temperature_profile(2e-4, 1, HCBD_PAIR_EULER, time, flat, &dev, &de, &T1, &T1e, &dep))
         return;
     NOTE("dt = 2e-4: largest slab deviation %.4f +- %.4f, T_centre = %.4f +- %.4f, excluded "
@@ -459,12 +459,12 @@ void test_wall_momentum_decay(void)
     hcbd_world_place_lattice(&w, 406);
     for (i = 0; i < 406; ++i) { v[3 * i] = 1.0; v[3 * i + 1] = 0.3; v[3 * i + 2] = -0.2; }
     hcbd_world_set_velocities(&w, v);
-    hcbd_momentum(&w, p);
+    hcbd_world_momentum(&w, p);
     p0 = sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
     for (b = 0; b < 200; ++b) {
         double a;
         if (!run(&w, 50)) return;
-        hcbd_momentum(&w, p);
+        hcbd_world_momentum(&w, p);
         a = sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
         if (a > prev * (1 + 1e-12)) ++grew;
         prev = a;
@@ -504,7 +504,7 @@ void test_wall_body_force_variants(void)
         if (!run(&w, 5000)) return; /* 1 time unit ~ W^2/nu */
         for (k = 0; k < ns; ++k) {
             if (!run(&w, 10)) return;
-            hcbd_momentum(&w, p);
+            hcbd_world_momentum(&w, p);
             vs[k] = p[0] / (w.n * w.m);
         }
         block_stats(vs, ns, nb, &vm[v], &ve[v]);
@@ -537,7 +537,7 @@ void test_wall_determinism(void)
             if (!make_world(&w, &d)) return;
             hcbd_world_place_lattice(&w, 406);
             if (!run(&w, t_quick ? 100 : 1000)) return;
-            c[k] = hcbd_state_checksum(&w);
+            c[k] = hcbd_world_checksum(&w);
             hcbd_world_destroy(&w);
         }
         CHECK(c[0] == c[1] && c[0] == c[2], "mode %d: checksums %016llx %016llx %016llx", mode,
@@ -611,7 +611,7 @@ static int channel_run(hcbd_wall_mode mode, double beta_max, double time, double
         hcbd_profile_sample(&pr, &w);
         hcbd_profile_sample(&sub[k / (steps / (10 * NSUB))], &w);
     }
-    cr->pen = (double)hcbd_wall_penetrations(&w, NULL, NULL);
+    cr->pen = (double)hcbd_world_wall_penetrations(&w, NULL, NULL);
     hcbd_world_destroy(&w);
     /* the curvature gives the kinematic viscosity, v'' = -g/nu, whatever
        the walls do; its error from NSUB independent stretches of the run */
@@ -675,9 +675,9 @@ static int le_nu(double gdot, double time, double *nu, double *err)
     hcbd_world_place_random(&w, 512);
     if (!run(&w, 5000)) return 0;
     for (b = 0; b < 10; ++b) {
-        hcbd_stress_enable(&w, 1);
+        hcbd_world_stress_enable(&w, 1);
         if (!run(&w, (int)(time / 10 / d.params.dt))) return 0;
-        hcbd_stress_read(&w, fl, NULL);
+        hcbd_world_stress_read(&w, fl, NULL);
         eta[b] = fl[3] / gdot / (0.24 * w.m);
     }
     block_stats(eta, 10, 10, nu, err);
@@ -707,7 +707,7 @@ static int transverse_nu(int nb, double block_time, double *nu, double *err)
         hcbd_mtcorr_init(&c, 12, 32, 2, 12, mem, sizeof mem);
         for (s = 0; s < steps; ++s) {
             double o[12];
-            hcbd_transverse_current(&w, 1, o);
+            hcbd_world_transverse_current(&w, 1, o);
             hcbd_mtcorr_add(&c, o);
             if (!run(&w, 1)) return 0;
         }
@@ -744,7 +744,7 @@ void test_wall_channel_flow(void)
     chan_result g, ns, rf;
     double time = t_quick ? 1.0 : 6.0, nu_le, nu_le_err, nu_tc, nu_tc_err, nu_mf, a, b, c;
     double len = t_quick ? 1.0 : t_len;
-    hcbd_theory_of(&p, &th);
+    hcbd_params_theory(&p, &th);
     if (!channel_run(HCBD_WALL_GAUSS, 1.5, 0.5 * time, len, &g)) return; /* a large slip */
     NOTE("gauss:   v_max %.3f +- %.3f, slip %.4f +- %.4f, excluded width %.4f (Boltzmann %.4f)",
          g.vmax, g.vmax_err, g.slip, g.slip_err, g.dep, th.depletion_width);
@@ -828,9 +828,9 @@ void test_wall_penetration(void)
             }
             if (first != INT32_MAX) { last_step = w.step - 1; last_id = first; }
         }
-        CHECK(hcbd_wall_penetrations(&w, &got_step, &got_id) == count && got_step == last_step &&
+        CHECK(hcbd_world_wall_penetrations(&w, &got_step, &got_id) == count && got_step == last_step &&
               got_id == last_id, "pass %d: counter %lld (last step %lld id %d), scan %lld (%lld, %d)",
-              pass, (long long)hcbd_wall_penetrations(&w, NULL, NULL), (long long)got_step, got_id,
+              pass, (long long)hcbd_world_wall_penetrations(&w, NULL, NULL), (long long)got_step, got_id,
               (long long)count, (long long)last_step, last_id);
         if (pass == 0) CHECK(count > 100, "the weak wall was crossed only %lld times", (long long)count);
         else {

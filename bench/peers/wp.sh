@@ -14,7 +14,7 @@
 # T_conf and g(r) from the frames of both codes alike.  The reference is
 # hcbd's BD with Leimkuhler-Matthews (flat in dt, issue 29) at dt = 0.25e-4
 # over REF_TIME time units.  Cost: seconds per unit of simulated time, the
-# loop time less LAMMPS's own "Output" (the dump) and hcbd_step's time
+# loop time less LAMMPS's own "Output" (the dump) and hcbd_world_step's time
 # alone.  Error: T_conf - T_conf(ref) and the rms distance of g(r) from the
 # reference over r in [0.5, 3) (with g_floor, its statistical part).
 #
@@ -115,7 +115,7 @@ for dt in 2.5e-5 5e-5 1e-4 2e-4 4e-4 8e-4; do
         api=$(echo "$r" | sed 's/.*T_conf_api=\([^ ]*\).*/\1/')
         all=$(echo "$e" | sed 's/.*T_conf_all=\([^ ]*\).*/\1/')
         awk -v a="$api" -v b="$all" 'BEGIN {exit !(a - b < 1e-6 * a && b - a < 1e-6 * a)}' ||
-            echo "wp.sh: WARNING: wp_estimate reads T_conf $all where hcbd_config_temperature gives $api ($name, dt = $dt)"
+            echo "wp.sh: WARNING: wp_estimate reads T_conf $all where hcbd_world_config_temperature gives $api ($name, dt = $dt)"
         add hcbd "$name" "$dt" "$cost" "$e"
         rm -f "$tmp/h.xyz"
     done

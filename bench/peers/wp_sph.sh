@@ -20,7 +20,7 @@
 # continuum nu K(k) of each code's kernel (the disorder's offset, which no
 # step removes).  Cost: seconds per unit of simulated time, the median over
 # ROUNDS interleaved rounds (LAMMPS: loop time less "Output"; hcbd: the
-# hcbd_hc_step calls alone).  The headline: per fluid and integrator the
+# hcbd_hc_world_step calls alone).  The headline: per fluid and integrator the
 # cheapest run within TOL of its own reference, and LAMMPS's cost over it.
 #
 # Knobs: ROUNDS [3] TOL [0.01] WP_OUT [out/wp_sph] LMP (as wp.sh).

@@ -1,7 +1,7 @@
 /* libFuzzer harness for the examples' key=value parser (example_common.h):
    parse_args with an own-key callback that uses parse_list, parse_int,
    parse_choice and check_preset, then hcbd_params_check and
-   hcbd_stability/hcbd_limits_format on what it accepted.
+   hcbd_params_stability/hcbd_limits_format on what it accepted.
 
    The input is split at NUL and newline bytes into at most MAXARGS
    arguments after argv[0]; each argument gets its own malloc'd,
@@ -95,7 +95,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         int n = 0;
         msg[0] = 0;
         (void)hcbd_params_check(&c.def.params, msg, sizeof msg);
-        if (hcbd_stability(&c.def.params, l, &n) == HCBD_OK)
+        if (hcbd_params_stability(&c.def.params, l, &n) == HCBD_OK)
             (void)hcbd_limits_format(l, n, buf, sizeof buf);
     }
 

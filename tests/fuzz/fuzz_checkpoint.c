@@ -30,11 +30,11 @@ static uint64_t fnv(const unsigned char *b, size_t n)
 
 static void round_trip(hcbd_world *w)
 {
-    size_t n = hcbd_checkpoint_size(w);
+    size_t n = hcbd_world_checkpoint_size(w);
     unsigned char *b = (unsigned char *)malloc(n);
     hcbd_world v;
-    if (b && hcbd_checkpoint_save(w, b, n) == HCBD_OK && hcbd_checkpoint_load(&v, b, n) == HCBD_OK) {
-        if (hcbd_state_checksum(&v) != hcbd_state_checksum(w)) abort();
+    if (b && hcbd_world_checkpoint_save(w, b, n) == HCBD_OK && hcbd_world_checkpoint_load(&v, b, n) == HCBD_OK) {
+        if (hcbd_world_checksum(&v) != hcbd_world_checksum(w)) abort();
         hcbd_world_destroy(&v);
     }
     free(b);
@@ -66,8 +66,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     }
     {
         hcbd_world w;
-        if (hcbd_checkpoint_load(&w, b, n) == HCBD_OK) {
-            hcbd_step(&w, 1);
+        if (hcbd_world_checkpoint_load(&w, b, n) == HCBD_OK) {
+            hcbd_world_step(&w, 1);
             round_trip(&w);
             hcbd_world_destroy(&w);
         }
@@ -75,8 +75,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 #if HCBD_MODEL == HCBD_MODEL_HCBD
     {
         hcbd_hc_world w;
-        if (hcbd_hc_checkpoint_load(&w, b, n) == HCBD_OK) {
-            hcbd_hc_step(&w, 1);
+        if (hcbd_hc_world_checkpoint_load(&w, b, n) == HCBD_OK) {
+            hcbd_hc_world_step(&w, 1);
             hcbd_hc_world_destroy(&w);
         }
     }
