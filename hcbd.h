@@ -1228,6 +1228,13 @@ hcbd_result hcbd_hc_params_stability(const hcbd_hc_params *p, hcbd_limit *out, i
 /* >>HCBD: kernels of the 2018 model --------------------------------------*/
 double hcbd_m4(double r, double h);
 double hcbd_m4_dr(double r, double h);
+/* K(k) of the SPH viscous force with M4 of support 2h: its shear mode of
+   wave number k relaxes at nu k^2 K(k) (continuum limit), with
+   K(k) = int (-w'/r) (1 - sin(kr)/(kr)) r^2 dr / int (-w'/r) (kr)^2/6 r^2 dr
+        = (8 pi / k^2) int_0^2h w(r) (1 - cos kr) dr   (by parts):
+   1 as k -> 0 (what Lees-Edwards measures), below 1 for the modes that the
+   kernel resolves poorly.  NaN for a non-finite k or h <= 0. */
+double hcbd_m4_shear_factor(double k, double h);
 double hcbd_rapid_w(double r, double sigma, double rc);
 double hcbd_rapid_w_dr(double r, double sigma, double rc);
 /* Flory-Huggins mu(phi) = g'(phi), series for small phi (no cancellation
@@ -7294,6 +7301,35 @@ double hcbd_m4_dr(double r, double h)
     if (q >= 1.0) return -3.0 * c * a * a;
     b = 1.0 - q;
     return c * (-3.0 * a * a + 12.0 * b * b);
+}
+
+/* int_0^a (a - q)^3 (1 - cos(kap q)) dq: its Taylor series while kap a < 2
+   (the closed form cancels there), else a^4/4 - 3 a^2/kap^2 +
+   6 (1 - cos(kap a))/kap^4, by parts. */
+static double hcbd__m4_cos3(double a, double kap)
+{
+    double x = kap * a, t, sum = 0;
+    int m;
+    if (x >= 2) {
+        double s = sin(0.5 * x);
+        return 0.25 * a * a * a * a - 3 * a * a / (kap * kap) + 12 * s * s / (kap * kap * kap * kap);
+    }
+    t = 6 * a * a * a * a / 24; /* m = 0 term 6 a^4 / 4!, never summed */
+    for (m = 1; m < 30; ++m) {
+        t *= -x * x / ((2.0 * m + 3) * (2.0 * m + 4));
+        sum -= t;
+        if (fabs(t) < 1e-18 * fabs(sum)) break;
+    }
+    return sum;
+}
+
+double hcbd_m4_shear_factor(double k, double h)
+{
+    double kap = fabs(k) * h;
+    if (!isfinite(k) || !(h > 0) || !isfinite(h)) return NAN;
+    if (kap < 1e-8) return 1.0; /* K = 1 - O((kh)^2) */
+    /* w = ((2 - q)^3 - 4 (1 - q)^3 [q < 1]) / (4 pi h^3), q = r / h */
+    return 2 / (kap * kap) * (hcbd__m4_cos3(2, kap) - 4 * hcbd__m4_cos3(1, kap));
 }
 
 static double hcbd__rapid_A(double sigma, double rc)

@@ -39,6 +39,7 @@
    usage: bench_wp [quick=0|1] [out=out/bench] [time=1] [seed=1]
           time scales all simulated times (quick=1: ~30 s smoke run) */
 #include "bench_common.h"
+#include "../tests/scenes.h"
 
 #define PI 3.14159265358979323846
 #define MAXPT 256
@@ -93,22 +94,6 @@ static point *add_point(const char *model, const char *metric, const hcbd_params
            p->dt, q->spt, err, err_err);
     fflush(stdout);
     return q;
-}
-
-static void block_stats(const double *x, int n, int nb, double *mean, double *err)
-{
-    double m = 0, s2 = 0;
-    int b, k, len = n / nb;
-    for (b = 0; b < nb; ++b) {
-        double a = 0;
-        for (k = 0; k < len; ++k) a += x[b * len + k];
-        a /= len;
-        m += a;
-        s2 += a * a;
-    }
-    m /= nb;
-    *mean = m;
-    *err = sqrt(fmax(s2 / nb - m * m, 0) / (nb - 1));
 }
 
 static hcbd_params base(double density, int n, hcbd_pair_integrator integ, hcbd_noise noise, double tau,
@@ -170,22 +155,7 @@ static void temperature_point(hcbd_pair_integrator integ, hcbd_noise noise, doub
 }
 
 /* --- GI-BD nu from the initial decay of the transverse current ---------*/
-/* y(s) = 1 - C(s)/C(0) = a s + b s (s - 1) over the lags with C/C(0) >
-   0.75 (test_physics.c): a is the one-step decrement; a single lag when
-   the first already falls below. */
-static double initial_rate(const double *c, int n, double dt)
-{
-    double a11 = 0, a12 = 0, a22 = 0, b1 = 0, b2 = 0;
-    int s;
-    for (s = 1; s < n && c[s] / c[0] > 0.75; ++s) {
-        double u = (double)s * (s - 1), y = 1 - c[s] / c[0];
-        a11 += (double)s * s; a12 += s * u; a22 += u * u;
-        b1 += s * y; b2 += u * y;
-    }
-    if (s <= 2) return (1 - c[1] / c[0]) / dt;
-    return (b1 * a22 - b2 * a12) / (a11 * a22 - a12 * a12) / dt;
-}
-
+/* as test_physics.c measures it (initial_rate, gibd_mode_sample) */
 static void nu_point(hcbd_pair_integrator integ, hcbd_noise noise, double ratio, double sim)
 {
     enum { P = 64, NB = 10, N = 54, NK = 2 };
@@ -213,22 +183,11 @@ static void nu_point(hcbd_pair_integrator integ, hcbd_noise noise, double ratio,
         int got;
         hcbd_mtcorr_init(&c, 12, P, 2, 1, mem, bytes);
         for (s = 0; ok && s < block_steps; ++s) {
-            double j[12], out[3];
+            double j[12];
             hcbd_world_transverse_current(&w, NK, j);
             hcbd_mtcorr_add(&c, j);
             if (s % sample_every == 0) {
-                int i, a;
-                hcbd_world_friction_average(&w, NK, out);
-                mf += out[2] / (p.tau * k * k);
-                hcbd_world_get_positions(&w, xyz, 0);
-                for (a = 0; a < 3; ++a) {
-                    double re = 0, im = 0;
-                    for (i = 0; i < N; ++i) {
-                        re += cos(k * xyz[3 * i + a]);
-                        im += sin(k * xyz[3 * i + a]);
-                    }
-                    sk += (re * re + im * im) / N / 3;
-                }
+                gibd_mode_sample(&w, NK, xyz, &mf, &sk);
                 ++nmf;
             }
             ok = step(&w, 1);

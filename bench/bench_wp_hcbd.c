@@ -19,9 +19,9 @@
                    melted with fluctuations, then fluctuations off (no
                    noise: a deterministic fit); the error is |nu_fit/nu - 1|
                    against nu K(k), nu = eta/rho and K(k) the kernel
-                   factor that examples/hcbd_fluid.c derives (the SPH
-                   viscous force relaxes a shear mode at nu k^2 K(k); K =
-                   0.989 at h = 2 here); |nu_fit - 1| is in config.
+                   factor hcbd_m4_shear_factor (the SPH viscous force
+                   relaxes a shear mode at nu k^2 K(k); K = 0.989 at h = 2
+                   here); |nu_fit - 1| is in config.
      poiseuille_l2 reverse Poiseuille, g = 0.05, fluctuations off, 5 x 10 x 5
                    sites (7 x 10 x 7 at h = 2.5) from the lattice with the
                    kernel-smoothed profile as the start; L2 of the slab
@@ -48,9 +48,10 @@
    usage: bench_wp_hcbd [quick=0|1] [out=out/bench]
           [only=temperature|nu|poiseuille|solution] */
 #include "bench_common.h"
+#include "../tests/scenes.h"
 
 #define PI_ 3.14159265358979323846
-#define A_LAT 1.6119919540164696 /* (4 pi / 3)^(1/3): nbar = 3/(4 pi) */
+#define A_LAT HC_LATTICE_A
 #define MAXROWS 64
 #define NSLAB 10
 
@@ -110,36 +111,18 @@ static void add_row(const char *metric, int integ, double dt, double h, int nsub
     fflush(stdout);
 }
 
-/* The fluid scene of tests/test_hcbd.c (fluid_scene) at support h. */
+/* The tests' scene (tests/scenes.h) with blob mass 100, c_s = 2.5, support
+   h and the polymers' friction 100 without transient forces. */
 static hcbd_hc_world_def scene(int nx, int ny, int nz, double h, double dt, int integ, int nsub, int np)
 {
-    hcbd_hc_world_def d = hcbd_hc_world_def_default();
+    hcbd_hc_world_def d = hc_scene_of(nx, ny, nz, np, 100.0, 1.0, 2.5, dt);
     hcbd_hc_params *p = &d.params;
-    p->L[0] = nx * A_LAT;
-    p->L[1] = ny * A_LAT;
-    p->L[2] = nz * A_LAT;
-    p->dt = dt;
-    p->kT = 1.0;
-    p->nbar = 3.0 / (4.0 * PI_);
-    p->rho = 100.0 * p->nbar;
-    p->eta = p->rho; /* nu = 1 */
-    p->P0 = 2.5 * 2.5 * p->rho / 7.0; /* c_s = 2.5 */
     p->h = h;
-    p->fluctuations = 1;
     p->xi = 100.0;
-    p->sigma = 1.0;
-    p->rc = 2.5;
     p->alpha = 0.0;
-    p->tau_lambda = 0.5;
-    p->p_kuhn = 100.0;
-    p->n_max = 5.0;
-    p->chi = 0.5;
-    p->seed = 7;
     p->threads = 1;
     p->pair_integrator = (hcbd_pair_integrator)integ;
     p->substeps = nsub;
-    d.fluid_capacity = nx * ny * nz;
-    d.polymer_capacity = np;
     return d;
 }
 
@@ -210,21 +193,6 @@ static void run_temperature(double dt, double h, int integ)
 
 /* ---- viscosity from a transverse wave ---------------------------------- */
 
-/* K(k) of examples/hcbd_fluid.c: the shear mode k of the SPH viscous force
-   relaxes at nu k^2 K(k) (continuum limit, M4 kernel). */
-static double kernel_factor(double k, double h)
-{
-    const int n = 2000;
-    double num = 0, den = 0;
-    int i;
-    for (i = 0; i < n; ++i) {
-        double r = (i + 0.5) * 2 * h / n, a = -hcbd_m4_dr(r, h) * r, q = k * r;
-        num += a * (q > 1e-3 ? 1 - sin(q) / q : q * q / 6 - q * q * q * q / 120);
-        den += a * q * q / 6;
-    }
-    return num / den;
-}
-
 /* melted positions per h (fluctuations on, lattice start) */
 #define NMELT 3
 static double melt_h[NMELT];
@@ -293,7 +261,7 @@ static void run_nu(double dt, double h, int integ)
         res += f * f;
     }
     enu = sqrt(res / (n - 2) / (sxx - sx * sx / n)) / (k * k);
-    K = kernel_factor(k, h);
+    K = hcbd_m4_shear_factor(k, h);
     snprintf(cfg, sizeof cfg, "%s dt=%g h=%g N=%d nu_fit=%.4f K(k)=%.4f |nu_fit-1|=%.4f",
              integ == HCBD_PAIR_SHARDLOW ? "shardlow" : "euler", dt, h, N, nu, K, fabs(nu - 1));
     add_row("nu", integ, dt, h, 1, fabs(nu / K - 1.0), enu / K, cfg);
@@ -317,7 +285,7 @@ static double kernel_profile(double g, double nu, double h, double L, double y)
     double v = 0;
     int n;
     if (kh != h || kL != L) {
-        for (n = 1; n < 2000; n += 2) kf[n / 2] = kernel_factor(2 * PI_ * n / L, h);
+        for (n = 1; n < 2000; n += 2) kf[n / 2] = hcbd_m4_shear_factor(2 * PI_ * n / L, h);
         kh = h;
         kL = L;
     }

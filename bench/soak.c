@@ -36,6 +36,7 @@
                [blocks=40] [equil=scene default] [nsig=4] [out=DIR]
    Exit status 0 only if every verdict passes. */
 #include "bench_common.h"
+#include "../tests/scenes.h"
 #include <errno.h>
 
 #define MAXOBS 4
@@ -319,33 +320,13 @@ static void hc_sample(void *ctx, double *out)
 
 static int scene_hcbd(sim *s, const opts *o, double steps)
 {
-    const double pi = 3.14159265358979323846, a = cbrt(4 * pi / 3); /* lattice spacing */
     const int nside = 6, npoly = 108;
-    hcbd_hc_world_def d = hcbd_hc_world_def_default();
+    /* the tests' scene with blob mass 100, c_s = 2.5 and twice the step */
+    hcbd_hc_world_def d = hc_scene_of(nside, nside, nside, npoly, 100.0, 1.0, 2.5, 0.04);
     hcbd_hc_params *p = &d.params;
     hc_ctx *h = (hc_ctx *)calloc(1, sizeof *h);
     if (!h) return 0;
-    p->L[0] = p->L[1] = p->L[2] = nside * a;
-    p->dt = 0.04;
-    p->kT = 1.0;
-    p->nbar = 3.0 / (4.0 * pi);
-    p->rho = 100 * p->nbar;       /* blob mass 100 */
-    p->eta = p->rho;              /* nu = 1 */
-    p->P0 = 2.5 * 2.5 * p->rho / 7; /* c_s = 2.5 */
-    p->h = 2.0;
-    p->fluctuations = 1;
-    p->xi = 10.0;
-    p->sigma = 1.0;
-    p->rc = 2.5;
-    p->alpha = 50.0;
-    p->tau_lambda = 0.5;
-    p->p_kuhn = 100.0;
-    p->n_max = 5.0;
-    p->chi = 0.5;
-    p->seed = 7;
     p->threads = o->threads;
-    d.fluid_capacity = nside * nside * nside;
-    d.polymer_capacity = npoly;
     if (hcbd_hc_world_create(&h->w, &d) != HCBD_OK ||
         hcbd_hc_world_place_fluid_lattice(&h->w, d.fluid_capacity) != HCBD_OK ||
         hcbd_hc_world_place_polymers_random(&h->w, npoly) != HCBD_OK) {
@@ -407,7 +388,7 @@ static void mean_err(const double *y, int n, double *mean, double *err)
 /* Samples y[k * stride] at particle-steps t[k], k < n: the first
    equil * n are dropped, the rest cut into nblk blocks (a remainder at the
    end is dropped so the blocks are equal). */
-static void block_stats(const double *t, const double *y, int n, int stride, int nblk, double equil,
+static void soak_stats(const double *t, const double *y, int n, int stride, int nblk, double equil,
                         stats *st)
 {
     double bt[1000], by[1000], res[1000], m1, e1, m2, e2, num = 0, den = 0;
@@ -526,7 +507,7 @@ static int soak(sim *s, const opts *o, double steps)
     for (j = 0; j < s->nobs; ++j) {
         stats st;
         int ok;
-        block_stats(t, y + j, k, s->nobs, o->blocks, o->equil >= 0 ? o->equil : s->equil, &st);
+        soak_stats(t, y + j, k, s->nobs, o->blocks, o->equil >= 0 ? o->equil : s->equil, &st);
         ok = verdict(&s->obs[j], &st, o->nsig) && r == HCBD_OK;
         print_row(s, ps, &s->obs[j], &st, ok);
         fails += !ok;

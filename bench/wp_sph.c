@@ -26,38 +26,21 @@
                  [amp=0.3] [pair=exact|euler] [seed=7] [data=FILE] series=FILE
           wp_sph fit=FILE L=LX nu=NU kernel=m4|lucy */
 #include "bench_common.h"
+#include "../tests/scenes.h"
 
 #define PI_ 3.14159265358979323846
-#define A_LAT 1.6119919540164696 /* (4 pi / 3)^(1/3): one site per 1/nbar */
 #define H 2.0
 
 static hcbd_hc_world_def scene(int nx, int ny, double dt, double nu, double c, int integ, unsigned long long seed)
 {
-    hcbd_hc_world_def d = hcbd_hc_world_def_default();
+    hcbd_hc_world_def d = hc_scene_of(nx, ny, ny, 0, 100.0, nu, c, dt); /* tests/scenes.h */
     hcbd_hc_params *p = &d.params;
-    p->L[0] = nx * A_LAT;
-    p->L[1] = p->L[2] = ny * A_LAT;
-    p->dt = dt;
-    p->kT = 1.0;
-    p->nbar = 3.0 / (4.0 * PI_);
-    p->rho = 100.0 * p->nbar;
-    p->eta = nu * p->rho;
-    p->P0 = c * c * p->rho / 7.0;
     p->h = H;
-    p->fluctuations = 1;
     p->xi = 100.0;
-    p->sigma = 1.0;
-    p->rc = 2.5;
     p->alpha = 0.0;
-    p->tau_lambda = 0.5;
-    p->p_kuhn = 100.0;
-    p->n_max = 5.0;
-    p->chi = 0.5;
     p->seed = seed;
     p->threads = 1;
     p->pair_integrator = (hcbd_pair_integrator)integ;
-    d.fluid_capacity = nx * ny * ny;
-    d.polymer_capacity = 0;
     return d;
 }
 

@@ -48,8 +48,9 @@
    the same with and without fluctuations.  The three C_t rates over k^2,
    the Lees-Edwards viscosity and the Poiseuille curvature measure one
    viscosity, but the SPH viscous force smooths the Laplacian over the
-   kernel: a mode of wave number k diffuses at nu K(k) with K(0) = 1
-   (Lees-Edwards) and K < 1 where k h is not small.  The nu_kernel_* keys
+   kernel: a mode of wave number k diffuses at nu K(k)
+   (hcbd_m4_shear_factor) with K(0) = 1 (Lees-Edwards) and K < 1 where
+   k h is not small.  The nu_kernel_* keys
    give that continuum-limit prediction (derived here, not in the paper)
    for each C_t wave number and for the reverse-Poiseuille profile, whose
    square-wave forcing has harmonics at 2 pi n / Ly with Ly = 5 h; it is
@@ -281,26 +282,6 @@ static int prepare(ctx *x, hcbd_hc_world *w)
 
 /* ---- the kernel's viscosity at a wave number ---------------------------- */
 
-/* The pair viscous force of MODEL.md 6 is a Laplacian smoothed over the
-   kernel.  In the continuum limit (blobs uniform around each other) a shear
-   mode of wave number k relaxes at nu k^2 K(k),
-     K(k) = int (-w'/r) (1 - sin(kr)/(kr)) r^2 dr / int (-w'/r) (kr)^2/6 r^2 dr:
-   K -> 1 as k -> 0 (what Lees-Edwards measures) and K < 1 for modes that
-   the kernel range 2h resolves poorly.  A prediction of this example, not
-   of the paper. */
-static double kernel_factor(double k, double h)
-{
-    const int n = 2000;
-    double num = 0, den = 0;
-    int i;
-    for (i = 0; i < n; ++i) {
-        double r = (i + 0.5) * 2 * h / n, a = -hcbd_m4_dr(r, h) * r, q = k * r;
-        num += a * (q > 1e-3 ? 1 - sin(q) / q : q * q / 6 - q * q * q * q / 120);
-        den += a * q * q / 6;
-    }
-    return num / den;
-}
-
 /* Reverse-Poiseuille profile with K(k): the force, -g below L/2 and +g
    above, is the square wave -(4 g / pi) sum_{n odd} sin(k_n y) / n,
    k_n = 2 pi n / L, and each harmonic settles at force / (nu k_n^2 K(k_n)).
@@ -311,7 +292,7 @@ static void kernel_profile(double g, double nu, double h, double L, const double
     int n, j;
     for (j = 0; j < ny; ++j) v[j] = 0;
     for (n = 1; n < 2000; n += 2) {
-        double k = 2 * PI * n / L, a = -4 * g / (n * PI) / (nu * k * k * kernel_factor(k, h));
+        double k = 2 * PI * n / L, a = -4 * g / (n * PI) / (nu * k * k * hcbd_m4_shear_factor(k, h));
         for (j = 0; j < ny; ++j) v[j] += a * sin(k * y[j]);
     }
 }
@@ -883,7 +864,7 @@ int main(int argc, char **argv)
     }
     for (k = 0; k < NK; ++k) {
         kvec[k] = 2 * PI * (k + 1) / p->L[0];
-        nu_kern[k] = x.th.nu * kernel_factor(kvec[k], p->h);
+        nu_kern[k] = x.th.nu * hcbd_m4_shear_factor(kvec[k], p->h);
     }
     g_red = opt.g_si * u_t * u_t / u_len;
     x.def.fluid_capacity = x.N;

@@ -4,6 +4,7 @@
 #ifndef HCBD_TEST_H
 #define HCBD_TEST_H
 #include "../hcbd.h"
+#include "scenes.h"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -28,23 +29,6 @@ extern double t_len;
         }                                                                      \
     } while (0)
 #define NOTE(...) do { printf("    "); printf(__VA_ARGS__); printf("\n"); } while (0)
-
-/* Mean and standard error from nb block averages of x[0..n). */
-static inline void block_stats(const double *x, int n, int nb, double *mean, double *err)
-{
-    double m = 0, s2 = 0;
-    int b, k, len = n / nb;
-    for (b = 0; b < nb; ++b) {
-        double a = 0;
-        for (k = 0; k < len; ++k) a += x[b * len + k];
-        a /= len;
-        m += a;
-        s2 += a * a;
-    }
-    m /= nb;
-    *mean = m;
-    *err = sqrt((s2 / nb - m * m) / (nb - 1));
-}
 
 /* Squared minimum-image distance of particles i and j of an interleaved
    position array, written independently of the library. */
@@ -110,39 +94,6 @@ static inline int hc_run(hcbd_hc_world *w, int steps)
         return 0;
     }
     return 1;
-}
-
-/* A reduced HCBD scene: m = 1, kT = 1, nbar = 3/(4 pi) (lattice spacing
-   a = 1.612), h = 2, nu = 1, c_s = 5 (c_s h / nu = 10), dt = 0.02; the box
-   holds nx x ny x nz lattice sites exactly. */
-static inline hcbd_hc_world_def hc_scene(int nx, int ny, int nz, int npoly)
-{
-    hcbd_hc_world_def d = hcbd_hc_world_def_default();
-    hcbd_hc_params *p = &d.params;
-    const double a = 1.6119919540164696; /* (4 pi / 3)^(1/3) */
-    p->L[0] = nx * a;
-    p->L[1] = ny * a;
-    p->L[2] = nz * a;
-    p->dt = 0.02;
-    p->kT = 1.0;
-    p->nbar = 3.0 / (4.0 * 3.14159265358979323846);
-    p->rho = p->nbar;
-    p->eta = p->rho;            /* nu = 1 */
-    p->P0 = 25.0 * p->rho / 7.0; /* c_s = 5 */
-    p->h = 2.0;
-    p->fluctuations = 1;
-    p->xi = 10.0;
-    p->sigma = 1.0;
-    p->rc = 2.5;
-    p->alpha = 50.0;
-    p->tau_lambda = 0.5;
-    p->p_kuhn = 100.0;
-    p->n_max = 5.0;
-    p->chi = 0.5;
-    p->seed = 7;
-    d.fluid_capacity = nx * ny * nz;
-    d.polymer_capacity = npoly;
-    return d;
 }
 #endif
 #endif

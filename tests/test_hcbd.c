@@ -65,6 +65,31 @@ void test_hc_kernels(void)
           hcbd_rapid_w_dr(sg + 1e-12, sg, rc));
     CHECK(hcbd_rapid_w_dr(0, sg, rc) < 0, "RaPiD w'(0) = %g is a net repulsion",
           hcbd_rapid_w_dr(0, sg, rc));
+    /* the shear factor against its defining integral over -w'/r (midpoint
+       rule, fine grid), its limit 1 at k -> 0 and its large-k tail
+       (8 pi / k^2) int w dr = 6 / (kh)^2, where the cosine averages out */
+    {
+        const double ks[] = {0.05, 0.4, 1.0, 2.0, 3.5};
+        double last = 1.0;
+        int j, i;
+        for (j = 0; j < 5; ++j) {
+            const int n = 200000;
+            double num = 0, den = 0, K = hcbd_m4_shear_factor(ks[j], h);
+            for (i = 0; i < n; ++i) {
+                double rr = (i + 0.5) * 2 * h / n, a = -hcbd_m4_dr(rr, h) * rr, q = ks[j] * rr;
+                num += a * (q > 1e-3 ? 1 - sin(q) / q : q * q / 6 - q * q * q * q / 120);
+                den += a * q * q / 6;
+            }
+            CHECK(fabs(K - num / den) < 1e-8, "K(%g) = %.12g, the -w'/r integral %.12g", ks[j], K, num / den);
+            CHECK(K < last, "K(%g) = %g decreases", ks[j], K);
+            last = K;
+        }
+        CHECK(fabs(hcbd_m4_shear_factor(1e-4, h) - 1) < 1e-8 && hcbd_m4_shear_factor(0, h) == 1,
+              "K(0) = 1: %.12g", hcbd_m4_shear_factor(1e-4, h));
+        CHECK(fabs(hcbd_m4_shear_factor(400, h) * (400 * h) * (400 * h) / 6 - 1) < 1e-6,
+              "K(400) = %g against the tail 6/(kh)^2", hcbd_m4_shear_factor(400, h));
+        CHECK(isnan(hcbd_m4_shear_factor(NAN, h)) && isnan(hcbd_m4_shear_factor(1, 0)), "K of bad inputs is NaN");
+    }
     CHECK(fabs(hcbd_m4(h - 1e-12, h) - hcbd_m4(h + 1e-12, h)) < 1e-12 &&
               fabs(hcbd_m4_dr(h - 1e-12, h) - hcbd_m4_dr(h + 1e-12, h)) < 1e-10,
           "M4 continuous at h");

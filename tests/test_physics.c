@@ -96,21 +96,6 @@ typedef struct {
     double nu_init, nu_init_err, nu_mf, fs;
 } tc_result;
 
-/* Least squares of y(s) = 1 - C(s)/C(0) = a s + b s (s - 1) over the lags
-   with C/C(0) > 0.75: a is the one-step decrement of the discrete process
-   (for a geometric decay (1 - a)^s, exactly to second order). */
-static double initial_rate(const double *c, int n, double dt)
-{
-    double a11 = 0, a12 = 0, a22 = 0, b1 = 0, b2 = 0;
-    int s;
-    for (s = 1; s < n && c[s] / c[0] > 0.75; ++s) {
-        double u = (double)s * (s - 1), y = 1 - c[s] / c[0];
-        a11 += (double)s * s; a12 += s * u; a22 += u * u;
-        b1 += s * y; b2 += u * y;
-    }
-    return (b1 * a22 - b2 * a12) / (a11 * a22 - a12 * a12) / dt;
-}
-
 static tc_result transverse_identity(hcbd_world_def d, int nk, int nblocks, int block_steps)
 {
     enum { P = 64 };
@@ -131,22 +116,11 @@ static tc_result transverse_identity(hcbd_world_def d, int nk, int nblocks, int 
         int got;
         hcbd_mtcorr_init(&c, 12, P, 2, 1, mem, bytes);
         for (s = 0; s < block_steps; ++s) {
-            double j[12], out[3];
+            double j[12];
             hcbd_world_transverse_current(&w, nk, j);
             hcbd_mtcorr_add(&c, j);
             if (s % 50 == 0) {
-                int i, a;
-                hcbd_world_friction_average(&w, nk, out);
-                mf += out[2] / (d.params.tau * k * k);
-                hcbd_world_get_positions(&w, xyz, 0);
-                for (a = 0; a < 3; ++a) {
-                    double re = 0, im = 0;
-                    for (i = 0; i < n; ++i) {
-                        re += cos(k * xyz[3 * i + a]);
-                        im += sin(k * xyz[3 * i + a]);
-                    }
-                    sk += (re * re + im * im) / n / 3;
-                }
+                gibd_mode_sample(&w, nk, xyz, &mf, &sk);
                 ++nmf;
             }
             if (!run(&w, 1)) return r;
