@@ -132,9 +132,9 @@ struct bi_kind {
     size_t world_size, def_size, params_off, params_size;
     const char *const *base_name;  /* of each base definition, for the entry names */
     void (*base)(void *def, int base); /* a valid definition for the cases to spoil */
-    /* judges a definition: params_check (if in_params), stability, ...,
-       world_create and world_bytes */
-    void (*judge_def)(const char *name, void *def, int in_params, hcbd_result want, const char *want_msg);
+    hcbd_result (*stability)(const void *params, hcbd_limit *out, int *n);
+    hcbd_result (*theory)(const void *params); /* NULL: not judged for every parameter */
+    int (*mem_kept)(const void *w);            /* a refused create kept its memory */
     int (*make)(void *w, int kind);
     void (*snap)(const void *w, bi_snap *s);
     const hcbd_error *(*err)(const void *w);
@@ -164,6 +164,11 @@ struct bi_kind {
     static hcbd_result P##_create(void *w, const void *d) { return W##_create((W *)w, (const D *)d); } \
     static size_t P##_bytes(const void *d) { return W##_bytes((const D *)d); }                        \
     static hcbd_result P##_check(const void *p, char *m, size_t n) { return PAR##_check((const PAR *)p, m, n); } \
+    static hcbd_result P##_stability(const void *p, hcbd_limit *l, int *n)                            \
+    {                                                                                                 \
+        return PAR##_stability((const PAR *)p, l, n);                                                 \
+    }                                                                                                 \
+    static int P##_mem_kept(const void *w) { return ((const W *)w)->core.mem != NULL; }               \
     static hcbd_result P##_step(void *w, int n) { return W##_step((W *)w, n); }                       \
     static hcbd_result P##_stress_enable(void *w, int on) { return W##_stress_enable((W *)w, on); }   \
     static hcbd_result P##_stress_read(const void *w, double *o, int64_t *n)                          \
@@ -182,8 +187,9 @@ struct bi_kind {
     }                                                                                                 \
     static hcbd_result P##_save(void *w, const char *path) { return W##_save((W *)w, path); }         \
     static hcbd_result P##_load(void *w, const char *path) { return W##_load((W *)w, path); }
-#define BI_KIND(P, api, W, D, PAR, base_name, base, judge, make, snap)                               \
-    {api, sizeof(W), sizeof(D), offsetof(D, params), sizeof(PAR), base_name, base, judge, make, snap, \
+#define BI_KIND(P, api, W, D, PAR, base_name, base, theory, make, snap)                              \
+    {api, sizeof(W), sizeof(D), offsetof(D, params), sizeof(PAR), base_name, base, P##_stability,   \
+     theory, P##_mem_kept, make, snap,                                                              \
      P##_err, P##_destroy, P##_init, P##_create, P##_bytes, P##_check, P##_step, P##_stress_enable,  \
      P##_stress_read, P##_tc, P##_ck_size, P##_ck_save, P##_ck_load, P##_save, P##_load}
 
@@ -202,6 +208,44 @@ static const char *bi_diff(const bi_snap *a, const bi_snap *b, char *buf, size_t
     return buf[0] ? buf : NULL;
 }
 
+/* The checks of one definition: params_check (when the bad value is in the
+   parameters), stability and theory give want; world_create gives it,
+   with want_msg, and keeps no memory when it fails; world_bytes stays
+   defined. */
+static void bi_judge_def(const bi_kind *K, const char *name, void *def, int in_params, hcbd_result want,
+                         const char *want_msg)
+{
+    const void *par = (const char *)def + K->params_off;
+    void *w = calloc(1, K->world_size);
+    hcbd_limit lim[HCBD_MAX_LIMITS];
+    char msg[256], n2[200];
+    int nl;
+    hcbd_result r;
+    if (!w) {
+        t_fail = 1;
+        return;
+    }
+    if (in_params) {
+        strcpy(msg, "(untouched)");
+        r = K->check(par, msg, sizeof msg);
+        snprintf(n2, sizeof n2, "%s_params_check %s", K->api, name);
+        bi_judge(n2, want, want_msg, r, msg, NULL);
+        snprintf(n2, sizeof n2, "%s_params_stability %s", K->api, name);
+        bi_judge(n2, want, NULL, K->stability(par, lim, &nl), NULL, NULL);
+        if (K->theory) {
+            snprintf(n2, sizeof n2, "%s_params_theory %s", K->api, name);
+            bi_judge(n2, want, NULL, K->theory(par), NULL, NULL);
+        }
+    }
+    snprintf(n2, sizeof n2, "%s_world_create %s", K->api, name);
+    r = K->create(w, def);
+    bi_judge(n2, want, want_msg, r, K->err(w)->msg, r != HCBD_OK && K->mem_kept(w) ? "memory kept" : NULL);
+    if (r == HCBD_OK) K->destroy(w);
+    snprintf(n2, sizeof n2, "%s_world_bytes %s", K->api, name);
+    bi_judge(n2, HCBD_OK, NULL, K->bytes(def) == 0 ? HCBD_OK : HCBD_ERR_STATE, NULL, NULL);
+    free(w);
+}
+
 /* Each definition of t: the base spoilt by pre and bad, judged by the kind. */
 static void bi_defs(const bi_kind *K, const bi_pentry *t, size_t n)
 {
@@ -216,7 +260,7 @@ static void bi_defs(const bi_kind *K, const bi_pentry *t, size_t n)
         snprintf(name, sizeof name, "%s%s = %s", K->base_name[t[e].base], t[e].bad.f, val);
         snprintf(want, sizeof want, "%s = %s", t[e].bad.f, val);
         if (t[e].msg) snprintf(want, sizeof want, "%s", t[e].msg);
-        K->judge_def(name, d, t[e].bad.off >= K->params_off && t[e].bad.off < K->params_off + K->params_size,
+        bi_judge_def(K, name, d, t[e].bad.off >= K->params_off && t[e].bad.off < K->params_off + K->params_size,
                      t[e].want, want);
     }
     if (!d) t_fail = 1;
@@ -420,38 +464,6 @@ static const bi_pentry bi_params[] = {
     {B_DEF, NOSET, WL(max_pairs, -2), HCBD_ERR_PARAM, NULL},
     {B_DEF, NOSET, WL(max_pairs, 2147483648.0), HCBD_ERR_PARAM, NULL},
 };
-
-/* The checks of one GI-BD definition: params_check (when the bad value is
-   in the parameters), stability and theory give want; world_create gives
-   it, with want_msg, and keeps no memory when it fails; world_bytes stays
-   defined. */
-static void bi_gjudge(const char *name, void *def, int in_params, hcbd_result want, const char *want_msg)
-{
-    hcbd_world_def *d = (hcbd_world_def *)def;
-    hcbd_world w;
-    hcbd_limit lim[HCBD_MAX_LIMITS];
-    hcbd_theory th;
-    char msg[256], n2[200];
-    int nl;
-    hcbd_result r;
-    if (in_params) {
-        strcpy(msg, "(untouched)");
-        r = hcbd_params_check(&d->params, msg, sizeof msg);
-        snprintf(n2, sizeof n2, "hcbd_params_check %s", name);
-        bi_judge(n2, want, want_msg, r, msg, NULL);
-        snprintf(n2, sizeof n2, "hcbd_params_stability %s", name);
-        bi_judge(n2, want, NULL, hcbd_params_stability(&d->params, lim, &nl), NULL, NULL);
-        snprintf(n2, sizeof n2, "hcbd_params_theory %s", name);
-        bi_judge(n2, want, NULL, hcbd_params_theory(&d->params, &th), NULL, NULL);
-    }
-    snprintf(n2, sizeof n2, "hcbd_world_create %s", name);
-    r = hcbd_world_create(&w, d);
-    bi_judge(n2, want, want_msg, r, w.err.msg, r != HCBD_OK && w.core.mem ? "memory kept" : NULL);
-    if (r == HCBD_OK) hcbd_world_destroy(&w);
-    snprintf(n2, sizeof n2, "hcbd_world_bytes %s", name);
-    bi_judge(n2, HCBD_OK, NULL, hcbd_world_bytes(d) == 0 ? HCBD_OK : HCBD_ERR_STATE, NULL, NULL);
-}
-
 
 /* ---- calls on an existing world --------------------------------------- */
 enum { WK_GIBD, WK_BD, WK_EMPTY, WK_MIND, WK_WALL };
@@ -950,32 +962,6 @@ static const bi_pentry bi_hparams[] = {
     {HB_DEF, NOSET, HW(pair_capacity, -2), HCBD_ERR_PARAM, NULL},
     {HB_DEF, NOSET, HW(pair_capacity, 1048577), HCBD_ERR_PARAM, NULL},
 };
-
-/* The checks of one HCBD definition, as bi_gjudge's */
-static void bi_hjudge(const char *name, void *def, int in_params, hcbd_result want, const char *want_msg)
-{
-    hcbd_hc_world_def *d = (hcbd_hc_world_def *)def;
-    hcbd_hc_world w;
-    hcbd_limit lim[HCBD_MAX_LIMITS];
-    char msg[256], n2[200];
-    int nl;
-    hcbd_result r;
-    if (in_params) {
-        strcpy(msg, "(untouched)");
-        r = hcbd_hc_params_check(&d->params, msg, sizeof msg);
-        snprintf(n2, sizeof n2, "hcbd_hc_params_check %s", name);
-        bi_judge(n2, want, want_msg, r, msg, NULL);
-        snprintf(n2, sizeof n2, "hcbd_hc_params_stability %s", name);
-        bi_judge(n2, want, NULL, hcbd_hc_params_stability(&d->params, lim, &nl), NULL, NULL);
-    }
-    snprintf(n2, sizeof n2, "hcbd_hc_world_create %s", name);
-    r = hcbd_hc_world_create(&w, d);
-    bi_judge(n2, want, want_msg, r, w.err.msg, NULL);
-    if (r == HCBD_OK) hcbd_hc_world_destroy(&w);
-    snprintf(n2, sizeof n2, "hcbd_hc_world_bytes %s", name);
-    bi_judge(n2, HCBD_OK, NULL, hcbd_hc_world_bytes(d) == 0 ? HCBD_OK : HCBD_ERR_STATE, NULL, NULL);
-}
-
 
 enum { HK_FP, HK_EMPTY, HK_HOLE, HK_NMAX };
 
@@ -1548,9 +1534,14 @@ static const bi_call bi_both_calls[] = {
 /* ---- the world kinds and the tests -------------------------------------- */
 static void bi_gbase(void *d, int base) { *(hcbd_world_def *)d = bi_base(base); }
 static int bi_gmake(void *w, int kind) { return bi_make((hcbd_world *)w, kind); }
+static hcbd_result bi_gtheory(const void *p)
+{
+    hcbd_theory th;
+    return hcbd_params_theory((const hcbd_params *)p, &th);
+}
 BI_KIND_FNS(bi_g, hcbd_world, hcbd_world_def, hcbd_params)
 static const bi_kind bi_gibd = BI_KIND(bi_g, "hcbd", hcbd_world, hcbd_world_def, hcbd_params, bi_base_name,
-                                      bi_gbase, bi_gjudge, bi_gmake, bi_gsnap);
+                                      bi_gbase, bi_gtheory, bi_gmake, bi_gsnap);
 static const bi_pentry bi_gboth[] = {BI_BOTH_PARAMS(hcbd_world_def)};
 
 void test_bad_input(void)
@@ -1568,7 +1559,7 @@ static void bi_hbase(void *d, int base) { *(hcbd_hc_world_def *)d = bi_hc_base(b
 static int bi_hmake_(void *w, int kind) { return bi_hmake((hcbd_hc_world *)w, kind); }
 BI_KIND_FNS(bi_h, hcbd_hc_world, hcbd_hc_world_def, hcbd_hc_params)
 static const bi_kind bi_hc = BI_KIND(bi_h, "hcbd_hc", hcbd_hc_world, hcbd_hc_world_def, hcbd_hc_params,
-                                    bi_hbase_name, bi_hbase, bi_hjudge, bi_hmake_, bi_hsnap);
+                                    bi_hbase_name, bi_hbase, NULL, bi_hmake_, bi_hsnap);
 static const bi_pentry bi_hboth[] = {BI_BOTH_PARAMS(hcbd_hc_world_def)};
 
 void test_hc_bad_input(void)
