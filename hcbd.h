@@ -112,7 +112,8 @@
      >>theory and stability limits [hcbd_params_theory hcbd_params_stability hcbd_limits_format]
      >>accumulators [hcbd_profile_ hcbd_rdf_ hcbd_mtcorr_ hcbd_msd_ hcbd_slabs_]
      >>statistics of a run's results [hcbd_carreau_fit hcbd_blocking_error]
-     >>random numbers [hcbd_splitmix64 hcbd_rng_ hcbd_world_rng_normal hcbd_world_pair_normals hcbd_world_particle_normals
+     >>random numbers [hcbd_splitmix64 hcbd_rng_ hcbd_world_rng_normal hcbd_world_pair_normals
+        hcbd_world_particle_normals
         hcbd_noise_]
      >>GI-BD equations without a world [hcbd_params_gibd_coef hcbd_gibd_]
      >>walls without a world [hcbd_walls_]
@@ -136,7 +137,8 @@
      >>implementation
      >>errors [hcbd_result_name]
      >>parameters [hcbd_params_ hcbd_world_def_]
-     >>random numbers [hcbd_splitmix64 hcbd_rng_ hcbd_world_rng_normal hcbd_world_pair_normals hcbd_world_particle_normals
+     >>random numbers [hcbd_splitmix64 hcbd_rng_ hcbd_world_rng_normal hcbd_world_pair_normals
+        hcbd_world_particle_normals
         hcbd_noise_]
      >>kernels [hcbd_wendland]
      >>GI-BD equations [hcbd_params_gibd_coef hcbd_gibd_]
@@ -182,7 +184,8 @@
         hcbd_hc_world_momentum hcbd_hc_world_transverse_current hcbd_hc_world_polymer_energy
         hcbd_hc_world_density_range hcbd_hc_world_stress_ hcbd_hc_world_checksum]
      >>HCBD: checkpoints, lifecycle, XYZ and thermo [hcbd_hc_world_create
-        hcbd_hc_world_destroy hcbd_hc_world_set_threads hcbd_hc_world_checkpoint_ hcbd_hc_world_save hcbd_hc_world_load
+        hcbd_hc_world_destroy hcbd_hc_world_set_threads hcbd_hc_world_checkpoint_ hcbd_hc_world_save
+        hcbd_hc_world_load
         hcbd_hc_world_write_xyz hcbd_hc_thermo_header hcbd_hc_world_thermo_line]
      The shared code: both worlds embed one hcbd__core (w->core) and share
      the code written over it; a world kind (hcbd__kind) tells that code
@@ -232,10 +235,10 @@
      the cause; hcbd_world_write_offenders writes the offenders as an XYZ frame.
 
    RESTART AND OUTPUT
-     hcbd_world_save/hcbd_world_load (and the hcbd_hc_ pair) write and read the whole
-     state in a versioned, portable format; n + n steps equal n steps,
-     save, load, n steps, bit for bit.  hcbd_world_write_xyz writes extended XYZ
-     frames (OVITO); hcbd_world_thermo_line a log line.
+     hcbd_world_save/_load (and hcbd_hc_world_save/_load) write and read
+     the whole state in a versioned, portable format; n + n steps equal n
+     steps, save, load, n steps, bit for bit.  hcbd_world_write_xyz writes
+     extended XYZ frames (OVITO); hcbd_world_thermo_line a log line.
 */
 #ifndef HCBD_H_INCLUDED
 #define HCBD_H_INCLUDED
@@ -1477,12 +1480,14 @@ static inline hcbd_result hcbd_stability(const hcbd_params *p, hcbd_limit *out, 
     return hcbd_params_stability(p, out, n);
 }
 HCBD_DEPRECATED("hcbd_params_gibd_coef")
-static inline hcbd_result hcbd_gibd_coef_of(const hcbd_params *p, hcbd_gibd_coef *c, char *msg, size_t msg_size)
+static inline hcbd_result hcbd_gibd_coef_of(const hcbd_params *p, hcbd_gibd_coef *c, char *msg,
+                                            size_t msg_size)
 {
     return hcbd_params_gibd_coef(p, c, msg, msg_size);
 }
 HCBD_DEPRECATED("hcbd_star_coef_init")
-static inline hcbd_result hcbd_star_coef_of(double f, double sigma, double eps, hcbd_star_coef *c, char *msg, size_t msg_size)
+static inline hcbd_result hcbd_star_coef_of(double f, double sigma, double eps, hcbd_star_coef *c,
+                                            char *msg, size_t msg_size)
 {
     return hcbd_star_coef_init(c, f, sigma, eps, msg, msg_size);
 }
@@ -1501,7 +1506,8 @@ static inline hcbd_hc_si hcbd_hc_si_table1(void)
     return hcbd_hc_si_default();
 }
 HCBD_DEPRECATED("hcbd_hc_si_params")
-static inline hcbd_result hcbd_hc_params_si(const hcbd_hc_si *si, double time_unit, hcbd_hc_params *p, char *msg, size_t msg_size)
+static inline hcbd_result hcbd_hc_params_si(const hcbd_hc_si *si, double time_unit, hcbd_hc_params *p,
+                                            char *msg, size_t msg_size)
 {
     return hcbd_hc_si_params(si, time_unit, p, msg, msg_size);
 }
@@ -1591,7 +1597,8 @@ static inline hcbd_result hcbd_hc_stress_enable(hcbd_hc_world *w, int on)
     return hcbd_hc_world_stress_enable(w, on);
 }
 HCBD_DEPRECATED("hcbd_hc_world_stress_read")
-static inline hcbd_result hcbd_hc_stress_read(const hcbd_hc_world *w, double out[HCBD_HC_NSTRESS], int64_t *nsteps)
+static inline hcbd_result hcbd_hc_stress_read(const hcbd_hc_world *w, double out[HCBD_HC_NSTRESS],
+                                              int64_t *nsteps)
 {
     return hcbd_hc_world_stress_read(w, out, nsteps);
 }

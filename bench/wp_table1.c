@@ -92,7 +92,8 @@ static int run(const hcbd_hc_params *base, int np, cfg c, double wi, int startup
     }
     /* the same start for every configuration: lattice, random polymers of
        the same seed, lambdas at equilibrium */
-    if (hcbd_hc_world_place_fluid_lattice(&w, nf) != HCBD_OK || hcbd_hc_world_place_polymers_random(&w, np) != HCBD_OK ||
+    if (hcbd_hc_world_place_fluid_lattice(&w, nf) != HCBD_OK ||
+        hcbd_hc_world_place_polymers_random(&w, np) != HCBD_OK ||
         !(z0 = (double *)malloc(sizeof(double) * (size_t)np)))
         goto fail;
     r->wall = now();

@@ -50,7 +50,8 @@ static uint64_t golden_run(int sc, int threads, int *skip)
         d.params.threads = threads;
         d.params.gdot = 0.05;
         d.params.h = 1.3;
-        if (hcbd_hc_world_create(&w, &d) != HCBD_OK || hcbd_hc_world_place_fluid_lattice(&w, d.fluid_capacity) != HCBD_OK ||
+        if (hcbd_hc_world_create(&w, &d) != HCBD_OK ||
+            hcbd_hc_world_place_fluid_lattice(&w, d.fluid_capacity) != HCBD_OK ||
             hcbd_hc_world_place_polymers_random(&w, 60) != HCBD_OK || hcbd_hc_world_step(&w, 200) != HCBD_OK) {
             CHECK(0, "%s: %s", g_name[sc], w.err.msg);
             return 0;

@@ -693,7 +693,8 @@ void test_hc_old_names(void)
     si = hcbd_hc_si_default();
     CHECK(hcbd_hc_theory_of(&d.params, &tha) == HCBD_OK && hcbd_hc_params_theory(&d.params, &thb) == HCBD_OK &&
           !memcmp(&tha, &thb, sizeof tha), "hcbd_hc_theory_of");
-    CHECK(hcbd_hc_stability(&d.params, la, &nla) == HCBD_OK && hcbd_hc_params_stability(&d.params, lb, &nlb) == HCBD_OK &&
+    CHECK(hcbd_hc_stability(&d.params, la, &nla) == HCBD_OK &&
+              hcbd_hc_params_stability(&d.params, lb, &nlb) == HCBD_OK &&
           nla == nlb && nla > 0 && !memcmp(la, lb, (size_t)nla * sizeof la[0]), "hcbd_hc_stability");
     if (!hc_create(&w, &d)) return;
     if (!hc_create(&v, &d)) {
@@ -723,7 +724,8 @@ void test_hc_old_names(void)
     hcbd_hc_momentum(&w, x3);
     hcbd_hc_world_momentum(&w, y3);
     CHECK(!memcmp(x3, y3, sizeof x3), "hcbd_hc_momentum");
-    CHECK(hcbd_hc_transverse_current(&w, 1, x12) == HCBD_OK && hcbd_hc_world_transverse_current(&w, 1, y12) == HCBD_OK &&
+    CHECK(hcbd_hc_transverse_current(&w, 1, x12) == HCBD_OK &&
+              hcbd_hc_world_transverse_current(&w, 1, y12) == HCBD_OK &&
           !memcmp(x12, y12, sizeof x12), "hcbd_hc_transverse_current");
     CHECK(hcbd_hc_polymer_energy(&w) == hcbd_hc_world_polymer_energy(&w), "hcbd_hc_polymer_energy");
     CHECK(hcbd_hc_density_range(&w, x3) == HCBD_OK && hcbd_hc_world_density_range(&w, y3) == HCBD_OK &&
