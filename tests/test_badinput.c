@@ -103,6 +103,11 @@ static void bi_apply(void *def, const bi_set *s)
    world's table of calls; the cases both worlds have are one table, run
    against each (bi_both_params, bi_both_calls). */
 #define BI_PMAX 4096 /* bytes of a world's parameters, at most */
+/* compile-time guards: a snapshot's memcpy of the parameters stays in p */
+typedef char bi_params_fit[sizeof(hcbd_params) <= BI_PMAX ? 1 : -1];
+#if HCBD_MODEL == HCBD_MODEL_HCBD
+typedef char bi_hc_params_fit[sizeof(hcbd_hc_params) <= BI_PMAX ? 1 : -1];
+#endif
 typedef struct {
     int base;        /* the valid definition it spoils (the kind's base) */
     bi_set pre, bad; /* pre: a valid setting the bad one needs */
