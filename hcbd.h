@@ -148,9 +148,10 @@
      >>walls [hcbd_params_wall_potential hcbd_world_wall_penetrations]
      >>theory and stability limits [hcbd_params_theory hcbd_params_stability hcbd_limits_format]
      >>world and storage [hcbd_world_]
-     >>walls without a world [hcbd_walls_]
      >>neighbour search
      >>pair traversal
+     >>wall pairs
+     >>walls without a world [hcbd_walls_]
      >>pair passes
      >>integrator
      >>stress a run accumulates [hcbd_world_stress_]
@@ -1679,6 +1680,16 @@ static inline int hcbd_hc_thermo_line(const hcbd_hc_world *w, double ns_pstep, c
 #define HCBD__OMP(x)
 #endif
 
+/* The exact sweeps are chains of scalar velocity updates; gcc's
+   straight-line (SLP) vectoriser packed the fluid sweep's and changed its
+   float bits (clang and gcc -O0/-O1 agreed with each other, not with it),
+   and gains nothing there. */
+#if defined(__GNUC__) && !defined(__clang__)
+#define HCBD__NO_SLP __attribute__((optimize("no-tree-slp-vectorize")))
+#else
+#define HCBD__NO_SLP
+#endif
+
 #if defined(__GNUC__) || defined(__clang__)
 #define HCBD__RESTRICT __restrict
 #define HCBD__INLINE static inline __attribute__((always_inline))
@@ -2870,83 +2881,6 @@ static int hcbd__ws_near(const hcbd__wallset *s, const hcbd_params *p, double y)
     return y < s->lo + p->Rc || y > s->hi - p->Rc;
 }
 
-/* Sum of the weights of the artificial particles around (x, y, z): they
-   count in the real particles' densities (MODEL 4). */
-static double hcbd__ws_wsum(const hcbd__wallset *s, const hcbd_params *p, double cw, double x, double y,
-                            double z)
-{
-    const double Rc2 = p->Rc * p->Rc, invRc = 1.0 / p->Rc;
-    double sum = 0.0;
-    int cols[9], nc = hcbd__art_cols(s, p, x, z, cols), c;
-    for (c = 0; c < nc; ++c) {
-        int32_t k;
-        for (k = s->col_start[cols[c]]; k < s->col_start[cols[c] + 1]; ++k) {
-            double dx = hcbd__mi(x - s->ax[k], p->L[0]), dy = hcbd__mi(y - s->ay[k], p->L[1]);
-            double dz = hcbd__mi(z - s->az[k], p->L[2]), r2 = dx * dx + dy * dy + dz * dz;
-            if (r2 < Rc2) {
-                double q = sqrt(r2) * invRc, a = 1.0 - q;
-                sum += hcbd__weight(cw, q, a);
-            }
-        }
-    }
-    return sum;
-}
-
-/* Friction and noise of the artificial particles on real particle id at r
-   (Morris et al. 1997, MODEL 4): the artificial particle B takes the
-   velocity with v_i - v_B = beta (v_i - v_wall), beta = min(beta_max, 1 +
-   d_B/d_A), both distances from the interface between them (the Morris
-   plane); the noise carries sqrt(beta) so the pair keeps its
-   fluctuation-dissipation balance.  The wall absorbs the momentum.  exact:
-   v relaxes pair by pair over the step; else the Euler exchanges are added
-   to P.  cf, m: the GI-BD coefficient and mass; key: the step's. */
-static void hcbd__ws_morris(const hcbd__wallset *s, const hcbd_params *p, const hcbd__zig *zig, double cf,
-                            double m, uint64_t key, int32_t id, const double r[3], double iri,
-                            double v[3], double P[3], int exact)
-{
-    const double Rc2 = p->Rc * p->Rc, invRc = 1.0 / p->Rc;
-    const double cs = cf * m * m * p->dt / p->tau, two_kT = 2.0 * p->kT;
-    const double bmax = p->wall.beta_max, inv_m = 1.0 / m;
-    const double xi = r[0], yi = r[1], zi = r[2];
-    const uint64_t idk = (uint64_t)(uint32_t)id << 32;
-    int cols[9], nc = hcbd__art_cols(s, p, xi, zi, cols), c, d;
-    for (c = 0; c < nc; ++c) {
-        int32_t k;
-        for (k = s->col_start[cols[c]]; k < s->col_start[cols[c] + 1]; ++k) {
-            double dx = hcbd__mi(xi - s->ax[k], p->L[0]), dy = hcbd__mi(yi - s->ay[k], p->L[1]);
-            double dz = hcbd__mi(zi - s->az[k], p->L[2]), r2 = dx * dx + dy * dy + dz * dz;
-            double q, a, sdt, dA, dB, vw[3] = {0, 0, 0}, beta, nb, z3[3] = {0, 0, 0};
-            if (r2 >= Rc2) continue;
-            q = sqrt(r2) * invRc;
-            a = 1.0 - q;
-            sdt = hcbd__sdt(cs, iri, s->art_inv_rho, a);
-            if (dy > 0.0) { /* B below i: behind the bottom interface */
-                dA = yi - s->morris_lo;
-                dB = s->morris_lo - (yi - dy);
-                vw[0] = p->wall.vx[0];
-            } else {
-                dA = s->morris_hi - yi;
-                dB = (yi - dy) - s->morris_hi;
-                vw[0] = p->wall.vx[1];
-            }
-            beta = (dA > 0.0 && dB >= 0.0) ? 1.0 + dB / dA : bmax;
-            if (beta > bmax) beta = bmax;
-            nb = p->wall.noise_beta ? 1.0 : 1.0 / beta; /* noise variance factor */
-            if (two_kT > 0.0) hcbd__deviates3(zig, p->noise, hcbd__mix64(key ^ idk ^ (uint64_t)k), z3);
-            if (exact) {
-                /* the wall is a reservoir: v - v_wall relaxes at the rate
-                   beta sdt / (m dt), solved over the step */
-                const double om = -expm1(-beta * sdt * inv_m);
-                const double b = sqrt(0.5 * two_kT * m * om * (2.0 - om) * nb);
-                for (d = 0; d < 3; ++d) v[d] += (-m * om * (v[d] - vw[d]) + b * z3[d]) * inv_m;
-            } else {
-                const double b = sqrt(two_kT * sdt * beta * nb);
-                for (d = 0; d < 3; ++d) P[d] += -beta * sdt * (v[d] - vw[d]) + b * z3[d];
-            }
-        }
-    }
-}
-
 /* The Morris pairs' key of a step: the sweep's differs from the Euler
    step's in its last bit */
 static uint64_t hcbd__ws_pair_step_key(const hcbd__wallset *s, int64_t step, int exact)
@@ -2959,20 +2893,6 @@ static uint64_t hcbd__ws_pair_step_key(const hcbd__wallset *s, int64_t step, int
 static void hcbd__wall_draw(hcbd_world *w) { hcbd__ws_draw(&w->ws, &w->p, w->step); }
 
 static int hcbd__near_wall(const hcbd_world *w, double y) { return hcbd__ws_near(&w->ws, &w->p, y); }
-
-static double hcbd__art_wsum(const hcbd_world *w, double x, double y, double z)
-{
-    return hcbd__ws_wsum(&w->ws, &w->p, w->cw, x, y, z);
-}
-
-static void hcbd__morris(hcbd_world *w, int i, uint64_t key, double P[3], int exact)
-{
-    double r[3], v[3];
-    r[0] = w->x[i]; r[1] = w->y[i]; r[2] = w->z[i];
-    v[0] = w->vx[i]; v[1] = w->vy[i]; v[2] = w->vz[i];
-    hcbd__ws_morris(&w->ws, &w->p, w->core.zig, w->cf, w->m, key, w->id[i], r, w->inv_rho[i], v, P, exact);
-    if (exact) { w->vx[i] = (hcbd_real)v[0]; w->vy[i] = (hcbd_real)v[1]; w->vz[i] = (hcbd_real)v[2]; }
-}
 
 /* The world's wall state from the parameters (at init) */
 static void hcbd__walls_init(hcbd_world *w, const hcbd_params *p)
@@ -3020,15 +2940,6 @@ static void hcbd__walls_init(hcbd_world *w, const hcbd_params *p)
 }
 static inline void hcbd__wall_draw(hcbd_world *w) { (void)w; }
 static inline int hcbd__near_wall(const hcbd_world *w, double y) { (void)w; (void)y; return 0; }
-static inline double hcbd__art_wsum(const hcbd_world *w, double x, double y, double z)
-{
-    (void)w; (void)x; (void)y; (void)z;
-    return 0.0;
-}
-static inline void hcbd__morris(hcbd_world *w, int i, uint64_t key, double P[3], int exact)
-{
-    (void)w; (void)i; (void)key; (void)P; (void)exact;
-}
 static inline uint64_t hcbd__ws_pair_step_key(const hcbd__wallset *s, int64_t step, int exact)
 {
     (void)s; (void)step; (void)exact;
@@ -3651,74 +3562,6 @@ hcbd_result hcbd_world_set_velocities(hcbd_world *w, const double *v)
     return HCBD_OK;
 }
 
-/* >>walls without a world (hcbd_walls, for engines of their own) */
-#if HCBD__WALLS
-size_t hcbd_walls_bytes(const hcbd_params *p)
-{
-    size_t off = 0;
-    hcbd__wallset s;
-    char msg[8];
-    if (!p || hcbd_params_check(p, msg, sizeof msg) != HCBD_OK) return 0;
-    hcbd__ws_take(NULL, &off, &s, p);
-    return off + HCBD__ALIGN;
-}
-
-hcbd_result hcbd_walls_init(hcbd_walls *wl, const hcbd_params *p, void *mem, size_t bytes, char *msg,
-                            size_t msg_size)
-{
-    hcbd_error e;
-    hcbd_result r;
-    char *base;
-    size_t off = 0;
-    if (msg && msg_size) msg[0] = '\0';
-    if (!wl || !p) return HCBD_ERR_NULL;
-    hcbd__clear(&e);
-    r = hcbd_params_check(p, e.msg, sizeof e.msg);
-    if (r == HCBD_OK && p->dynamics != HCBD_DYN_GIBD)
-        r = hcbd__fail(&e, HCBD_ERR_PARAM, -1, -1, "dynamics = %d: walls without a world are GI-BD's",
-                       (int)p->dynamics);
-    base = hcbd__init_block(&e, r, mem, bytes, r == HCBD_OK ? hcbd_walls_bytes(p) : 0, "hcbd_walls_bytes");
-    if (!base) {
-        if (msg && msg_size) snprintf(msg, msg_size, "%s", e.msg);
-        return e.code;
-    }
-    wl->p = *p;
-    hcbd__gibd_coef(p, &wl->c);
-    hcbd__zig_init(&wl->zig);
-    hcbd__ws_take(base, &off, &wl->ws, p);
-    hcbd__ws_init(&wl->ws, p, wl->c.m, wl->c.cw);
-    /* no artificial particles before the first draw */
-    memset(wl->ws.col_start, 0, (size_t)(wl->ws.acol[0] * wl->ws.acol[1] + 1) * sizeof(int32_t));
-    wl->step = -1;
-    return HCBD_OK;
-}
-
-hcbd_result hcbd_walls_draw(hcbd_walls *wl, int64_t step)
-{
-    if (!wl || !wl->ws.col_start) return HCBD_ERR_NULL;
-    if (step < 0) return HCBD_ERR_PARAM;
-    hcbd__ws_draw(&wl->ws, &wl->p, step);
-    wl->step = step;
-    return HCBD_OK;
-}
-
-double hcbd_walls_weights(const hcbd_walls *wl, const double r[3])
-{
-    if (!wl || !r) return NAN;
-    if (wl->p.wall.thickness <= 0 || !hcbd__ws_near(&wl->ws, &wl->p, r[1])) return 0.0;
-    return hcbd__ws_wsum(&wl->ws, &wl->p, wl->c.cw, r[0], r[1], r[2]);
-}
-
-void hcbd_walls_morris(const hcbd_walls *wl, int exact, int32_t id, const double r[3], double inv_rho,
-                       double v[3], double P[3])
-{
-    if (!wl || !r || !v || (!exact && !P) || wl->step < 0 || wl->ws.n_art <= 0) return;
-    if (!hcbd__ws_near(&wl->ws, &wl->p, r[1])) return;
-    hcbd__ws_morris(&wl->ws, &wl->p, &wl->zig, wl->c.cf, wl->c.m,
-                    hcbd__ws_pair_step_key(&wl->ws, wl->step, exact), id, r, inv_rho, v, P, exact);
-}
-#endif
-
 /* >>neighbour search: cells, half and cross Verlet lists, their rebuild */
 /* One set of particles as the list machinery sees it: positions by slot
    and the id of each slot (NULL: slot = id). */
@@ -4094,6 +3937,55 @@ static int hcbd__owners(hcbd_world *w, hcbd__owner_fn fn)
     return hcbd__nl_owners(&w->nl, w->n, w->p.threads, w, fn);
 }
 
+/* The exact sweeps' scheduler: a grid of nb[0] x nb[1] x nb[2] blocks
+   (block (c0, c1, c2) = (c2 nb[1] + c1) nb[0] + c0), nc[d] colours along
+   axis d, nb[d] a multiple of nc[d], and no pair reaching past the blocks
+   of its owner's colour.  The colours run in turn (the x colour
+   fastest), the blocks of a colour side by side; fn runs one block and
+   returns as hcbd__traverse does.  Blocks of one colour share no
+   particle, so the bits do not depend on T. */
+typedef int (*hcbd__block_fn)(void *ctx, int b);
+/* what a sweep's block function needs: block b's owners are
+   list[start[b] .. start[b + 1]) */
+typedef struct hcbd__block_job {
+    const struct hcbd__trav *T;
+    const int32_t *list, *start;
+    void *pass;
+} hcbd__block_job;
+
+static int hcbd__colours(const int nb[3], const int nc[3], int T, void *ctx, hcbd__block_fn fn)
+{
+    const int m0 = nb[0] / nc[0], m1 = nb[1] / nc[1], per = m0 * m1 * (nb[2] / nc[2]);
+    const int ncol = nc[0] * nc[1] * nc[2];
+    int worst = INT_MAX;
+    (void)T;
+#define HCBD__BLOCK(col, j)                                                                                  \
+    ((((col) / (nc[0] * nc[1]) + nc[2] * ((j) / (m0 * m1))) * nb[1] + (col) / nc[0] % nc[1] +              \
+      nc[1] * ((j) / m0 % m1)) * nb[0] + (col) % nc[0] + nc[0] * ((j) % m0))
+    if (T <= 1) { /* no team: libgomp's barrier of a team of one still costs a system call per colour */
+        int col, j;
+        for (col = 0; col < ncol; ++col)
+            for (j = 0; j < per; ++j) {
+                const int b = fn(ctx, HCBD__BLOCK(col, j));
+                if (b < worst) worst = b;
+            }
+        return worst;
+    }
+    HCBD__OMP(omp parallel num_threads(T) reduction(min:worst))
+    {
+        int col, j;
+        for (col = 0; col < ncol; ++col) {
+            HCBD__OMP(omp for schedule(dynamic, 1))
+            for (j = 0; j < per; ++j) {
+                const int b = fn(ctx, HCBD__BLOCK(col, j));
+                if (b < worst) worst = b;
+            }
+        }
+    }
+#undef HCBD__BLOCK
+    return worst;
+}
+
 /* Gathers the partners of i from list entries [*p, min(pend, *p + CHUNK))
    that lie within r^2 < cut2, without a branch (about half the list lies in
    the skin, and a branch on it would be mispredicted half the time);
@@ -4159,22 +4051,95 @@ HCBD__INLINE int hcbd__gather_r2(const int32_t *HCBD__RESTRICT nb, const double 
     return m;
 }
 
-/* The loop of every pair pass.  Owners come from a
-   list of indices (cell order, a sweep block, id order), each meets its
-   partners within cut in chunks (hcbd__gather_at), and a pass plugs in
-   three inline evaluators: begin (the owner's running state), pairs (one
-   chunk: the pass's equation), end (the owner's sums written; returns the
-   id of an owner whose terms left the fixed-point range, or INT_MAX).
-   The loop knows lists, orders and chunks; an evaluator knows one
-   equation.  The schedulers (slabs: hcbd__nl_owners; colours of the exact
-   sweeps) hand it ranges of owners.  A pass whose terms need only the
-   separation may take the streamed form below instead (same owners, same
-   partners, same bits). */
+/* The third source (hcbd__trav.emap): all of the owner's entries, each
+   with the entry of the transposed list where an earlier pass kept its
+   values. */
+HCBD__INLINE int hcbd__gather_map(const int32_t *HCBD__RESTRICT nb, const int32_t *HCBD__RESTRICT emap,
+                                  int32_t *p, int32_t pend, hcbd__near *c)
+{
+    const int32_t pe = pend - *p > HCBD__CHUNK ? *p + HCBD__CHUNK : pend;
+    int m = 0;
+    for (; *p < pe; ++*p, ++m) {
+        c->j[m] = nb[*p]; c->k[m] = 0; c->e[m] = emap[*p];
+    }
+    return m;
+}
+
+#if HCBD__WALLS
+/* The second source: the artificial wall particles (MODEL 4) in the up to
+   9 x-z columns around the owner (hcbd__art_cols), column by column, each
+   in storage order.  The minimum image has no shear (walls move by their
+   velocity, not by Lees-Edwards).  c->j and c->e are the particle's index
+   in the wall set. */
+typedef struct hcbd__art_cursor {
+    int cols[9], nc, c;
+    int32_t k, ke;
+} hcbd__art_cursor;
+
+HCBD__INLINE int hcbd__gather_art(const hcbd__wallset *s, const double L[3], hcbd__art_cursor *a, double xi,
+                                  double yi, double zi, double cut2, hcbd__near *c)
+{
+    int m = 0, seen = 0;
+    while (seen < HCBD__CHUNK) {
+        if (a->k == a->ke) {
+            if (a->c == a->nc) break;
+            a->k = s->col_start[a->cols[a->c]];
+            a->ke = s->col_start[a->cols[a->c] + 1];
+            ++a->c;
+            continue;
+        }
+        {
+            const int32_t k = a->k++;
+            const double dx = hcbd__mi(xi - s->ax[k], L[0]), dy = hcbd__mi(yi - s->ay[k], L[1]);
+            const double dz = hcbd__mi(zi - s->az[k], L[2]), r2 = dx * dx + dy * dy + dz * dz;
+            c->j[m] = k; c->k[m] = 0; c->e[m] = k;
+            c->x[m] = dx; c->y[m] = dy; c->z[m] = dz; c->r2[m] = r2;
+            m += r2 < cut2;
+            ++seen;
+        }
+    }
+    return m;
+}
+
+#endif
+
+/* The loop of every pair pass.  Owners come from a list of indices (cell
+   order, a sweep block, id order); each meets its partners in chunks from
+   one of three sources: its list entries within cut (hcbd__gather_at, or
+   the r^2 an earlier pass stored), the artificial wall particles around it
+   (hcbd__gather_art), or a transposed list's entries (hcbd__gather_map).
+   A pass plugs in three inline evaluators: begin (the owner's running
+   state), pairs (one chunk: the pass's equation, its terms returned in
+   hcbd__terms), end (the owner's own results written; returns the id of an
+   owner whose terms left the fixed-point range, or INT_MAX).  The loop
+   owns the rest: the fixed-point sums of both sides (the channels of
+   hcbd__trav), the values kept per entry and zeroed in the skin, and, with
+   hcbd__rev_add, their partner side.  The loop knows lists, sources,
+   orders and chunks; an evaluator knows one equation, from the pair terms
+   of its model (hcbd__weight, hcbd__star_table, hcbd__sdt; hcbd__rapid,
+   hcbd__flory_fr, hcbd__spring_fr, hcbd__tait_fr, hcbd__morris_f).  The
+   schedulers (slabs: hcbd__nl_owners; colours: hcbd__colours) hand it
+   ranges of owners.  A pass whose terms need only the separation may take
+   the streamed form below instead (same owners, same partners, same bits,
+   the same scatter). */
 typedef struct hcbd__acc {
-    int64_t q[8];                 /* fixed-point sums: weights, forces     */
+    int64_t q[8];                 /* an evaluator's integer state          */
     double r[8];                  /* double sums, an owner's velocity      */
     int bad;                      /* a term left the fixed-point range     */
 } hcbd__acc;
+
+/* What an evaluator returns for a chunk, pair by pair: fixed-point terms
+   (channel k goes to the owner, and to the partner with the sign of the
+   traversal's channel: -1 for a force, +1 for a density weight) and
+   values kept per list entry (the polymers' weights and forces, for the
+   partner-side sums and the redistribution).  The loop adds and stores
+   them; a term of an inactive channel is not read. */
+#define HCBD__NQ 7
+#define HCBD__NE 3
+typedef struct hcbd__terms {
+    int64_t u[HCBD__NQ][HCBD__CHUNK];
+    double e[HCBD__NE][HCBD__CHUNK];
+} hcbd__terms;
 
 typedef struct hcbd__trav {
     const int32_t *start, *nb;    /* owner i's entries start[i] .. start[i+1] */
@@ -4184,6 +4149,20 @@ typedef struct hcbd__trav {
     double cut2;
     double *r2out;                 /* store every entry's r^2 (or NULL)       */
     const double *r2in;            /* take r^2 from there (or NULL)           */
+    /* the third source: every entry is a partner, with no geometry, and
+       emap[p] names the entry of the list it transposes (or NULL) */
+    const int32_t *emap;
+    /* the second source: the partners are the artificial wall particles
+       around the owner (hcbd__trav_art), not list entries */
+    const hcbd__wallset *art;
+    const hcbd_params *art_p;
+    /* the sums the loop takes: channel k's terms into sink[k] (NULL: none)
+       on both sides, the partner's with sign sgn[k] */
+    int64_t *sink[HCBD__NQ];
+    int sgn[HCBD__NQ];
+    /* entries' values: ent[ne p + k] = e[k] of entry p, 0 in the skin */
+    double *ent;
+    int ne;
 } hcbd__trav;
 
 static inline hcbd__trav hcbd__trav_make(const hcbd__nlist *L, const hcbd_real *ox, const hcbd_real *oy,
@@ -4191,17 +4170,65 @@ static inline hcbd__trav hcbd__trav_make(const hcbd__nlist *L, const hcbd_real *
                                          const hcbd_real *z, hcbd__box box, double cut)
 {
     hcbd__trav t;
+    memset(&t, 0, sizeof t);
     t.start = L->nb_start; t.nb = L->nb_j;
     t.x = x; t.y = y; t.z = z; t.ox = ox; t.oy = oy; t.oz = oz;
     t.box = box;
     t.cut2 = cut * cut;
-    t.r2out = NULL;
-    t.r2in = NULL;
     return t;
 }
 
+/* channel k of T sums into a, the partner's share with sign s */
+static inline void hcbd__trav_sink(hcbd__trav *T, int k, int64_t *a, int s)
+{
+    T->sink[k] = a;
+    T->sgn[k] = s;
+}
+
+/* Adds channel terms u[t0 .. t1) to the partners j[t] with sign s and
+   returns their sum (the owner's share) */
+HCBD__INLINE int64_t hcbd__scatter(int64_t *HCBD__RESTRICT sink, int s, const int64_t *HCBD__RESTRICT u,
+                                   const int32_t *HCBD__RESTRICT j, int t0, int t1)
+{
+    int64_t o = 0;
+    int t;
+    if (s > 0)
+        for (t = t0; t < t1; ++t) { o += u[t]; sink[j[t]] += u[t]; }
+    else
+        for (t = t0; t < t1; ++t) { o += u[t]; sink[j[t]] -= u[t]; }
+    return o;
+}
+
+/* The partner side of values kept per entry (hcbd__trav.ent, ne per
+   entry): b's entries as a partner, through the reverse list (rv_p from
+   rv_start[b], owners in increasing id), added to s[0 .. ne) with sign sg,
+   in that fixed order */
+HCBD__INLINE void hcbd__rev_add(const int32_t *rv_start, const int32_t *rv_p, const double *ent, int ne, int b,
+                                double sg, double *s)
+{
+    int32_t e;
+    int k;
+    for (e = rv_start[b]; e < rv_start[b + 1]; ++e)
+        for (k = 0; k < ne; ++k) s[k] += sg * ent[(size_t)ne * (size_t)rv_p[e] + (size_t)k];
+}
+
+#if HCBD__WALLS
+/* a traversal whose partners are the artificial particles within cut */
+static inline hcbd__trav hcbd__trav_art(const hcbd__wallset *s, const hcbd_params *p, double cut)
+{
+    hcbd__trav t;
+    memset(&t, 0, sizeof t);
+    t.box = hcbd__box_make(p->L, 0.0, 0);
+    t.cut2 = cut * cut;
+    t.art = s;
+    t.art_p = p;
+    return t;
+}
+#endif
+
 typedef void (*hcbd__ev_begin)(void *ctx, int i, hcbd__acc *a);
-typedef void (*hcbd__ev_pairs)(void *ctx, int i, const hcbd__near *c, int m, hcbd__acc *a);
+typedef void (*hcbd__ev_pairs)(void *ctx, int i, const hcbd__near *c, int m, hcbd__acc *a,
+                               hcbd__terms *u);
 typedef int (*hcbd__ev_end)(void *ctx, int i, hcbd__acc *a);
 
 /* The owners of a sweep go by id, so their list entries lie anywhere in
@@ -4221,27 +4248,62 @@ HCBD__INLINE void hcbd__prefetch_owner(const hcbd__trav *T, int i)
 #endif
 }
 
+/* Owner i at (xi, yi, zi) meets its partners from T's source, chunk by
+   chunk: the loop's body, also run alone for one owner at a point (the
+   walls' passes, which need no list).  own: the owner's shares of the
+   channels, added to. */
+HCBD__INLINE void hcbd__partners(const hcbd__trav *T, int i, double xi, double yi, double zi, void *ctx,
+                                 hcbd__ev_pairs pairs, hcbd__acc *a, int64_t own[HCBD__NQ])
+{
+    hcbd__near c;
+    hcbd__terms u;
+#if HCBD__WALLS
+    if (T->art) {
+        hcbd__art_cursor cur;
+        cur.nc = hcbd__art_cols(T->art, T->art_p, xi, zi, cur.cols);
+        cur.c = 0;
+        cur.k = cur.ke = 0;
+        while (cur.c < cur.nc || cur.k < cur.ke)
+            pairs(ctx, i, &c, hcbd__gather_art(T->art, T->box.L, &cur, xi, yi, zi, T->cut2, &c), a, &u);
+        return;
+    }
+#endif
+    {
+        const int32_t pend = T->start[i + 1];
+        int32_t p = T->start[i];
+        if (T->ent) /* the skin's entries read 0 */
+            memset(T->ent + (size_t)T->ne * (size_t)p, 0, (size_t)T->ne * (size_t)(pend - p) * sizeof *T->ent);
+        while (p < pend) {
+            const int m = T->emap ? hcbd__gather_map(T->nb, T->emap, &p, pend, &c)
+                          : T->r2in ? hcbd__gather_r2(T->nb, T->r2in, &p, pend, T->cut2, &c)
+                                    : hcbd__gather_at(T->x, T->y, T->z, T->nb, &T->box, xi, yi, zi, &p,
+                                                      pend, T->cut2, T->r2out, &c);
+            int k, t;
+            pairs(ctx, i, &c, m, a, &u);
+            for (k = 0; k < HCBD__NQ; ++k)
+                if (T->sink[k]) own[k] += hcbd__scatter(T->sink[k], T->sgn[k], u.u[k], c.j, 0, m);
+            if (T->ent)
+                for (k = 0; k < T->ne; ++k)
+                    for (t = 0; t < m; ++t) T->ent[(size_t)T->ne * (size_t)c.e[t] + (size_t)k] = u.e[k][t];
+        }
+    }
+}
+
 HCBD__INLINE int hcbd__traverse(const hcbd__trav *T, const int32_t *owners, int q0, int q1,
                                 void *ctx, hcbd__ev_begin begin, hcbd__ev_pairs pairs,
                                 hcbd__ev_end end)
 {
-    int q, worst = INT_MAX;
+    int q, k, worst = INT_MAX;
     for (q = q0; q < q1; ++q) {
         const int i = owners[q];
-        const int32_t pend = T->start[i + 1];
-        int32_t p = T->start[i];
+        int64_t own[HCBD__NQ] = {0, 0, 0, 0, 0, 0, 0};
         hcbd__acc a;
         int b;
         if (q + 2 < q1) hcbd__prefetch_owner(T, owners[q + 2]);
         begin(ctx, i, &a);
-        while (p < pend) {
-            hcbd__near c;
-            const int m = T->r2in ? hcbd__gather_r2(T->nb, T->r2in, &p, pend, T->cut2, &c)
-                                  : hcbd__gather_at(T->x, T->y, T->z, T->nb, &T->box, T->ox[i],
-                                                    T->oy[i], T->oz[i], &p, pend, T->cut2,
-                                                    T->r2out, &c);
-            pairs(ctx, i, &c, m, &a);
-        }
+        hcbd__partners(T, i, T->ox[i], T->oy[i], T->oz[i], ctx, pairs, &a, own);
+        for (k = 0; k < HCBD__NQ; ++k)
+            if (T->sink[k]) T->sink[k][i] += own[k];
         b = end(ctx, i, &a);
         if (b < worst) worst = b;
     }
@@ -4305,6 +4367,220 @@ HCBD__INLINE int hcbd__traverse_stream(const hcbd__trav *T, const int32_t *owner
     return worst;
 }
 
+/* >>wall pairs (MODEL 4): the artificial particles' weights and Morris
+   pairs, evaluators of the traversal over its second source */
+#if HCBD__WALLS
+/* The weights of the artificial particles around a point: they count in
+   the real particles' densities.  acc: r[0] the sum. */
+typedef struct hcbd__art_w_ctx {
+    double cw, invRc;
+} hcbd__art_w_ctx;
+
+HCBD__INLINE void hcbd__art_w_pairs(void *ctx, int i, const hcbd__near *c, int m, hcbd__acc *a,
+                                   hcbd__terms *u)
+{
+    const hcbd__art_w_ctx *e = (const hcbd__art_w_ctx *)ctx;
+    int t;
+    (void)i; (void)u;
+    for (t = 0; t < m; ++t) {
+        const double q = sqrt(c->r2[t]) * e->invRc;
+        a->r[0] += hcbd__weight(e->cw, q, 1.0 - q);
+    }
+}
+
+static double hcbd__ws_wsum(const hcbd__wallset *s, const hcbd_params *p, double cw, double x, double y,
+                            double z)
+{
+    const hcbd__trav T = hcbd__trav_art(s, p, p->Rc);
+    hcbd__art_w_ctx e;
+    hcbd__acc a;
+    e.cw = cw;
+    e.invRc = 1.0 / p->Rc;
+    a.r[0] = 0.0;
+    hcbd__partners(&T, 0, x, y, z, &e, hcbd__art_w_pairs, &a, NULL);
+    return a.r[0];
+}
+
+/* Friction and noise of the artificial particles on a real particle
+   (Morris et al. 1997, MODEL 4): the artificial particle B takes the
+   velocity with v_i - v_B = beta (v_i - v_wall), beta = min(beta_max, 1 +
+   d_B/d_A), both distances from the interface between them (the Morris
+   plane); the noise carries sqrt(beta) so the pair keeps its
+   fluctuation-dissipation balance.  The wall absorbs the momentum.  exact:
+   v relaxes pair by pair over the step; else the Euler exchanges are added
+   to P.  acc: r[0..2] the particle's v, r[3..5] its P. */
+typedef struct hcbd__morris_ctx {
+    const hcbd__wallset *s;
+    const hcbd_params *p;
+    const hcbd__zig *zig;
+    double cs, two_kT, bmax, m, inv_m, iri, yi;
+    uint64_t key, idk;
+    int exact;
+} hcbd__morris_ctx;
+
+HCBD__INLINE void hcbd__morris_pairs(void *ctx, int i, const hcbd__near *c, int mm, hcbd__acc *a,
+                                    hcbd__terms *u)
+{
+    const hcbd__morris_ctx *e = (const hcbd__morris_ctx *)ctx;
+    const hcbd__wallset *s = e->s;
+    const double invRc = 1.0 / e->p->Rc, m = e->m, inv_m = e->inv_m, yi = e->yi;
+    double *v = a->r, *P = a->r + 3;
+    int t, d;
+    (void)i; (void)u;
+    for (t = 0; t < mm; ++t) {
+        const double dy = c->y[t], q = sqrt(c->r2[t]) * invRc;
+        const double sdt = hcbd__sdt(e->cs, e->iri, s->art_inv_rho, 1.0 - q);
+        double dA, dB, vw[3] = {0, 0, 0}, beta, nb, z3[3] = {0, 0, 0};
+        if (dy > 0.0) { /* B below i: behind the bottom interface */
+            dA = yi - s->morris_lo;
+            dB = s->morris_lo - (yi - dy);
+            vw[0] = e->p->wall.vx[0];
+        } else {
+            dA = s->morris_hi - yi;
+            dB = (yi - dy) - s->morris_hi;
+            vw[0] = e->p->wall.vx[1];
+        }
+        beta = (dA > 0.0 && dB >= 0.0) ? 1.0 + dB / dA : e->bmax;
+        if (beta > e->bmax) beta = e->bmax;
+        nb = e->p->wall.noise_beta ? 1.0 : 1.0 / beta; /* noise variance factor */
+        if (e->two_kT > 0.0)
+            hcbd__deviates3(e->zig, e->p->noise, hcbd__mix64(e->key ^ e->idk ^ (uint64_t)c->j[t]), z3);
+        if (e->exact) {
+            /* the wall is a reservoir: v - v_wall relaxes at the rate
+               beta sdt / (m dt), solved over the step */
+            const double om = -expm1(-beta * sdt * inv_m);
+            const double b = sqrt(0.5 * e->two_kT * m * om * (2.0 - om) * nb);
+            for (d = 0; d < 3; ++d) v[d] += (-m * om * (v[d] - vw[d]) + b * z3[d]) * inv_m;
+        } else {
+            const double b = sqrt(e->two_kT * sdt * beta * nb);
+            for (d = 0; d < 3; ++d) P[d] += -beta * sdt * (v[d] - vw[d]) + b * z3[d];
+        }
+    }
+}
+
+/* The Morris pairs of the particle id at r with 1/rho iri; cf, m: the
+   GI-BD coefficient and mass; key: the step's */
+static void hcbd__ws_morris(const hcbd__wallset *s, const hcbd_params *p, const hcbd__zig *zig, double cf,
+                            double m, uint64_t key, int32_t id, const double r[3], double iri,
+                            double v[3], double P[3], int exact)
+{
+    const hcbd__trav T = hcbd__trav_art(s, p, p->Rc);
+    hcbd__morris_ctx e;
+    hcbd__acc a;
+    int d;
+    e.s = s; e.p = p; e.zig = zig;
+    e.cs = cf * m * m * p->dt / p->tau;
+    e.two_kT = 2.0 * p->kT;
+    e.bmax = p->wall.beta_max;
+    e.m = m; e.inv_m = 1.0 / m;
+    e.iri = iri; e.yi = r[1];
+    e.key = key;
+    e.idk = (uint64_t)(uint32_t)id << 32;
+    e.exact = exact;
+    for (d = 0; d < 3; ++d) {
+        a.r[d] = v[d];
+        a.r[3 + d] = exact ? 0.0 : P[d];
+    }
+    hcbd__partners(&T, 0, r[0], r[1], r[2], &e, hcbd__morris_pairs, &a, NULL);
+    for (d = 0; d < 3; ++d) {
+        v[d] = a.r[d];
+        if (!exact) P[d] = a.r[3 + d];
+    }
+}
+
+static double hcbd__art_wsum(const hcbd_world *w, double x, double y, double z)
+{
+    return hcbd__ws_wsum(&w->ws, &w->p, w->cw, x, y, z);
+}
+
+static void hcbd__morris(hcbd_world *w, int i, uint64_t key, double P[3], int exact)
+{
+    double r[3], v[3];
+    r[0] = w->x[i]; r[1] = w->y[i]; r[2] = w->z[i];
+    v[0] = w->vx[i]; v[1] = w->vy[i]; v[2] = w->vz[i];
+    hcbd__ws_morris(&w->ws, &w->p, w->core.zig, w->cf, w->m, key, w->id[i], r, w->inv_rho[i], v, P, exact);
+    if (exact) { w->vx[i] = (hcbd_real)v[0]; w->vy[i] = (hcbd_real)v[1]; w->vz[i] = (hcbd_real)v[2]; }
+}
+#else
+static inline double hcbd__art_wsum(const hcbd_world *w, double x, double y, double z)
+{
+    (void)w; (void)x; (void)y; (void)z;
+    return 0.0;
+}
+static inline void hcbd__morris(hcbd_world *w, int i, uint64_t key, double P[3], int exact)
+{
+    (void)w; (void)i; (void)key; (void)P; (void)exact;
+}
+#endif
+
+/* >>walls without a world (hcbd_walls, for engines of their own) */
+#if HCBD__WALLS
+size_t hcbd_walls_bytes(const hcbd_params *p)
+{
+    size_t off = 0;
+    hcbd__wallset s;
+    char msg[8];
+    if (!p || hcbd_params_check(p, msg, sizeof msg) != HCBD_OK) return 0;
+    hcbd__ws_take(NULL, &off, &s, p);
+    return off + HCBD__ALIGN;
+}
+
+hcbd_result hcbd_walls_init(hcbd_walls *wl, const hcbd_params *p, void *mem, size_t bytes, char *msg,
+                            size_t msg_size)
+{
+    hcbd_error e;
+    hcbd_result r;
+    char *base;
+    size_t off = 0;
+    if (msg && msg_size) msg[0] = '\0';
+    if (!wl || !p) return HCBD_ERR_NULL;
+    hcbd__clear(&e);
+    r = hcbd_params_check(p, e.msg, sizeof e.msg);
+    if (r == HCBD_OK && p->dynamics != HCBD_DYN_GIBD)
+        r = hcbd__fail(&e, HCBD_ERR_PARAM, -1, -1, "dynamics = %d: walls without a world are GI-BD's",
+                       (int)p->dynamics);
+    base = hcbd__init_block(&e, r, mem, bytes, r == HCBD_OK ? hcbd_walls_bytes(p) : 0, "hcbd_walls_bytes");
+    if (!base) {
+        if (msg && msg_size) snprintf(msg, msg_size, "%s", e.msg);
+        return e.code;
+    }
+    wl->p = *p;
+    hcbd__gibd_coef(p, &wl->c);
+    hcbd__zig_init(&wl->zig);
+    hcbd__ws_take(base, &off, &wl->ws, p);
+    hcbd__ws_init(&wl->ws, p, wl->c.m, wl->c.cw);
+    /* no artificial particles before the first draw */
+    memset(wl->ws.col_start, 0, (size_t)(wl->ws.acol[0] * wl->ws.acol[1] + 1) * sizeof(int32_t));
+    wl->step = -1;
+    return HCBD_OK;
+}
+
+hcbd_result hcbd_walls_draw(hcbd_walls *wl, int64_t step)
+{
+    if (!wl || !wl->ws.col_start) return HCBD_ERR_NULL;
+    if (step < 0) return HCBD_ERR_PARAM;
+    hcbd__ws_draw(&wl->ws, &wl->p, step);
+    wl->step = step;
+    return HCBD_OK;
+}
+
+double hcbd_walls_weights(const hcbd_walls *wl, const double r[3])
+{
+    if (!wl || !r) return NAN;
+    if (wl->p.wall.thickness <= 0 || !hcbd__ws_near(&wl->ws, &wl->p, r[1])) return 0.0;
+    return hcbd__ws_wsum(&wl->ws, &wl->p, wl->c.cw, r[0], r[1], r[2]);
+}
+
+void hcbd_walls_morris(const hcbd_walls *wl, int exact, int32_t id, const double r[3], double inv_rho,
+                       double v[3], double P[3])
+{
+    if (!wl || !r || !v || (!exact && !P) || wl->step < 0 || wl->ws.n_art <= 0) return;
+    if (!hcbd__ws_near(&wl->ws, &wl->p, r[1])) return;
+    hcbd__ws_morris(&wl->ws, &wl->p, &wl->zig, wl->c.cf, wl->c.m,
+                    hcbd__ws_pair_step_key(&wl->ws, wl->step, exact), id, r, inv_rho, v, P, exact);
+}
+#endif
+
 /* >>pair passes (sums in fixed point, see hcbd__fix): densities, forces and
    the exact sweep, each an evaluator of the traversal */
 /* begin for passes whose owner state is sums from zero */
@@ -4314,45 +4590,43 @@ HCBD__INLINE void hcbd__ev_zero(void *ctx, int i, hcbd__acc *a)
     memset(a, 0, sizeof *a);
 }
 
+/* end for passes whose sums are all the loop's */
+HCBD__INLINE int hcbd__ev_done(void *ctx, int i, hcbd__acc *a)
+{
+    (void)ctx; (void)i; (void)a;
+    return INT_MAX;
+}
+
 /* GI-BD density weights (MODEL 1-3) into aW, each pair once */
 typedef struct hcbd__dens_ctx {
     hcbd_world *w;
     double invRc, cwq;
 } hcbd__dens_ctx;
 
-HCBD__INLINE void hcbd__dens_pairs(void *ctx, int i, const hcbd__near *c, int m, hcbd__acc *a)
+HCBD__INLINE void hcbd__dens_pairs(void *ctx, int i, const hcbd__near *c, int m, hcbd__acc *a,
+                                  hcbd__terms *u)
 {
     const hcbd__dens_ctx *d = (const hcbd__dens_ctx *)ctx;
-    int64_t *HCBD__RESTRICT aW = d->w->aW;
+    int64_t *HCBD__RESTRICT v = u->u[0];
     int t;
-    (void)i;
-    int64_t v[HCBD__CHUNK];
+    (void)i; (void)a;
     HCBD__OMP(omp simd)
     for (t = 0; t < m; ++t) {
         const double qq = sqrt(c->r2[t]) * d->invRc;
         v[t] = hcbd__fix(hcbd__weight(d->cwq, qq, 1.0 - qq));
     }
-    for (t = 0; t < m; ++t) {
-        a->q[0] += v[t];
-        aW[c->j[t]] += v[t];
-    }
-}
-
-HCBD__INLINE int hcbd__dens_end(void *ctx, int i, hcbd__acc *a)
-{
-    ((hcbd__dens_ctx *)ctx)->w->aW[i] += a->q[0];
-    return INT_MAX;
 }
 
 static int hcbd__density_owners(void *ctx, int q0, int q1)
 {
     hcbd_world *w = (hcbd_world *)ctx;
-    const hcbd__trav T = hcbd__trav_make(&w->nl, w->x, w->y, w->z, w->x, w->y, w->z, hcbd__box_of(w), w->p.Rc);
+    hcbd__trav T = hcbd__trav_make(&w->nl, w->x, w->y, w->z, w->x, w->y, w->z, hcbd__box_of(w), w->p.Rc);
     hcbd__dens_ctx d;
     d.w = w;
     d.invRc = 1.0 / w->p.Rc;
     d.cwq = w->cw * w->core.qW;
-    return hcbd__traverse(&T, w->nl.perm, q0, q1, &d, hcbd__ev_zero, hcbd__dens_pairs, hcbd__dens_end);
+    hcbd__trav_sink(&T, 0, w->aW, 1);
+    return hcbd__traverse(&T, w->nl.perm, q0, q1, &d, hcbd__ev_zero, hcbd__dens_pairs, hcbd__ev_done);
 }
 
 /* rho_i from the weight sums in aW (and the wall's artificial particles) */
@@ -4418,8 +4692,8 @@ HCBD__INLINE hcbd__force_ctx hcbd__force_ctx_of(hcbd_world *w, const int pot, co
     return f;
 }
 
-/* acc: q[0..2] force, q[3..5] momentum exchange, q[6] weight; r[0..2] the
-   owner's velocity, r[3] its 1/rho, r[4] r[5] its flux terms */
+/* terms: 0..2 the force, 3..5 the momentum exchange, 6 the weight; acc:
+   r[0..2] the owner's velocity, r[3] its 1/rho, r[4] r[5] its flux terms */
 HCBD__INLINE void hcbd__force_begin(void *ctx, int i, hcbd__acc *a)
 {
     const hcbd__force_ctx *f = (const hcbd__force_ctx *)ctx;
@@ -4430,41 +4704,38 @@ HCBD__INLINE void hcbd__force_begin(void *ctx, int i, hcbd__acc *a)
     }
 }
 
-HCBD__INLINE void hcbd__force_pairs(void *ctx, int i, const hcbd__near *c, int m, hcbd__acc *a)
+HCBD__INLINE void hcbd__force_pairs(void *ctx, int i, const hcbd__near *c, int m, hcbd__acc *a,
+                                   hcbd__terms *u)
 {
     const hcbd__force_ctx *f = (const hcbd__force_ctx *)ctx;
-    hcbd_world *w = f->w;
+    const hcbd_world *w = f->w;
     const double vxi = a->r[0], vyi = a->r[1], vzi = a->r[2], iri = a->r[3];
     const int32_t idi = w->id[i];
-    int64_t *HCBD__RESTRICT aFx = w->aF[0], *HCBD__RESTRICT aFy = w->aF[1];
-    int64_t *HCBD__RESTRICT aFz = w->aF[2], *HCBD__RESTRICT aPx = w->aP[0];
-    int64_t *HCBD__RESTRICT aPy = w->aP[1], *HCBD__RESTRICT aPz = w->aP[2];
-    int64_t *HCBD__RESTRICT aW = w->aW;
-    /* the owner's sums in locals: a store through a (an int, int64_t)
-       could alias the world's fields and force their reload every pair */
+    int64_t *HCBD__RESTRICT U0 = u->u[0], *HCBD__RESTRICT U1 = u->u[1], *HCBD__RESTRICT U2 = u->u[2];
+    int64_t *HCBD__RESTRICT U3 = u->u[3], *HCBD__RESTRICT U4 = u->u[4], *HCBD__RESTRICT U5 = u->u[5];
+    int64_t *HCBD__RESTRICT U6 = u->u[6];
     const double rc2 = f->rc2, Rc2 = f->Rc2, limF = f->limF, qF = f->qF;
-    int64_t q0 = a->q[0], q1 = a->q[1], q2 = a->q[2], q3 = a->q[3], q4 = a->q[4], q5 = a->q[5];
-    int64_t q6 = a->q[6];
     int t, bad = a->bad;
     for (t = 0; t < m; ++t) {
         const int j = c->j[t], k = c->k[t];
         const double dx = c->x[t], dy = c->y[t], dz = c->z[t], r2 = c->r2[t];
         double r, Fx = 0, Fy = 0, Fz = 0, Px = 0, Py = 0, Pz = 0;
         r = f->gibd || !f->table || f->flux ? sqrt(r2) : 0.0; /* the table needs r^2 only */
-        if (f->pot && r2 < rc2) {
-            const double fr = f->table ? hcbd__star_table(w, r2) : hcbd__force_over_r(w, r, r2);
-            int64_t u;
-            Fx = fr * dx; Fy = fr * dy; Fz = fr * dz;
-            bad |= !(fabs(Fx) <= limF && fabs(Fy) <= limF && fabs(Fz) <= limF);
-            u = hcbd__fix(Fx * qF); q0 += u; aFx[j] -= u;
-            u = hcbd__fix(Fy * qF); q1 += u; aFy[j] -= u;
-            u = hcbd__fix(Fz * qF); q2 += u; aFz[j] -= u;
+        if (f->pot) {
+            U0[t] = U1[t] = U2[t] = 0;
+            if (r2 < rc2) {
+                const double fr = f->table ? hcbd__star_table(w, r2) : hcbd__force_over_r(w, r, r2);
+                Fx = fr * dx; Fy = fr * dy; Fz = fr * dz;
+                bad |= !(fabs(Fx) <= limF && fabs(Fy) <= limF && fabs(Fz) <= limF);
+                U0[t] = hcbd__fix(Fx * qF); U1[t] = hcbd__fix(Fy * qF); U2[t] = hcbd__fix(Fz * qF);
+            }
         }
+        if (f->fric) U3[t] = U4[t] = U5[t] = 0;
+        if (f->lag) U6[t] = 0;
         if (f->gibd && r2 < Rc2) {
             const double qq = r * f->invRc, aa = 1.0 - qq;
             if (f->fric) {
                 const double sdt = hcbd__sdt(f->cs, iri, w->inv_rho[j], aa); /* S dt/tau */
-                int64_t u;
                 /* j's image across the sheared boundary moves faster by
                    k gdot Ly */
                 Px = sdt * (w->vx[j] + k * f->vle - vxi);
@@ -4476,23 +4747,15 @@ HCBD__INLINE void hcbd__force_pairs(void *ctx, int i, const hcbd__near *c, int m
                     Px += b * z3[0]; Py += b * z3[1]; Pz += b * z3[2];
                 }
                 bad |= !(fabs(Px) <= f->limP && fabs(Py) <= f->limP && fabs(Pz) <= f->limP);
-                u = hcbd__fix(Px * f->qP); q3 += u; aPx[j] -= u;
-                u = hcbd__fix(Py * f->qP); q4 += u; aPy[j] -= u;
-                u = hcbd__fix(Pz * f->qP); q5 += u; aPz[j] -= u;
+                U3[t] = hcbd__fix(Px * f->qP); U4[t] = hcbd__fix(Py * f->qP); U5[t] = hcbd__fix(Pz * f->qP);
             }
-            if (f->lag) {
-                const int64_t v = hcbd__fix(hcbd__weight(f->cwq, qq, aa));
-                q6 += v;
-                aW[j] += v;
-            }
+            if (f->lag) U6[t] = hcbd__fix(hcbd__weight(f->cwq, qq, aa));
         }
         if (f->flux) { /* y_ij F_ij,x: flux of x momentum across y planes */
             a->r[4] += 0.5 * (dy * Fx + dx * Fy);
             a->r[5] += dy * Px;
         }
     }
-    a->q[0] = q0; a->q[1] = q1; a->q[2] = q2; a->q[3] = q3; a->q[4] = q4; a->q[5] = q5;
-    a->q[6] = q6;
     a->bad = bad;
 }
 
@@ -4504,9 +4767,6 @@ HCBD__INLINE int hcbd__force_end(void *ctx, int i, hcbd__acc *a)
         w->fl_p[i] = (hcbd_real)a->r[4];
         if (f->fric) w->fl_b[i] = (hcbd_real)a->r[5];
     }
-    if (f->pot) { w->aF[0][i] += a->q[0]; w->aF[1][i] += a->q[1]; w->aF[2][i] += a->q[2]; }
-    if (f->fric) { w->aP[0][i] += a->q[3]; w->aP[1][i] += a->q[4]; w->aP[2][i] += a->q[5]; }
-    if (f->lag) w->aW[i] += a->q[6];
     return a->bad ? w->id[i] : INT_MAX;
 }
 
@@ -4573,21 +4833,15 @@ HCBD__INLINE int hcbd__force_stream_run(const hcbd__force_ctx *f, const hcbd__st
         }
     }
     for (g = 0; g < s->nseg; ++g) {
-        const int i = s->own[g], t1 = s->at[g + 1];
-        int64_t q0 = 0, q1 = 0, q2 = 0, q6 = 0;
+        const int i = s->own[g], t0 = s->at[g], t1 = s->at[g + 1];
         int bad = 0;
-        for (t = s->at[g]; t < t1; ++t) {
-            const int j = s->j[t];
-            if (pot) {
-                q0 += ux[t]; aFx[j] -= ux[t];
-                q1 += uy[t]; aFy[j] -= uy[t];
-                q2 += uz[t]; aFz[j] -= uz[t];
-                bad |= bd[t];
-            }
-            if (lag) { q6 += uw[t]; aW[j] += uw[t]; }
+        if (pot) {
+            aFx[i] += hcbd__scatter(aFx, -1, ux, s->j, t0, t1);
+            aFy[i] += hcbd__scatter(aFy, -1, uy, s->j, t0, t1);
+            aFz[i] += hcbd__scatter(aFz, -1, uz, s->j, t0, t1);
+            for (t = t0; t < t1; ++t) bad |= bd[t];
         }
-        if (pot) { aFx[i] += q0; aFy[i] += q1; aFz[i] += q2; }
-        if (lag) aW[i] += q6;
+        if (lag) aW[i] += hcbd__scatter(aW, 1, uw, s->j, t0, t1);
         if (bad && w->id[i] < worst) worst = w->id[i];
     }
     return worst;
@@ -4608,7 +4862,13 @@ HCBD__INLINE int hcbd__forces_run(hcbd_world *w, int q0, int q1, const int pot, 
 {
     hcbd__force_ctx f = hcbd__force_ctx_of(w, pot, fric, lag, flux);
     hcbd__trav T = hcbd__trav_make(&w->nl, w->x, w->y, w->z, w->x, w->y, w->z, f.box, w->cutmax);
+    int d;
     T.r2out = store && w->pr2_ok ? w->pr2 : NULL;
+    for (d = 0; d < 3; ++d) {
+        if (pot) hcbd__trav_sink(&T, d, w->aF[d], -1);
+        if (fric) hcbd__trav_sink(&T, 3 + d, w->aP[d], -1);
+    }
+    if (lag) hcbd__trav_sink(&T, 6, w->aW, 1);
     if (pot && !fric && !flux && f.table && w->p.rcut > w->p.sigma)
         return hcbd__traverse_stream(&T, w->nl.perm, q0, q1, &f,
                                      lag ? hcbd__force_stream_dens : hcbd__force_stream_pot);
@@ -4722,7 +4982,8 @@ HCBD__INLINE void hcbd__sweep_begin(void *ctx, int i, hcbd__acc *a)
    without dependences that vectorise; the chain of velocity updates
    through v_i follows.  The same operations in the same order as one pair
    at a time, so the same bits. */
-HCBD__INLINE void hcbd__sweep_pairs(void *ctx, int i, const hcbd__near *c, int m2, hcbd__acc *a)
+HCBD__INLINE void hcbd__sweep_pairs(void *ctx, int i, const hcbd__near *c, int m2, hcbd__acc *a,
+                                   hcbd__terms *u)
 {
     const hcbd__sweep_ctx *s = (const hcbd__sweep_ctx *)ctx;
     hcbd_world *w = s->w;
@@ -4739,6 +5000,7 @@ HCBD__INLINE void hcbd__sweep_pairs(void *ctx, int i, const hcbd__near *c, int m
     double xx[HCBD__CHUNK], cc[HCBD__CHUNK], n0[HCBD__CHUNK], n1[HCBD__CHUNK], n2[HCBD__CHUNK];
     uint64_t key[HCBD__CHUNK];
     int t;
+    (void)u;
     HCBD__OMP(omp simd)
     for (t = 0; t < m2; ++t) {
         const double aa = 1.0 - sqrt(c->r2[t]) * invRc;
@@ -4792,13 +5054,12 @@ HCBD__INLINE int hcbd__sweep_end(void *ctx, int i, hcbd__acc *a)
     return INT_MAX;
 }
 
-/* row rr of the sweep if it has colour col */
-static inline void hcbd__sweep_row(const hcbd__trav *T, hcbd__sweep_ctx *s, const int32_t *list,
-                                   const int32_t *start, int ny, int rr, int col)
+/* one row of the sweep, for hcbd__colours */
+HCBD__NO_SLP static int hcbd__sweep_row(void *ctx, int rr)
 {
-    if ((rr % ny) % 3 + 3 * ((rr / ny) % 3) == col)
-        hcbd__traverse(T, list, start[rr], start[rr + 1], s, hcbd__sweep_begin, hcbd__sweep_pairs,
-                       hcbd__sweep_end);
+    const hcbd__block_job *j = (const hcbd__block_job *)ctx;
+    return hcbd__traverse(j->T, j->list, j->start[rr], j->start[rr + 1], j->pass, hcbd__sweep_begin,
+                          hcbd__sweep_pairs, hcbd__sweep_end);
 }
 
 static void hcbd__shardlow(hcbd_world *w)
@@ -4839,22 +5100,11 @@ static void hcbd__shardlow(hcbd_world *w)
         s.skey = skey; s.wkey = wkey;
         s.noise = w->has_noise;
         s.flux = w->core.stress_on;
-        /* one thread: no worksharing (libgomp's barrier of a team of
-           one still costs a system call per colour) */
-        if (nt <= 1) {
-            int rr;
-            for (rr = 0; rr < 9 * nrows; ++rr)
-                hcbd__sweep_row(&T, &s, list, start, ny, rr % nrows, rr / nrows);
-        } else {
-            HCBD__OMP(omp parallel num_threads(nt))
-            {
-                int col;
-                for (col = 0; col < 9; ++col) {
-                    int rr;
-                    HCBD__OMP(omp for schedule(dynamic, 1))
-                    for (rr = 0; rr < nrows; ++rr) hcbd__sweep_row(&T, &s, list, start, ny, rr, col);
-                }
-            }
+        {
+            const int nb[3] = {ny, nz, 1}, nc[3] = {ny > 1 ? 3 : 1, nz > 1 ? 3 : 1, 1};
+            hcbd__block_job job;
+            job.T = &T; job.list = list; job.start = start; job.pass = &s;
+            hcbd__colours(nb, nc, nt, &job, hcbd__sweep_row);
         }
     }
 }
@@ -5350,11 +5600,12 @@ typedef struct hcbd__obs_ctx {
     void *ctx;
 } hcbd__obs_ctx;
 
-HCBD__INLINE void hcbd__obs_pairs(void *ctx, int i, const hcbd__near *c, int m, hcbd__acc *a)
+HCBD__INLINE void hcbd__obs_pairs(void *ctx, int i, const hcbd__near *c, int m, hcbd__acc *a,
+                                 hcbd__terms *u)
 {
     const hcbd__obs_ctx *o = (const hcbd__obs_ctx *)ctx;
     int t;
-    (void)a;
+    (void)a; (void)u;
     for (t = 0; t < m; ++t) o->fn(o->ctx, i, c->j[t], c->x[t], c->y[t], c->z[t], c->r2[t]);
 }
 
@@ -7356,12 +7607,47 @@ double hcbd_rapid_w(double r, double sigma, double rc)
     return hcbd__rapid(r, sigma, rc, hcbd__rapid_A(sigma, rc));
 }
 
+/* The pair terms of the 2018 model, each from the pair's geometry and
+   its particles' state (the evaluators of the pair passes, in the form of
+   HOOMD-blue's pair evaluators); inside their ranges, r > 0. */
+/* dW/dr of W-RaPiD, with A precomputed */
+static inline double hcbd__rapid_dr(double r, double sg, double rc, double A)
+{
+    return r <= sg ? -2.0 * A * (rc - sg) : 2.0 * A * (r - rc);
+}
+
+/* Flory-Huggins pair force over r (MODEL 8): cfh = p kT / n_max, wd =
+   dW/dr, mua and mub the two blobs' mu(phi) */
+static inline double hcbd__flory_fr(double cfh, double mua, double mub, double wd, double r)
+{
+    return -cfh * (mua + mub) * wd / r;
+}
+
+/* transient spring force over r (MODEL 8): alpha (lambda - u^2) d(u^2)/dr
+   with u = 1 - r/rc */
+static inline double hcbd__spring_fr(double alpha, double lam, double r, double rc)
+{
+    const double u = 1.0 - r / rc;
+    return alpha * (lam - u * u) * (-2.0 * u / rc) / r;
+}
+
+/* Tait pressure pair force over r (MODEL 6): (P_i/n_i^2 + P_j/n_j^2) times
+   wdr = -w'(r)/r */
+static inline double hcbd__tait_fr(double Pn2i, double Pn2j, double wdr)
+{
+    return (Pn2i + Pn2j) * wdr;
+}
+
+/* Morris friction coefficient (MODEL 6): 2 eta wdr / (n_i n_j), from 1/n */
+static inline double hcbd__morris_f(double two_eta, double wdr, double ini, double inj)
+{
+    return two_eta * wdr * ini * inj;
+}
+
 double hcbd_rapid_w_dr(double r, double sigma, double rc)
 {
-    double A = hcbd__rapid_A(sigma, rc);
     if (!(r < rc)) return 0.0;
-    if (r <= sigma) return -2.0 * A * (rc - sigma);
-    return 2.0 * A * (r - rc);
+    return hcbd__rapid_dr(r, sigma, rc, hcbd__rapid_A(sigma, rc));
 }
 
 /* mu(phi) = -ln(1-phi)/phi^2 - 1/phi - chi = (1/2 - chi) + sum_{k>=1}
@@ -8303,24 +8589,15 @@ typedef struct hcbd__hc_dens_ctx {
     double ih, cq;
 } hcbd__hc_dens_ctx;
 
-HCBD__INLINE void hcbd__hc_dens_pairs(void *ctx, int i, const hcbd__near *c, int m, hcbd__acc *a)
+HCBD__INLINE void hcbd__hc_dens_pairs(void *ctx, int i, const hcbd__near *c, int m, hcbd__acc *a,
+                                     hcbd__terms *u)
 {
     const hcbd__hc_dens_ctx *d = (const hcbd__hc_dens_ctx *)ctx;
-    int64_t *HCBD__RESTRICT aW = d->w->aW, v[HCBD__CHUNK];
+    int64_t *HCBD__RESTRICT v = u->u[0];
     int t;
-    (void)i;
+    (void)i; (void)a;
     HCBD__OMP(omp simd)
     for (t = 0; t < m; ++t) v[t] = hcbd__fix(d->cq * hcbd__m4u(sqrt(c->r2[t]) * d->ih));
-    for (t = 0; t < m; ++t) {
-        a->q[0] += v[t];
-        aW[c->j[t]] += v[t];
-    }
-}
-
-HCBD__INLINE int hcbd__hc_dens_end(void *ctx, int i, hcbd__acc *a)
-{
-    ((hcbd__hc_dens_ctx *)ctx)->w->aW[i] += a->q[0];
-    return INT_MAX;
 }
 
 /* the fluid's half list over its cell-ordered copy, within range */
@@ -8329,17 +8606,26 @@ static inline hcbd__trav hcbd__hc_trav_f(const hcbd_hc_world *w, double range)
     return hcbd__trav_make(&w->lf, w->sx, w->sy, w->sz, w->sx, w->sy, w->sz, hcbd__hc_box(w), range);
 }
 
+/* the same, its channels 0..2 summing the pair forces into aF */
+static inline hcbd__trav hcbd__hc_trav_force(hcbd_hc_world *w, double range)
+{
+    hcbd__trav T = hcbd__hc_trav_f(w, range);
+    int d;
+    for (d = 0; d < 3; ++d) hcbd__trav_sink(&T, d, w->aF[d], -1);
+    return T;
+}
+
 static int hcbd__hc_dens_owners(void *ctx, int q0, int q1)
 {
     hcbd_hc_world *w = (hcbd_hc_world *)ctx;
     const double h = w->p.h;
-    const hcbd__trav T = hcbd__hc_trav_f(w, 2.0 * h);
+    hcbd__trav T = hcbd__hc_trav_f(w, 2.0 * h);
     hcbd__hc_dens_ctx d;
     d.w = w;
     d.ih = 1.0 / h;
     d.cq = w->core.qW / (4.0 * HCBD__PI * h * h * h);
-    return hcbd__traverse(&T, w->lf.perm, q0, q1, &d, hcbd__ev_zero, hcbd__hc_dens_pairs,
-                          hcbd__hc_dens_end);
+    hcbd__trav_sink(&T, 0, w->aW, 1);
+    return hcbd__traverse(&T, w->lf.perm, q0, q1, &d, hcbd__ev_zero, hcbd__hc_dens_pairs, hcbd__ev_done);
 }
 
 /* Fluid densities and Tait pressures (MODEL 6). */
@@ -8401,32 +8687,26 @@ static hcbd__hc_poly_ctx hcbd__hc_poly_ctx_of(hcbd_hc_world *w)
     return c;
 }
 
-/* the polymers' half list within rc */
-static inline hcbd__trav hcbd__hc_trav_p(const hcbd_hc_world *w)
+/* the polymers' half list within rc, keeping ne values per entry in ent */
+static inline hcbd__trav hcbd__hc_trav_p(const hcbd_hc_world *w, double *ent, int ne)
 {
-    return hcbd__trav_make(&w->lp, w->px, w->py, w->pz, w->px, w->py, w->pz, hcbd__hc_box(w), w->p.rc);
+    hcbd__trav T = hcbd__trav_make(&w->lp, w->px, w->py, w->pz, w->px, w->py, w->pz, hcbd__hc_box(w), w->p.rc);
+    T.ent = ent;
+    T.ne = ne;
+    return T;
 }
 
-HCBD__INLINE void hcbd__hc_pdens_begin(void *ctx, int a, hcbd__acc *acc)
-{
-    hcbd_hc_world *w = ((hcbd__hc_poly_ctx *)ctx)->w;
-    int32_t p;
-    acc->r[0] = 0;
-    for (p = w->lp.nb_start[a]; p < w->lp.nb_start[a + 1]; ++p) w->pw[p] = 0; /* the skin's */
-}
-
-HCBD__INLINE void hcbd__hc_pdens_pairs(void *ctx, int a, const hcbd__near *c, int m, hcbd__acc *acc)
+/* entries: 0 the weight; acc: r[0] the owner's sum */
+HCBD__INLINE void hcbd__hc_pdens_pairs(void *ctx, int a, const hcbd__near *c, int m, hcbd__acc *acc,
+                                      hcbd__terms *u)
 {
     const hcbd__hc_poly_ctx *s = (const hcbd__hc_poly_ctx *)ctx;
-    double *HCBD__RESTRICT pw = s->w->pw, wt[HCBD__CHUNK];
+    double *HCBD__RESTRICT wt = u->e[0];
     int t;
     (void)a;
     HCBD__OMP(omp simd)
     for (t = 0; t < m; ++t) wt[t] = hcbd__rapid(sqrt(c->r2[t]), s->sg, s->rc, s->A);
-    for (t = 0; t < m; ++t) {
-        pw[c->e[t]] = wt[t];
-        acc->r[0] += wt[t];
-    }
+    for (t = 0; t < m; ++t) acc->r[0] += wt[t];
 }
 
 HCBD__INLINE int hcbd__hc_pdens_end(void *ctx, int a, hcbd__acc *acc)
@@ -8442,7 +8722,7 @@ static int hcbd__hc_poly_density(hcbd_hc_world *w)
     const int n = w->np, nt = w->p.threads, fc = w->has_fc;
     const double rc = w->p.rc, sg = w->p.sigma, A = hcbd__rapid_A(sg, rc);
     const double w0 = A * (rc - sg) * (rc + sg), inv_nmax = 1.0 / w->p.n_max;
-    const hcbd__trav T = hcbd__hc_trav_p(w);
+    const hcbd__trav T = hcbd__hc_trav_p(w, w->pw, 1);
     const hcbd__hc_poly_ctx base = hcbd__hc_poly_ctx_of(w);
     int q, bad = INT_MAX;
     (void)nt;
@@ -8451,15 +8731,14 @@ static int hcbd__hc_poly_density(hcbd_hc_world *w)
         hcbd__hc_poly_ctx s = base;
         int64_t lo, hi;
         hcbd__share(n, &lo, &hi);
-        hcbd__traverse(&T, w->lp.perm, (int)lo, (int)hi, &s, hcbd__hc_pdens_begin, hcbd__hc_pdens_pairs,
+        hcbd__traverse(&T, w->lp.perm, (int)lo, (int)hi, &s, hcbd__ev_zero, hcbd__hc_pdens_pairs,
                        hcbd__hc_pdens_end);
     }
     HCBD__OMP(omp parallel for num_threads(nt) schedule(static) reduction(min:bad))
     for (q = 0; q < n; ++q) {
         const int i = w->lp.perm[q];
         double s = w0 + w->pown[i], phi;
-        int32_t e;
-        for (e = w->rv_start[i]; e < w->rv_start[i + 1]; ++e) s += w->pw[w->rv_p[e]];
+        hcbd__rev_add(w->rv_start, w->rv_p, w->pw, 1, i, 1.0, &s);
         phi = s * inv_nmax;
         w->pn[i] = (hcbd_real)s;
         if (!(phi < 1.0)) {
@@ -8497,16 +8776,8 @@ static int hcbd__hc_find(const hcbd_hc_world *w, int a, int b)
    departed one is dropped; the new list goes to the spare buffers.
    acc: q[0] the pairs found, q[1] the old list's cursor; r[0..2] the
    force, r[3] r[4] the conservative and transient stress. */
-HCBD__INLINE void hcbd__hc_pforce_begin(void *ctx, int a, hcbd__acc *acc)
-{
-    hcbd_hc_world *w = ((hcbd__hc_poly_ctx *)ctx)->w;
-    int32_t p;
-    memset(acc, 0, sizeof *acc);
-    for (p = w->lp.nb_start[a]; p < w->lp.nb_start[a + 1]; ++p) /* the skin's */
-        w->pf[3 * (size_t)p] = w->pf[3 * (size_t)p + 1] = w->pf[3 * (size_t)p + 2] = 0;
-}
-
-HCBD__INLINE void hcbd__hc_pforce_pairs(void *ctx, int a, const hcbd__near *c, int m, hcbd__acc *acc)
+HCBD__INLINE void hcbd__hc_pforce_pairs(void *ctx, int a, const hcbd__near *c, int m, hcbd__acc *acc,
+                                       hcbd__terms *u)
 {
     hcbd__hc_poly_ctx *s = (hcbd__hc_poly_ctx *)ctx;
     hcbd_hc_world *w = s->w;
@@ -8521,7 +8792,8 @@ HCBD__INLINE void hcbd__hc_pforce_pairs(void *ctx, int a, const hcbd__near *c, i
     for (t = 0; t < m; ++t) {
         const int b = c->j[t];
         const double r = sqrt(c->r2[t]);
-        double *f = w->pf + 3 * (size_t)c->e[t], fr = 0, ft = 0, lam = 0;
+        double f[3], fr = 0, ft = 0, lam = 0;
+        u->e[0][t] = u->e[1][t] = u->e[2][t] = 0;
         if (s->tr) {
             const double leq = hcbd__leq(r, rc);
             int o = (int)acc->q[1];
@@ -8544,17 +8816,12 @@ HCBD__INLINE void hcbd__hc_pforce_pairs(void *ctx, int a, const hcbd__near *c, i
             ++s->coinc;
             continue;
         }
-        if (s->fc) {
-            const double wd = r <= sg ? -2.0 * A * (rc - sg) : 2.0 * A * (r - rc);
-            fr = -s->cfh * (mua + w->pmu[b]) * wd / r;
-        }
-        if (s->tr) {
-            const double u = 1.0 - r / rc;
-            ft = s->alpha * (lam - u * u) * (-2.0 * u / rc) / r;
-        }
+        if (s->fc) fr = hcbd__flory_fr(s->cfh, mua, w->pmu[b], hcbd__rapid_dr(r, sg, rc, A), r);
+        if (s->tr) ft = hcbd__spring_fr(s->alpha, lam, r, rc);
         f[0] = (fr + ft) * c->x[t];
         f[1] = (fr + ft) * c->y[t];
         f[2] = (fr + ft) * c->z[t];
+        u->e[0][t] = f[0]; u->e[1][t] = f[1]; u->e[2][t] = f[2];
         acc->r[0] += f[0];
         acc->r[1] += f[1];
         acc->r[2] += f[2];
@@ -8590,7 +8857,7 @@ HCBD__INLINE int hcbd__hc_pforce_end(void *ctx, int a, hcbd__acc *acc)
 static int hcbd__hc_poly_forces(hcbd_hc_world *w, int *need)
 {
     const int n = w->np, nt = w->p.threads;
-    const hcbd__trav T = hcbd__hc_trav_p(w);
+    const hcbd__trav T = hcbd__hc_trav_p(w, w->pf, 3);
     const hcbd__hc_poly_ctx base = hcbd__hc_poly_ctx_of(w);
     int q, bad = INT_MAX, most = 0;
     int64_t created = 0, total = 0, coinc = 0;
@@ -8610,7 +8877,7 @@ static int hcbd__hc_poly_forces(hcbd_hc_world *w, int *need)
         int64_t lo, hi;
         int b;
         hcbd__share(n, &lo, &hi);
-        b = hcbd__traverse(&T, w->lp.perm, (int)lo, (int)hi, &s, hcbd__hc_pforce_begin, hcbd__hc_pforce_pairs,
+        b = hcbd__traverse(&T, w->lp.perm, (int)lo, (int)hi, &s, hcbd__ev_zero, hcbd__hc_pforce_pairs,
                            hcbd__hc_pforce_end);
         if (b < bad) bad = b;
         if (s.most > most) most = s.most;
@@ -8624,14 +8891,8 @@ static int hcbd__hc_poly_forces(hcbd_hc_world *w, int *need)
     for (q = 0; q < n; ++q) {
         const int a = w->lp.perm[q];
         double F[3];
-        int32_t e;
         F[0] = w->pFx[a]; F[1] = w->pFy[a]; F[2] = w->pFz[a];
-        for (e = w->rv_start[a]; e < w->rv_start[a + 1]; ++e) {
-            const double *f = w->pf + 3 * (size_t)w->rv_p[e];
-            F[0] -= f[0];
-            F[1] -= f[1];
-            F[2] -= f[2];
-        }
+        hcbd__rev_add(w->rv_start, w->rv_p, w->pf, 3, a, -1.0, F);
         w->pFx[a] = (hcbd_real)F[0];
         w->pFy[a] = (hcbd_real)F[1];
         w->pFz[a] = (hcbd_real)F[2];
@@ -8660,19 +8921,18 @@ typedef struct hcbd__hc_interp_ctx {
 
 HCBD__INLINE void hcbd__hc_interp_begin(void *ctx, int a, hcbd__acc *acc)
 {
-    hcbd_hc_world *w = ((hcbd__hc_interp_ctx *)ctx)->w;
-    int32_t p;
+    (void)ctx; (void)a;
     memset(acc, 0, sizeof *acc);
     acc->q[0] = 1;
-    for (p = w->lx.nb_start[a]; p < w->lx.nb_start[a + 1]; ++p) w->xw[p] = 0; /* the skin's */
 }
 
-HCBD__INLINE void hcbd__hc_interp_pairs(void *ctx, int a, const hcbd__near *c, int m, hcbd__acc *acc)
+HCBD__INLINE void hcbd__hc_interp_pairs(void *ctx, int a, const hcbd__near *c, int m, hcbd__acc *acc,
+                                       hcbd__terms *u)
 {
     const hcbd__hc_interp_ctx *s = (const hcbd__hc_interp_ctx *)ctx;
-    hcbd_hc_world *w = s->w;
+    const hcbd_hc_world *w = s->w;
     const hcbd_real *HCBD__RESTRICT sn = w->sn;
-    double wr[HCBD__CHUNK], wn[HCBD__CHUNK];
+    double *HCBD__RESTRICT wr = u->e[0], wn[HCBD__CHUNK];
     int t;
     (void)a;
     HCBD__OMP(omp simd)
@@ -8683,20 +8943,19 @@ HCBD__INLINE void hcbd__hc_interp_pairs(void *ctx, int a, const hcbd__near *c, i
     for (t = 0; t < m; ++t) {
         const int i = c->j[t]; /* a fluid slot */
         const double wt = wn[t];
-        double u[3];
-        w->xw[c->e[t]] = wr[t];
+        double v[3];
         /* the image of blob i moves with the velocity of its layer */
-        u[0] = w->svx[i] + c->k[t] * s->vj;
-        u[1] = w->svy[i];
-        u[2] = w->svz[i];
+        v[0] = w->svx[i] + c->k[t] * s->vj;
+        v[1] = w->svy[i];
+        v[2] = w->svz[i];
         if (acc->q[0]) {
-            acc->r[4] = u[0]; acc->r[5] = u[1]; acc->r[6] = u[2];
+            acc->r[4] = v[0]; acc->r[5] = v[1]; acc->r[6] = v[2];
             acc->q[0] = 0;
         }
         acc->r[0] += wt;
-        acc->r[1] += wt * (u[0] - acc->r[4]);
-        acc->r[2] += wt * (u[1] - acc->r[5]);
-        acc->r[3] += wt * (u[2] - acc->r[6]);
+        acc->r[1] += wt * (v[0] - acc->r[4]);
+        acc->r[2] += wt * (v[1] - acc->r[5]);
+        acc->r[3] += wt * (v[2] - acc->r[6]);
         acc->r[7] -= wt * c->y[t];
     }
 }
@@ -8726,8 +8985,8 @@ HCBD__INLINE int hcbd__hc_interp_end(void *ctx, int a, hcbd__acc *acc)
 static int hcbd__hc_interp(hcbd_hc_world *w)
 {
     const int n = w->np, nt = w->p.threads;
-    const hcbd__trav T = hcbd__trav_make(&w->lx, w->px, w->py, w->pz, w->sx, w->sy, w->sz,
-                                         hcbd__hc_box(w), w->p.rc);
+    hcbd__trav T = hcbd__trav_make(&w->lx, w->px, w->py, w->pz, w->sx, w->sy, w->sz, hcbd__hc_box(w),
+                                   w->p.rc);
     hcbd__hc_interp_ctx s;
     int bad = INT_MAX;
     (void)nt;
@@ -8739,6 +8998,8 @@ static int hcbd__hc_interp(hcbd_hc_world *w)
     s.vj = w->core.le_vjump;
     s.shep = w->p.coupling == HCBD_COUPLE_SHEPARD;
     s.stress = w->core.stress_on;
+    T.ent = w->xw; /* the weights, for the redistribution */
+    T.ne = 1;
     HCBD__OMP(omp parallel num_threads(nt) reduction(min:bad))
     {
         int64_t lo, hi;
@@ -8750,29 +9011,51 @@ static int hcbd__hc_interp(hcbd_hc_world *w)
 }
 
 /* Polymer forces redistributed onto the fluid blobs with the same psi,
-   each blob over its polymers in increasing id (the transpose list), with
-   the weights the interpolation found. */
+   each blob over its polymers in increasing id (the transpose of the
+   cross list, the traversal's third source), with the weights the
+   interpolation kept.  acc: r[0..2] the blob's force. */
+HCBD__INLINE void hcbd__hc_redist_pairs(void *ctx, int i, const hcbd__near *c, int m, hcbd__acc *acc,
+                                       hcbd__terms *u)
+{
+    const hcbd_hc_world *w = (const hcbd_hc_world *)ctx;
+    int t;
+    (void)u;
+    for (t = 0; t < m; ++t) {
+        const int a = c->j[t];
+        const double wt = w->xw[c->e[t]], psi = wt / w->sn[i] / w->pS[a];
+        if (wt == 0) continue; /* beyond rc */
+        acc->r[0] += psi * w->pFx[a];
+        acc->r[1] += psi * w->pFy[a];
+        acc->r[2] += psi * w->pFz[a];
+    }
+}
+
+HCBD__INLINE int hcbd__hc_redist_end(void *ctx, int i, hcbd__acc *acc)
+{
+    hcbd_hc_world *w = (hcbd_hc_world *)ctx;
+    const int id = w->fid[i];
+    w->fax[id] = (hcbd_real)acc->r[0];
+    w->fay[id] = (hcbd_real)acc->r[1];
+    w->faz[id] = (hcbd_real)acc->r[2];
+    return INT_MAX;
+}
+
 static void hcbd__hc_redistribute(hcbd_hc_world *w)
 {
-    const int n = w->nf, nt = w->p.threads;
-    int i;
+    const int nt = w->p.threads;
+    hcbd__trav T;
     (void)nt;
-    HCBD__OMP(omp parallel for num_threads(nt) schedule(static))
-    for (i = 0; i < n; ++i) { /* i: slot */
-        const int id = w->fid[i];
-        double F[3] = {0, 0, 0};
-        int32_t p;
-        for (p = w->xt_start[i]; p < w->xt_start[i + 1]; ++p) {
-            const int a = w->xt_a[p];
-            const double wt = w->xw[w->xt_p[p]], psi = wt / w->sn[i] / w->pS[a];
-            if (wt == 0) continue; /* beyond rc */
-            F[0] += psi * w->pFx[a];
-            F[1] += psi * w->pFy[a];
-            F[2] += psi * w->pFz[a];
-        }
-        w->fax[id] = (hcbd_real)F[0];
-        w->fay[id] = (hcbd_real)F[1];
-        w->faz[id] = (hcbd_real)F[2];
+    memset(&T, 0, sizeof T);
+    T.start = w->xt_start;
+    T.nb = w->xt_a;
+    T.emap = w->xt_p;
+    T.ox = T.oy = T.oz = w->sx; /* not read: no geometry */
+    HCBD__OMP(omp parallel num_threads(nt))
+    {
+        int64_t lo, hi;
+        hcbd__share(w->nf, &lo, &hi);
+        hcbd__traverse(&T, w->lf.perm, (int)lo, (int)hi, w, hcbd__ev_zero, hcbd__hc_redist_pairs,
+                       hcbd__hc_redist_end);
     }
 }
 
@@ -8822,9 +9105,9 @@ typedef struct hcbd__hc_sweep_ctx {
     int noise, stress;
 } hcbd__hc_sweep_ctx;
 
-/* acc: r[0..2] the owner's velocity (in registers: no partner is the
-   owner itself), r[3] r[4] its viscous and pressure stress; q[0..2] its
-   pressure force */
+/* terms: 0..2 the pressure force; acc: r[0..2] the owner's velocity (in
+   registers: no partner is the owner itself), r[3] r[4] its viscous and
+   pressure stress */
 HCBD__INLINE void hcbd__hc_sweep_begin(void *ctx, int i, hcbd__acc *a)
 {
     const hcbd_hc_world *w = ((const hcbd__hc_sweep_ctx *)ctx)->w;
@@ -8832,7 +9115,8 @@ HCBD__INLINE void hcbd__hc_sweep_begin(void *ctx, int i, hcbd__acc *a)
     a->r[0] = w->svx[i]; a->r[1] = w->svy[i]; a->r[2] = w->svz[i];
 }
 
-HCBD__INLINE void hcbd__hc_sweep_pairs(void *ctx, int i, const hcbd__near *c, int mm, hcbd__acc *a)
+HCBD__INLINE void hcbd__hc_sweep_pairs(void *ctx, int i, const hcbd__near *c, int mm, hcbd__acc *a,
+                                      hcbd__terms *u)
 {
     const hcbd__hc_sweep_ctx *s = (const hcbd__hc_sweep_ctx *)ctx;
     hcbd_hc_world *w = s->w;
@@ -8841,17 +9125,15 @@ HCBD__INLINE void hcbd__hc_sweep_pairs(void *ctx, int i, const hcbd__near *c, in
     hcbd_real *HCBD__RESTRICT vx = w->svx, *HCBD__RESTRICT vy = w->svy, *HCBD__RESTRICT vz = w->svz;
     const hcbd_real *HCBD__RESTRICT In = w->sIn, *HCBD__RESTRICT Pn2 = w->sP;
     const int32_t *HCBD__RESTRICT fid = w->fid;
-    int64_t *HCBD__RESTRICT aFx = w->aF[0], *HCBD__RESTRICT aFy = w->aF[1];
-    int64_t *HCBD__RESTRICT aFz = w->aF[2];
     const int32_t idi = fid[i];
     double vxi = a->r[0], vyi = a->r[1], vzi = a->r[2], x[HCBD__CHUNK], om[HCBD__CHUNK], f0[HCBD__CHUNK];
-    int64_t u0[HCBD__CHUNK], u1[HCBD__CHUNK], u2[HCBD__CHUNK];
+    int64_t *HCBD__RESTRICT u0 = u->u[0], *HCBD__RESTRICT u1 = u->u[1], *HCBD__RESTRICT u2 = u->u[2];
     int t, bad = 0;
     HCBD__OMP(omp simd reduction(|:bad))
     for (t = 0; t < mm; ++t) {
         const int j = c->j[t];
         const double wdr = hcbd__m4_wdr(sqrt(c->r2[t]) * s->ih, s->c1h);
-        const double fp = (Pi + Pn2[j]) * wdr; /* -(P_i/n_i^2 + P_j/n_j^2) w' e_ij */
+        const double fp = hcbd__tait_fr(Pi, Pn2[j], wdr);
         const double F0 = fp * c->x[t], F1 = fp * c->y[t], F2 = fp * c->z[t];
         x[t] = rate * wdr * In[j];
         om[t] = hcbd__one_minus_exp_series(x[t]);
@@ -8880,9 +9162,6 @@ HCBD__INLINE void hcbd__hc_sweep_pairs(void *ctx, int i, const hcbd__near *c, in
         vxi = (hcbd_real)(vxi + P[0] * inv_m); vx[j] = (hcbd_real)(vx[j] - P[0] * inv_m);
         vyi = (hcbd_real)(vyi + P[1] * inv_m); vy[j] = (hcbd_real)(vy[j] - P[1] * inv_m);
         vzi = (hcbd_real)(vzi + P[2] * inv_m); vz[j] = (hcbd_real)(vz[j] - P[2] * inv_m);
-        a->q[0] += u0[t]; aFx[j] -= u0[t];
-        a->q[1] += u1[t]; aFy[j] -= u1[t];
-        a->q[2] += u2[t]; aFz[j] -= u2[t];
         a->r[3] += c->y[t] * P[0];
         a->r[4] += c->y[t] * f0[t];
     }
@@ -8895,13 +9174,20 @@ HCBD__INLINE int hcbd__hc_sweep_end(void *ctx, int i, hcbd__acc *a)
     hcbd_hc_world *w = s->w;
     const int32_t idi = w->fid[i];
     w->svx[i] = (hcbd_real)a->r[0]; w->svy[i] = (hcbd_real)a->r[1]; w->svz[i] = (hcbd_real)a->r[2];
-    w->aF[0][i] += a->q[0]; w->aF[1][i] += a->q[1]; w->aF[2][i] += a->q[2];
     if (s->stress) {
         w->fs[3 * idi] = a->r[4];
         w->fs[3 * idi + 1] = a->r[3] / s->dt;
         w->fs[3 * idi + 2] = 0;
     }
     return a->bad ? idi : INT_MAX;
+}
+
+/* one block of the sweep, for hcbd__colours */
+HCBD__NO_SLP static int hcbd__hc_sweep_block(void *ctx, int b)
+{
+    const hcbd__block_job *j = (const hcbd__block_job *)ctx;
+    return hcbd__traverse(j->T, j->list, j->start[b], j->start[b + 1], j->pass, hcbd__hc_sweep_begin,
+                          hcbd__hc_sweep_pairs, hcbd__hc_sweep_end);
 }
 
 static int hcbd__hc_fluid_shardlow(hcbd_hc_world *w, double dt, uint64_t skey)
@@ -8911,7 +9197,7 @@ static int hcbd__hc_fluid_shardlow(hcbd_hc_world *w, double dt, uint64_t skey)
     const double s = w->core.le_on ? w->core.le_offset - L[0] * floor(w->core.le_offset / L[0] + 0.5) : 0.0;
     const double t = s / L[1];
     const double h = w->p.h;
-    const hcbd__trav T = hcbd__hc_trav_f(w, 2.0 * h);
+    const hcbd__trav T = hcbd__hc_trav_force(w, 2.0 * h);
     hcbd__hc_sweep_ctx sc;
     /* blocks move with blob 0, so that a boosted copy of the world sweeps
        in the same order (Galilean invariance of the trajectory) */
@@ -8960,28 +9246,15 @@ static int hcbd__hc_fluid_shardlow(hcbd_hc_world *w, double dt, uint64_t skey)
        by block, so that a block's owners go fine cell by fine cell */
     hcbd__count_sort(fine, n, w->fslot, nfine, fstart, tmp);
     hcbd__count_sort(blk, n, tmp, nblk, start, list);
-    HCBD__OMP(omp parallel num_threads(nt) reduction(min:worst))
     {
-        /* colour (a0, a1, a2): the blocks a_d + nc_d m_d, m_d < nb_d / nc_d */
-        const int m0 = nb[0] / nc[0], m1 = nb[1] / nc[1], per = m0 * m1 * (nb[2] / nc[2]);
-        int col, j, k;
-        for (col = 0; col < nc[0] * nc[1] * nc[2]; ++col) {
-            const int a0 = col % nc[0], a1 = col / nc[0] % nc[1], a2 = col / (nc[0] * nc[1]);
-            HCBD__OMP(omp for schedule(dynamic, 1))
-            for (j = 0; j < per; ++j) {
-                const int bb = ((a2 + nc[2] * (j / (m0 * m1))) * nb[1] + a1 + nc[1] * (j / m0 % m1)) * nb[0] +
-                               a0 + nc[0] * (j % m0);
-                const int bad = hcbd__traverse(&T, list, start[bb], start[bb + 1], &sc,
-                                               hcbd__hc_sweep_begin, hcbd__hc_sweep_pairs,
-                                               hcbd__hc_sweep_end);
-                if (bad < worst) worst = bad;
-            }
-        }
-        HCBD__OMP(omp for schedule(static))
-        for (k = 0; k < n; ++k) {
-            const int i = w->fid[k];
-            w->fvx[i] = w->svx[k]; w->fvy[i] = w->svy[k]; w->fvz[i] = w->svz[k];
-        }
+        hcbd__block_job job;
+        job.T = &T; job.list = list; job.start = start; job.pass = &sc;
+        worst = hcbd__colours(nb, nc, nt, &job, hcbd__hc_sweep_block);
+    }
+    HCBD__OMP(omp parallel for num_threads(nt) schedule(static))
+    for (q = 0; q < n; ++q) {
+        const int i = w->fid[q];
+        w->fvx[i] = w->svx[q]; w->fvy[i] = w->svy[q]; w->fvz[i] = w->svz[q];
     }
     return worst;
 }
@@ -8996,8 +9269,8 @@ typedef struct hcbd__hc_kick_ctx {
     int noise, stress;
 } hcbd__hc_kick_ctx;
 
-/* acc: r[0..2] the owner's velocity, r[3] its P/n^2, r[4] its 1/n, r[5..7]
-   its pressure, viscous and noise stress; q[0..2] its force */
+/* terms: 0..2 the force; acc: r[0..2] the owner's velocity, r[3] its
+   P/n^2, r[4] its 1/n, r[5..7] its pressure, viscous and noise stress */
 HCBD__INLINE void hcbd__hc_kick_begin(void *ctx, int i, hcbd__acc *a)
 {
     const hcbd_hc_world *w = ((const hcbd__hc_kick_ctx *)ctx)->w;
@@ -9006,27 +9279,24 @@ HCBD__INLINE void hcbd__hc_kick_begin(void *ctx, int i, hcbd__acc *a)
     a->r[3] = w->sP[i]; a->r[4] = w->sIn[i];
 }
 
-HCBD__INLINE void hcbd__hc_kick_pairs(void *ctx, int i, const hcbd__near *c, int m, hcbd__acc *a)
+HCBD__INLINE void hcbd__hc_kick_pairs(void *ctx, int i, const hcbd__near *c, int m, hcbd__acc *a,
+                                     hcbd__terms *u)
 {
     const hcbd__hc_kick_ctx *s = (const hcbd__hc_kick_ctx *)ctx;
-    hcbd_hc_world *w = s->w;
+    const hcbd_hc_world *w = s->w;
     const hcbd_real *HCBD__RESTRICT vx = w->svx, *HCBD__RESTRICT vy = w->svy;
     const hcbd_real *HCBD__RESTRICT vz = w->svz, *HCBD__RESTRICT Pn2 = w->sP, *HCBD__RESTRICT In = w->sIn;
     const int32_t *HCBD__RESTRICT fid = w->fid;
-    int64_t *HCBD__RESTRICT aFx = w->aF[0], *HCBD__RESTRICT aFy = w->aF[1];
-    int64_t *HCBD__RESTRICT aFz = w->aF[2];
     const double vxi = a->r[0], vyi = a->r[1], vzi = a->r[2], Pi = a->r[3], ini = a->r[4];
     const double qF = s->qF, lim = s->lim;
     int t;
     for (t = 0; t < m; ++t) {
         const int j = c->j[t], k = c->k[t];
         const double wdr = hcbd__m4_wdr(sqrt(c->r2[t]) * s->ih, s->c1h);
-        const double f = s->two_eta * wdr * ini * In[j]; /* Morris */
+        const double f = hcbd__morris_f(s->two_eta, wdr, ini, In[j]);
         double d[3], fp, F[3], Fv0;
-        int64_t u;
         d[0] = c->x[t]; d[1] = c->y[t]; d[2] = c->z[t];
-        /* -(P_i/n_i^2 + P_j/n_j^2) w' e_ij */
-        fp = (Pi + Pn2[j]) * wdr;
+        fp = hcbd__tait_fr(Pi, Pn2[j], wdr);
         F[0] = fp * d[0]; F[1] = fp * d[1]; F[2] = fp * d[2];
         if (s->stress) a->r[5] += d[1] * F[0];
         Fv0 = -f * (vxi - (vx[j] + k * s->vj));
@@ -9043,9 +9313,9 @@ HCBD__INLINE void hcbd__hc_kick_pairs(void *ctx, int i, const hcbd__near *c, int
             if (s->stress) a->r[7] += d[1] * sf * zz[0];
         }
         a->bad |= !(fabs(F[0]) <= lim && fabs(F[1]) <= lim && fabs(F[2]) <= lim);
-        u = hcbd__fix(F[0] * qF); a->q[0] += u; aFx[j] -= u;
-        u = hcbd__fix(F[1] * qF); a->q[1] += u; aFy[j] -= u;
-        u = hcbd__fix(F[2] * qF); a->q[2] += u; aFz[j] -= u;
+        u->u[0][t] = hcbd__fix(F[0] * qF);
+        u->u[1][t] = hcbd__fix(F[1] * qF);
+        u->u[2][t] = hcbd__fix(F[2] * qF);
     }
 }
 
@@ -9054,7 +9324,6 @@ HCBD__INLINE int hcbd__hc_kick_end(void *ctx, int i, hcbd__acc *a)
     const hcbd__hc_kick_ctx *s = (const hcbd__hc_kick_ctx *)ctx;
     hcbd_hc_world *w = s->w;
     const int32_t idi = w->fid[i];
-    w->aF[0][i] += a->q[0]; w->aF[1][i] += a->q[1]; w->aF[2][i] += a->q[2];
     if (s->stress) { /* by id: the sum over blobs in a fixed order */
         w->fs[3 * idi] = a->r[5];
         w->fs[3 * idi + 1] = a->r[6];
@@ -9067,7 +9336,7 @@ HCBD__INLINE int hcbd__hc_kick_run(hcbd_hc_world *w, int q0, int q1, const int n
                                    const int stress)
 {
     const double h = w->p.h, dt = w->p.dt / w->p.substeps;
-    const hcbd__trav T = hcbd__hc_trav_f(w, 2.0 * h);
+    const hcbd__trav T = hcbd__hc_trav_force(w, 2.0 * h);
     hcbd__hc_kick_ctx s;
     s.w = w;
     s.ih = 1.0 / h;
