@@ -127,6 +127,8 @@
         hcbd_hc_world_density_range hcbd_hc_world_stress_ hcbd_hc_world_checksum]
      >>HCBD: theory and stability limits [hcbd_hc_params_theory hcbd_hc_params_stability]
      >>HCBD: kernels of the 2018 model [hcbd_m4 hcbd_rapid_w hcbd_flory_]
+     >>HCBD: equations without a world [hcbd_hc_params_coef hcbd_hc_fluid_ hcbd_hc_polymer_
+        hcbd_hc_lambda_ hcbd_hc_noise_]
      >>checkpoint/restart [hcbd_world_checkpoint_ hcbd_world_save hcbd_world_load hcbd_world_set_threads]
      >>trajectories and logs [hcbd_world_write_ hcbd_thermo_header hcbd_world_thermo_line]
      >>HCBD: checkpoints, threads, XYZ and thermo [hcbd_hc_world_checkpoint_ hcbd_hc_world_save
@@ -175,6 +177,8 @@
      >>HCBD: kernels [hcbd_m4 hcbd_rapid_w hcbd_flory_]
      >>HCBD: parameters and units [hcbd_hc_si_ hcbd_hc_params_ hcbd_hc_world_def_default
         hcbd_hc_params_theory hcbd_hc_params_stability]
+     >>HCBD: equations without a world [hcbd_hc_params_coef hcbd_hc_fluid_ hcbd_hc_polymer_
+        hcbd_hc_lambda_ hcbd_hc_noise_]
      >>HCBD: storage [hcbd_hc_world_]
      >>HCBD: set-up [hcbd_hc_world_set_fluid hcbd_hc_world_set_polymers hcbd_hc_world_place_
         hcbd_hc_world_get_fluid hcbd_hc_world_get_polymers]
@@ -1249,6 +1253,64 @@ float hcbd_flory_muf(float phi, float chi);
 double hcbd_flory_g1(double phi, double chi);
 #endif /* HCBD_MODEL_HCBD */
 
+/* >>HCBD: equations without a world (for engines of their own) ---------*/
+#if HCBD_MODEL == HCBD_MODEL_HCBD
+/* The 2018 model's equations (MODEL 6-8) for an engine of its own (the
+   LAMMPS plugin's), from the one place the library writes them, with c
+   from hcbd_hc_params_coef (the parameters checked as
+   hcbd_hc_world_create checks them):
+   - fluid: n_i = hcbd_hc_fluid_density(c, sum_j w(r_ij)), w =
+     hcbd_hc_fluid_weight (the sum without the self term);
+     P_i = hcbd_hc_fluid_pressure(c, n_i) (Tait);
+     hcbd_hc_fluid_pair adds the Euler pair force on i (minus it on j) of
+     r_ij = d (|d| = r < 2h): pressure, Morris friction with
+     dv = v_i - v_j (the velocity of j's image, under Lees-Edwards), and,
+     with z non-NULL, the pair noise sqrt(2 kT f_ij / dt) z, z the pair's
+     unit deviates with i the lower id;
+   - polymers: n_a = hcbd_hc_polymer_density(c, sum_b W(r_ab)), W =
+     hcbd_hc_polymer_weight; mu_a = hcbd_hc_polymer_mu(c, n_a);
+     hcbd_hc_polymer_pair returns the force on a over r along r_ab,
+     Flory-Huggins and the transient spring of the pair variable lambda
+     (ignored when alpha = 0);
+   - pair variables: lambda_eq = hcbd_hc_lambda_eq(c, r) and the exact
+     Ornstein-Uhlenbeck step over dt, hcbd_hc_lambda_step (z a unit
+     deviate; 0 when kT = 0).
+   The coupling weight of fluid blob i at polymer a is W(r_ai) / n_i. */
+typedef struct hcbd_hc_coef {
+    double m, h, kT, dt;                 /* blob mass, M4 support, kT, step */
+    double w0, c0, c1h, two_eta, P0, inv_nbar; /* w(0), 1/(4 pi h^3), 1/(4 pi h^5) */
+    double sn;                           /* pair noise sqrt(2 kT/dt), 0 without */
+    double sigma, rc, A, W0, cfh, n_max, chi, p_kuhn; /* RaPiD, Flory-Huggins */
+    double alpha, e_lambda, s_lambda;   /* transient: exp(-dt/tau), noise amplitude */
+} hcbd_hc_coef;
+hcbd_result hcbd_hc_params_coef(const hcbd_hc_params *p, hcbd_hc_coef *c, char *msg, size_t msg_size);
+double hcbd_hc_fluid_weight(const hcbd_hc_coef *c, double r);
+double hcbd_hc_fluid_density(const hcbd_hc_coef *c, double wsum);
+double hcbd_hc_fluid_pressure(const hcbd_hc_coef *c, double n);
+void hcbd_hc_fluid_pair(const hcbd_hc_coef *c, const double d[3], double r, double n_i, double n_j,
+                        double P_i, double P_j, const double dv[3], const double z[3], double F[3]);
+double hcbd_hc_polymer_weight(const hcbd_hc_coef *c, double r);
+double hcbd_hc_polymer_density(const hcbd_hc_coef *c, double wsum);
+double hcbd_hc_polymer_mu(const hcbd_hc_coef *c, double n);
+double hcbd_hc_polymer_pair(const hcbd_hc_coef *c, double r, double mu_a, double mu_b, double lambda);
+double hcbd_hc_lambda_eq(const hcbd_hc_coef *c, double r);
+double hcbd_hc_lambda_step(const hcbd_hc_coef *c, double lambda, double lambda_eq, double z);
+/* The noise of the 2018 world without it, keyed as the world keys it by
+   its seed: the fluid pair (i, j) at fluid step k = step * substeps + sub
+   (unit Gaussian deviates, either order of i and j), the pair variable of
+   polymers (a, b) at a step, and a polymer's Brownian displacement at a
+   step (hcbd_hc_lambda_step takes the first, the displacement is
+   sqrt(2 kT dt / xi) times the second). */
+typedef struct hcbd_hc_noise_stream {
+    uint64_t fpair_key, lambda_key, poly_key;
+    hcbd__zig zig;
+} hcbd_hc_noise_stream;
+void hcbd_hc_noise_stream_init(hcbd_hc_noise_stream *ns, uint64_t seed);
+void hcbd_hc_noise_fluid_pair(const hcbd_hc_noise_stream *ns, int64_t k, int32_t i, int32_t j, double out[3]);
+double hcbd_hc_noise_lambda(const hcbd_hc_noise_stream *ns, int64_t step, int32_t a, int32_t b);
+void hcbd_hc_noise_polymer(const hcbd_hc_noise_stream *ns, int64_t step, int32_t a, double out[3]);
+#endif
+
 /* >>checkpoint/restart: the complete state of a world (every parameter,
    tables included, positions, images, velocities, the HCBD world's
    generator states, densities, pair variables, step, Lees-Edwards offset, flux and stress
@@ -1707,6 +1769,12 @@ static inline int hcbd_hc_thermo_line(const hcbd_hc_world *w, double ns_pstep, c
 #define HCBD__STREAM_WALL 0x4ULL
 #define HCBD__STREAM_WALL_PAIR 0x5ULL
 #define HCBD__STREAM_BROWNIAN 0x6ULL
+/* the 2018 world's */
+#define HCBD__STREAM_FPAIR 0x11ULL
+#define HCBD__STREAM_LAMBDA 0x12ULL
+#define HCBD__STREAM_POLY 0x13ULL
+#define HCBD__STREAM_FLUID_INIT 0x14ULL
+#define HCBD__STREAM_POLY_PLACE 0x15ULL
 /* The GI-BD build compiles the wall branches away. */
 #define HCBD__WALLS (HCBD_MODEL == HCBD_MODEL_WALLED)
 
@@ -7644,6 +7712,31 @@ static inline double hcbd__morris_f(double two_eta, double wdr, double ini, doub
     return two_eta * wdr * ini * inj;
 }
 
+/* M4 kernel over c0 = 1/(4 pi h^3) at q = r/h < 2 */
+static inline double hcbd__m4u(double q)
+{
+    const double a = 2.0 - q, b = q < 1.0 ? 1.0 - q : 0.0;
+    return a * a * a - 4.0 * b * b * b;
+}
+
+/* -w'(r)/r of the M4 kernel at q = r/h < 2, c1h = 1/(4 pi h^5): c1h (12 -
+   9 q) for q < 1 (its r -> 0 limit included), 3 c1h (2 - q)^2/q beyond;
+   one division.  The pressure force is (P_i/n_i^2 + P_j/n_j^2) times it
+   along r_ij, the Morris friction f_ij = -2 eta w'/(n_i n_j r) = 2 eta
+   times it / (n_i n_j). */
+static inline double hcbd__m4_wdr(double q, double c1h)
+{
+    const double a = 2.0 - q;
+    return q < 1.0 ? c1h * (12.0 - 9.0 * q) : 3.0 * c1h * a * a / q;
+}
+
+/* lambda_eq(r) = (1 - r/rc)^2 inside rc */
+static inline double hcbd__leq(double r, double rc)
+{
+    double u = 1.0 - r / rc;
+    return u * u;
+}
+
 double hcbd_rapid_w_dr(double r, double sigma, double rc)
 {
     if (!(r < rc)) return 0.0;
@@ -7907,12 +8000,135 @@ hcbd_result hcbd_hc_params_stability(const hcbd_hc_params *p, hcbd_limit *out, i
     return HCBD_OK;
 }
 
+/* >>HCBD: equations without a world (hcbd_hc_params_coef, the pair terms
+   for engines of their own) */
+/* Tait pressure at density n (MODEL 6), as the world's density pass
+   computes it */
+static inline double hcbd__tait_p(double P0, double inv_nbar, double n)
+{
+    const double x = n * inv_nbar;
+    double x7 = x * x * x;
+    x7 = x7 * x7 * x;
+    return P0 * (x7 - 1.0);
+}
+
+hcbd_result hcbd_hc_params_coef(const hcbd_hc_params *p, hcbd_hc_coef *c, char *msg, size_t msg_size)
+{
+    hcbd_result r;
+    const double h = p ? p->h : 0.0;
+    if (!p || !c) return HCBD_ERR_NULL;
+    if ((r = hcbd_hc_params_check(p, msg, msg_size)) != HCBD_OK) return r;
+    memset(c, 0, sizeof *c);
+    c->m = p->rho / p->nbar;
+    c->h = h;
+    c->kT = p->kT;
+    c->dt = p->dt / p->substeps;
+    c->w0 = 1.0 / (HCBD__PI * h * h * h);
+    c->c0 = 1.0 / (4.0 * HCBD__PI * h * h * h);
+    c->c1h = 1.0 / (4.0 * HCBD__PI * h * h * h * h * h);
+    c->two_eta = 2.0 * p->eta;
+    c->P0 = p->P0;
+    c->inv_nbar = 1.0 / p->nbar;
+    c->sn = p->fluctuations && p->kT > 0 ? sqrt(2.0 * p->kT / c->dt) : 0.0;
+    c->sigma = p->sigma;
+    c->rc = p->rc;
+    c->A = hcbd__rapid_A(p->sigma, p->rc);
+    c->W0 = c->A * (p->rc - p->sigma) * (p->rc + p->sigma);
+    c->cfh = p->p_kuhn * p->kT / p->n_max;
+    c->n_max = p->n_max;
+    c->chi = p->chi;
+    c->p_kuhn = p->p_kuhn;
+    c->alpha = p->alpha;
+    if (p->alpha > 0) {
+        c->e_lambda = exp(-p->dt / p->tau_lambda);
+        c->s_lambda = p->kT > 0 ? sqrt(p->kT / p->alpha * -expm1(-2.0 * p->dt / p->tau_lambda)) : 0.0;
+    }
+    return HCBD_OK;
+}
+
+double hcbd_hc_fluid_weight(const hcbd_hc_coef *c, double r)
+{
+    const double q = r * (1.0 / c->h);
+    return q < 2.0 ? c->c0 * hcbd__m4u(q) : 0.0;
+}
+
+double hcbd_hc_fluid_density(const hcbd_hc_coef *c, double wsum) { return c->w0 + wsum; }
+
+double hcbd_hc_fluid_pressure(const hcbd_hc_coef *c, double n) { return hcbd__tait_p(c->P0, c->inv_nbar, n); }
+
+void hcbd_hc_fluid_pair(const hcbd_hc_coef *c, const double d[3], double r, double n_i, double n_j,
+                        double P_i, double P_j, const double dv[3], const double z[3], double F[3])
+{
+    const double q = r * (1.0 / c->h);
+    double wdr, f, fp, sf;
+    int k;
+    if (!(q < 2.0) || !(r > 0.0)) return;
+    wdr = hcbd__m4_wdr(q, c->c1h);
+    f = hcbd__morris_f(c->two_eta, wdr, 1.0 / n_i, 1.0 / n_j);
+    fp = hcbd__tait_fr(P_i / (n_i * n_i), P_j / (n_j * n_j), wdr);
+    sf = z ? c->sn * sqrt(f) : 0.0;
+    for (k = 0; k < 3; ++k) F[k] += fp * d[k] - f * dv[k] + (z ? sf * z[k] : 0.0);
+}
+
+double hcbd_hc_polymer_weight(const hcbd_hc_coef *c, double r)
+{
+    return r < c->rc ? hcbd__rapid(r, c->sigma, c->rc, c->A) : 0.0;
+}
+
+double hcbd_hc_polymer_density(const hcbd_hc_coef *c, double wsum) { return c->W0 + wsum; }
+
+double hcbd_hc_polymer_mu(const hcbd_hc_coef *c, double n)
+{
+    return c->p_kuhn > 0 ? (double)hcbd__mu((hcbd_real)(n / c->n_max), (hcbd_real)c->chi) : 0.0;
+}
+
+double hcbd_hc_polymer_pair(const hcbd_hc_coef *c, double r, double mu_a, double mu_b, double lambda)
+{
+    double fr = 0.0, ft = 0.0;
+    if (!(r < c->rc) || !(r > 0.0)) return 0.0;
+    if (c->p_kuhn > 0) fr = hcbd__flory_fr(c->cfh, mu_a, mu_b, hcbd__rapid_dr(r, c->sigma, c->rc, c->A), r);
+    if (c->alpha > 0) ft = hcbd__spring_fr(c->alpha, lambda, r, c->rc);
+    return fr + ft;
+}
+
+double hcbd_hc_lambda_eq(const hcbd_hc_coef *c, double r) { return r < c->rc ? hcbd__leq(r, c->rc) : 0.0; }
+
+double hcbd_hc_lambda_step(const hcbd_hc_coef *c, double lambda, double lambda_eq, double z)
+{
+    return lambda_eq + (lambda - lambda_eq) * c->e_lambda + c->s_lambda * z;
+}
+
+void hcbd_hc_noise_stream_init(hcbd_hc_noise_stream *ns, uint64_t seed)
+{
+    if (!ns) return;
+    ns->fpair_key = hcbd__mix64(seed ^ hcbd__mix64(HCBD__STREAM_FPAIR));
+    ns->lambda_key = hcbd__mix64(seed ^ hcbd__mix64(HCBD__STREAM_LAMBDA));
+    ns->poly_key = hcbd__mix64(seed ^ hcbd__mix64(HCBD__STREAM_POLY));
+    hcbd__zig_init(&ns->zig);
+}
+
+void hcbd_hc_noise_fluid_pair(const hcbd_hc_noise_stream *ns, int64_t k, int32_t i, int32_t j, double out[3])
+{
+    if (!ns || !out) return;
+    hcbd__deviates3(&ns->zig, HCBD_NOISE_GAUSS,
+                    hcbd__pair_key(hcbd__mix64(ns->fpair_key ^ hcbd__mix64((uint64_t)k)), i, j), out);
+}
+
+double hcbd_hc_noise_lambda(const hcbd_hc_noise_stream *ns, int64_t step, int32_t a, int32_t b)
+{
+    if (!ns) return NAN;
+    return hcbd__normal_at(&ns->zig, hcbd__pair_key(hcbd__mix64(ns->lambda_key ^ hcbd__mix64((uint64_t)step)), a, b));
+}
+
+void hcbd_hc_noise_polymer(const hcbd_hc_noise_stream *ns, int64_t step, int32_t a, double out[3])
+{
+    if (!ns || !out) return;
+    hcbd__deviates3(&ns->zig, HCBD_NOISE_GAUSS,
+                    hcbd__mix64(hcbd__mix64(ns->poly_key ^ hcbd__mix64((uint64_t)step)) ^ (uint64_t)(uint32_t)a),
+                    out);
+}
+
 /* >>HCBD: storage */
-#define HCBD__STREAM_FPAIR 0x11ULL
-#define HCBD__STREAM_LAMBDA 0x12ULL
-#define HCBD__STREAM_POLY 0x13ULL
-#define HCBD__STREAM_FLUID_INIT 0x14ULL
-#define HCBD__STREAM_POLY_PLACE 0x15ULL
 
 static double hcbd__hc_reach(const hcbd_hc_params *p)
 {
@@ -8576,12 +8792,6 @@ static void hcbd__hc_lists_stale(hcbd_hc_world *w)
     w->lf.list_valid = w->lp.list_valid = w->lx.list_valid = 0;
 }
 
-/* M4 kernel over c0 = 1/(4 pi h^3) at q = r/h < 2 */
-static inline double hcbd__m4u(double q)
-{
-    const double a = 2.0 - q, b = q < 1.0 ? 1.0 - q : 0.0;
-    return a * a * a - 4.0 * b * b * b;
-}
 
 /* Fluid density weights w(r_ij) (MODEL 6) into aW, each pair once */
 typedef struct hcbd__hc_dens_ctx {
@@ -8640,15 +8850,13 @@ static void hcbd__hc_fluid_density(hcbd_hc_world *w)
     hcbd__nl_owners(&w->lf, n, nt, w, hcbd__hc_dens_owners);
     HCBD__OMP(omp parallel for num_threads(nt) schedule(static) reduction(min:bad))
     for (i = 0; i < n; ++i) { /* i: slot */
-        const double s = w0 + (double)w->aW[i] * inv_q, x = s * inv_nbar;
+        const double s = w0 + (double)w->aW[i] * inv_q, x = s * inv_nbar, P = hcbd__tait_p(P0, inv_nbar, s);
         const int id = w->fid[i];
-        double x7 = x * x * x;
         if (!(x > 1.0 / 3.0 && x < 3.0) && id < bad) bad = id;
-        x7 = x7 * x7 * x;
         w->fn[id] = w->sn[i] = (hcbd_real)s;
         w->sIn[i] = (hcbd_real)(1.0 / s);
-        w->fP[id] = (hcbd_real)(P0 * (x7 - 1.0));
-        w->fPn2[id] = w->sP[i] = (hcbd_real)(P0 * (x7 - 1.0) / (s * s));
+        w->fP[id] = (hcbd_real)P;
+        w->fPn2[id] = w->sP[i] = (hcbd_real)(P / (s * s));
     }
     w->dens_bad = bad == INT_MAX ? -1 : bad;
 }
@@ -8751,11 +8959,6 @@ static int hcbd__hc_poly_density(hcbd_hc_world *w)
     return bad == INT_MAX ? -1 : bad;
 }
 
-static inline double hcbd__leq(double r, double rc)
-{
-    double u = 1.0 - r / rc;
-    return u * u;
-}
 
 static int hcbd__hc_find(const hcbd_hc_world *w, int a, int b)
 {
@@ -9059,16 +9262,6 @@ static void hcbd__hc_redistribute(hcbd_hc_world *w)
     }
 }
 
-/* -w'(r)/r of the M4 kernel at q = r/h < 2, c1h = 1/(4 pi h^5): c1h (12 -
-   9 q) for q < 1 (its r -> 0 limit included), 3 c1h (2 - q)^2/q beyond;
-   one division.  The pressure force is (P_i/n_i^2 + P_j/n_j^2) times it
-   along r_ij, the Morris friction f_ij = -2 eta w'/(n_i n_j r) = 2 eta
-   times it / (n_i n_j). */
-static inline double hcbd__m4_wdr(double q, double c1h)
-{
-    const double a = 2.0 - q;
-    return q < 1.0 ? c1h * (12.0 - 9.0 * q) : 3.0 * c1h * a * a / q;
-}
 
 /* HCBD_PAIR_SHARDLOW for the fluid: each pair's Morris friction and noise
    solved exactly in turn (the pair's relative velocity is an Ornstein-

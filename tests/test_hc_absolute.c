@@ -939,4 +939,204 @@ void test_hc_abs_default_statics(void)
 
 void test_hc_abs_viscosity_fluct_euler(void) { a_fluct_wave(HCBD_PAIR_EULER); }
 void test_hc_abs_viscosity_fluct_shardlow(void) { a_fluct_wave(HCBD_PAIR_SHARDLOW); }
+/* The equations without a world (hcbd_hc_params_coef and the pair terms,
+   for engines of their own) against the world, pair by pair and brute
+   force: fluid densities, pressures and Euler pair forces (the velocity
+   change of one step, with the polymers' forces on the fluid the world
+   reports), polymer densities, mu and pair forces, and the pair
+   variables' step.  Checked against the formulas by the tests above, the
+   world holds the API to them as well. */
+static void a_equations(int noisy)
+{
+    const double tol = ABS_FLOAT ? 2e-4 : 1e-9;
+    hcbd_hc_world_def d = hc_scene(5, 5, 5, 6);
+    hcbd_hc_params *p = &d.params;
+    hcbd_hc_world w;
+    hcbd_hc_coef c;
+    hcbd_rng g;
+    const int nf = d.fluid_capacity, np = 6;
+    const double cl[6][3] = {{0, 0, 0}, {1.3, 0.2, -0.4}, {0.3, 1.5, 0.5}, {-0.9, 0.8, 1.1},
+                             {0.7, -1.2, 0.9}, {-0.2, -0.6, -1.4}};
+    double *xyz = (double *)malloc(sizeof(double) * 3 * nf), *v = (double *)malloc(sizeof(double) * 3 * nf);
+    double *n = (double *)malloc(sizeof(double) * nf), *P = (double *)malloc(sizeof(double) * nf);
+    double *F = (double *)malloc(sizeof(double) * 3 * nf), *fa = (double *)malloc(sizeof(double) * 3 * nf);
+    double pxyz[18], pn[6], mu[6], pF[18], lam[36], lam1[36], e_n = 0, e_P = 0, e_dv = 0, e_pn = 0, e_mu = 0,
+        e_pF = 0, e_l = 0, sv = 0, sF = 0, m, px0[6], py0[6], pz0[6], dr[18], e_dr = 0, usc = 0;
+    hcbd_hc_noise_stream ns;
+    char msg[160];
+    int i, j, a, b, k, ok, npair = 0;
+    /* noisy: the fluid pairs', the pair variables' and the polymers' noise
+       drawn from the stream; else kT = 0 */
+    p->fluctuations = noisy;
+    if (!noisy) p->kT = 0;
+    p->n_max = 3.0;
+    p->g[0] = 0.3; p->g[1] = -0.2; p->g[2] = 0.1;
+    p->pair_integrator = HCBD_PAIR_EULER;
+    CHECK(hcbd_hc_params_coef(p, &c, msg, sizeof msg) == HCBD_OK, "coef: %s", msg);
+    hcbd_hc_noise_stream_init(&ns, p->seed);
+    m = c.m;
+    hcbd_rng_seed(&g, 23);
+    if (!hc_create(&w, &d)) return;
+    ok = a_ok(&w, hcbd_hc_world_place_fluid_lattice(&w, nf), "lattice");
+    for (i = 0; i < nf && ok; ++i)
+        for (k = 0; k < 3; ++k) {
+            double x = (k == 0 ? w.fx[i] : (k == 1 ? w.fy[i] : w.fz[i])) + 0.6 * (hcbd_rng_uniform(&g) - 0.5);
+            xyz[3 * i + k] = x - p->L[k] * floor(x / p->L[k]);
+            if (xyz[3 * i + k] >= p->L[k]) xyz[3 * i + k] = 0;
+            v[3 * i + k] = hcbd_rng_uniform(&g) - 0.5;
+        }
+    ok = ok && a_ok(&w, hcbd_hc_world_set_fluid(&w, nf, xyz, v), "fluid");
+    for (a = 0; a < np; ++a)
+        for (k = 0; k < 3; ++k) pxyz[3 * a + k] = 0.5 * p->L[k] + cl[a][k];
+    ok = ok && a_ok(&w, hcbd_hc_world_set_polymers(&w, np, pxyz), "polymers");
+    for (a = 0; a < np && ok; ++a)
+        for (b = a + 1; b < np; ++b) {
+            double dd[3], r = a_sep(p->L, pxyz[3 * a], pxyz[3 * a + 1], pxyz[3 * a + 2], pxyz[3 * b],
+                                    pxyz[3 * b + 1], pxyz[3 * b + 2], dd);
+            lam[6 * a + b] = NAN;
+            if (r >= p->rc) continue;
+            lam[6 * a + b] = hcbd_hc_lambda_eq(&c, r) + 0.3 - 0.1 * ((a + b) % 4);
+            lam1[6 * a + b] = hcbd_hc_lambda_step(&c, lam[6 * a + b], hcbd_hc_lambda_eq(&c, r),
+                                                  noisy ? hcbd_hc_noise_lambda(&ns, 0, a, b) : 0.0);
+            ok = a_ok(&w, hcbd_hc_world_set_lambda(&w, a, b, lam[6 * a + b]), "set_lambda");
+            ++npair;
+        }
+    if (!ok) return;
+    /* fluid: densities, pressures, the Euler pair forces of t */
+    for (i = 0; i < nf; ++i) {
+        double s = 0, dd[3];
+        for (j = 0; j < nf; ++j)
+            if (j != i) s += hcbd_hc_fluid_weight(&c, a_ff(&w, i, j, dd));
+        n[i] = hcbd_hc_fluid_density(&c, s);
+        P[i] = hcbd_hc_fluid_pressure(&c, n[i]);
+        if (fabs(w.fn[i] / n[i] - 1) > e_n) e_n = fabs(w.fn[i] / n[i] - 1);
+        if (fabs(w.fP[i] - P[i]) / p->P0 > e_P) e_P = fabs(w.fP[i] - P[i]) / p->P0;
+    }
+    for (i = 0; i < nf; ++i) {
+        for (k = 0; k < 3; ++k) F[3 * i + k] = 0;
+        for (j = 0; j < nf; ++j) {
+            double dd[3], dv[3], r = a_ff(&w, i, j, dd);
+            if (j == i) continue;
+            double z[3];
+            dv[0] = w.fvx[i] - w.fvx[j]; dv[1] = w.fvy[i] - w.fvy[j]; dv[2] = w.fvz[i] - w.fvz[j];
+            hcbd_hc_noise_fluid_pair(&ns, 0, i, j, z);
+            if (j < i) z[0] = -z[0], z[1] = -z[1], z[2] = -z[2]; /* drawn for i the lower id */
+            hcbd_hc_fluid_pair(&c, dd, r, n[i], n[j], P[i], P[j], dv, noisy ? z : NULL, F + 3 * i);
+        }
+        fa[3 * i] = w.fax[i]; fa[3 * i + 1] = w.fay[i]; fa[3 * i + 2] = w.faz[i];
+        for (k = 0; k < 3; ++k) {
+            const double vk = k == 0 ? w.fvx[i] : (k == 1 ? w.fvy[i] : w.fvz[i]);
+            v[3 * i + k] = vk + c.dt / m * (F[3 * i + k] + m * p->g[k] + fa[3 * i + k]);
+            if (fabs(F[3 * i + k]) > sF) sF = fabs(F[3 * i + k]);
+        }
+    }
+    /* polymers: densities, mu, pair forces */
+    for (a = 0; a < np; ++a) {
+        double s = 0, dd[3];
+        for (b = 0; b < np; ++b)
+            if (b != a)
+                s += hcbd_hc_polymer_weight(&c, a_sep(p->L, w.px[a], w.py[a], w.pz[a], w.px[b], w.py[b], w.pz[b], dd));
+        pn[a] = hcbd_hc_polymer_density(&c, s);
+        mu[a] = hcbd_hc_polymer_mu(&c, pn[a]);
+        if (fabs(w.pn[a] / pn[a] - 1) > e_pn) e_pn = fabs(w.pn[a] / pn[a] - 1);
+        if (fabs(w.pmu[a] - mu[a]) > e_mu) e_mu = fabs(w.pmu[a] - mu[a]);
+    }
+    for (a = 0; a < np; ++a) {
+        for (k = 0; k < 3; ++k) pF[3 * a + k] = 0;
+        for (b = 0; b < np; ++b) {
+            double dd[3], r, fr, l = 0;
+            if (b == a) continue;
+            r = a_sep(p->L, w.px[a], w.py[a], w.pz[a], w.px[b], w.py[b], w.pz[b], dd);
+            if (r < p->rc) l = lam[a < b ? 6 * a + b : 6 * b + a];
+            fr = hcbd_hc_polymer_pair(&c, r, mu[a], mu[b], l);
+            for (k = 0; k < 3; ++k) pF[3 * a + k] += fr * dd[k];
+        }
+        for (k = 0; k < 3; ++k) {
+            const double wk = k == 0 ? w.pFx[a] : (k == 1 ? w.pFy[a] : w.pFz[a]);
+            if (fabs(pF[3 * a + k]) > sv) sv = fabs(pF[3 * a + k]);
+            if (fabs(wk - pF[3 * a + k]) > e_pF) e_pF = fabs(wk - pF[3 * a + k]);
+        }
+    }
+    e_pF /= sv;
+    /* polymers: dr = u dt + sqrt(2 kT dt / xi) z */
+    for (a = 0; a < np; ++a) {
+        double z[3] = {0, 0, 0};
+        if (noisy) hcbd_hc_noise_polymer(&ns, 0, a, z);
+        px0[a] = w.px[a]; py0[a] = w.py[a]; pz0[a] = w.pz[a];
+        dr[3 * a] = w.pux[a] * p->dt + sqrt(2.0 * p->kT * p->dt / p->xi) * z[0];
+        dr[3 * a + 1] = w.puy[a] * p->dt + sqrt(2.0 * p->kT * p->dt / p->xi) * z[1];
+        dr[3 * a + 2] = w.puz[a] * p->dt + sqrt(2.0 * p->kT * p->dt / p->xi) * z[2];
+        for (k = 0; k < 3; ++k)
+            if (fabs(dr[3 * a + k]) > usc) usc = fabs(dr[3 * a + k]);
+    }
+    if (!hc_run(&w, 1)) return;
+    for (a = 0; a < np; ++a) {
+        double dd[3];
+        a_sep(p->L, w.px[a], w.py[a], w.pz[a], px0[a], py0[a], pz0[a], dd);
+        for (k = 0; k < 3; ++k)
+            if (fabs(dd[k] - dr[3 * a + k]) / usc > e_dr) e_dr = fabs(dd[k] - dr[3 * a + k]) / usc;
+    }
+    sv = 0;
+    for (i = 0; i < nf; ++i)
+        for (k = 0; k < 3; ++k) {
+            const double vk = k == 0 ? w.fvx[i] : (k == 1 ? w.fvy[i] : w.fvz[i]);
+            if (fabs(vk - v[3 * i + k]) > e_dv) e_dv = fabs(vk - v[3 * i + k]);
+        }
+    e_dv /= c.dt / m * sF;
+    for (a = 0; a < np; ++a)
+        for (b = a + 1; b < np; ++b) {
+            double l;
+            if (isnan(lam[6 * a + b]) || hcbd_hc_world_get_lambda(&w, a, b, &l) != HCBD_OK) continue;
+            if (fabs(l - lam1[6 * a + b]) > e_l) e_l = fabs(l - lam1[6 * a + b]);
+        }
+    NOTE("%s: %d transient pairs; fluid n %.1e, P %.1e, dv %.1e of dt |F|/m; polymer n %.1e, mu %.1e, "
+         "F %.1e, dr %.1e; lambda %.1e", noisy ? "noise" : "kT = 0", npair, e_n, e_P, e_dv, e_pn, e_mu, e_pF,
+         e_dr, e_l);
+    CHECK(npair >= 4, "%d transient pairs", npair);
+    CHECK(e_n < tol && e_P < tol, "fluid density %g, pressure %g", e_n, e_P);
+    /* the world sums the pair forces in 64-bit fixed point: ~1e-9 of them */
+    CHECK(e_dv < (ABS_FLOAT ? tol : 1e-8), "fluid velocity change %g", e_dv);
+    CHECK(e_pn < tol && e_mu < tol, "polymer density %g, mu %g", e_pn, e_mu);
+    CHECK(e_pF < tol, "polymer pair forces %g", e_pF);
+    /* float: positions (~4) round by 5e-7 against dr ~ 0.01 */
+    CHECK(e_dr < (ABS_FLOAT ? 3e-4 : tol), "polymer displacement %g", e_dr);
+    CHECK(e_l < (ABS_FLOAT ? 1e-6 : 1e-12), "pair variables %g", e_l);
+    hcbd_hc_world_destroy(&w);
+    free(xyz); free(v); free(n); free(P); free(F); free(fa);
+}
+
+void test_hc_equations_exported(void)
+{
+    hcbd_hc_world_def d = hc_scene(5, 5, 5, 6);
+    hcbd_hc_params *p = &d.params;
+    hcbd_hc_coef c;
+    char msg[160];
+    int k;
+    a_equations(0);
+    a_equations(1);
+    /* the noise terms against their formulas (the world's own noise is
+       tested by the equipartition tests): sqrt(2 kT f_ij / dt) z with
+       f_ij = -2 eta w'(r) / (n_i n_j r) (2018 eq. 18-19), and
+       sqrt(kT/alpha (1 - e^(-2 dt/tau_lambda))) z */
+    p->kT = 1.3;
+    p->fluctuations = 1;
+    p->substeps = 4;
+    CHECK(hcbd_hc_params_coef(p, &c, msg, sizeof msg) == HCBD_OK, "coef: %s", msg);
+    {
+        const double dd[3] = {0.9, -0.5, 0.3}, z[3] = {0.7, -1.1, 0.4}, zero[3] = {0, 0, 0};
+        const double r = sqrt(0.9 * 0.9 + 0.5 * 0.5 + 0.3 * 0.3), ni = 1.1, nj = 0.8;
+        const double f = -2.0 * p->eta * a_m4d(r, p->h) / (ni * nj * r), dtf = p->dt / p->substeps;
+        const double sl = sqrt(p->kT / p->alpha * (1.0 - exp(-2.0 * p->dt / p->tau_lambda)));
+        double F0[3] = {0, 0, 0}, F1[3] = {0, 0, 0}, e_z = 0, e_lz;
+        hcbd_hc_fluid_pair(&c, dd, r, ni, nj, 0.0, 0.0, zero, NULL, F0);
+        hcbd_hc_fluid_pair(&c, dd, r, ni, nj, 0.0, 0.0, zero, z, F1);
+        for (k = 0; k < 3; ++k) {
+            const double want = sqrt(2.0 * p->kT * f / dtf) * z[k];
+            if (fabs(F1[k] - F0[k] - want) / fabs(want) > e_z) e_z = fabs(F1[k] - F0[k] - want) / fabs(want);
+        }
+        e_lz = fabs(hcbd_hc_lambda_step(&c, 0.4, 0.3, 0.8) - hcbd_hc_lambda_step(&c, 0.4, 0.3, 0.0) - sl * 0.8) / sl;
+        NOTE("noise: fluid pair %.1e, pair variable %.1e", e_z, e_lz);
+        CHECK(e_z < 1e-12 && e_lz < 1e-12, "noise amplitudes: fluid pair %g, pair variable %g", e_z, e_lz);
+    }
+}
 #endif
