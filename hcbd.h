@@ -1275,7 +1275,8 @@ double hcbd_flory_g1(double phi, double chi);
    - pair variables: lambda_eq = hcbd_hc_lambda_eq(c, r) and the exact
      Ornstein-Uhlenbeck step over dt, hcbd_hc_lambda_step (z a unit
      deviate; 0 when kT = 0).
-   The coupling weight of fluid blob i at polymer a is W(r_ai) / n_i. */
+   The coupling weight of fluid blob i at polymer a is W(r_ai) / n_i.
+   Without c the terms are NAN (hcbd_hc_fluid_pair adds nothing). */
 typedef struct hcbd_hc_coef {
     double m, h, kT, dt;                 /* blob mass, M4 support, kT, step */
     double w0, c0, c1h, two_eta, P0, inv_nbar; /* w(0), 1/(4 pi h^3), 1/(4 pi h^5) */
@@ -8046,22 +8047,29 @@ hcbd_result hcbd_hc_params_coef(const hcbd_hc_params *p, hcbd_hc_coef *c, char *
     return HCBD_OK;
 }
 
+/* the pair terms: NAN (or nothing added) without coefficients */
 double hcbd_hc_fluid_weight(const hcbd_hc_coef *c, double r)
 {
-    const double q = r * (1.0 / c->h);
+    double q;
+    if (!c) return NAN;
+    q = r * (1.0 / c->h);
     return q < 2.0 ? c->c0 * hcbd__m4u(q) : 0.0;
 }
 
-double hcbd_hc_fluid_density(const hcbd_hc_coef *c, double wsum) { return c->w0 + wsum; }
+double hcbd_hc_fluid_density(const hcbd_hc_coef *c, double wsum) { return c ? c->w0 + wsum : NAN; }
 
-double hcbd_hc_fluid_pressure(const hcbd_hc_coef *c, double n) { return hcbd__tait_p(c->P0, c->inv_nbar, n); }
+double hcbd_hc_fluid_pressure(const hcbd_hc_coef *c, double n)
+{
+    return c ? hcbd__tait_p(c->P0, c->inv_nbar, n) : NAN;
+}
 
 void hcbd_hc_fluid_pair(const hcbd_hc_coef *c, const double d[3], double r, double n_i, double n_j,
                         double P_i, double P_j, const double dv[3], const double z[3], double F[3])
 {
-    const double q = r * (1.0 / c->h);
-    double wdr, f, fp, sf;
+    double q, wdr, f, fp, sf;
     int k;
+    if (!c || !d || !dv || !F) return;
+    q = r * (1.0 / c->h);
     if (!(q < 2.0) || !(r > 0.0)) return;
     wdr = hcbd__m4_wdr(q, c->c1h);
     f = hcbd__morris_f(c->two_eta, wdr, 1.0 / n_i, 1.0 / n_j);
@@ -8072,30 +8080,37 @@ void hcbd_hc_fluid_pair(const hcbd_hc_coef *c, const double d[3], double r, doub
 
 double hcbd_hc_polymer_weight(const hcbd_hc_coef *c, double r)
 {
+    if (!c) return NAN;
     return r < c->rc ? hcbd__rapid(r, c->sigma, c->rc, c->A) : 0.0;
 }
 
-double hcbd_hc_polymer_density(const hcbd_hc_coef *c, double wsum) { return c->W0 + wsum; }
+double hcbd_hc_polymer_density(const hcbd_hc_coef *c, double wsum) { return c ? c->W0 + wsum : NAN; }
 
 double hcbd_hc_polymer_mu(const hcbd_hc_coef *c, double n)
 {
+    if (!c) return NAN;
     return c->p_kuhn > 0 ? (double)hcbd__mu((hcbd_real)(n / c->n_max), (hcbd_real)c->chi) : 0.0;
 }
 
 double hcbd_hc_polymer_pair(const hcbd_hc_coef *c, double r, double mu_a, double mu_b, double lambda)
 {
     double fr = 0.0, ft = 0.0;
+    if (!c) return NAN;
     if (!(r < c->rc) || !(r > 0.0)) return 0.0;
     if (c->p_kuhn > 0) fr = hcbd__flory_fr(c->cfh, mu_a, mu_b, hcbd__rapid_dr(r, c->sigma, c->rc, c->A), r);
     if (c->alpha > 0) ft = hcbd__spring_fr(c->alpha, lambda, r, c->rc);
     return fr + ft;
 }
 
-double hcbd_hc_lambda_eq(const hcbd_hc_coef *c, double r) { return r < c->rc ? hcbd__leq(r, c->rc) : 0.0; }
+double hcbd_hc_lambda_eq(const hcbd_hc_coef *c, double r)
+{
+    if (!c) return NAN;
+    return r < c->rc ? hcbd__leq(r, c->rc) : 0.0;
+}
 
 double hcbd_hc_lambda_step(const hcbd_hc_coef *c, double lambda, double lambda_eq, double z)
 {
-    return lambda_eq + (lambda - lambda_eq) * c->e_lambda + c->s_lambda * z;
+    return c ? lambda_eq + (lambda - lambda_eq) * c->e_lambda + c->s_lambda * z : NAN;
 }
 
 void hcbd_hc_noise_stream_init(hcbd_hc_noise_stream *ns, uint64_t seed)

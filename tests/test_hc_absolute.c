@@ -1114,6 +1114,15 @@ void test_hc_equations_exported(void)
     int k;
     a_equations(0);
     a_equations(1);
+    /* bad input: refused with a message naming the value, NAN without c */
+    CHECK(hcbd_hc_params_coef(NULL, &c, msg, sizeof msg) == HCBD_ERR_NULL &&
+          hcbd_hc_params_coef(p, NULL, msg, sizeof msg) == HCBD_ERR_NULL, "NULL refused");
+    p->h = -1;
+    CHECK(hcbd_hc_params_coef(p, &c, msg, sizeof msg) == HCBD_ERR_PARAM && strstr(msg, "h = -1") != NULL,
+          "h = -1 refused: %s", msg);
+    p->h = hc_scene(5, 5, 5, 6).params.h;
+    CHECK(isnan(hcbd_hc_fluid_weight(NULL, 1)) && isnan(hcbd_hc_polymer_pair(NULL, 1, 0, 0, 0)) &&
+          isnan(hcbd_hc_lambda_step(NULL, 0, 0, 0)), "NAN without coefficients");
     /* the noise terms against their formulas (the world's own noise is
        tested by the equipartition tests): sqrt(2 kT f_ij / dt) z with
        f_ij = -2 eta w'(r) / (n_i n_j r) (2018 eq. 18-19), and
