@@ -399,6 +399,54 @@ void test_hc_abs_polymer_pair_forces(void)
    Shardlow sweep at dt = 0.002, whose exact pair solutions differ from
    the Euler kick by O(f dt / m) relative: allowed 3 Gamma_0 dt of the
    viscous part, Gamma_0 = max_i sum_j f_ij / m. */
+/* The scene of the one-step tests: the fluid's lattice jittered by up to
+   0.3 with velocities in (-0.5, 0.5) from the generator of seed, six
+   polymers clustered at the centre, and each pair within rc given a pair
+   variable off its equilibrium (lam0[6 a + b], NAN beyond rc; *npair of
+   them).  Returns 0 when a call failed (the world then created or not). */
+static int a_step_scene(hcbd_hc_world *w, const hcbd_hc_world_def *d, uint64_t seed, double lam0[36],
+                        int *npair)
+{
+    const hcbd_hc_params *p = &d->params;
+    const int nf = d->fluid_capacity, np = 6;
+    const double cl[6][3] = {{0, 0, 0}, {1.3, 0.2, -0.4}, {0.3, 1.5, 0.5}, {-0.9, 0.8, 1.1},
+                             {0.7, -1.2, 0.9}, {-0.2, -0.6, -1.4}};
+    double *xyz = (double *)malloc(sizeof(double) * 3 * nf), *v = (double *)malloc(sizeof(double) * 3 * nf);
+    double pxyz[18];
+    hcbd_rng g;
+    int i, a, b, c, ok;
+    *npair = 0;
+    hcbd_rng_seed(&g, seed);
+    if (!hc_create(w, d)) {
+        free(xyz); free(v);
+        return 0;
+    }
+    ok = a_ok(w, hcbd_hc_world_place_fluid_lattice(w, nf), "lattice");
+    for (i = 0; i < nf && ok; ++i)
+        for (c = 0; c < 3; ++c) {
+            double x = (c == 0 ? w->fx[i] : (c == 1 ? w->fy[i] : w->fz[i])) + 0.6 * (hcbd_rng_uniform(&g) - 0.5);
+            xyz[3 * i + c] = x - p->L[c] * floor(x / p->L[c]);
+            if (xyz[3 * i + c] >= p->L[c]) xyz[3 * i + c] = 0;
+            v[3 * i + c] = hcbd_rng_uniform(&g) - 0.5;
+        }
+    ok = ok && a_ok(w, hcbd_hc_world_set_fluid(w, nf, xyz, v), "fluid");
+    for (a = 0; a < np; ++a)
+        for (c = 0; c < 3; ++c) pxyz[3 * a + c] = 0.5 * p->L[c] + cl[a][c];
+    ok = ok && a_ok(w, hcbd_hc_world_set_polymers(w, np, pxyz), "polymers");
+    for (a = 0; a < np && ok; ++a)
+        for (b = a + 1; b < np; ++b) {
+            double dd[3], r = a_sep(p->L, pxyz[3 * a], pxyz[3 * a + 1], pxyz[3 * a + 2], pxyz[3 * b],
+                                    pxyz[3 * b + 1], pxyz[3 * b + 2], dd);
+            lam0[6 * a + b] = NAN;
+            if (r >= p->rc) continue;
+            lam0[6 * a + b] = (1 - r / p->rc) * (1 - r / p->rc) + 0.3 - 0.1 * ((a + b) % 4);
+            ok = a_ok(w, hcbd_hc_world_set_lambda(w, a, b, lam0[6 * a + b]), "set_lambda");
+            ++*npair;
+        }
+    free(xyz); free(v);
+    return ok;
+}
+
 void test_hc_abs_one_step(void)
 {
     const double tol = ABS_FLOAT ? 1e-4 : 1e-9;
@@ -407,16 +455,12 @@ void test_hc_abs_one_step(void)
         hcbd_hc_world_def d = hc_scene(5, 5, 5, 6);
         hcbd_hc_params *p = &d.params;
         hcbd_hc_world w;
-        hcbd_rng g;
         const int nf = d.fluid_capacity, np = 6;
-        const double cl[6][3] = {{0, 0, 0}, {1.3, 0.2, -0.4}, {0.3, 1.5, 0.5}, {-0.9, 0.8, 1.1},
-                                 {0.7, -1.2, 0.9}, {-0.2, -0.6, -1.4}};
-        double *xyz = (double *)malloc(sizeof(double) * 3 * nf), *v = (double *)malloc(sizeof(double) * 3 * nf);
         double *n = (double *)malloc(sizeof(double) * nf), *Fp = (double *)malloc(sizeof(double) * 3 * nf);
         double *Fv = (double *)malloc(sizeof(double) * 3 * nf), *fa = (double *)malloc(sizeof(double) * 3 * nf);
         double *v0 = (double *)malloc(sizeof(double) * 3 * nf), *dv = (double *)malloc(sizeof(double) * 3 * nf);
         double *pred = (double *)malloc(sizeof(double) * 3 * nf);
-        double pxyz[18], pn[6], F[18], u[18], buf[18], lam0[36], sc, usc, e_n, e_P, e_pn, e_F, e_u, e_fa, e_dv,
+        double pn[6], F[18], u[18], buf[18], lam0[36], sc, usc, e_n, e_P, e_pn, e_F, e_u, e_fa, e_dv,
             e_dr = 0, e_l = 0, g0 = 0, ptot[3] = {0, 0, 0}, Fsum[3] = {0, 0, 0};
         const char *name = var == 0 ? "Euler, kT = 1" : (var == 1 ? "Euler, kT = 0" : "Shardlow, dt = 0.002");
         double m, dp;
@@ -431,30 +475,7 @@ void test_hc_abs_one_step(void)
             p->dt = 0.002;
         }
         m = A_MASS(p);
-        hcbd_rng_seed(&g, 11 + var);
-        if (!hc_create(&w, &d)) return;
-        ok = a_ok(&w, hcbd_hc_world_place_fluid_lattice(&w, nf), "lattice");
-        for (i = 0; i < nf && ok; ++i)
-            for (c = 0; c < 3; ++c) {
-                double x = (c == 0 ? w.fx[i] : (c == 1 ? w.fy[i] : w.fz[i])) + 0.6 * (hcbd_rng_uniform(&g) - 0.5);
-                xyz[3 * i + c] = x - p->L[c] * floor(x / p->L[c]);
-                if (xyz[3 * i + c] >= p->L[c]) xyz[3 * i + c] = 0;
-                v[3 * i + c] = hcbd_rng_uniform(&g) - 0.5;
-            }
-        ok = ok && a_ok(&w, hcbd_hc_world_set_fluid(&w, nf, xyz, v), "fluid");
-        for (a = 0; a < np; ++a)
-            for (c = 0; c < 3; ++c) pxyz[3 * a + c] = 0.5 * p->L[c] + cl[a][c];
-        ok = ok && a_ok(&w, hcbd_hc_world_set_polymers(&w, np, pxyz), "polymers");
-        for (a = 0; a < np && ok; ++a)
-            for (b = a + 1; b < np; ++b) {
-                double dd[3], r = a_sep(p->L, pxyz[3 * a], pxyz[3 * a + 1], pxyz[3 * a + 2], pxyz[3 * b],
-                                        pxyz[3 * b + 1], pxyz[3 * b + 2], dd);
-                lam0[6 * a + b] = NAN;
-                if (r >= p->rc) continue;
-                lam0[6 * a + b] = (1 - r / p->rc) * (1 - r / p->rc) + 0.3 - 0.1 * ((a + b) % 4);
-                ok = a_ok(&w, hcbd_hc_world_set_lambda(&w, a, b, lam0[6 * a + b]), "set_lambda");
-                ++npair;
-            }
+        ok = a_step_scene(&w, &d, 11 + var, lam0, &npair);
         if (!ok) break;
         /* the state at t, from the equations */
         a_fluid_density(&w, n);
@@ -554,7 +575,7 @@ void test_hc_abs_one_step(void)
             }
         }
         hcbd_hc_world_destroy(&w);
-        free(xyz); free(v); free(n); free(Fp); free(Fv); free(fa); free(v0); free(dv); free(pred);
+        free(n); free(Fp); free(Fv); free(fa); free(v0); free(dv); free(pred);
     }
 }
 
@@ -953,14 +974,11 @@ static void a_equations(int noisy)
     hcbd_hc_params *p = &d.params;
     hcbd_hc_world w;
     hcbd_hc_coef c;
-    hcbd_rng g;
     const int nf = d.fluid_capacity, np = 6;
-    const double cl[6][3] = {{0, 0, 0}, {1.3, 0.2, -0.4}, {0.3, 1.5, 0.5}, {-0.9, 0.8, 1.1},
-                             {0.7, -1.2, 0.9}, {-0.2, -0.6, -1.4}};
-    double *xyz = (double *)malloc(sizeof(double) * 3 * nf), *v = (double *)malloc(sizeof(double) * 3 * nf);
+    double *v = (double *)malloc(sizeof(double) * 3 * nf);
     double *n = (double *)malloc(sizeof(double) * nf), *P = (double *)malloc(sizeof(double) * nf);
     double *F = (double *)malloc(sizeof(double) * 3 * nf), *fa = (double *)malloc(sizeof(double) * 3 * nf);
-    double pxyz[18], pn[6], mu[6], pF[18], lam[36], lam1[36], e_n = 0, e_P = 0, e_dv = 0, e_pn = 0, e_mu = 0,
+    double pn[6], mu[6], pF[18], lam[36], lam1[36], e_n = 0, e_P = 0, e_dv = 0, e_pn = 0, e_mu = 0,
         e_pF = 0, e_l = 0, sv = 0, sF = 0, m, px0[6], py0[6], pz0[6], dr[18], e_dr = 0, usc = 0;
     hcbd_hc_noise_stream ns;
     char msg[160];
@@ -975,31 +993,14 @@ static void a_equations(int noisy)
     CHECK(hcbd_hc_params_coef(p, &c, msg, sizeof msg) == HCBD_OK, "coef: %s", msg);
     hcbd_hc_noise_stream_init(&ns, p->seed);
     m = c.m;
-    hcbd_rng_seed(&g, 23);
-    if (!hc_create(&w, &d)) return;
-    ok = a_ok(&w, hcbd_hc_world_place_fluid_lattice(&w, nf), "lattice");
-    for (i = 0; i < nf && ok; ++i)
-        for (k = 0; k < 3; ++k) {
-            double x = (k == 0 ? w.fx[i] : (k == 1 ? w.fy[i] : w.fz[i])) + 0.6 * (hcbd_rng_uniform(&g) - 0.5);
-            xyz[3 * i + k] = x - p->L[k] * floor(x / p->L[k]);
-            if (xyz[3 * i + k] >= p->L[k]) xyz[3 * i + k] = 0;
-            v[3 * i + k] = hcbd_rng_uniform(&g) - 0.5;
-        }
-    ok = ok && a_ok(&w, hcbd_hc_world_set_fluid(&w, nf, xyz, v), "fluid");
-    for (a = 0; a < np; ++a)
-        for (k = 0; k < 3; ++k) pxyz[3 * a + k] = 0.5 * p->L[k] + cl[a][k];
-    ok = ok && a_ok(&w, hcbd_hc_world_set_polymers(&w, np, pxyz), "polymers");
+    ok = a_step_scene(&w, &d, 23, lam, &npair);
     for (a = 0; a < np && ok; ++a)
         for (b = a + 1; b < np; ++b) {
-            double dd[3], r = a_sep(p->L, pxyz[3 * a], pxyz[3 * a + 1], pxyz[3 * a + 2], pxyz[3 * b],
-                                    pxyz[3 * b + 1], pxyz[3 * b + 2], dd);
-            lam[6 * a + b] = NAN;
-            if (r >= p->rc) continue;
-            lam[6 * a + b] = hcbd_hc_lambda_eq(&c, r) + 0.3 - 0.1 * ((a + b) % 4);
+            double dd[3], r;
+            if (isnan(lam[6 * a + b])) continue;
+            r = a_sep(p->L, w.px[a], w.py[a], w.pz[a], w.px[b], w.py[b], w.pz[b], dd);
             lam1[6 * a + b] = hcbd_hc_lambda_step(&c, lam[6 * a + b], hcbd_hc_lambda_eq(&c, r),
                                                   noisy ? hcbd_hc_noise_lambda(&ns, 0, a, b) : 0.0);
-            ok = a_ok(&w, hcbd_hc_world_set_lambda(&w, a, b, lam[6 * a + b]), "set_lambda");
-            ++npair;
         }
     if (!ok) return;
     /* fluid: densities, pressures, the Euler pair forces of t */
@@ -1102,7 +1103,7 @@ static void a_equations(int noisy)
     CHECK(e_dr < (ABS_FLOAT ? 3e-4 : tol), "polymer displacement %g", e_dr);
     CHECK(e_l < (ABS_FLOAT ? 1e-6 : 1e-12), "pair variables %g", e_l);
     hcbd_hc_world_destroy(&w);
-    free(xyz); free(v); free(n); free(P); free(F); free(fa);
+    free(v); free(n); free(P); free(F); free(fa);
 }
 
 void test_hc_equations_exported(void)
