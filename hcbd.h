@@ -8877,10 +8877,11 @@ static void hcbd__hc_fluid_density(hcbd_hc_world *w)
 }
 
 /* Polymer pairs run over the half list (owner a < partner b) in two
-   steps: the owner evaluates each pair within rc once (the traversal) and
+   steps: the owner evaluates each pair within rc once, and the traversal
    keeps its weight (pw) or force (pf) per list entry, zero for the skin's;
    then each polymer sums its own pairs and, through the reverse list (its
-   pairs as a partner, owners in increasing id), the others.  Double
+   pairs as a partner, owners in increasing id; hcbd__rev_add), the
+   others.  Double
    precision, a fixed order set by the ids alone, any thread count: each
    owner writes only its own entries, so the owners are shared out in
    contiguous ranges, and counters are summed per thread. */
