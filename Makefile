@@ -124,8 +124,8 @@ lammps:
 test-lammps: lammps $(B)/gibd_bulk $(B)/shear_flow $(B)/channel_flow
 	lammps/check.sh
 
-# make mutants-lammps: every injected error of the plugin is caught by the
-# atom-by-atom part of test-lammps (lammps/mutants.sh, ~4 min)
+# make mutants-lammps: every injected error of the plugins is caught by the
+# atom-by-atom part of test-lammps (lammps/mutants.sh, ~35 min)
 mutants-lammps: lammps
 	lammps/mutants.sh
 

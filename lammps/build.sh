@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # lammps/build.sh: LAMMPS with the PLUGIN package and MPI (Debian's Open MPI),
-# built from Debian's source package into build/lammps, then the hcbd GI-BD
-# plugin (build/lammps/plugin/gibdplugin.so) against it.  `make lammps` runs
+# built from Debian's source package into build/lammps, then the hcbd
+# plugins (build/lammps/plugin/gibdplugin.so, hcbdplugin.so) against it.  `make lammps` runs
 # this.  Everything comes from Debian packages: cmake, g++, libopenmpi-dev,
 # openmpi-bin, and the lammps source package (apt-get source, which needs a
 # deb-src entry: .ci/run adds one).  A tool that is missing skips the build
@@ -60,4 +60,4 @@ cmake --build "$B/plugin" -j"$jobs" > "$B/plugin-build.log" 2>&1 || { tail -n 40
 # the star potential of hcbd_star_potential as a pair table (in.gibd_star)
 awk -v f=128 -v sigma=1 -v eps=1 -v n=5000 -v rlo=0.01 -v rhi=2.5 -f "$root/bench/peers/star_table.awk" \
     > "$B/star.table"
-echo "make lammps: $B/lmp, $B/plugin/gibdplugin.so and $B/star.table"
+echo "make lammps: $B/lmp, $B/plugin/gibdplugin.so, $B/plugin/hcbdplugin.so and $B/star.table"

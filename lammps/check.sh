@@ -6,11 +6,14 @@
 # the total momentum conserved to round-off; the same bits on any number of
 # ranks and through a restart file; bad fix arguments stop LAMMPS with an
 # error naming them.  And 20 steps from the same atoms equal hcbd's world's
-# to round-off, ideal carriers and pair_style star.  HCBD_LAMMPS_DIR: another
-# build (lmp, plugin/gibdplugin.so); HCBD_LAMMPS_QUICK=1: only the bad
+# to round-off, ideal carriers and pair_style star.  fix hcbd (the 2018
+# model's fluid so far) has its part in lammps/check_hcbd.sh.
+# HCBD_LAMMPS_DIR: another
+# build (lmp, plugin/gibdplugin.so, hcbdplugin.so); HCBD_LAMMPS_QUICK=1: only the bad
 # inputs and the atom-by-atom checks (seconds); HCBD_LAMMPS_BITS=1: those
 # and the bit-for-bit checks, on the ranks of HCBD_LAMMPS_RANKS (default
-# "1 2 4"; "1 2 4 8 16" on a bigger machine); HCBD_MPIRUN replaces
+# "1 2 4"; "1 2 4 8 16" on a bigger machine); HCBD_LAMMPS_PART=hcbd: fix
+# hcbd's part alone; HCBD_MPIRUN replaces
 # "mpirun --allow-run-as-root --oversubscribe".  Ends with "N passed, N failed".
 set -u
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -38,6 +41,14 @@ same_bits() {
     for np in $RANKS; do cmp -s "$1${RANKS%% *}.txt" "$1$np.txt" || return 1; done
 }
 in=$root/lammps/in.gibd_ideal
+# shellcheck source=lammps/check_hcbd.sh
+. "$root/lammps/check_hcbd.sh"
+if [ "${HCBD_LAMMPS_PART:-}" = hcbd ]; then # fix hcbd's part alone (lammps/mutants.sh for fix_hcbd.cpp)
+    hcbd_quick
+    if [ -z "${HCBD_LAMMPS_QUICK:-}" ]; then hcbd_bits; [ -n "$STATS" ] && hcbd_stats; fi
+    echo "$pass passed, $fail failed"
+    [ $fail -eq 0 ]; exit
+fi
 
 # bad arguments: the fix line of the input with ARGS, or the input with a
 # line removed; LAMMPS must stop with an error naming NAME.  A third
@@ -161,6 +172,7 @@ compare "walls, Gaussian, exact sweep, stars, 2014 density, uniform, 4 ranks" 4 
 compare "walls, no-slip, moving, Euler pairs, ideal, 2016 density, Gaussian, 2 ranks" 2 3e-3 1.3 0.8 0.9 2e-4 2016 gauss 0 1 1 euler lm 0 1.5 noslip -0.5 0.3 1.7
 # (100 steps, a mobile xi: atoms cross both interfaces, whatever the start)
 compare "walls, reflecting, exact sweep, ideal, 2016 density, Gaussian, 1 rank" 1 3e-3 0.25 0.8 0.9 2e-4 2016 gauss 0 1 1 exact lm 0 1.5 reflect 0 0 0 100
+hcbd_quick
 if [ -n "${HCBD_LAMMPS_QUICK:-}" ]; then # lammps/mutants.sh: the checks up to here
     echo "$pass passed, $fail failed"
     [ $fail -eq 0 ]; exit
@@ -363,6 +375,9 @@ if [ -n "$STATS" ]; then
         else bad "walls, 2 ranks: $pen atom-steps inside a wall"; fi
     else bad "walls, 2 ranks: LAMMPS failed: $(grep ERROR "$t/chan.log" | head -n 1)"; fi
 fi
+
+hcbd_bits
+[ -n "$STATS" ] && hcbd_stats
 
 echo "$pass passed, $fail failed"
 [ $fail -eq 0 ]

@@ -38,7 +38,9 @@ PY
         echo "$name: does not build"; missed=$((missed + 1)); continue
     fi
     ln -sf "$B/lmp" "$work/lmp"
-    first=$(HCBD_LAMMPS_DIR=$work HCBD_LAMMPS_QUICK=1 "$root/lammps/check.sh" 2>&1 | grep -m 1 '^  FAIL' | sed 's/^  FAIL //')
+    part=
+    [ "$file" = fix_hcbd.cpp ] && part=hcbd
+    first=$(HCBD_LAMMPS_DIR=$work HCBD_LAMMPS_QUICK=1 HCBD_LAMMPS_PART=$part "$root/lammps/check.sh" 2>&1 | grep -m 1 '^  FAIL' | sed 's/^  FAIL //')
     if [ -n "$first" ]; then echo "$name: caught by: ${first%%:*}"
     else echo "$name: MISSED"; missed=$((missed + 1)); fi
 done 3<<'LIST'
@@ -87,6 +89,18 @@ star_force|pair_star.cpp|const double fpair = hcbd_star_force_over_r(|const doub
 star_sigma|pair_star.cpp|sigma[i][j] = s1;|sigma[i][j] = 1.1 * s1;
 star_eps|pair_star.cpp|eps[i][j] = e1;|eps[i][j] = 1.1 * e1;
 star_energy|pair_star.cpp|const double e = eflag ? hcbd_star_potential(|const double e = eflag ? 1.1 * hcbd_star_potential(
+hc_weight_of_partner|fix_hcbd.cpp|acc[j] += w;|acc[j] += w + w / 10;
+hc_reaction_on_partner|fix_hcbd.cpp|acc[3 * j + e] -= q;|acc[3 * j + e] -= q + q / 10;
+hc_density|fix_hcbd.cpp|hcbd_hc_fluid_density(&c, (double) acc[i] / wscale)|hcbd_hc_fluid_density(&c, 1.1 * (double) acc[i] / wscale)
+hc_pressure|fix_hcbd.cpp|np_[2 * i + 1] = hcbd_hc_fluid_pressure(&c, n);|np_[2 * i + 1] = 1.1 * hcbd_hc_fluid_pressure(&c, n);
+hc_kick|fix_hcbd.cpp|v[i][d] += dt_m * (|v[i][d] += 1.1 * dt_m * (
+hc_lammps_force|fix_hcbd.cpp|fscale + f[i][d])|fscale + 1.1 * f[i][d])
+hc_advection|fix_hcbd.cpp|x[i][d] += v[i][d] * dt;|x[i][d] += 1.1 * v[i][d] * dt;
+hc_noise_step|fix_hcbd.cpp|euler_pairs(update->ntimestep - 1);|euler_pairs(update->ntimestep);
+hc_noise_lower_tag|fix_hcbd.cpp|const int i = tag[i0] < tag[j0] ? i0 : j0|const int i = tag[i0] > tag[j0] ? i0 : j0
+hc_le_velocity|fix_hcbd.cpp|(vj[0] + kj * le_v)|(vj[0] + 1.1 * kj * le_v)
+hc_le_offset|fix_hcbd.cpp|min_image(ri[0] - rj[0] - k * le_s|min_image(ri[0] - rj[0] - 1.1 * k * le_s
+hc_le_frame|fix_hcbd.cpp|if (k) vc[3 * i] -= k * le_v;|if (k) vc[3 * i] -= 1.1 * k * le_v;
 LIST
 echo "mutants-lammps: $missed missed"
 [ $missed -eq 0 ]

@@ -1,0 +1,126 @@
+# shellcheck shell=bash disable=SC2154
+# fix hcbd's part of make test-lammps, sourced by lammps/check.sh (its
+# lmp, MPI, RANKS, t, ok, bad, same_bits and within): hcbd_quick (bad
+# inputs, atom by atom against hcbd's own 2018 world, lammps/hc_ref.c),
+# hcbd_bits (the same bits on RANKS) and hcbd_stats (the fluid's
+# temperature against hcbd's world's).  The scene is lammps/in.hcbd_compare:
+# 512 fluid blobs at nbar = 0.5 in a 10.08^3 box, every coefficient away
+# from 1 (rho 0.65, eta 0.2, P0 1.5, h 1.1, kT 1.7, dt 0.02, so dt/dt_visc
+# = 0.041 and dt c_s / h = 0.073).
+hplug=$B/plugin/hcbdplugin.so
+hin=$root/lammps/in.hcbd_compare
+hcoef="0.02 0.65 0.5 0.2 1.5 1.1 1.7" # hc_ref's dt rho nbar eta P0 h kT, as hin's defaults
+cc -O2 -std=c99 -DHCBD_MODEL=HCBD_MODEL_HCBD -I"$root" -o "$t/hc_ref" "$root/lammps/hc_ref.c" -lm
+
+hcbd_quick() {
+    local name edit out
+    if [ ! -f "$hplug" ]; then bad "fix hcbd: no $hplug (make lammps builds it)"; return; fi
+    # bad arguments and settings: LAMMPS stops with an error naming them
+    hexpect() {
+        name=$1 edit=$2
+        sed "$edit" "$hin" > "$t/hbad.in"
+        out=$("$lmp" -in "$t/hbad.in" -var plugin "$hplug" -var warm 2 -var steps 2 -log none 2>&1)
+        if printf '%s' "$out" | grep -q "ERROR.*$name"; then ok "fix hcbd: bad input -> error names $name"
+        else bad "fix hcbd: bad input ($edit): $(printf '%s' "$out" | grep ERROR | head -n 1)"; fi
+    }
+    local fl='s/^fix  *g all hcbd .*/fix g all hcbd'
+    local tail_='rho ${rho} nbar ${nbar} eta ${eta} P0 ${P0} h ${h} kT ${kT}/'
+    hexpect "eta = -1" "$fl eta -1 rho \${rho} nbar \${nbar} P0 \${P0} h \${h} kT \${kT}/"
+    hexpect "rho = x is not a number" "$fl rho x/"
+    hexpect "unknown keyword bogus" "$fl bogus 1 $tail_"
+    hexpect "keyword seed has no value" "$fl $tail_; s/kT \${kT}\$/kT \${kT} seed/"
+    hexpect "fluct = maybe is not yes or no" "$fl fluct maybe $tail_"
+    hexpect "pair = bogus is not exact or euler" "$fl pair bogus $tail_"
+    hexpect "pair exact .* is not built yet" "$fl pair exact $tail_"
+    hexpect "seed = -3 is not an unsigned integer" "$fl seed -3 $tail_"
+    hexpect "comm_modify vel yes" "/^comm_modify/d"
+    hexpect "needs newton on" "s/^units .*/&\nnewton off/"
+    hexpect "group must be all" "s/^fix  *g all hcbd/group half id 1:10\nfix g half hcbd/"
+    hexpect "has mass .* rho / nbar" "s/^pair_style .*/mass 1 2.0\n&/"
+    hexpect "must reach 2 h" 's/^pair_style .*/pair_style zero 2.0/'
+    hexpect "units real" "s/^units .*/units real/"
+    hexpect "2 atom types" "s/^create_box .*/create_box 2 box/; s/^mass .*/mass * \$(v_rho\/v_nbar)/"
+    hexpect "box edge L\\[0\\] = .* is shorter" "s/^variable  *ns index 8/variable ns index 4/"
+    # a lattice whose spacing exceeds 2 h: every blob alone, n = w(0) = 4 nbar
+    hexpect "density n/nbar outside" "s/^variable  *ns index 8/variable ns index 4/; s/^variable  *nbar index 0.5/variable nbar index 0.06/"
+    hexpect "moved more than h/2 in one step" "s/^variable  *dt index 0.02/variable dt index 0.2/"
+    hexpect "may only shear" "s/^fix  *g all hcbd/fix grow all deform 1 x scale 1.01\n&/"
+    # atom by atom: from the same atoms (LAMMPS's after 50 steps off the
+    # jittered lattice), 20 steps of fix hcbd and of hcbd's world end in the
+    # same atoms to round-off (the fixed-point sums resolve 3e-11 of a
+    # pair force); the atoms move by 0.6-4 and their velocities change by
+    # 1.7-10, sqrt(kT/m) = 1.14, so an error of 1e-3 in any term would show
+    # by orders of magnitude
+    hcompare() {
+        local name=$1 np=$2 fluct=$3 gdot=$4 gx=$5 L dx dv n mx mv
+        if ! $MPI -np "$np" "$lmp" -in "$hin" -var plugin "$hplug" -var fluct "$fluct" -var gdot "$gdot" -var gx "$gx" \
+            -var start "$t/h0.txt" -var end "$t/h1.txt" -log none -screen none > /dev/null 2>&1; then
+            bad "fix hcbd, $name: LAMMPS failed"; return
+        fi
+        # shellcheck disable=SC2086
+        if ! "$t/hc_ref" "$t/h0.txt" "$t/hr.txt" 20 $hcoef 1 "$fluct" euler "$gdot" "$gx"; then
+            bad "fix hcbd, $name: hc_ref failed"; return
+        fi
+        L=$(awk 'NR == 6 { printf "%.17g", $2 - $1 }' "$t/h0.txt")
+        awk -v vle="$(awk -v g="$gdot" -v L="$L" 'BEGIN { printf "%.17g", g * L }')" -f "$root/lammps/le_canon.awk" \
+            "$t/h1.txt" > "$t/h1c.txt"
+        read -r dx dv n < <(awk -v L="$L" -f "$root/lammps/maxdiff.awk" "$t/h1c.txt" "$t/hr.txt")
+        read -r mx mv _ < <(awk -v L="$L" -f "$root/lammps/maxdiff.awk" "$t/h0.txt" "$t/h1c.txt")
+        echo "    fix hcbd, $name: largest |x - x_hcbd| $dx, |v - v_hcbd| $dv (moved by $mx, $mv)"
+        if awk -v dx="$dx" -v dv="$dv" -v mx="$mx" -v mv="$mv" -v n="$n" \
+            'BEGIN { exit !(n == 512 && dx < 1e-9 && dv < 1e-8 && mx > 0.3 && mv > 1) }'; then
+            ok "fix hcbd, $name: 20 steps = hcbd's world, atom by atom"
+        else bad "fix hcbd, $name: fix hcbd and hcbd's world part: |dx| $dx, |dv| $dv"; fi
+    }
+    hcompare "Euler pairs with fluctuations, 1 rank" 1 yes 0 0
+    hcompare "Euler pairs without fluctuations, 2 ranks" 2 no 0 0
+    hcompare "Euler pairs with fluctuations, 4 ranks" 4 yes 0 0
+    hcompare "Euler pairs, sheared (gdot = 0.8), 2 ranks" 2 yes 0.8 0
+    hcompare "Euler pairs without fluctuations, sheared (gdot = 0.5), 4 ranks" 4 no 0.5 0
+    hcompare "Euler pairs, body force (gx = 3), 2 ranks" 2 yes 0 3
+}
+
+# from one restart file, 300 steps on RANKS end in the same atoms bit for
+# bit (positions wrapped by their owners, each pair with the lower tag
+# first, fixed-point sums, noise keyed by step and tags); sheared as well
+hcbd_bits() {
+    local np
+    [ -f "$hplug" ] || return
+    for g in 0 0.8; do
+        "$lmp" -in "$hin" -var plugin "$hplug" -var gdot "$g" -var steps 0 -var save "$t/hr$g" -log none \
+            -screen none > /dev/null 2>&1
+        for np in $RANKS; do
+            $MPI -np "$np" "$lmp" -in "$hin" -var plugin "$hplug" -var from restart -var restart "$t/hr$g" \
+                -var gdot "$g" -var steps 300 -var end "$t/hb$g-$np.txt" -log none -screen none > /dev/null 2>&1
+        done
+        if same_bits "$t/hb$g-"; then ok "fix hcbd, gdot = $g, ranks $RANKS: the same atoms bit for bit after 300 steps"
+        else bad "fix hcbd, gdot = $g, ranks $RANKS: the atoms differ after 300 steps"; fi
+    done
+}
+
+# the fluid's temperature (Euler pairs with fluctuations: hot by about
+# 0.33 dt/dt_visc = 1.3 % here) on 2 ranks equals hcbd's world's at the
+# same parameters within four combined errors (20000 steps after the 50,
+# T every 10 steps, 10 blocks), and is kT within 3 %
+hcbd_stats() {
+    [ -f "$hplug" ] || return
+    local T eT hT heT
+    blocks() { # T samples (step T per line) after the first 2000 steps: mean and error of 10 blocks
+        awk '$1 > 2000 { x[++n] = $2 } END { b = int(n / 10); for (k = 0; k < 10; ++k) { s = 0
+             for (j = 1; j <= b; ++j) s += x[k * b + j]; m[k] = s / b; a += m[k] / 10 }
+             for (k = 0; k < 10; ++k) v += (m[k] - a) ^ 2; printf "%.6g %.3g\n", a, sqrt(v / 90) }'
+    }
+    if ! $MPI -np 2 "$lmp" -in "$hin" -var plugin "$hplug" -var seed 21 -var steps 22000 -var thermo 10 \
+        -var start "$t/hs0.txt" -log "$t/hs.log" -screen none > /dev/null 2>&1; then
+        bad "fix hcbd, 2 ranks: temperature run failed: $(grep ERROR "$t/hs.log" | head -n 1)"; return
+    fi
+    read -r T eT < <(awk '/^ *Step/ { f = 1; next } /^Loop/ { f = 0 } f && NF == 2' "$t/hs.log" | blocks)
+    # shellcheck disable=SC2086
+    read -r hT heT < <("$t/hc_ref" "$t/hs0.txt" /dev/null 22000 $hcoef 22 yes euler 0 0 10 | blocks)
+    echo "    fix hcbd: fluid temperature $T +- $eT, hcbd's world $hT +- $heT (kT = 1.7)"
+    if [[ "$T $eT $hT $heT" =~ ^[0-9.e-]+\ [0-9.e-]+\ [0-9.e-]+\ [0-9.e-]+$ ]] && within "$T" "$eT" "$hT" "$heT"; then ok "fix hcbd, 2 ranks: the fluid's temperature is hcbd's world's"
+    else bad "fix hcbd, 2 ranks: temperature $T +- $eT, hcbd's world $hT +- $heT"; fi
+    if awk -v T="$T" 'BEGIN { d = T / 1.7 - 1; exit !(d > -0.03 && d < 0.03) }'; then
+        ok "fix hcbd, 2 ranks: the fluid's temperature is kT within 3 % ($T)"
+    else bad "fix hcbd, 2 ranks: temperature $T is not kT = 1.7"; fi
+}
