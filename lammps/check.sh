@@ -33,7 +33,10 @@ trap 'rm -rf "$t"' EXIT
 pass=0
 fail=0
 ok() { pass=$((pass + 1)); echo "  ok   $1"; }
-bad() { fail=$((fail + 1)); echo "  FAIL $1"; }
+bad() { # HCBD_LAMMPS_FIRST_FAIL=1 (lammps/mutants.sh): stop at the first
+    fail=$((fail + 1)); echo "  FAIL $1"
+    if [ -n "${HCBD_LAMMPS_FIRST_FAIL:-}" ]; then echo "$pass passed, $fail failed"; exit 1; fi
+}
 # same_bits PREFIX: the files PREFIX<np>.txt of all RANKS exist and are equal
 same_bits() {
     local np

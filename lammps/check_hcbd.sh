@@ -6,15 +6,61 @@
 # temperature against hcbd's world's).  The scene is lammps/in.hcbd_compare:
 # 512 fluid blobs at nbar = 0.5 in a 10.08^3 box, every coefficient away
 # from 1 (rho 0.65, eta 0.2, P0 1.5, h 1.1, kT 1.7, dt 0.02, so dt/dt_visc
-# = 0.041 and dt c_s / h = 0.073).
+# = 0.041 and dt c_s / h = 0.073), and with npoly=60, 60 polymers (xi 30,
+# sigma 0.6, rc 2, alpha 200, tau_lambda 0.5, p 30, n_max 5, chi 0.3).
 hplug=$B/plugin/hcbdplugin.so
 hin=$root/lammps/in.hcbd_compare
-hcoef="0.02 0.65 0.5 0.2 1.5 1.1 1.7" # hc_ref's dt rho nbar eta P0 h kT, as hin's defaults
+# hc_ref's parameters, as hin's defaults
+hcoef="dt=0.02 rho=0.65 nbar=0.5 eta=0.2 P0=1.5 h=1.1 kT=1.7 nf=512 xi=30 sigma=0.6 rc=2 alpha=200 tau_lambda=0.5 p=30 n_max=5 chi=0.3"
 cc -O2 -std=c99 -DHCBD_MODEL=HCBD_MODEL_HCBD -I"$root" -o "$t/hc_ref" "$root/lammps/hc_ref.c" -lm
 
 hcbd_quick() {
-    local name edit out
+    local name edit out dx dv n
     if [ ! -f "$hplug" ]; then bad "fix hcbd: no $hplug (make lammps builds it)"; return; fi
+    # atom by atom: from the same atoms (LAMMPS's after 50 steps off the
+    # jittered lattice, every pair variable at lambda_eq), 20 steps of fix
+    # hcbd and of hcbd's world end in the same atoms to round-off (the
+    # fixed-point sums resolve 3e-11 of a pair force); the atoms move by
+    # 0.6-5 and the fluid's velocities change by 1.7-10, sqrt(kT/m) = 1.14,
+    # so an error of 1e-3 in any term would show by orders of magnitude
+    hcompare() { # name ranks fluct gdot gx [npoly substeps coupling]
+        local name=$1 np=$2 fluct=$3 gdot=$4 gx=$5 npoly=${6:-0} sub=${7:-1} cpl=${8:-shepard} L dx dv n mx mv
+        if ! $MPI -np "$np" "$lmp" -in "$hin" -var plugin "$hplug" -var fluct "$fluct" -var gdot "$gdot" -var gx "$gx" \
+            -var npoly "$npoly" -var substeps "$sub" -var coupling "$cpl" -var steps $((20 * sub)) \
+            -var start "$t/h0.txt" -var end "$t/h1.txt" -log none -screen none > /dev/null 2>&1; then
+            bad "fix hcbd, $name: LAMMPS failed"; return
+        fi
+        # shellcheck disable=SC2086
+        if ! "$t/hc_ref" "$t/h0.txt" "$t/hr.txt" 20 $hcoef seed=1 fluct="$fluct" gdot="$gdot" gx="$gx" \
+            substeps="$sub" coupling="$cpl"; then
+            bad "fix hcbd, $name: hc_ref failed"; return
+        fi
+        L=$(awk 'NR == 6 { printf "%.17g", $2 - $1 }' "$t/h0.txt")
+        awk -v vle="$(awk -v g="$gdot" -v L="$L" 'BEGIN { printf "%.17g", g * L }')" -f "$root/lammps/le_canon.awk" \
+            "$t/h1.txt" > "$t/h1c.txt"
+        read -r dx dv n < <(awk -v L="$L" -f "$root/lammps/maxdiff.awk" "$t/h1c.txt" "$t/hr.txt")
+        read -r mx mv _ < <(awk -v L="$L" -f "$root/lammps/maxdiff.awk" "$t/h0.txt" "$t/h1c.txt")
+        if [ "$npoly" -gt 0 ]; then # the polymers' own largest move
+            awk '$1 > 512' "$t/h0.txt" > "$t/hp0.txt"; awk '$1 > 512' "$t/h1c.txt" > "$t/hp1.txt"
+            read -r mp _ < <(awk -v L="$L" -f "$root/lammps/maxdiff.awk" "$t/hp0.txt" "$t/hp1.txt")
+        else mp=1; fi
+        echo "    fix hcbd, $name: largest |x - x_hcbd| $dx, |v - v_hcbd| $dv (moved by $mx, $mv; polymers by $mp)"
+        if awk -v dx="$dx" -v dv="$dv" -v mx="$mx" -v mv="$mv" -v mp="$mp" -v n="$n" -v N=$((512 + npoly)) \
+            'BEGIN { exit !(n == N && dx < 1e-9 && dv < 1e-8 && mx > 0.3 && mv > 1 && mp > 0.3) }'; then
+            ok "fix hcbd, $name: 20 steps = hcbd's world, atom by atom"
+        else bad "fix hcbd, $name: fix hcbd and hcbd's world part: |dx| $dx, |dv| $dv"; fi
+    }
+    hcompare "fluid, Euler pairs with fluctuations, 1 rank" 1 yes 0 0
+    hcompare "fluid, Euler pairs without fluctuations, 2 ranks" 2 no 0 0
+    hcompare "fluid, Euler pairs with fluctuations, 4 ranks" 4 yes 0 0
+    hcompare "fluid, sheared (gdot = 0.8), 2 ranks" 2 yes 0.8 0
+    hcompare "fluid without fluctuations, sheared (gdot = 0.5), 4 ranks" 4 no 0.5 0
+    hcompare "fluid, body force (gx = 3), 2 ranks" 2 yes 0 3
+    hcompare "60 polymers, fluctuations, 1 rank" 1 yes 0 0 60
+    hcompare "60 polymers, no fluctuations, raw coupling, 2 ranks" 2 no 0 0 60 1 raw
+    hcompare "60 polymers, sheared (gdot = 0.8), 4 ranks" 4 yes 0.8 0 60
+    hcompare "60 polymers, 3 sub-steps, 2 ranks" 2 yes 0 0 60 3
+    hcompare "60 polymers, 2 sub-steps, raw coupling, body force (gx = 0.5), 4 ranks" 4 yes 0 0.5 60 2 raw
     # bad arguments and settings: LAMMPS stops with an error naming them
     hexpect() {
         name=$1 edit=$2
@@ -45,63 +91,56 @@ hcbd_quick() {
     hexpect "density n/nbar outside" "s/^variable  *ns index 8/variable ns index 4/; s/^variable  *nbar index 0.5/variable nbar index 0.06/"
     hexpect "moved more than h/2 in one step" "s/^variable  *dt index 0.02/variable dt index 0.2/"
     hexpect "may only shear" "s/^fix  *g all hcbd/fix grow all deform 1 x scale 1.01\n&/"
-    # atom by atom: from the same atoms (LAMMPS's after 50 steps off the
-    # jittered lattice), 20 steps of fix hcbd and of hcbd's world end in the
-    # same atoms to round-off (the fixed-point sums resolve 3e-11 of a
-    # pair force); the atoms move by 0.6-4 and their velocities change by
-    # 1.7-10, sqrt(kT/m) = 1.14, so an error of 1e-3 in any term would show
-    # by orders of magnitude
-    hcompare() {
-        local name=$1 np=$2 fluct=$3 gdot=$4 gx=$5 L dx dv n mx mv
-        if ! $MPI -np "$np" "$lmp" -in "$hin" -var plugin "$hplug" -var fluct "$fluct" -var gdot "$gdot" -var gx "$gx" \
-            -var start "$t/h0.txt" -var end "$t/h1.txt" -log none -screen none > /dev/null 2>&1; then
-            bad "fix hcbd, $name: LAMMPS failed"; return
-        fi
-        # shellcheck disable=SC2086
-        if ! "$t/hc_ref" "$t/h0.txt" "$t/hr.txt" 20 $hcoef 1 "$fluct" euler "$gdot" "$gx"; then
-            bad "fix hcbd, $name: hc_ref failed"; return
-        fi
-        L=$(awk 'NR == 6 { printf "%.17g", $2 - $1 }' "$t/h0.txt")
-        awk -v vle="$(awk -v g="$gdot" -v L="$L" 'BEGIN { printf "%.17g", g * L }')" -f "$root/lammps/le_canon.awk" \
-            "$t/h1.txt" > "$t/h1c.txt"
-        read -r dx dv n < <(awk -v L="$L" -f "$root/lammps/maxdiff.awk" "$t/h1c.txt" "$t/hr.txt")
-        read -r mx mv _ < <(awk -v L="$L" -f "$root/lammps/maxdiff.awk" "$t/h0.txt" "$t/h1c.txt")
-        echo "    fix hcbd, $name: largest |x - x_hcbd| $dx, |v - v_hcbd| $dv (moved by $mx, $mv)"
-        if awk -v dx="$dx" -v dv="$dv" -v mx="$mx" -v mv="$mv" -v n="$n" \
-            'BEGIN { exit !(n == 512 && dx < 1e-9 && dv < 1e-8 && mx > 0.3 && mv > 1) }'; then
-            ok "fix hcbd, $name: 20 steps = hcbd's world, atom by atom"
-        else bad "fix hcbd, $name: fix hcbd and hcbd's world part: |dx| $dx, |dv| $dv"; fi
-    }
-    hcompare "Euler pairs with fluctuations, 1 rank" 1 yes 0 0
-    hcompare "Euler pairs without fluctuations, 2 ranks" 2 no 0 0
-    hcompare "Euler pairs with fluctuations, 4 ranks" 4 yes 0 0
-    hcompare "Euler pairs, sheared (gdot = 0.8), 2 ranks" 2 yes 0.8 0
-    hcompare "Euler pairs without fluctuations, sheared (gdot = 0.5), 4 ranks" 4 no 0.5 0
-    hcompare "Euler pairs, body force (gx = 3), 2 ranks" 2 yes 0 3
+    # with polymers (npoly 60)
+    hpoly() { sed "s/^variable  *npoly index 0/variable npoly index 60/; $2" "$hin" > "$t/hbad0.in"; hin0=$hin; hin=$t/hbad0.in; hexpect "$1" "$3"; hin=$hin0; }
+    hpoly "polymer = 1 is the fluid's type" "" "s/polymer 2 xi/polymer 1 xi/"
+    hpoly "coupling = both is not shepard or raw" "s/^variable  *coupling index shepard/variable coupling index both/" ""
+    hpoly "substeps = 0 is not an integer" "s/^variable  *substeps index 1/variable substeps index 0/" ""
+    hpoly "more pair variables than pairs" "" "s/^fix  *g all hcbd .*/& pairs 1/"
+    hpoly "phi = n / n_max >= 1" "s/^variable  *n_max index 5/variable n_max index 0.05/" ""
+    hpoly "fluid blobs need the tags 1..512" "s/^create_atoms    1 box/create_atoms 2 single 1 1 1\n&/; s/random \${npoly}/random \$(v_npoly-1)/" ""
+    hpoly "3 atom types" "s/^create_box .*/create_box 3 box/; s/^mass  *1 .*/mass * \$(v_rho\/v_nbar)/" ""
+    # 100 + 100 steps through a restart file (with the pair variables)
+    # equal 200 steps within round-off (reading a restart wraps the atoms
+    # into the box at another step than the run does)
+    "$lmp" -in "$hin" -var plugin "$hplug" -var npoly 60 -var steps 100 -var save "$t/hq0" -log none -screen none \
+        > /dev/null 2>&1
+    "$lmp" -in "$hin" -var plugin "$hplug" -var npoly 60 -var from restart -var restart "$t/hq0" -var steps 100 \
+        -var end "$t/hc1.txt" -log none -screen none > /dev/null 2>&1
+    "$lmp" -in "$hin" -var plugin "$hplug" -var npoly 60 -var steps 200 -var end "$t/hc2.txt" -log none -screen none \
+        > /dev/null 2>&1
+    read -r dx dv n < <(awk -v L="$(awk 'NR == 6 { printf "%.17g", $2 - $1 }' "$t/hc2.txt")" \
+        -f "$root/lammps/maxdiff.awk" "$t/hc2.txt" "$t/hc1.txt" 2>/dev/null)
+    if [ "$n" = 572 ] && awk -v a="$dx" -v b="$dv" 'BEGIN { exit !(a < 1e-6 && b < 1e-6) }'; then
+        ok "fix hcbd, 60 polymers: 100 + 100 steps through a restart file = 200 steps within $dx, $dv"
+    else bad "fix hcbd: a restart does not continue the run: largest differences $dx, $dv ($n atoms)"; fi
 }
 
-# from one restart file, 300 steps on RANKS end in the same atoms bit for
-# bit (positions wrapped by their owners, each pair with the lower tag
-# first, fixed-point sums, noise keyed by step and tags); sheared as well
+# from one restart file (with polymers, after 100 steps: the pair variables
+# in it), 300 steps on RANKS end in the same atoms bit for bit (positions
+# wrapped by their owners, each pair with the lower tag first, fixed-point
+# sums, a polymer's neighbours by tag, noise keyed by step and ids); at
+# rest and sheared
 hcbd_bits() {
-    local np
+    local np g
     [ -f "$hplug" ] || return
     for g in 0 0.8; do
-        "$lmp" -in "$hin" -var plugin "$hplug" -var gdot "$g" -var steps 0 -var save "$t/hr$g" -log none \
-            -screen none > /dev/null 2>&1
+        "$lmp" -in "$hin" -var plugin "$hplug" -var npoly 60 -var gdot "$g" -var steps 100 -var save "$t/hr$g" \
+            -log none -screen none > /dev/null 2>&1
         for np in $RANKS; do
-            $MPI -np "$np" "$lmp" -in "$hin" -var plugin "$hplug" -var from restart -var restart "$t/hr$g" \
+            $MPI -np "$np" "$lmp" -in "$hin" -var plugin "$hplug" -var npoly 60 -var from restart -var restart "$t/hr$g" \
                 -var gdot "$g" -var steps 300 -var end "$t/hb$g-$np.txt" -log none -screen none > /dev/null 2>&1
         done
-        if same_bits "$t/hb$g-"; then ok "fix hcbd, gdot = $g, ranks $RANKS: the same atoms bit for bit after 300 steps"
-        else bad "fix hcbd, gdot = $g, ranks $RANKS: the atoms differ after 300 steps"; fi
+        if same_bits "$t/hb$g-"; then ok "fix hcbd, 60 polymers, gdot = $g, ranks $RANKS: the same atoms bit for bit after 300 steps"
+        else bad "fix hcbd, 60 polymers, gdot = $g, ranks $RANKS: the atoms differ after 300 steps"; fi
     done
 }
 
-# the fluid's temperature (Euler pairs with fluctuations: hot by about
-# 0.33 dt/dt_visc = 1.3 % here) on 2 ranks equals hcbd's world's at the
-# same parameters within four combined errors (20000 steps after the 50,
-# T every 10 steps, 10 blocks), and is kT within 3 %
+# the fluid's temperature with 60 polymers (Euler pairs with
+# fluctuations: hot by about 0.33 dt/dt_visc = 1.3 % here) on 2 ranks
+# equals hcbd's world's at the same parameters within four combined errors
+# (20000 steps after the 50, T every 10 steps, 10 blocks), and is kT within
+# 3 %
 hcbd_stats() {
     [ -f "$hplug" ] || return
     local T eT hT heT
@@ -110,13 +149,13 @@ hcbd_stats() {
              for (j = 1; j <= b; ++j) s += x[k * b + j]; m[k] = s / b; a += m[k] / 10 }
              for (k = 0; k < 10; ++k) v += (m[k] - a) ^ 2; printf "%.6g %.3g\n", a, sqrt(v / 90) }'
     }
-    if ! $MPI -np 2 "$lmp" -in "$hin" -var plugin "$hplug" -var seed 21 -var steps 22000 -var thermo 10 \
+    if ! $MPI -np 2 "$lmp" -in "$hin" -var plugin "$hplug" -var npoly 60 -var seed 21 -var steps 22000 -var thermo 10 \
         -var start "$t/hs0.txt" -log "$t/hs.log" -screen none > /dev/null 2>&1; then
         bad "fix hcbd, 2 ranks: temperature run failed: $(grep ERROR "$t/hs.log" | head -n 1)"; return
     fi
     read -r T eT < <(awk '/^ *Step/ { f = 1; next } /^Loop/ { f = 0 } f && NF == 2' "$t/hs.log" | blocks)
     # shellcheck disable=SC2086
-    read -r hT heT < <("$t/hc_ref" "$t/hs0.txt" /dev/null 22000 $hcoef 22 yes euler 0 0 10 | blocks)
+    read -r hT heT < <("$t/hc_ref" "$t/hs0.txt" /dev/null 22000 $hcoef seed=22 fluct=yes every=10 | blocks)
     echo "    fix hcbd: fluid temperature $T +- $eT, hcbd's world $hT +- $heT (kT = 1.7)"
     if [[ "$T $eT $hT $heT" =~ ^[0-9.e-]+\ [0-9.e-]+\ [0-9.e-]+\ [0-9.e-]+$ ]] && within "$T" "$eT" "$hT" "$heT"; then ok "fix hcbd, 2 ranks: the fluid's temperature is hcbd's world's"
     else bad "fix hcbd, 2 ranks: temperature $T +- $eT, hcbd's world $hT +- $heT"; fi

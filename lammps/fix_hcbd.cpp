@@ -1,27 +1,42 @@
-// fix hcbd: one step of the 2018 model's SPH fluid (MODEL 6) per LAMMPS
-// step, in final_integrate, with the equations of hcbd.h
-// (hcbd_hc_params_coef, hcbd_hc_fluid_*) and its noise
-// (hcbd_hc_noise_fluid_pair keyed by seed, fluid step and atom tags minus
-// one, as hcbd's world keys it by id).  A LAMMPS step is one fluid step of
-// hcbd's world (dt / substeps there), so its noise key is the step.  So
-// far the fluid alone, with the paper's explicit Euler pairs (2018 eq.
-// 18-19), as hcbd's HCBD_PAIR_EULER:
-//   n_i = w(0) + sum_j w(r_ij),  P_i = P0 ((n_i / nbar)^7 - 1)
-//   F_i = sum_j F_ij(x, v of t)  (pressure, Morris friction, pair noise)
-//   v_i += (F_i + f_i) dt / m;  x_i += v_i dt   (symplectic Euler, as hcbd)
-// f_i is LAMMPS's force (fix addforce m g for a body force).
+// fix hcbd: the 2018 model (MODEL 6-8) on LAMMPS's engine, in
+// final_integrate, with the equations of hcbd.h (hcbd_hc_params_coef,
+// hcbd_hc_fluid_*, hcbd_hc_polymer_*, hcbd_hc_lambda_*) and its noise
+// (hcbd_hc_noise_*, keyed by seed, step and ids as hcbd's world keys them:
+// a fluid blob's id is its tag - 1, a polymer's its tag - 1 - the number of
+// fluid blobs, whose tags come first).  One LAMMPS step is one fluid step
+// of hcbd's world (dt / substeps there; the fluid pairs' noise key is
+// LAMMPS's step), and every `substeps` of them one polymer step:
+//   fluid:    n_i = w(0) + sum_j w(r_ij),  P_i = P0 ((n_i / nbar)^7 - 1)
+//   at a polymer step's first sub-step, from x and v of its start:
+//     polymers: n_a = W(0) + sum_b W(r_ab), mu_a = mu(n_a / n_max); F_a =
+//     Flory-Huggins and transient pair forces, pairs within rc keeping
+//     their lambda (a new one starts at lambda_eq, a departed one is
+//     dropped); u_a = sum_i psi_ai v_i + F_a / xi; the fluid's force
+//     F^fp_i = sum_a psi_ai F_a, held over the polymer step; psi_ai =
+//     (W(r_ai) / n_i) / S_a, S_a = sum_i W(r_ai) / n_i (Shepard, the
+//     default) or 1 (coupling raw, the paper's)
+//   every sub-step: v_i += (F_i + F^fp_i + f_i) dt_f / m;  x_i += v_i dt_f
+//     (F_i the paper's Euler pair forces of x and v of t, 2018 eq. 18-19;
+//     f_i LAMMPS's force, fix addforce m g for a body force)
+//   at its last: lambda_ab = lambda_eq + (lambda_ab - lambda_eq) e^(-dt/tau)
+//     + noise (exact Ornstein-Uhlenbeck, as hcbd); x_a += u_a dt +
+//     sqrt(2 kT dt / xi) z_a
+// as hcbd_hc_world_step with HCBD_PAIR_EULER.  A polymer's LAMMPS velocity
+// is zero (polymers are massless here); its force f is not used.
 //
 // The same bits on any number of ranks: every pair is evaluated from the
 // positions its atoms' owners wrapped into the box (hcbd's frame, sent to
 // the ghosts), with the lower tag as i, whichever copy the half list holds
 // (LAMMPS's images of a pair across the box differ in their last bits);
-// the densities and the pair forces are summed once per pair (newton on)
-// in 64-bit fixed point, on ghosts too, whose sums go back to their owners.
-// Integer sums do not depend on the order of the pairs or on the ranks,
-// and F_ji = -F_ij conserves momentum exactly.  Lees-Edwards is LAMMPS's
-// deforming box (fix deform ... xy erate gdot remap v): a partner across
-// y's edge is its image, k boxes up, moved along x by k times the offset
-// and faster by k times the velocity jump, as in hcbd's world.
+// densities and forces are summed once per pair (newton on) in 64-bit
+// fixed point, on ghosts too, whose sums go back to their owners; a
+// polymer's interpolated velocity sums its fluid neighbours by tag.  A
+// pair variable is kept by both polymers, keyed by the partner's tag, in
+// per-atom arrays that travel with the atoms (exchange, restart files);
+// both copies see the same inputs and stay equal.  Lees-Edwards is
+// LAMMPS's deforming box (fix deform ... xy erate gdot remap v): a partner
+// across y's edge is its image, k boxes up, moved along x by k times the
+// offset and faster by k times the velocity jump, as in hcbd's world.
 #include "fix_hcbd.h"
 
 #include "atom.h"
@@ -36,6 +51,7 @@
 #include "pair.h"
 #include "update.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -52,9 +68,19 @@ static double number(Error *error, const char *key, const char *v)
   return x;
 }
 
+static int integer(Error *error, const char *key, const char *v, int lo, int hi)
+{
+  char *end;
+  long x = strtol(v, &end, 10);
+  if (end == v || *end || x < lo || x > hi)
+    error->all(FLERR, "fix hcbd: {} = {} is not an integer in [{}, {}]", key, v, lo, hi);
+  return (int) x;
+}
+
 FixHCBD::FixHCBD(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), list(nullptr), np_(nullptr), xw(nullptr), vc(nullptr), kw(nullptr), acc(nullptr), nmax(0),
-    nacc(1), fwd(0), wscale(0), fscale(0), limF(0), le_s(0), le_v(0)
+    Fix(lmp, narg, arg), list(nullptr), flist(nullptr), tf(1), tp(0), cap(32), nfluid(0), np_(nullptr), xw(nullptr), vc(nullptr),
+    fs(nullptr), kw(nullptr), acc(nullptr), nmax(0), nacc(1), fwd(0), wscale(0), fscale(0), pwscale(0), pfscale(0),
+    limF(0), limP(0), le_s(0), le_v(0), st(nullptr), width(0)
 {
   int euler = 1;
   p = hcbd_hc_params_default();
@@ -69,7 +95,23 @@ FixHCBD::FixHCBD(LAMMPS *lmp, int narg, char **arg) :
     else if (!strcmp(key, "P0")) p.P0 = number(error, key, v);
     else if (!strcmp(key, "h")) p.h = number(error, key, v);
     else if (!strcmp(key, "kT")) p.kT = number(error, key, v);
-    else if (!strcmp(key, "fluct")) {
+    else if (!strcmp(key, "xi")) p.xi = number(error, key, v);
+    else if (!strcmp(key, "sigma")) p.sigma = number(error, key, v);
+    else if (!strcmp(key, "rc")) p.rc = number(error, key, v);
+    else if (!strcmp(key, "alpha")) p.alpha = number(error, key, v);
+    else if (!strcmp(key, "tau_lambda")) p.tau_lambda = number(error, key, v);
+    else if (!strcmp(key, "p")) p.p_kuhn = number(error, key, v);
+    else if (!strcmp(key, "n_max")) p.n_max = number(error, key, v);
+    else if (!strcmp(key, "chi")) p.chi = number(error, key, v);
+    else if (!strcmp(key, "fluid")) tf = integer(error, key, v, 1, 1000000);
+    else if (!strcmp(key, "polymer")) tp = integer(error, key, v, 1, 1000000);
+    else if (!strcmp(key, "pairs")) cap = integer(error, key, v, 1, 100000);
+    else if (!strcmp(key, "substeps")) p.substeps = integer(error, key, v, 1, 1000);
+    else if (!strcmp(key, "coupling")) {
+      if (!strcmp(v, "shepard")) p.coupling = HCBD_COUPLE_SHEPARD;
+      else if (!strcmp(v, "raw")) p.coupling = HCBD_COUPLE_RAW;
+      else error->all(FLERR, "fix hcbd: coupling = {} is not shepard or raw", v);
+    } else if (!strcmp(key, "fluct")) {
       if (!strcmp(v, "yes")) p.fluctuations = 1;
       else if (!strcmp(v, "no")) p.fluctuations = 0;
       else error->all(FLERR, "fix hcbd: fluct = {} is not yes or no", v);
@@ -90,15 +132,26 @@ FixHCBD::FixHCBD(LAMMPS *lmp, int narg, char **arg) :
   if (!euler)
     error->all(FLERR, "fix hcbd: pair exact (hcbd's exact fluid sweep) is not built yet: pair euler "
                       "(the paper's explicit pairs, stable to about 2.8 viscous time steps)");
+  if (tp == tf) error->all(FLERR, "fix hcbd: polymer = {} is the fluid's type", tp);
   p.pair_integrator = HCBD_PAIR_EULER;
   if (igroup != 0) error->all(FLERR, "fix hcbd: the group must be all (densities sum over every atom)");
   time_integrate = 1;
   comm_forward = 6;
   comm_reverse = 3;
+  width = 4 + 3 * cap;
+  restart_peratom = 1;
+  create_attribute = 1;
+  grow_arrays(atom->nmax);
+  atom->add_callback(Atom::GROW);
+  atom->add_callback(Atom::RESTART);
+  for (int i = 0; i < atom->nlocal; ++i) set_arrays(i);
 }
 
 FixHCBD::~FixHCBD()
 {
+  atom->delete_callback(id, Atom::GROW);
+  atom->delete_callback(id, Atom::RESTART);
+  memory->destroy(st);
   release();
 }
 
@@ -107,6 +160,7 @@ void FixHCBD::release()
   memory->destroy(np_);
   memory->destroy(xw);
   memory->destroy(vc);
+  memory->destroy(fs);
   memory->destroy(kw);
   memory->destroy(acc);
 }
@@ -123,43 +177,59 @@ void FixHCBD::init()
   if (force->ftm2v != 1.0 || force->mvv2e != 1.0)
     error->all(FLERR, "fix hcbd: units {}: the fix needs units where F dt / m is a velocity "
                       "(lj, si, cgs, micro or nano)", update->unit_style);
-  p.dt = update->dt;
+  p.dt = update->dt * p.substeps; // a polymer step
   for (int d = 0; d < 3; ++d) p.L[d] = domain->prd[d];
   if (hcbd_hc_params_coef(&p, &c, msg, sizeof msg) != HCBD_OK) error->all(FLERR, "fix hcbd: {}", msg);
-  if (atom->ntypes != 1)
-    error->all(FLERR, "fix hcbd: {} atom types: so far the fluid alone (one type; polymers are to come)",
-               atom->ntypes);
+  if (atom->ntypes != (tp ? 2 : 1) || tf > atom->ntypes || tp > atom->ntypes)
+    error->all(FLERR, "fix hcbd: {} atom types: the fix takes the fluid's (fluid {}) and the polymers' (polymer "
+                      "{}, 0: none), no other", atom->ntypes, tf, tp);
   if (!comm->ghost_velocity) error->all(FLERR, "fix hcbd: needs ghost velocities (comm_modify vel yes)");
   if (!force->newton_pair) error->all(FLERR, "fix hcbd: needs newton on (each pair once, sums to the owners)");
-  if (!force->pair || force->pair->cutforce < 2.0 * p.h)
-    error->all(FLERR, "fix hcbd: the pair cut-off must reach 2 h = {} (pair_style zero {})", 2.0 * p.h,
-               2.0 * p.h);
+  const double reach = tp && p.rc > 2.0 * p.h ? p.rc : 2.0 * p.h;
+  if (!force->pair || force->pair->cutforce < reach)
+    error->all(FLERR, "fix hcbd: the pair cut-off must reach {} = {} (pair_style zero {})",
+               reach == p.rc ? "rc" : "2 h", reach, reach);
   // a pair is found once, at its nearest image
   for (int d = 0; d < 3; ++d)
-    if (p.L[d] < 2.0 * (2.0 * p.h + neighbor->skin))
-      error->all(FLERR, "fix hcbd: box edge L[{}] = {} is shorter than 2 (2 h + skin) = {}", d, p.L[d],
-                 2.0 * (2.0 * p.h + neighbor->skin));
+    if (p.L[d] < 2.0 * (reach + neighbor->skin))
+      error->all(FLERR, "fix hcbd: box edge L[{}] = {} is shorter than 2 (cut-off + skin) = {}", d, p.L[d],
+                 2.0 * (reach + neighbor->skin));
   if (atom->rmass_flag) error->all(FLERR, "fix hcbd: per-atom masses are not supported");
-  if (std::fabs(atom->mass[1] / c.m - 1) > 1e-12)
-    error->all(FLERR, "fix hcbd: atom type 1 has mass {}, the fluid blobs need rho / nbar = {}", atom->mass[1],
-               c.m);
+  if (std::fabs(atom->mass[tf] / c.m - 1) > 1e-12)
+    error->all(FLERR, "fix hcbd: atom type {} has mass {}, the fluid blobs need rho / nbar = {}", tf,
+               atom->mass[tf], c.m);
   hcbd_hc_noise_stream_init(&ns, p.seed);
   // fixed point, as hcbd's world: weights below w(0) = 1 / (pi h^3) and
-  // pair forces below limF, 2^50 of either per pair
-  limF = 16.0 * p.h * c.m / (p.dt * p.dt);
+  // W(0), fluid pair forces below limF, polymer forces below limP, 2^50 of
+  // any per pair
+  limF = 16.0 * p.h * c.m / (c.dt * c.dt);
+  limP = 16.0 * p.rc * p.xi / p.dt;
   wscale = std::ldexp(1.0, 50 - std::ilogb(c.w0));
   fscale = std::ldexp(1.0, 50 - std::ilogb(limF));
+  pwscale = std::ldexp(1.0, 50 - std::ilogb(c.W0));
+  pfscale = std::ldexp(1.0, 50 - std::ilogb(limP));
   int irequest = neighbor->request(this, instance_me);
   neighbor->requests[irequest]->pair = 0;
   neighbor->requests[irequest]->fix = 1;
+  if (tp) {
+    // a polymer's pairs, whichever rank the half list gives a pair to
+    irequest = neighbor->request(this, instance_me);
+    neighbor->requests[irequest]->pair = 0;
+    neighbor->requests[irequest]->fix = 1;
+    neighbor->requests[irequest]->half = 0;
+    neighbor->requests[irequest]->full = 1;
+    neighbor->requests[irequest]->id = 1;
+  }
 }
 
-void FixHCBD::init_list(int, NeighList *ptr)
+void FixHCBD::init_list(int id, NeighList *ptr)
 {
-  list = ptr;
+  if (id == 1) flist = ptr;
+  else list = ptr;
 }
 
-// the box may only shear in xy (Lees-Edwards, fix deform ... remap v)
+// the box may only shear in xy (Lees-Edwards, fix deform ... remap v); the
+// fluid's tags come first (hcbd's ids: fluid blobs, then polymers)
 void FixHCBD::setup(int)
 {
   if (domain->triclinic && (domain->xz != 0.0 || domain->yz != 0.0))
@@ -170,6 +240,23 @@ void FixHCBD::setup(int)
       error->all(FLERR, "fix hcbd: the box may only shear (fix deform xy ...), not change its edges or xz, yz");
   if (domain->h_rate[5] != 0.0 && !domain->deform_vremap)
     error->all(FLERR, "fix hcbd: a shearing box needs fix deform ... remap v (the velocity jump across y)");
+  // fluid count, largest fluid tag, largest tag, smallest polymer tag
+  tagint loc[4] = {0, 0, 0, MAXTAGINT}, all[4];
+  for (int i = 0; i < atom->nlocal; ++i) {
+    if (atom->type[i] == tf) {
+      loc[0]++;
+      loc[1] = std::max(loc[1], atom->tag[i]);
+    } else loc[3] = std::min(loc[3], atom->tag[i]);
+    loc[2] = std::max(loc[2], atom->tag[i]);
+  }
+  MPI_Allreduce(loc, all, 1, MPI_LMP_TAGINT, MPI_SUM, world);
+  MPI_Allreduce(loc + 1, all + 1, 2, MPI_LMP_TAGINT, MPI_MAX, world);
+  MPI_Allreduce(loc + 3, all + 3, 1, MPI_LMP_TAGINT, MPI_MIN, world);
+  nfluid = all[0];
+  if (all[1] != nfluid || (all[3] != MAXTAGINT && all[3] != nfluid + 1) || all[2] != atom->natoms)
+    error->all(FLERR, "fix hcbd: the fluid blobs need the tags 1..{} and the polymers those after them, "
+                      "up to the number of atoms {} (the largest is {}; create the fluid first)", nfluid,
+               atom->natoms, all[2]);
 }
 
 // minimum image of a difference of wrapped coordinates (|d| < L)
@@ -178,36 +265,86 @@ static inline double min_image(double d, double L)
   return d > 0.5 * L ? d - L : (d < -0.5 * L ? d + L : d);
 }
 
-// every pair of the half list within 2h, once, from the wrapped positions
-// with the lower tag as i: fn(i, j, d = x_i - x_j, r, k), j's image k
-// boxes up in y
-template <class F> void FixHCBD::each_pair(F fn)
+// d = x_i - x_j from the wrapped positions, j's image the nearest (k
+// boxes up in y, moved along x by k offsets); returns k
+inline int FixHCBD::delta(int i, int j, double *d) const
 {
-  const double cut2 = 4.0 * p.h * p.h, *L = p.L;
+  const double *ri = xw + 3 * i, *rj = xw + 3 * j, *L = p.L;
+  int k = 0;
+  d[1] = ri[1] - rj[1];
+  if (d[1] > 0.5 * L[1]) {
+    d[1] -= L[1];
+    k = 1;
+  } else if (d[1] < -0.5 * L[1]) {
+    d[1] += L[1];
+    k = -1;
+  }
+  d[0] = min_image(ri[0] - rj[0] - k * le_s, L[0]);
+  d[2] = min_image(ri[2] - rj[2], L[2]);
+  return k;
+}
+
+// every pair of the half list of one kind (FF, PP, FP) within cut, once,
+// with the lower tag as i (for FP the fluid blob): fn(i, j, d = x_i - x_j,
+// r, k), j's image k boxes up in y
+template <class F> void FixHCBD::each_pair(int kind, double cut, F fn)
+{
+  const double cut2 = cut * cut;
   const tagint *tag = atom->tag;
+  const int *type = atom->type;
   for (int ii = 0; ii < list->inum; ++ii) {
     const int i0 = list->ilist[ii];
     const int *jlist = list->firstneigh[i0];
     for (int jj = 0; jj < list->numneigh[i0]; ++jj) {
       const int j0 = jlist[jj] & NEIGHMASK;
+      const int npol = (type[i0] == tp) + (type[j0] == tp);
+      if (npol != (kind == FF ? 0 : kind == PP ? 2 : 1)) continue;
       const int i = tag[i0] < tag[j0] ? i0 : j0, j = i == i0 ? j0 : i0;
-      const double *ri = xw + 3 * i, *rj = xw + 3 * j;
       double d[3];
-      int k = 0;
-      d[1] = ri[1] - rj[1];
-      if (d[1] > 0.5 * L[1]) {
-        d[1] -= L[1];
-        k = 1;
-      } else if (d[1] < -0.5 * L[1]) {
-        d[1] += L[1];
-        k = -1;
-      }
-      d[0] = min_image(ri[0] - rj[0] - k * le_s, L[0]);
-      d[2] = min_image(ri[2] - rj[2], L[2]);
+      const int k = delta(i, j, d);
       const double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
       if (r2 < cut2) fn(i, j, d, std::sqrt(r2), k);
     }
   }
+}
+
+// every neighbour j of the owned polymer a of one type within cut (the
+// full list), evaluated as each_pair evaluates the pair: fn(j, r, k), k
+// the image of the higher tag's atom relative to the lower's
+template <class F> void FixHCBD::each_near(int a, int type, double cut, F fn)
+{
+  const double cut2 = cut * cut;
+  const tagint *tag = atom->tag;
+  const int *jlist = flist->firstneigh[a];
+  for (int jj = 0; jj < flist->numneigh[a]; ++jj) {
+    const int j = jlist[jj] & NEIGHMASK;
+    if (atom->type[j] != type) continue;
+    double d[3];
+    const int k = tag[a] < tag[j] ? delta(a, j, d) : delta(j, a, d);
+    const double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+    if (r2 < cut2) fn(j, std::sqrt(r2), k);
+  }
+}
+
+void FixHCBD::grow()
+{
+  if (atom->nmax <= nmax) return;
+  release();
+  nmax = atom->nmax;
+  memory->create(np_, 2 * nmax, "hcbd:np");
+  memory->create(xw, 3 * nmax, "hcbd:xw");
+  memory->create(vc, 3 * nmax, "hcbd:vc");
+  memory->create(fs, 4 * nmax, "hcbd:fs");
+  memory->create(kw, nmax, "hcbd:kw");
+  memory->create(acc, 3 * nmax, "hcbd:acc");
+}
+
+// stops the run naming the smallest tag of any rank's bad atom, if any
+void FixHCBD::stop_at(tagint bad, const char *what)
+{
+  tagint all;
+  MPI_Allreduce(&bad, &all, 1, MPI_LMP_TAGINT, MPI_MIN, world);
+  if (all != MAXTAGINT) error->all(FLERR, "fix hcbd: atom {} {} at step {}", all, what, update->ntimestep);
 }
 
 // The owned atoms' positions wrapped into [0, L) and their velocities in
@@ -239,26 +376,14 @@ void FixHCBD::canonical()
   comm->forward_comm_fix(this, 6);
 }
 
-void FixHCBD::grow()
-{
-  if (atom->nmax <= nmax) return;
-  release();
-  nmax = atom->nmax;
-  memory->create(np_, 2 * nmax, "hcbd:np");
-  memory->create(xw, 3 * nmax, "hcbd:xw");
-  memory->create(vc, 3 * nmax, "hcbd:vc");
-  memory->create(kw, nmax, "hcbd:kw");
-  memory->create(acc, 3 * nmax, "hcbd:acc");
-}
-
-// n and P of owned and ghost atoms from the positions of now; stops with
-// the first atom (by tag) whose n/nbar left (1/3, 3), as hcbd's world
+// the fluid's n and P of owned and ghost atoms from the positions of now;
+// stops at a blob whose n/nbar left (1/3, 3), as hcbd's world
 void FixHCBD::densities()
 {
   const int nall = atom->nlocal + atom->nghost;
-  tagint bad = MAXTAGINT, all;
+  tagint bad = MAXTAGINT;
   std::memset(acc, 0, sizeof(int64_t) * nall);
-  each_pair([this](int i, int j, const double *, double r, int) {
+  each_pair(FF, 2.0 * p.h, [this](int i, int j, const double *, double r, int) {
     const int64_t w = llrint(hcbd_hc_fluid_weight(&c, r) * wscale);
     acc[i] += w;
     acc[j] += w;
@@ -266,15 +391,13 @@ void FixHCBD::densities()
   nacc = 1;
   comm->reverse_comm_fix(this, 1);
   for (int i = 0; i < atom->nlocal; ++i) {
+    if (atom->type[i] != tf) continue;
     const double n = hcbd_hc_fluid_density(&c, (double) acc[i] / wscale), x = n / p.nbar;
     np_[2 * i] = n;
     np_[2 * i + 1] = hcbd_hc_fluid_pressure(&c, n);
     if (!(x > 1.0 / 3.0 && x < 3.0) && atom->tag[i] < bad) bad = atom->tag[i];
   }
-  MPI_Allreduce(&bad, &all, 1, MPI_LMP_TAGINT, MPI_MIN, world);
-  if (all != MAXTAGINT)
-    error->all(FLERR, "fix hcbd: atom {}: density n/nbar outside (1/3, 3) at step {}: dt = {} is too long for the "
-                      "sound speed or the flow", all, update->ntimestep, p.dt);
+  stop_at(bad, "has a density n/nbar outside (1/3, 3): the step is too long for the sound speed or the flow");
   fwd = 2;
   comm->forward_comm_fix(this, 2);
 }
@@ -285,9 +408,9 @@ void FixHCBD::euler_pairs(int64_t k)
 {
   const int nall = atom->nlocal + atom->nghost;
   const tagint *tag = atom->tag;
-  tagint bad = MAXTAGINT, all;
+  tagint bad = MAXTAGINT;
   std::memset(acc, 0, sizeof(int64_t) * 3 * nall);
-  each_pair([&](int i, int j, const double *d, double r, int kj) {
+  each_pair(FF, 2.0 * p.h, [&](int i, int j, const double *d, double r, int kj) {
     const double *vi = vc + 3 * i, *vj = vc + 3 * j;
     const double dv[3] = {vi[0] - (vj[0] + kj * le_v), vi[1] - vj[1], vi[2] - vj[2]};
     double z[3], F[3] = {0, 0, 0};
@@ -304,20 +427,219 @@ void FixHCBD::euler_pairs(int64_t k)
       acc[3 * j + e] -= q;
     }
   });
-  MPI_Allreduce(&bad, &all, 1, MPI_LMP_TAGINT, MPI_MIN, world);
-  if (all != MAXTAGINT)
-    error->all(FLERR, "fix hcbd: atom {} has a pair force beyond {} (a move of 16 h in one step) at step {}: "
-                      "dt = {} is too long", all, limF, update->ntimestep, p.dt);
+  stop_at(bad, "has a pair force beyond 16 h m / dt^2 (a move of 16 h in one step): dt is too long");
   nacc = 3;
   comm->reverse_comm_fix(this, 3);
 }
 
-void FixHCBD::final_integrate()
+// the polymers' n and mu of owned and ghost atoms; stops at phi >= 1
+void FixHCBD::polymer_densities()
+{
+  const int nall = atom->nlocal + atom->nghost;
+  tagint bad = MAXTAGINT;
+  std::memset(acc, 0, sizeof(int64_t) * nall);
+  each_pair(PP, p.rc, [this](int i, int j, const double *, double r, int) {
+    const int64_t wp = llrint(hcbd_hc_polymer_weight(&c, r) * pwscale);
+    acc[i] += wp;
+    acc[j] += wp;
+  });
+  nacc = 1;
+  comm->reverse_comm_fix(this, 1);
+  for (int i = 0; i < atom->nlocal; ++i) {
+    if (atom->type[i] != tp) continue;
+    const double n = hcbd_hc_polymer_density(&c, (double) acc[i] / pwscale);
+    np_[2 * i] = n;
+    np_[2 * i + 1] = hcbd_hc_polymer_mu(&c, n);
+    if (!(n < p.n_max) && atom->tag[i] < bad) bad = atom->tag[i];
+  }
+  stop_at(bad, "(a polymer) has the volume fraction phi = n / n_max >= 1");
+  fwd = 2;
+  comm->forward_comm_fix(this, 2);
+}
+
+static inline int find_pair(const double *row, tagint b)
+{
+  const int n = (int) row[0];
+  int lo = 0, hi = n;
+  while (lo < hi) {
+    const int mid = (lo + hi) / 2;
+    if ((tagint) row[4 + 3 * mid] < b) lo = mid + 1;
+    else hi = mid;
+  }
+  return lo < n && (tagint) row[4 + 3 * lo] == b ? lo : -1;
+}
+
+// The polymers' pair forces (Flory-Huggins and transient), each pair within
+// rc once, with its lambda from an owned atom's store (or lambda_eq, new);
+// both owned atoms of a pair record it, and each owned polymer's store is
+// replaced by the pairs found, by tag.  Forces into fs (owned polymers).
+void FixHCBD::polymer_forces()
+{
+  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
+  const tagint *tag = atom->tag;
+  const int tr = p.alpha > 0;
+  tagint bad = MAXTAGINT;
+  std::memset(acc, 0, sizeof(int64_t) * 3 * nall);
+  // every owned polymer's pairs, as it will keep them (the half list holds
+  // a pair on one rank only)
+  found.clear();
+  for (int a = 0; a < nlocal && tr; ++a) {
+    if (atom->type[a] != tp) continue;
+    each_near(a, tp, p.rc, [&](int b, double r, int) {
+      const double leq = hcbd_hc_lambda_eq(&c, r);
+      const int e = find_pair(st[a], tag[b]);
+      found.push_back({a, tag[b], e >= 0 ? st[a][4 + 3 * e + 1] : leq, leq});
+    });
+  }
+  each_pair(PP, p.rc, [&](int i, int j, const double *d, double r, int) {
+    double lam = 0;
+    if (tr) {
+      const int o = i < nlocal ? i : j; // an owned atom of the pair keeps it
+      const int e = find_pair(st[o], o == i ? tag[j] : tag[i]);
+      lam = e >= 0 ? st[o][4 + 3 * e + 1] : hcbd_hc_lambda_eq(&c, r);
+    }
+    if (r < 1e-12 * p.sigma) return; // no direction: no force (as hcbd's world)
+    const double fr = hcbd_hc_polymer_pair(&c, r, np_[2 * i + 1], np_[2 * j + 1], lam);
+    for (int e = 0; e < 3; ++e) {
+      const double F = fr * d[e];
+      if (!(std::fabs(F) <= limP)) {
+        if (tag[i] < bad) bad = tag[i];
+        continue;
+      }
+      const int64_t qp = llrint(F * pfscale);
+      acc[3 * i + e] += qp;
+      acc[3 * j + e] -= qp;
+    }
+  });
+  stop_at(bad, "(a polymer) has a pair force beyond 16 rc xi / dt (a move of 16 rc in one step): dt is too long");
+  nacc = 3;
+  comm->reverse_comm_fix(this, 3);
+  for (int i = 0; i < nlocal; ++i)
+    if (atom->type[i] == tp)
+      for (int e = 0; e < 3; ++e) fs[4 * i + e] = (double) acc[3 * i + e] / pfscale;
+  if (!tr) return;
+  std::sort(found.begin(), found.end(),
+            [](const Entry &a, const Entry &b) { return a.i != b.i ? a.i < b.i : a.b < b.b; });
+  for (int i = 0; i < nlocal; ++i)
+    if (atom->type[i] == tp) st[i][0] = 0;
+  for (const Entry &e : found) {
+    double *row = st[e.i];
+    const int n = (int) row[0];
+    if (n >= cap) {
+      if (tag[e.i] < bad) bad = tag[e.i];
+      continue;
+    }
+    row[4 + 3 * n] = (double) e.b;
+    row[4 + 3 * n + 1] = e.lam;
+    row[4 + 3 * n + 2] = e.leq;
+    row[0] = n + 1;
+  }
+  stop_at(bad, "(a polymer) has more pair variables than pairs (the keyword) holds");
+}
+
+// u_a = v(r_a) + F_a / xi of the owned polymers (into st[.][1..3]) and
+// their S_a (into fs), from the fluid velocities of now: each polymer's
+// fluid neighbours within rc (the full list) by tag, relative to the first one's velocity
+// (a uniform flow is reproduced exactly), as hcbd's world
+void FixHCBD::interpolate()
 {
   const int nlocal = atom->nlocal;
-  const double dt = p.dt, dt_m = dt * (1.0 / c.m), lim2 = 0.25 * p.h * p.h;
+  const tagint *tag = atom->tag;
+  const int shep = p.coupling == HCBD_COUPLE_SHEPARD;
+  tagint bad = MAXTAGINT;
+  std::vector<Near> &nv = near;
+  for (int a = 0; a < nlocal; ++a) {
+    if (atom->type[a] != tp) continue;
+    nv.clear();
+    each_near(a, tf, p.rc, [&](int i, double r, int k) {
+      // k: the polymer's image relative to the blob (the lower tag), so the
+      // blob's image as the polymer sees it is -k boxes up
+      const Near nb = {tag[i], hcbd_hc_polymer_weight(&c, r) / np_[2 * i],
+                       {vc[3 * i] - k * le_v, vc[3 * i + 1], vc[3 * i + 2]}};
+      nv.push_back(nb);
+    });
+    std::sort(nv.begin(), nv.end(), [](const Near &x, const Near &y) { return x.t < y.t; });
+    double S = 0, dv[3] = {0, 0, 0}, v[3];
+    for (const Near &q : nv) {
+      S += q.w;
+      for (int e = 0; e < 3; ++e) dv[e] += q.w * (q.v[e] - nv[0].v[e]);
+    }
+    if (!(S > 0)) {
+      if (tag[a] < bad) bad = tag[a];
+      S = 1;
+    }
+    for (int e = 0; e < 3; ++e) {
+      const double ref = nv.empty() ? 0.0 : nv[0].v[e];
+      v[e] = shep ? ref + dv[e] / S : S * ref + dv[e];
+      st[a][1 + e] = v[e] + fs[4 * a + e] / p.xi;
+    }
+    fs[4 * a + 3] = shep ? S : 1.0;
+  }
+  stop_at(bad, "(a polymer) has no fluid blob within rc");
+}
+
+// F^fp_i = sum_a psi_ai F_a of the fluid blobs (into st[.][1..3]), the
+// polymers' forces and S_a sent to their ghosts first
+void FixHCBD::redistribute()
+{
+  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
+  fwd = 4;
+  comm->forward_comm_fix(this, 4);
+  std::memset(acc, 0, sizeof(int64_t) * 3 * nall);
+  each_pair(FP, p.rc, [&](int i, int a, const double *, double r, int) {
+    const double psi = hcbd_hc_polymer_weight(&c, r) / np_[2 * i] / fs[4 * a + 3];
+    for (int e = 0; e < 3; ++e) acc[3 * i + e] += llrint(psi * fs[4 * a + e] * pfscale);
+  });
+  nacc = 3;
+  comm->reverse_comm_fix(this, 3);
+  for (int i = 0; i < nlocal; ++i)
+    if (atom->type[i] == tf)
+      for (int e = 0; e < 3; ++e) st[i][1 + e] = (double) acc[3 * i + e] / pfscale;
+}
+
+// the pair variables' exact Ornstein-Uhlenbeck step over a polymer step,
+// lambda_eq held at its value of the step's start; both copies of a pair
+// take the same step
+void FixHCBD::lambda_step(int64_t step)
+{
+  const tagint *tag = atom->tag;
+  for (int a = 0; a < atom->nlocal; ++a) {
+    if (atom->type[a] != tp) continue;
+    double *row = st[a];
+    const int32_t ia = (int32_t) (tag[a] - 1 - nfluid);
+    for (int e = 0; e < (int) row[0]; ++e) {
+      const int32_t ib = (int32_t) ((tagint) row[4 + 3 * e] - 1 - nfluid);
+      const double z = hcbd_hc_noise_lambda(&ns, step, ia < ib ? ia : ib, ia < ib ? ib : ia);
+      row[4 + 3 * e + 1] = hcbd_hc_lambda_step(&c, row[4 + 3 * e + 1], row[4 + 3 * e + 2], z);
+    }
+  }
+}
+
+// x_a += u_a dt + sqrt(2 kT dt / xi) z_a; stops at a move beyond rc / 4
+void FixHCBD::polymer_move(int64_t step)
+{
+  const double dt = p.dt, sdr = std::sqrt(2.0 * p.kT * dt / p.xi), lim2 = 0.0625 * p.rc * p.rc;
+  double **x = atom->x;
+  tagint bad = MAXTAGINT;
+  for (int a = 0; a < atom->nlocal; ++a) {
+    if (atom->type[a] != tp) continue;
+    double z[3], dr[3];
+    hcbd_hc_noise_polymer(&ns, step, (int32_t) (atom->tag[a] - 1 - nfluid), z);
+    for (int e = 0; e < 3; ++e) dr[e] = st[a][1 + e] * dt + sdr * z[e];
+    if (!(dr[0] * dr[0] + dr[1] * dr[1] + dr[2] * dr[2] <= lim2) && atom->tag[a] < bad) bad = atom->tag[a];
+    for (int e = 0; e < 3; ++e) x[a][e] += dr[e];
+  }
+  stop_at(bad, "(a polymer) moved more than rc/4 in one step (or not by a finite amount): dt is too long");
+}
+
+void FixHCBD::final_integrate()
+{
+  const int nlocal = atom->nlocal, nsub = p.substeps;
+  const double dt = c.dt, dt_m = dt * (1.0 / c.m), lim2 = 0.25 * p.h * p.h;
+  const int64_t k = update->ntimestep - 1, step = k / nsub; // hcbd's fluid step and (polymer) step
+  const int sub = (int) (k % nsub);
   double **x = atom->x, **v = atom->v, **f = atom->f;
-  tagint bad = MAXTAGINT, all;
+  tagint bad = MAXTAGINT;
   // Lees-Edwards: the offset of the image above (the tilt, taken into
   // [-Lx/2, Lx/2]) and the velocity jump across y (fix deform remap v)
   le_s = domain->triclinic ? domain->xy - p.L[0] * std::floor(domain->xy / p.L[0] + 0.5) : 0.0;
@@ -325,27 +647,40 @@ void FixHCBD::final_integrate()
   grow();
   canonical();
   densities();
-  euler_pairs(update->ntimestep - 1); // hcbd's fluid step: the one being made
+  if (tp && sub == 0) {
+    polymer_densities();
+    polymer_forces();
+    interpolate();
+    redistribute();
+  }
+  euler_pairs(k);
   for (int i = 0; i < nlocal; ++i) {
+    if (atom->type[i] != tf) {
+      v[i][0] = v[i][1] = v[i][2] = 0.0;
+      continue;
+    }
     double u2 = 0;
     for (int d = 0; d < 3; ++d) {
-      v[i][d] += dt_m * ((double) acc[3 * i + d] / fscale + f[i][d]);
+      v[i][d] += dt_m * ((double) acc[3 * i + d] / fscale + (tp ? st[i][1 + d] : 0.0) + f[i][d]);
       x[i][d] += v[i][d] * dt;
       u2 += v[i][d] * v[i][d];
     }
     if (!(u2 * dt * dt <= lim2) && atom->tag[i] < bad) bad = atom->tag[i];
   }
-  MPI_Allreduce(&bad, &all, 1, MPI_LMP_TAGINT, MPI_MIN, world);
-  if (all != MAXTAGINT)
-    error->all(FLERR, "fix hcbd: atom {} moved more than h/2 in one step (or its velocity is not finite) at "
-                      "step {}: dt = {} is too long", all, update->ntimestep, dt);
+  stop_at(bad, "moved more than h/2 in one step (or its velocity is not finite): dt is too long");
+  if (tp && sub == nsub - 1) {
+    if (p.alpha > 0) lambda_step(step);
+    polymer_move(step);
+  }
 }
 
 int FixHCBD::pack_forward_comm(int n, int *slist, double *buf, int, int *)
 {
   for (int k = 0; k < n; ++k)
-    for (int d = 0; d < fwd; ++d)
-      buf[fwd * k + d] = fwd == 2 ? np_[2 * slist[k] + d] : d < 3 ? xw[3 * slist[k] + d] : vc[3 * slist[k] + d - 3];
+    for (int d = 0; d < fwd; ++d) {
+      const int i = slist[k];
+      buf[fwd * k + d] = fwd == 2 ? np_[2 * i + d] : fwd == 4 ? fs[4 * i + d] : d < 3 ? xw[3 * i + d] : vc[3 * i + d - 3];
+    }
   return fwd * n;
 }
 
@@ -354,9 +689,11 @@ void FixHCBD::unpack_forward_comm(int n, int first, double *buf)
   for (int k = 0; k < n; ++k)
     for (int d = 0; d < fwd; ++d) {
       const double b = buf[fwd * k + d];
-      if (fwd == 2) np_[2 * (first + k) + d] = b;
-      else if (d < 3) xw[3 * (first + k) + d] = b;
-      else vc[3 * (first + k) + d - 3] = b;
+      const int i = first + k;
+      if (fwd == 2) np_[2 * i + d] = b;
+      else if (fwd == 4) fs[4 * i + d] = b;
+      else if (d < 3) xw[3 * i + d] = b;
+      else vc[3 * i + d - 3] = b;
     }
 }
 
@@ -377,7 +714,64 @@ void FixHCBD::unpack_reverse_comm(int n, int *slist, double *buf)
     }
 }
 
+// the per-atom state (pair variables, held force or drift velocity)
+void FixHCBD::grow_arrays(int n)
+{
+  memory->grow(st, n, width, "hcbd:st");
+}
+
+void FixHCBD::copy_arrays(int i, int j, int)
+{
+  std::memcpy(st[j], st[i], sizeof(double) * width);
+}
+
+void FixHCBD::set_arrays(int i)
+{
+  std::memset(st[i], 0, sizeof(double) * width);
+}
+
+int FixHCBD::pack_exchange(int i, double *buf)
+{
+  std::memcpy(buf, st[i], sizeof(double) * width);
+  return width;
+}
+
+int FixHCBD::unpack_exchange(int n, double *buf)
+{
+  std::memcpy(st[n], buf, sizeof(double) * width);
+  return width;
+}
+
+int FixHCBD::pack_restart(int i, double *buf)
+{
+  buf[0] = width + 1;
+  std::memcpy(buf + 1, st[i], sizeof(double) * width);
+  return width + 1;
+}
+
+void FixHCBD::unpack_restart(int n, int nth)
+{
+  double **extra = atom->extra;
+  int m = 0;
+  for (int k = 0; k < nth; ++k) m += (int) extra[n][m];
+  if ((int) extra[n][m] != width + 1)
+    error->one(FLERR, "fix hcbd: the restart file holds {} values per atom, this fix {} (pairs = {})",
+               (int) extra[n][m] - 1, width, cap);
+  std::memcpy(st[n], &extra[n][m + 1], sizeof(double) * width);
+}
+
+int FixHCBD::size_restart(int)
+{
+  return width + 1;
+}
+
+int FixHCBD::maxsize_restart()
+{
+  return width + 1;
+}
+
 double FixHCBD::memory_usage()
 {
-  return nmax * (8.0 * sizeof(double) + 3.0 * sizeof(int64_t) + sizeof(int));
+  return nmax * (12.0 * sizeof(double) + 3.0 * sizeof(int64_t) + sizeof(int)) +
+         (double) atom->nmax * width * sizeof(double);
 }

@@ -1,6 +1,7 @@
 // fix hcbd: the 2018 HCBD model (Ahuja et al.) on LAMMPS's engine, with the
-// equations and the noise of hcbd.h.  So far its SPH fluid with the
-// paper's Euler pairs; see docs/LAMMPS.md.
+// equations and the noise of hcbd.h: the SPH fluid with the paper's Euler
+// pairs, the RaPiD polymer blobs with their pair variables, the two-way
+// coupling and the fluid's sub-steps; see docs/LAMMPS.md.
 #ifdef FIX_CLASS
 // clang-format off
 FixStyle(hcbd,FixHCBD);
@@ -12,6 +13,8 @@ FixStyle(hcbd,FixHCBD);
 
 #include "fix.h"
 #include "hcbd.h"
+
+#include <vector>
 
 namespace LAMMPS_NS {
 
@@ -28,27 +31,69 @@ class FixHCBD : public Fix {
   void unpack_forward_comm(int, int, double *) override;
   int pack_reverse_comm(int, int, double *) override;
   void unpack_reverse_comm(int, int *, double *) override;
+  void grow_arrays(int) override;
+  void copy_arrays(int, int, int) override;
+  void set_arrays(int) override;
+  int pack_exchange(int, double *) override;
+  int unpack_exchange(int, double *) override;
+  int pack_restart(int, double *) override;
+  void unpack_restart(int, int) override;
+  int size_restart(int) override;
+  int maxsize_restart() override;
   double memory_usage() override;
 
  private:
+  enum { FF, PP, FP };       // which pairs each_pair visits (fluid tags below polymer tags)
   void grow();
   void release();
+  void canonical();
   void densities();
   void euler_pairs(int64_t k);
-  void canonical();
-  template <class F> void each_pair(F fn);
+  void polymer_densities();
+  void polymer_forces();
+  void interpolate();
+  void redistribute();
+  void lambda_step(int64_t step);
+  void polymer_move(int64_t step);
+  template <class F> void each_pair(int kind, double cut, F fn);
+  template <class F> void each_near(int a, int type, double cut, F fn);
+  int delta(int i, int j, double *d) const;
+  void stop_at(tagint bad, const char *what);
   hcbd_hc_params p;        // the model's parameters (dt and box from LAMMPS)
   hcbd_hc_coef c;          // its coefficients (hcbd_hc_params_coef)
-  hcbd_hc_noise_stream ns; // pair noise keyed by (seed, fluid step, tags - 1)
-  class NeighList *list;   // half list within 2h
-  double *np_;             // n and P of owned and ghost atoms
+  hcbd_hc_noise_stream ns; // noise keyed by (seed, step, ids), as hcbd's world
+  class NeighList *list;   // half list within max(2h, rc)
+  class NeighList *flist;  // full list (with polymers): a polymer's own pairs
+  int tf, tp;              // the fluid's and the polymers' atom types (tp 0: none)
+  int cap;                 // pair variables per polymer (keyword pairs)
+  tagint nfluid;           // fluid blobs: tags 1..nfluid, polymers after them
+  double *np_;             // n and P (fluid) or n and mu (polymers), owned and ghost atoms
   double *xw, *vc;         // positions in [0, L) and velocities, hcbd's frame, as the owner wraps them
+  double *fs;              // a polymer's force and psi normaliser S (owned and ghost)
   int *kw;                 // y-wraps of an owned atom's position (Lees-Edwards)
   int64_t *acc;            // fixed-point pair sums (nacc per atom)
   int nmax, nacc, fwd;     // fwd: what the next forward communication carries
-  double wscale, fscale;   // fixed-point scales of the weights and forces
-  double limF;             // a pair force beyond it would move a blob 16 h in a step
+  double wscale, fscale;   // fixed-point scales of the fluid's weights and forces
+  double pwscale, pfscale; // and of the polymers' (forces: polymer and redistributed)
+  double limF, limP;       // force bounds: a move of 16 h (fluid) or 16 rc (polymer) in one step
   double le_s, le_v;       // Lees-Edwards: offset of the image above, velocity jump
+  // per-atom state that travels with the atom (exchange, restart): [0] the
+  // pair variables held, [1..3] the force on a fluid blob from the polymers
+  // or a polymer's drift velocity (held over the sub-steps), then per pair
+  // variable the partner's tag, lambda and lambda_eq, by tag
+  double **st;
+  int width;               // 4 + 3 cap
+  struct Entry {           // a pair variable found this step, for an owned atom
+    int i;
+    tagint b;
+    double lam, leq;
+  };
+  std::vector<Entry> found;
+  struct Near {            // a polymer's fluid neighbour: tag, weight W/n, velocity of its image
+    tagint t;
+    double w, v[3];
+  };
+  std::vector<Near> near;
 };
 
 }    // namespace LAMMPS_NS

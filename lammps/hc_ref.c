@@ -1,14 +1,16 @@
-/* hc_ref: hcbd's own 2018 world (the fluid alone) advanced from the atoms
-   of a LAMMPS dump, for make test-lammps to compare fix hcbd with, atom by
-   atom.  Usage:
-     hc_ref IN OUT steps dt rho nbar eta P0 h kT seed fluct pair gdot gx [every]
-   IN: write_dump custom id x y z vx vy vz, sorted by id (tags 1..n); OUT:
-   "id x y z vx vy vz" after `steps` steps, wrapped into the box; with
-   every, stdout: the step and hcbd_hc_world_temperature every `every`
-   steps (as LAMMPS's compute temp with the momentum zero).  fluct:
-   yes or no (the pair noise); pair: euler (HCBD_PAIR_EULER) or exact;
-   gdot: the Lees-Edwards shear rate from IN on (offset 0 there); gx: a
-   body force per mass along x. */
+/* hc_ref: hcbd's own 2018 world advanced from the atoms of a LAMMPS dump,
+   for make test-lammps to compare fix hcbd with, atom by atom.  Usage:
+     hc_ref IN OUT steps key=value ...
+   IN: write_dump custom id x y z vx vy vz, sorted by id (tags 1..n, the nf
+   fluid blobs first, then the polymers); OUT: "id x y z vx vy vz" after
+   `steps` polymer steps (of substeps fluid steps each), wrapped into the
+   box, the polymers' velocities 0.  Keys: nf (default all), dt (the fluid
+   step: LAMMPS's), rho nbar eta P0 h kT seed xi sigma rc alpha tau_lambda
+   p n_max chi substeps (hcbd_hc_params), fluct yes|no, pair euler|exact,
+   coupling shepard|raw, gdot (Lees-Edwards from IN on, offset 0 there), gx
+   (a body force per mass along x), every k: stdout gets the step and
+   hcbd_hc_world_temperature every k steps (as LAMMPS's compute temp of the
+   fluid with its momentum zero). */
 #define HCBD_IMPLEMENTATION
 #include "hcbd.h"
 
@@ -22,13 +24,45 @@ int main(int argc, char **argv)
     hcbd_hc_params *p = &def.params;
     hcbd_hc_world w;
     char line[512];
-    double lo[3], hi[3], *x, *v;
-    int n = 0, i, d, steps, every = 0, s;
+    double lo[3], hi[3], *x, *v, dt_f = 0;
+    int n = 0, nf = -1, i, d, steps, every = 0, s, a;
     FILE *in, *out;
-    if (argc != 16 && argc != 17) {
-        fprintf(stderr, "usage: hc_ref IN OUT steps dt rho nbar eta P0 h kT seed fluct pair gdot gx [every]\n");
+    if (argc < 4) {
+        fprintf(stderr, "usage: hc_ref IN OUT steps key=value ...\n");
         return 2;
     }
+    p->fluctuations = 0;
+    p->substeps = 1;
+    p->threads = 1;
+    p->pair_integrator = HCBD_PAIR_EULER;
+    for (a = 4; a < argc; ++a) {
+        const char *eq = strchr(argv[a], '='), *val = eq ? eq + 1 : "";
+        const size_t len = eq ? (size_t)(eq - argv[a]) : 0;
+        struct { const char *key; double *dst; } keys[] = {
+            {"rho", &p->rho}, {"nbar", &p->nbar}, {"eta", &p->eta}, {"P0", &p->P0}, {"h", &p->h},
+            {"kT", &p->kT}, {"xi", &p->xi}, {"sigma", &p->sigma}, {"rc", &p->rc}, {"alpha", &p->alpha},
+            {"tau_lambda", &p->tau_lambda}, {"p", &p->p_kuhn}, {"n_max", &p->n_max}, {"chi", &p->chi},
+            {"gdot", &p->gdot}, {"gx", &p->g[0]}, {"dt", &dt_f}};
+        int k, hit = 0;
+        for (k = 0; k < (int)(sizeof keys / sizeof keys[0]); ++k)
+            if (len == strlen(keys[k].key) && !strncmp(argv[a], keys[k].key, len)) {
+                *keys[k].dst = atof(val);
+                hit = 1;
+            }
+        if (hit) continue;
+        if (!strncmp(argv[a], "nf=", 3)) nf = atoi(val);
+        else if (!strncmp(argv[a], "seed=", 5)) p->seed = strtoull(val, NULL, 10);
+        else if (!strncmp(argv[a], "substeps=", 9)) p->substeps = atoi(val);
+        else if (!strncmp(argv[a], "every=", 6)) every = atoi(val);
+        else if (!strncmp(argv[a], "fluct=", 6)) p->fluctuations = !strcmp(val, "yes");
+        else if (!strncmp(argv[a], "pair=", 5)) p->pair_integrator = strcmp(val, "euler") ? HCBD_PAIR_SHARDLOW : HCBD_PAIR_EULER;
+        else if (!strncmp(argv[a], "coupling=", 9)) p->coupling = strcmp(val, "raw") ? HCBD_COUPLE_SHEPARD : HCBD_COUPLE_RAW;
+        else {
+            fprintf(stderr, "hc_ref: unknown argument %s\n", argv[a]);
+            return 2;
+        }
+    }
+    p->dt = dt_f * p->substeps;
     in = fopen(argv[1], "r");
     if (!in) { fprintf(stderr, "hc_ref: cannot read %s\n", argv[1]); return 1; }
     for (i = 0; i < 9 && fgets(line, sizeof line, in); ++i) {
@@ -36,6 +70,7 @@ int main(int argc, char **argv)
         if (i >= 5 && i <= 7 && sscanf(line, "%lf %lf", &lo[i - 5], &hi[i - 5]) != 2) n = 0;
     }
     if (n < 2) { fprintf(stderr, "hc_ref: %s is not a dump of atoms and box\n", argv[1]); return 1; }
+    if (nf < 0 || nf > n) nf = n;
     x = (double *)malloc(6 * (size_t)n * sizeof(double));
     v = x + 3 * (size_t)n;
     for (i = 0; i < n; ++i) {
@@ -53,26 +88,12 @@ int main(int argc, char **argv)
     }
     fclose(in);
     steps = atoi(argv[3]);
-    def.fluid_capacity = n;
-    def.polymer_capacity = 0;
+    def.fluid_capacity = nf;
+    def.polymer_capacity = n - nf;
     for (d = 0; d < 3; ++d) p->L[d] = hi[d] - lo[d];
-    p->dt = atof(argv[4]);
-    p->rho = atof(argv[5]);
-    p->nbar = atof(argv[6]);
-    p->eta = atof(argv[7]);
-    p->P0 = atof(argv[8]);
-    p->h = atof(argv[9]);
-    p->kT = atof(argv[10]);
-    p->seed = strtoull(argv[11], NULL, 10);
-    p->fluctuations = !strcmp(argv[12], "yes");
-    p->pair_integrator = strcmp(argv[13], "euler") ? HCBD_PAIR_SHARDLOW : HCBD_PAIR_EULER;
-    p->gdot = atof(argv[14]);
-    p->g[0] = atof(argv[15]);
-    p->substeps = 1;
-    p->threads = 1;
-    if (argc == 17) every = atoi(argv[16]);
     if (every < 1) every = steps;
-    if (hcbd_hc_world_create(&w, &def) != HCBD_OK || hcbd_hc_world_set_fluid(&w, n, x, v) != HCBD_OK) {
+    if (hcbd_hc_world_create(&w, &def) != HCBD_OK || hcbd_hc_world_set_fluid(&w, nf, x, v) != HCBD_OK ||
+        (n > nf && hcbd_hc_world_set_polymers(&w, n - nf, x + 3 * (size_t)nf) != HCBD_OK)) {
         fprintf(stderr, "hc_ref: %s\n", w.err.msg);
         return 1;
     }
@@ -81,14 +102,16 @@ int main(int argc, char **argv)
             fprintf(stderr, "hc_ref: %s\n", w.err.msg);
             return 1;
         }
-        if (argc == 17) printf("%d %.10g\n", s + every, hcbd_hc_world_temperature(&w));
+        if (every < steps) printf("%d %.10g\n", s + every, hcbd_hc_world_temperature(&w));
     }
     hcbd_hc_world_get_fluid(&w, x, v);
+    if (n > nf) hcbd_hc_world_get_polymers(&w, x + 3 * (size_t)nf);
     out = fopen(argv[2], "w");
     if (!out) { fprintf(stderr, "hc_ref: cannot write %s\n", argv[2]); return 1; }
     for (i = 0; i < n; ++i)
         fprintf(out, "%d %.17g %.17g %.17g %.17g %.17g %.17g\n", i + 1, x[3 * i] + lo[0], x[3 * i + 1] + lo[1],
-                x[3 * i + 2] + lo[2], v[3 * i], v[3 * i + 1], v[3 * i + 2]);
+                x[3 * i + 2] + lo[2], i < nf ? v[3 * i] : 0.0, i < nf ? v[3 * i + 1] : 0.0,
+                i < nf ? v[3 * i + 2] : 0.0);
     fclose(out);
     hcbd_hc_world_destroy(&w);
     free(x);

@@ -40,7 +40,7 @@ PY
     ln -sf "$B/lmp" "$work/lmp"
     part=
     [ "$file" = fix_hcbd.cpp ] && part=hcbd
-    first=$(HCBD_LAMMPS_DIR=$work HCBD_LAMMPS_QUICK=1 HCBD_LAMMPS_PART=$part "$root/lammps/check.sh" 2>&1 | grep -m 1 '^  FAIL' | sed 's/^  FAIL //')
+    first=$(HCBD_LAMMPS_DIR=$work HCBD_LAMMPS_QUICK=1 HCBD_LAMMPS_FIRST_FAIL=1 HCBD_LAMMPS_PART=$part "$root/lammps/check.sh" 2>&1 | grep -m 1 '^  FAIL' | sed 's/^  FAIL //')
     if [ -n "$first" ]; then echo "$name: caught by: ${first%%:*}"
     else echo "$name: MISSED"; missed=$((missed + 1)); fi
 done 3<<'LIST'
@@ -94,13 +94,33 @@ hc_reaction_on_partner|fix_hcbd.cpp|acc[3 * j + e] -= q;|acc[3 * j + e] -= q + q
 hc_density|fix_hcbd.cpp|hcbd_hc_fluid_density(&c, (double) acc[i] / wscale)|hcbd_hc_fluid_density(&c, 1.1 * (double) acc[i] / wscale)
 hc_pressure|fix_hcbd.cpp|np_[2 * i + 1] = hcbd_hc_fluid_pressure(&c, n);|np_[2 * i + 1] = 1.1 * hcbd_hc_fluid_pressure(&c, n);
 hc_kick|fix_hcbd.cpp|v[i][d] += dt_m * (|v[i][d] += 1.1 * dt_m * (
-hc_lammps_force|fix_hcbd.cpp|fscale + f[i][d])|fscale + 1.1 * f[i][d])
+hc_lammps_force|fix_hcbd.cpp|: 0.0) + f[i][d])|: 0.0) + 1.1 * f[i][d])
 hc_advection|fix_hcbd.cpp|x[i][d] += v[i][d] * dt;|x[i][d] += 1.1 * v[i][d] * dt;
-hc_noise_step|fix_hcbd.cpp|euler_pairs(update->ntimestep - 1);|euler_pairs(update->ntimestep);
+hc_noise_step|fix_hcbd.cpp|euler_pairs(k);|euler_pairs(k + 1);
 hc_noise_lower_tag|fix_hcbd.cpp|const int i = tag[i0] < tag[j0] ? i0 : j0|const int i = tag[i0] > tag[j0] ? i0 : j0
 hc_le_velocity|fix_hcbd.cpp|(vj[0] + kj * le_v)|(vj[0] + 1.1 * kj * le_v)
 hc_le_offset|fix_hcbd.cpp|min_image(ri[0] - rj[0] - k * le_s|min_image(ri[0] - rj[0] - 1.1 * k * le_s
 hc_le_frame|fix_hcbd.cpp|if (k) vc[3 * i] -= k * le_v;|if (k) vc[3 * i] -= 1.1 * k * le_v;
+hc_poly_weight|fix_hcbd.cpp|llrint(hcbd_hc_polymer_weight(&c, r) * pwscale)|llrint(1.1 * hcbd_hc_polymer_weight(&c, r) * pwscale)
+hc_poly_weight_partner|fix_hcbd.cpp|acc[j] += wp;|acc[j] += wp + wp / 10;
+hc_poly_mu|fix_hcbd.cpp|np_[2 * i + 1] = hcbd_hc_polymer_mu(&c, n);|np_[2 * i + 1] = 1.1 * hcbd_hc_polymer_mu(&c, n);
+hc_poly_reaction|fix_hcbd.cpp|acc[3 * j + e] -= qp;|acc[3 * j + e] -= qp + qp / 10;
+hc_lambda_kept|fix_hcbd.cpp|lam = e >= 0 ? st[o][4 + 3 * e + 1]|lam = e >= 0 ? 1.1 * st[o][4 + 3 * e + 1]
+hc_lambda_new|fix_hcbd.cpp|e >= 0 ? st[a][4 + 3 * e + 1] : leq, leq}|e >= 0 ? st[a][4 + 3 * e + 1] : 1.1 * leq, leq}
+hc_lambda_eq_held|fix_hcbd.cpp|row[4 + 3 * e + 2], z);|1.1 * row[4 + 3 * e + 2], z);
+hc_lambda_noise_step|fix_hcbd.cpp|hcbd_hc_noise_lambda(&ns, step,|hcbd_hc_noise_lambda(&ns, step + 1,
+hc_interp_weight|fix_hcbd.cpp|const Near nb = {tag[i], hcbd_hc_polymer_weight(&c, r) / np_[2 * i],|const Near nb = {tag[i], 1.1 * hcbd_hc_polymer_weight(&c, r) / np_[2 * i],
+hc_interp_image|fix_hcbd.cpp|{vc[3 * i] - k * le_v,|{vc[3 * i] - 1.1 * k * le_v,
+hc_interp_shepard|fix_hcbd.cpp|v[e] = shep ? ref + dv[e] / S|v[e] = shep ? ref + 1.1 * dv[e] / S
+hc_mobility|fix_hcbd.cpp|st[a][1 + e] = v[e] + fs[4 * a + e] / p.xi;|st[a][1 + e] = v[e] + 1.1 * fs[4 * a + e] / p.xi;
+hc_redistribution|fix_hcbd.cpp|const double psi = hcbd_hc_polymer_weight(&c, r)|const double psi = 1.1 * hcbd_hc_polymer_weight(&c, r)
+hc_coupling_kick|fix_hcbd.cpp|(tp ? st[i][1 + d] : 0.0)|(tp ? 1.1 * st[i][1 + d] : 0.0)
+hc_poly_noise|fix_hcbd.cpp|sdr = std::sqrt(2.0 * p.kT * dt / p.xi)|sdr = std::sqrt(2.2 * p.kT * dt / p.xi)
+hc_poly_noise_step|fix_hcbd.cpp|hcbd_hc_noise_polymer(&ns, step,|hcbd_hc_noise_polymer(&ns, step + 1,
+hc_poly_id|fix_hcbd.cpp|(int32_t) (atom->tag[a] - 1 - nfluid)|(int32_t) (atom->tag[a] - nfluid)
+hc_poly_drift|fix_hcbd.cpp|dr[e] = st[a][1 + e] * dt + sdr * z[e];|dr[e] = 1.1 * st[a][1 + e] * dt + sdr * z[e];
+hc_polymer_step|fix_hcbd.cpp|p.dt = update->dt * p.substeps;|p.dt = 1.1 * update->dt * p.substeps;
+hc_restart_pairs|fix_hcbd.cpp|std::memcpy(st[n], &extra[n][m + 1], sizeof(double) * width);|std::memset(st[n], 0, sizeof(double) * width);
 LIST
 echo "mutants-lammps: $missed missed"
 [ $missed -eq 0 ]
