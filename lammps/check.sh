@@ -166,6 +166,9 @@ compare "exact sweep, stars, 2016 density, Gaussian, 4 ranks" 4 4e-3 1.2 0.9 1.1
 compare "exact sweep, sheared (gdot = 20), ideal, 2016 density, Gaussian, 2 ranks" 2 3e-3 1.3 0.8 0.9 2e-4 2016 gauss 0 1 1 exact lm 20
 compare "exact sweep, sheared (gdot = 15), stars, 2014 density, uniform, 4 ranks" 4 5e-3 0.7 1.6 1.3 1e-4 2014 uniform 128 0.9 1.2 exact lm 15
 compare "Euler pairs, sheared (gdot = 20), ideal, 2016 density, Gaussian, 2 ranks" 2 3e-3 1.3 0.8 0.9 2e-4 2016 gauss 0 1 1 euler euler 20
+# the box's tilt passes half its edge at the 125th step: fix deform flips it
+# (the atoms past y's edge wrapped by fix gibd first, with their jump)
+compare "exact sweep, sheared through a box flip (gdot = 20, 300 steps), ideal, 2 ranks" 2 3e-3 1.3 0.8 0.9 2e-4 2016 gauss 0 1 1 exact lm 20 0 gauss 0 0 0 300
 compare "Euler pairs and Brownian steps, stars, 2016 density, Gaussian, 2 ranks" 2 3e-3 1.3 0.8 0.9 1e-4 2016 gauss 128 0.95 1.1 euler euler
 # walls (2016): the artificial particles in the densities, the Morris pairs
 # after each atom's own pairs (sweep) or with the Euler exchanges, moving

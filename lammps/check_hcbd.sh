@@ -23,21 +23,26 @@ hcbd_quick() {
     # fixed-point sums resolve 3e-11 of a pair force); the atoms move by
     # 0.6-5 and the fluid's velocities change by 1.7-10, sqrt(kT/m) = 1.14,
     # so an error of 1e-3 in any term would show by orders of magnitude
-    hcompare() { # name ranks fluct gdot gx [npoly substeps coupling]
-        local name=$1 np=$2 fluct=$3 gdot=$4 gx=$5 npoly=${6:-0} sub=${7:-1} cpl=${8:-shepard} L dx dv n mx mv
+    hcompare() { # name ranks fluct gdot gx [npoly substeps coupling steps every]
+        local name=$1 np=$2 fluct=$3 gdot=$4 gx=$5 npoly=${6:-0} sub=${7:-1} cpl=${8:-shepard} ns=${9:-20}
+        local every=${10:-1} skin=0.5 L dx dv n mx mv
+        [ "$every" -gt 1 ] && skin=2
         if ! $MPI -np "$np" "$lmp" -in "$hin" -var plugin "$hplug" -var fluct "$fluct" -var gdot "$gdot" -var gx "$gx" \
-            -var npoly "$npoly" -var substeps "$sub" -var coupling "$cpl" -var steps $((20 * sub)) \
-            -var start "$t/h0.txt" -var end "$t/h1.txt" -log none -screen none > /dev/null 2>&1; then
+            -var npoly "$npoly" -var substeps "$sub" -var coupling "$cpl" -var steps $((ns * sub)) \
+            -var every "$every" -var skin "$skin" \
+            -var start "$t/h0.txt" -var end "$t/h1.txt" -var stressf "$t/hs.txt" -log none -screen none \
+            > /dev/null 2>&1; then
             bad "fix hcbd, $name: LAMMPS failed"; return
         fi
         # shellcheck disable=SC2086
-        if ! "$t/hc_ref" "$t/h0.txt" "$t/hr.txt" 20 $hcoef seed=1 fluct="$fluct" gdot="$gdot" gx="$gx" \
-            substeps="$sub" coupling="$cpl"; then
+        if ! "$t/hc_ref" "$t/h0.txt" "$t/hr.txt" "$ns" $hcoef seed=1 fluct="$fluct" gdot="$gdot" gx="$gx" \
+            substeps="$sub" coupling="$cpl" > "$t/hrs.txt"; then
             bad "fix hcbd, $name: hc_ref failed"; return
         fi
         L=$(awk 'NR == 6 { printf "%.17g", $2 - $1 }' "$t/h0.txt")
+        # sheared: LAMMPS's atoms in hcbd's frame (a polymer carries no velocity)
         awk -v vle="$(awk -v g="$gdot" -v L="$L" 'BEGIN { printf "%.17g", g * L }')" -f "$root/lammps/le_canon.awk" \
-            "$t/h1.txt" > "$t/h1c.txt"
+            "$t/h1.txt" | awk '$1 > 512 { $5 = $6 = $7 = 0 } 1' > "$t/h1c.txt"
         read -r dx dv n < <(awk -v L="$L" -f "$root/lammps/maxdiff.awk" "$t/h1c.txt" "$t/hr.txt")
         read -r mx mv _ < <(awk -v L="$L" -f "$root/lammps/maxdiff.awk" "$t/h0.txt" "$t/h1c.txt")
         if [ "$npoly" -gt 0 ]; then # the polymers' own largest move
@@ -47,8 +52,17 @@ hcbd_quick() {
         echo "    fix hcbd, $name: largest |x - x_hcbd| $dx, |v - v_hcbd| $dv (moved by $mx, $mv; polymers by $mp)"
         if awk -v dx="$dx" -v dv="$dv" -v mx="$mx" -v mv="$mv" -v mp="$mp" -v n="$n" -v N=$((512 + npoly)) \
             'BEGIN { exit !(n == N && dx < 1e-9 && dv < 1e-8 && mx > 0.3 && mv > 1 && mp > 0.3) }'; then
-            ok "fix hcbd, $name: 20 steps = hcbd's world, atom by atom"
+            ok "fix hcbd, $name: $ns steps = hcbd's world, atom by atom"
         else bad "fix hcbd, $name: fix hcbd and hcbd's world part: |dx| $dx, |dv| $dv"; fi
+        # the stress vector (stress yes), the run's mean over its polymer
+        # steps, = hcbd_hc_world_stress_read's ten columns to 1e-9 of the largest
+        if awk -v a="$(cat "$t/hs.txt")" -v b="$(cat "$t/hrs.txt")" 'BEGIN {
+            n = split(a, x); if (n != 10 || split(b, y) != 10) exit 1
+            for (k = 1; k <= n; ++k) { m = y[k] < 0 ? -y[k] : y[k]; if (m > big) big = m }
+            for (k = 1; k <= n; ++k) { d = x[k] - y[k]; if (d < 0) d = -d; if (!(d <= 1e-9 * big)) exit 1 }
+            exit !(big > 0) }'; then
+            ok "fix hcbd, $name: the stress split (f_ID) = hcbd_hc_world_stress_read's"
+        else bad "fix hcbd, $name: stress $(cat "$t/hs.txt"), hcbd's $(cat "$t/hrs.txt")"; fi
     }
     hcompare "fluid, Euler pairs with fluctuations, 1 rank" 1 yes 0 0
     hcompare "fluid, Euler pairs without fluctuations, 2 ranks" 2 no 0 0
@@ -61,6 +75,12 @@ hcbd_quick() {
     hcompare "60 polymers, sheared (gdot = 0.8), 4 ranks" 4 yes 0.8 0 60
     hcompare "60 polymers, 3 sub-steps, 2 ranks" 2 yes 0 0 60 3
     hcompare "60 polymers, 2 sub-steps, raw coupling, body force (gx = 0.5), 4 ranks" 4 yes 0 0.5 60 2 raw
+    # the box's tilt passes half its edge at the 31st fluid step: fix
+    # deform flips it (the atoms past y's edge wrapped by fix hcbd first)
+    hcompare "60 polymers, sheared through a box flip, 3 sub-steps, 2 ranks" 2 yes 0.8 0 60 3 shepard 20
+    # lists checked every 4th step (skin 2): polymers stay past y's edge for
+    # steps before LAMMPS wraps them, and move in their image's frame
+    hcompare "60 polymers, sheared, lists every 4 steps, 2 ranks" 2 yes 0.8 0 60 1 shepard 20 4
     # bad arguments and settings: LAMMPS stops with an error naming them
     hexpect() {
         name=$1 edit=$2
@@ -90,7 +110,8 @@ hcbd_quick() {
     # a lattice whose spacing exceeds 2 h: every blob alone, n = w(0) = 4 nbar
     hexpect "density n/nbar outside" "s/^variable  *ns index 8/variable ns index 4/; s/^variable  *nbar index 0.5/variable nbar index 0.06/"
     hexpect "moved more than h/2 in one step" "s/^variable  *dt index 0.02/variable dt index 0.2/"
-    hexpect "may only shear" "s/^fix  *g all hcbd/fix grow all deform 1 x scale 1.01\n&/"
+    hexpect "may only shear" "s/^fix  *g all hcbd .*/&\nfix grow all deform 1 x scale 1.01/"
+    hexpect "define it before fix deform" "s/^fix  *g all hcbd/fix early all deform 1 xy erate 0.1 remap v\n&/; s/^if \"\\\${gdot} == 0\" then \"region/if \"1 == 0\" then \"region/"
     # with polymers (npoly 60)
     hpoly() { sed "s/^variable  *npoly index 0/variable npoly index 60/; $2" "$hin" > "$t/hbad0.in"; hin0=$hin; hin=$t/hbad0.in; hexpect "$1" "$3"; hin=$hin0; }
     hpoly "polymer = 1 is the fluid's type" "" "s/polymer 2 xi/polymer 1 xi/"
@@ -145,7 +166,7 @@ hcbd_stats() {
     [ -f "$hplug" ] || return
     local T eT hT heT
     blocks() { # T samples (step T per line) after the first 2000 steps: mean and error of 10 blocks
-        awk '$1 > 2000 { x[++n] = $2 } END { b = int(n / 10); for (k = 0; k < 10; ++k) { s = 0
+        awk 'NF == 2 && $1 > 2000 { x[++n] = $2 } END { b = int(n / 10); for (k = 0; k < 10; ++k) { s = 0
              for (j = 1; j <= b; ++j) s += x[k * b + j]; m[k] = s / b; a += m[k] / 10 }
              for (k = 0; k < 10; ++k) v += (m[k] - a) ^ 2; printf "%.6g %.3g\n", a, sqrt(v / 90) }'
     }

@@ -58,6 +58,7 @@
 #include "force.h"
 #include "math_const.h"
 #include "memory.h"
+#include "modify.h"
 #include "neigh_list.h"
 #include "neigh_request.h"
 #include "neighbor.h"
@@ -187,7 +188,7 @@ void FixGIBD::release()
 
 int FixGIBD::setmask()
 {
-  return FINAL_INTEGRATE;
+  return FINAL_INTEGRATE | PRE_EXCHANGE;
 }
 
 void FixGIBD::init()
@@ -207,6 +208,12 @@ void FixGIBD::init()
       error->all(FLERR, "fix gibd: {}", msg);
   }
   if (!comm->ghost_velocity) error->all(FLERR, "fix gibd: needs ghost velocities (comm_modify vel yes)");
+  // fix deform's box flip wraps the atoms past y's edge without their
+  // velocity jump; pre_exchange wraps them first (see there)
+  for (int f = 0; f < modify->find_fix(id); ++f)
+    if (!strcmp(modify->fix[f]->style, "deform"))
+      error->all(FLERR, "fix gibd: define it before fix deform {} (so that the atoms past y's edge take "
+                        "their velocity jump before a box flip wraps them)", modify->fix[f]->id);
   if (!force->newton_pair) error->all(FLERR, "fix gibd: needs newton on (each pair once, sums to the owners)");
   if (!force->pair || force->pair->cutforce < p.Rc)
     error->all(FLERR, "fix gibd: the pair cut-off must reach Rc = {} (pair_style zero {} for ideal carriers)",
@@ -708,6 +715,30 @@ void FixGIBD::final_integrate()
     MPI_Allreduce(loc, tot, 2, MPI_DOUBLE, MPI_SUM, world);
     sfl[0] = -tot[0] / (p.L[0] * p.L[1] * p.L[2] * dt);
     sfl[1] = -tot[1] / (p.L[0] * p.L[2] * dt);
+  }
+}
+
+// Lees-Edwards: before a neighbour-list build, the atoms past y's edge
+// become their images inside (moved along x by the offset, slowed by the
+// jump), as LAMMPS's periodic wrap would (remap v) right after; doing it
+// here, before fix deform's box flip (defined after this fix), keeps the
+// flip from wrapping them without the jump (its wrap leaves velocities
+// alone)
+void FixGIBD::pre_exchange()
+{
+  if (!domain->triclinic || !domain->deform_vremap) return;
+  double **x = atom->x, **v = atom->v;
+  imageint *image = atom->image;
+  const double Ly = domain->prd[1], ylo = domain->boxlo[1], xy = domain->xy, vj = domain->h_rate[5];
+  for (int i = 0; i < atom->nlocal; ++i) {
+    const double u = x[i][1] - ylo;
+    const int k = u < 0.0 ? -1 : (u >= Ly ? 1 : 0);
+    if (!k) continue;
+    x[i][1] -= k * Ly;
+    x[i][0] -= k * xy;
+    v[i][0] -= k * vj;
+    const imageint yb = ((image[i] >> IMGBITS) & IMGMASK) + k;
+    image[i] = (image[i] & ~((imageint) IMGMASK << IMGBITS)) | ((yb & IMGMASK) << IMGBITS);
   }
 }
 

@@ -26,6 +26,7 @@ class FixGIBD : public Fix {
   void init_list(int, class NeighList *) override;
   void setup(int) override;
   void final_integrate() override;
+  void pre_exchange() override;
   int pack_forward_comm(int, int *, double *, int, int *) override;
   void unpack_forward_comm(int, int, double *) override;
   int pack_reverse_comm(int, int, double *) override;

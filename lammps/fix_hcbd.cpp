@@ -45,6 +45,7 @@
 #include "error.h"
 #include "force.h"
 #include "memory.h"
+#include "modify.h"
 #include "neigh_list.h"
 #include "neigh_request.h"
 #include "neighbor.h"
@@ -80,7 +81,7 @@ static int integer(Error *error, const char *key, const char *v, int lo, int hi)
 FixHCBD::FixHCBD(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), list(nullptr), flist(nullptr), tf(1), tp(0), cap(32), nfluid(0), np_(nullptr), xw(nullptr), vc(nullptr),
     fs(nullptr), kw(nullptr), acc(nullptr), nmax(0), nacc(1), fwd(0), wscale(0), fscale(0), pwscale(0), pfscale(0),
-    limF(0), limP(0), le_s(0), le_v(0), st(nullptr), width(0)
+    limF(0), limP(0), le_s(0), le_v(0), stress(0), ss{0, 0, 0, 0, 0, 0, 0}, sv{0}, st(nullptr), width(0)
 {
   int euler = 1;
   p = hcbd_hc_params_default();
@@ -111,6 +112,10 @@ FixHCBD::FixHCBD(LAMMPS *lmp, int narg, char **arg) :
       if (!strcmp(v, "shepard")) p.coupling = HCBD_COUPLE_SHEPARD;
       else if (!strcmp(v, "raw")) p.coupling = HCBD_COUPLE_RAW;
       else error->all(FLERR, "fix hcbd: coupling = {} is not shepard or raw", v);
+    } else if (!strcmp(key, "stress")) {
+      if (!strcmp(v, "yes")) stress = 1;
+      else if (!strcmp(v, "no")) stress = 0;
+      else error->all(FLERR, "fix hcbd: stress = {} is not yes or no", v);
     } else if (!strcmp(key, "fluct")) {
       if (!strcmp(v, "yes")) p.fluctuations = 1;
       else if (!strcmp(v, "no")) p.fluctuations = 0;
@@ -136,6 +141,12 @@ FixHCBD::FixHCBD(LAMMPS *lmp, int narg, char **arg) :
   p.pair_integrator = HCBD_PAIR_EULER;
   if (igroup != 0) error->all(FLERR, "fix hcbd: the group must be all (densities sum over every atom)");
   time_integrate = 1;
+  if (stress) {
+    vector_flag = 1;
+    size_vector = HCBD_HC_NSTRESS;
+    global_freq = p.substeps; // set at a polymer step's last sub-step
+    extvector = 0;
+  }
   comm_forward = 6;
   comm_reverse = 3;
   width = 4 + 3 * cap;
@@ -167,7 +178,7 @@ void FixHCBD::release()
 
 int FixHCBD::setmask()
 {
-  return FINAL_INTEGRATE;
+  return FINAL_INTEGRATE | PRE_EXCHANGE;
 }
 
 void FixHCBD::init()
@@ -184,6 +195,12 @@ void FixHCBD::init()
     error->all(FLERR, "fix hcbd: {} atom types: the fix takes the fluid's (fluid {}) and the polymers' (polymer "
                       "{}, 0: none), no other", atom->ntypes, tf, tp);
   if (!comm->ghost_velocity) error->all(FLERR, "fix hcbd: needs ghost velocities (comm_modify vel yes)");
+  // fix deform's box flip wraps the atoms past y's edge without their
+  // velocity jump; pre_exchange wraps them first (see there)
+  for (int f = 0; f < modify->find_fix(id); ++f)
+    if (!strcmp(modify->fix[f]->style, "deform"))
+      error->all(FLERR, "fix hcbd: define it before fix deform {} (so that the atoms past y's edge take "
+                        "their velocity jump before a box flip wraps them)", modify->fix[f]->id);
   if (!force->newton_pair) error->all(FLERR, "fix hcbd: needs newton on (each pair once, sums to the owners)");
   const double reach = tp && p.rc > 2.0 * p.h ? p.rc : 2.0 * p.h;
   if (!force->pair || force->pair->cutforce < reach)
@@ -404,7 +421,7 @@ void FixHCBD::densities()
 
 // the Euler pair forces of x and v of t into acc (owned atoms, after the
 // reverse communication); the noise of fluid step k, +z on the lower tag
-void FixHCBD::euler_pairs(int64_t k)
+void FixHCBD::euler_pairs(int64_t k, int sum)
 {
   const int nall = atom->nlocal + atom->nghost;
   const tagint *tag = atom->tag;
@@ -417,6 +434,16 @@ void FixHCBD::euler_pairs(int64_t k)
     if (p.fluctuations) hcbd_hc_noise_fluid_pair(&ns, k, (int32_t) (tag[i] - 1), (int32_t) (tag[j] - 1), z);
     hcbd_hc_fluid_pair(&c, d, r, np_[2 * i], np_[2 * j], np_[2 * i + 1], np_[2 * j + 1], dv,
                        p.fluctuations ? z : nullptr, F);
+    if (sum) {
+      // the pair's pressure, viscous and noise parts of F_x, as hcbd's world splits them
+      double Fp[3] = {0, 0, 0}, Fv[3] = {0, 0, 0};
+      const double dv0[3] = {0, 0, 0};
+      hcbd_hc_fluid_pair(&c, d, r, np_[2 * i], np_[2 * j], np_[2 * i + 1], np_[2 * j + 1], dv0, nullptr, Fp);
+      hcbd_hc_fluid_pair(&c, d, r, np_[2 * i], np_[2 * j], np_[2 * i + 1], np_[2 * j + 1], dv, nullptr, Fv);
+      ss[0] += d[1] * Fp[0];
+      ss[1] += d[1] * (Fv[0] - Fp[0]);
+      ss[2] += d[1] * (F[0] - Fv[0]);
+    }
     for (int e = 0; e < 3; ++e) {
       if (!(std::fabs(F[e]) <= limF)) {
         if (tag[i] < bad) bad = tag[i];
@@ -500,6 +527,11 @@ void FixHCBD::polymer_forces()
     }
     if (r < 1e-12 * p.sigma) return; // no direction: no force (as hcbd's world)
     const double fr = hcbd_hc_polymer_pair(&c, r, np_[2 * i + 1], np_[2 * j + 1], lam);
+    if (stress) { // Flory-Huggins alone: the pair variable at lambda_eq
+      const double fc = hcbd_hc_polymer_pair(&c, r, np_[2 * i + 1], np_[2 * j + 1], hcbd_hc_lambda_eq(&c, r));
+      ss[3] += d[1] * fc * d[0];
+      ss[4] += d[1] * (fr - fc) * d[0];
+    }
     for (int e = 0; e < 3; ++e) {
       const double F = fr * d[e];
       if (!(std::fabs(F) <= limP)) {
@@ -551,11 +583,17 @@ void FixHCBD::interpolate()
   for (int a = 0; a < nlocal; ++a) {
     if (atom->type[a] != tp) continue;
     nv.clear();
+    double lever = 0; // sum_i W/n_i y_ia
     each_near(a, tf, p.rc, [&](int i, double r, int k) {
       // k: the polymer's image relative to the blob (the lower tag), so the
       // blob's image as the polymer sees it is -k boxes up
       const Near nb = {tag[i], hcbd_hc_polymer_weight(&c, r) / np_[2 * i],
                        {vc[3 * i] - k * le_v, vc[3 * i + 1], vc[3 * i + 2]}};
+      if (stress) {
+        double d[3];
+        delta(i, a, d);
+        lever += nb.w * d[1];
+      }
       nv.push_back(nb);
     });
     std::sort(nv.begin(), nv.end(), [](const Near &x, const Near &y) { return x.t < y.t; });
@@ -574,6 +612,7 @@ void FixHCBD::interpolate()
       st[a][1 + e] = v[e] + fs[4 * a + e] / p.xi;
     }
     fs[4 * a + 3] = shep ? S : 1.0;
+    if (stress) ss[5] += lever / fs[4 * a + 3] * fs[4 * a];
   }
   stop_at(bad, "(a polymer) has no fluid blob within rc");
 }
@@ -627,6 +666,9 @@ void FixHCBD::polymer_move(int64_t step)
     hcbd_hc_noise_polymer(&ns, step, (int32_t) (atom->tag[a] - 1 - nfluid), z);
     for (int e = 0; e < 3; ++e) dr[e] = st[a][1 + e] * dt + sdr * z[e];
     if (!(dr[0] * dr[0] + dr[1] * dr[1] + dr[2] * dr[2] <= lim2) && atom->tag[a] < bad) bad = atom->tag[a];
+    // u is hcbd's frame's: a polymer past y's edge (LAMMPS wraps it at the
+    // next neighbour-list build) moves in its image's, faster by the jump
+    dr[0] += kw[a] * le_v * dt;
     for (int e = 0; e < 3; ++e) x[a][e] += dr[e];
   }
   stop_at(bad, "(a polymer) moved more than rc/4 in one step (or not by a finite amount): dt is too long");
@@ -647,13 +689,34 @@ void FixHCBD::final_integrate()
   grow();
   canonical();
   densities();
+  const int last = sub == nsub - 1; // the sub-step whose fluid stress hcbd's world records
+  if (stress && last) ss[0] = ss[1] = ss[2] = ss[6] = 0;
+  if (stress && sub == 0) ss[3] = ss[4] = ss[5] = 0; // the polymers' of the polymer step
   if (tp && sub == 0) {
     polymer_densities();
     polymer_forces();
     interpolate();
     redistribute();
   }
-  euler_pairs(k);
+  euler_pairs(k, stress && last);
+  if (stress && last) { // the kinetic part of t, relative to the Lees-Edwards profile
+    const double gdot = le_v / p.L[1];
+    for (int i = 0; i < nlocal; ++i)
+      if (atom->type[i] == tf) ss[6] += c.m * (vc[3 * i] - gdot * (xw[3 * i + 1] - 0.5 * p.L[1])) * vc[3 * i + 1];
+    double tot[7];
+    MPI_Allreduce(ss, tot, 7, MPI_DOUBLE, MPI_SUM, world);
+    const double f = -1.0 / (p.L[0] * p.L[1] * p.L[2]);
+    sv[HCBD_HC_S_KINETIC] = f * tot[6];
+    sv[HCBD_HC_S_PRESSURE] = f * tot[0];
+    sv[HCBD_HC_S_VISCOUS] = f * tot[1];
+    sv[HCBD_HC_S_NOISE] = f * tot[2];
+    sv[HCBD_HC_S_CONSERVATIVE] = f * tot[3];
+    sv[HCBD_HC_S_TRANSIENT] = f * tot[4];
+    sv[HCBD_HC_S_INTERACTION] = f * tot[5];
+    sv[HCBD_HC_S_FLUID] = sv[0] + sv[1] + sv[2] + sv[3];
+    sv[HCBD_HC_S_POLYMER] = sv[5] + sv[6];
+    sv[HCBD_HC_S_TOTAL] = sv[HCBD_HC_S_FLUID] + sv[HCBD_HC_S_POLYMER] + sv[HCBD_HC_S_INTERACTION];
+  }
   for (int i = 0; i < nlocal; ++i) {
     if (atom->type[i] != tf) {
       v[i][0] = v[i][1] = v[i][2] = 0.0;
@@ -671,6 +734,30 @@ void FixHCBD::final_integrate()
   if (tp && sub == nsub - 1) {
     if (p.alpha > 0) lambda_step(step);
     polymer_move(step);
+  }
+}
+
+// Lees-Edwards: before a neighbour-list build, the atoms past y's edge
+// become their images inside (moved along x by the offset, slowed by the
+// jump), as LAMMPS's periodic wrap would (remap v) right after; doing it
+// here, before fix deform's box flip (defined after this fix), keeps the
+// flip from wrapping them without the jump (its wrap leaves velocities
+// alone)
+void FixHCBD::pre_exchange()
+{
+  if (!domain->triclinic || !domain->deform_vremap) return;
+  double **x = atom->x, **v = atom->v;
+  imageint *image = atom->image;
+  const double Ly = domain->prd[1], ylo = domain->boxlo[1], xy = domain->xy, vj = domain->h_rate[5];
+  for (int i = 0; i < atom->nlocal; ++i) {
+    const double u = x[i][1] - ylo;
+    const int k = u < 0.0 ? -1 : (u >= Ly ? 1 : 0);
+    if (!k) continue;
+    x[i][1] -= k * Ly;
+    x[i][0] -= k * xy;
+    v[i][0] -= k * vj;
+    const imageint yb = ((image[i] >> IMGBITS) & IMGMASK) + k;
+    image[i] = (image[i] & ~((imageint) IMGMASK << IMGBITS)) | ((yb & IMGMASK) << IMGBITS);
   }
 }
 
@@ -712,6 +799,11 @@ void FixHCBD::unpack_reverse_comm(int n, int *slist, double *buf)
       std::memcpy(&q, buf + nacc * k + d, sizeof q);
       acc[(size_t) nacc * slist[k] + d] += q;
     }
+}
+
+double FixHCBD::compute_vector(int n)
+{
+  return sv[n];
 }
 
 // the per-atom state (pair variables, held force or drift velocity)

@@ -27,10 +27,12 @@ class FixHCBD : public Fix {
   void init_list(int, class NeighList *) override;
   void setup(int) override;
   void final_integrate() override;
+  void pre_exchange() override;
   int pack_forward_comm(int, int *, double *, int, int *) override;
   void unpack_forward_comm(int, int, double *) override;
   int pack_reverse_comm(int, int, double *) override;
   void unpack_reverse_comm(int, int *, double *) override;
+  double compute_vector(int) override;
   void grow_arrays(int) override;
   void copy_arrays(int, int, int) override;
   void set_arrays(int) override;
@@ -48,7 +50,7 @@ class FixHCBD : public Fix {
   void release();
   void canonical();
   void densities();
-  void euler_pairs(int64_t k);
+  void euler_pairs(int64_t k, int sum);
   void polymer_densities();
   void polymer_forces();
   void interpolate();
@@ -77,6 +79,12 @@ class FixHCBD : public Fix {
   double pwscale, pfscale; // and of the polymers' (forces: polymer and redistributed)
   double limF, limP;       // force bounds: a move of 16 h (fluid) or 16 rc (polymer) in one step
   double le_s, le_v;       // Lees-Edwards: offset of the image above, velocity jump
+  // keyword stress yes: the shear stress S_yx of the last polymer step, as
+  // hcbd_hc_world_stress_read's columns; ss: this rank's sums of y_ij F_ij,x
+  // of the fluid's pressure, viscous and noise forces, of the polymers'
+  // conservative and transient forces and of the coupling, and m u_x u_y
+  int stress;
+  double ss[7], sv[HCBD_HC_NSTRESS];
   // per-atom state that travels with the atom (exchange, restart): [0] the
   // pair variables held, [1..3] the force on a fluid blob from the polymers
   // or a polymer's drift velocity (held over the sub-steps), then per pair

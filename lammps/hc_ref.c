@@ -4,13 +4,14 @@
    IN: write_dump custom id x y z vx vy vz, sorted by id (tags 1..n, the nf
    fluid blobs first, then the polymers); OUT: "id x y z vx vy vz" after
    `steps` polymer steps (of substeps fluid steps each), wrapped into the
-   box, the polymers' velocities 0.  Keys: nf (default all), dt (the fluid
+   box, the polymers' velocities 0; stdout: hcbd_hc_world_stress_read's
+   ten columns, averaged over the steps.  Keys: nf (default all), dt (the fluid
    step: LAMMPS's), rho nbar eta P0 h kT seed xi sigma rc alpha tau_lambda
    p n_max chi substeps (hcbd_hc_params), fluct yes|no, pair euler|exact,
    coupling shepard|raw, gdot (Lees-Edwards from IN on, offset 0 there), gx
    (a body force per mass along x), every k: stdout gets the step and
    hcbd_hc_world_temperature every k steps (as LAMMPS's compute temp of the
-   fluid with its momentum zero). */
+   fluid with its momentum zero) before the stress; threads (1). */
 #define HCBD_IMPLEMENTATION
 #include "hcbd.h"
 
@@ -54,6 +55,7 @@ int main(int argc, char **argv)
         else if (!strncmp(argv[a], "seed=", 5)) p->seed = strtoull(val, NULL, 10);
         else if (!strncmp(argv[a], "substeps=", 9)) p->substeps = atoi(val);
         else if (!strncmp(argv[a], "every=", 6)) every = atoi(val);
+        else if (!strncmp(argv[a], "threads=", 8)) p->threads = atoi(val);
         else if (!strncmp(argv[a], "fluct=", 6)) p->fluctuations = !strcmp(val, "yes");
         else if (!strncmp(argv[a], "pair=", 5)) p->pair_integrator = strcmp(val, "euler") ? HCBD_PAIR_SHARDLOW : HCBD_PAIR_EULER;
         else if (!strncmp(argv[a], "coupling=", 9)) p->coupling = strcmp(val, "raw") ? HCBD_COUPLE_SHEPARD : HCBD_COUPLE_RAW;
@@ -97,12 +99,18 @@ int main(int argc, char **argv)
         fprintf(stderr, "hc_ref: %s\n", w.err.msg);
         return 1;
     }
+    hcbd_hc_world_stress_enable(&w, 1);
     for (s = 0; s < steps; s += every) {
         if (hcbd_hc_world_step(&w, every) != HCBD_OK) {
             fprintf(stderr, "hc_ref: %s\n", w.err.msg);
             return 1;
         }
         if (every < steps) printf("%d %.10g\n", s + every, hcbd_hc_world_temperature(&w));
+    }
+    {
+        double st[HCBD_HC_NSTRESS];
+        hcbd_hc_world_stress_read(&w, st, NULL);
+        for (d = 0; d < HCBD_HC_NSTRESS; ++d) printf("%.17g%c", st[d], d + 1 < HCBD_HC_NSTRESS ? ' ' : '\n');
     }
     hcbd_hc_world_get_fluid(&w, x, v);
     if (n > nf) hcbd_hc_world_get_polymers(&w, x + 3 * (size_t)nf);

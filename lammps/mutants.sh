@@ -72,6 +72,7 @@ le_pair_shift|fix_gibd.cpp|part_k[t] * le_v, vc|1.1 * part_k[t] * le_v, vc
 le_image_offset|fix_gibd.cpp|min_image(ri[0] - rj[0] - k * le_s|min_image(ri[0] - rj[0] - 1.1 * k * le_s
 le_frame|fix_gibd.cpp|if (k) vc[3 * i] -= k * le_v;|if (k) vc[3 * i] -= 1.1 * k * le_v;
 le_frame_back|fix_gibd.cpp|if (kw[i]) v[i][0] += kw[i] * le_v;|if (kw[i]) v[i][0] += 1.1 * kw[i] * le_v;
+le_flip_jump|fix_gibd.cpp|v[i][0] -= k * vj;|v[i][0] -= 1.1 * k * vj;
 stress_exchange|fix_gibd.cpp|sfl[0] = -tot[0] / (p.L[0]|sfl[0] = -1.1 * tot[0] / (p.L[0]
 stress_exchange_euler|fix_gibd.cpp|if (stress) sbg += dy * (sdt|if (stress) sbg += 1.1 * dy * (sdt
 stress_carrier_up|fix_gibd.cpp|if (k1 > k0) scr += m * vx;|if (k1 > k0) scr += 1.1 * m * vx;
@@ -96,7 +97,7 @@ hc_pressure|fix_hcbd.cpp|np_[2 * i + 1] = hcbd_hc_fluid_pressure(&c, n);|np_[2 *
 hc_kick|fix_hcbd.cpp|v[i][d] += dt_m * (|v[i][d] += 1.1 * dt_m * (
 hc_lammps_force|fix_hcbd.cpp|: 0.0) + f[i][d])|: 0.0) + 1.1 * f[i][d])
 hc_advection|fix_hcbd.cpp|x[i][d] += v[i][d] * dt;|x[i][d] += 1.1 * v[i][d] * dt;
-hc_noise_step|fix_hcbd.cpp|euler_pairs(k);|euler_pairs(k + 1);
+hc_noise_step|fix_hcbd.cpp|euler_pairs(k, stress && last);|euler_pairs(k + 1, stress && last);
 hc_noise_lower_tag|fix_hcbd.cpp|const int i = tag[i0] < tag[j0] ? i0 : j0|const int i = tag[i0] > tag[j0] ? i0 : j0
 hc_le_velocity|fix_hcbd.cpp|(vj[0] + kj * le_v)|(vj[0] + 1.1 * kj * le_v)
 hc_le_offset|fix_hcbd.cpp|min_image(ri[0] - rj[0] - k * le_s|min_image(ri[0] - rj[0] - 1.1 * k * le_s
@@ -121,6 +122,18 @@ hc_poly_id|fix_hcbd.cpp|(int32_t) (atom->tag[a] - 1 - nfluid)|(int32_t) (atom->t
 hc_poly_drift|fix_hcbd.cpp|dr[e] = st[a][1 + e] * dt + sdr * z[e];|dr[e] = 1.1 * st[a][1 + e] * dt + sdr * z[e];
 hc_polymer_step|fix_hcbd.cpp|p.dt = update->dt * p.substeps;|p.dt = 1.1 * update->dt * p.substeps;
 hc_restart_pairs|fix_hcbd.cpp|std::memcpy(st[n], &extra[n][m + 1], sizeof(double) * width);|std::memset(st[n], 0, sizeof(double) * width);
+hc_flip_jump|fix_hcbd.cpp|v[i][0] -= k * vj;|v[i][0] -= 1.1 * k * vj;
+hc_flip_offset|fix_hcbd.cpp|x[i][0] -= k * xy;|x[i][0] -= 1.1 * k * xy;
+hc_polymer_frame|fix_hcbd.cpp|dr[0] += kw[a] * le_v * dt;|dr[0] += 1.1 * kw[a] * le_v * dt;
+hc_stress_pressure|fix_hcbd.cpp|ss[0] += d[1] * Fp[0];|ss[0] += 1.1 * d[1] * Fp[0];
+hc_stress_viscous|fix_hcbd.cpp|ss[1] += d[1] * (Fv[0] - Fp[0]);|ss[1] += 1.1 * d[1] * (Fv[0] - Fp[0]);
+hc_stress_noise|fix_hcbd.cpp|ss[2] += d[1] * (F[0] - Fv[0]);|ss[2] += 1.1 * d[1] * (F[0] - Fv[0]);
+hc_stress_kinetic|fix_hcbd.cpp|ss[6] += c.m * (vc[3 * i]|ss[6] += 1.1 * c.m * (vc[3 * i]
+hc_stress_profile|fix_hcbd.cpp|const double gdot = le_v / p.L[1];|const double gdot = 1.1 * le_v / p.L[1];
+hc_stress_conservative|fix_hcbd.cpp|ss[3] += d[1] * fc * d[0];|ss[3] += 1.1 * d[1] * fc * d[0];
+hc_stress_transient|fix_hcbd.cpp|ss[4] += d[1] * (fr - fc) * d[0];|ss[4] += 1.1 * d[1] * (fr - fc) * d[0];
+hc_stress_interaction|fix_hcbd.cpp|ss[5] += lever / fs[4 * a + 3] * fs[4 * a];|ss[5] += 1.1 * lever / fs[4 * a + 3] * fs[4 * a];
+hc_stress_volume|fix_hcbd.cpp|const double f = -1.0 / (p.L[0] * p.L[1] * p.L[2]);|const double f = -1.1 / (p.L[0] * p.L[1] * p.L[2]);
 LIST
 echo "mutants-lammps: $missed missed"
 [ $missed -eq 0 ]
