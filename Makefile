@@ -121,7 +121,7 @@ test:
 lammps:
 	lammps/build.sh
 
-test-lammps: lammps $(B)/gibd_bulk $(B)/shear_flow $(B)/channel_flow
+test-lammps: lammps $(B)/gibd_bulk $(B)/shear_flow $(B)/channel_flow $(B)/hcbd_polymer
 	lammps/check.sh
 
 # make mutants-lammps: every injected error of the plugins is caught by the

@@ -1821,7 +1821,9 @@ int main(int argc, char **argv)
     printf("run_time_s=%.1f\n", seconds_since(&prog.t0));
     printf("state_checksum=%016llx\n", (unsigned long long)checksum);
     judge("momentum_drift", dscale > 0 ? dp / dscale : 0, NAN, "1", 0, 1e-12, "exact momentum conservation (round-off)",
-          NULL);
+          opt.coupling == HCBD_COUPLE_RAW ? "coupling=raw: the paper's weights w/n_i do not sum to one over a "
+                                            "polymer's blobs, so the redistribution does not conserve momentum "
+                                            "(MODEL 7)" : NULL);
     fflush(stdout);
     write_plots(&c, runs, &prp, prp.L[1], &u);
     summary_end(&c, 1);

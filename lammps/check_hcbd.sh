@@ -3,7 +3,8 @@
 # lmp, MPI, RANKS, t, ok, bad, same_bits and within): hcbd_quick (bad
 # inputs, atom by atom against hcbd's own 2018 world, lammps/hc_ref.c),
 # hcbd_bits (the same bits on RANKS) and hcbd_stats (the fluid's
-# temperature against hcbd's world's).  The scene is lammps/in.hcbd_compare:
+# temperature against hcbd's world's, a solution's viscosity against
+# hcbd_polymer's).  The scene is lammps/in.hcbd_compare:
 # 512 fluid blobs at nbar = 0.5 in a 10.08^3 box, every coefficient away
 # from 1 (rho 0.65, eta 0.2, P0 1.5, h 1.1, kT 1.7, dt 0.02, so dt/dt_visc
 # = 0.041 and dt c_s / h = 0.073), and with npoly=60, 60 polymers (xi 30,
@@ -183,4 +184,29 @@ hcbd_stats() {
     if awk -v T="$T" 'BEGIN { d = T / 1.7 - 1; exit !(d > -0.03 && d < 0.03) }'; then
         ok "fix hcbd, 2 ranks: the fluid's temperature is kT within 3 % ($T)"
     else bad "fix hcbd, 2 ranks: temperature $T is not kT = 1.7"; fi
+    # the viscosity of a polymer solution at Wi = 1 on 2 ranks equals
+    # hcbd_polymer's at the same parameters within four combined errors:
+    # preset=quick's Table I (tau_lambda = 200 us, alpha and P0 scaled,
+    # dt = 1 us), C = 2.5 C* in a 9.67^3 box (216 fluid blobs on the lattice
+    # and 540 polymers), gdot = 5000 / s, the paper's Euler fluid pairs,
+    # 6000 steps of which the last 2000 are measured in 10 blocks
+    local E eE hE heE
+    local Q="-var ns 6 -var nbar 0.238738 -var npoly 540 -var pairs 128 -var rho 7.54476e+08 -var eta 3.0179e+07"
+    Q="$Q -var P0 1.72452e+07 -var h 2 -var kT 1 -var xi 6.03581e+08 -var sigma 1 -var rc 2.5 -var alpha 2.5e+06"
+    Q="$Q -var tau_lambda 200 -var p 300000 -var n_max 2387.32 -var chi 0.5 -var dt 1 -var fluct no -var gdot 0.005"
+    # shellcheck disable=SC2086
+    if ! $MPI -np 2 "$lmp" -in "$hin" -var plugin "$hplug" $Q -var seed 5 -var warm 50 -var steps 6000 -var blocks 30 \
+        -var sfile "$t/heta.txt" -log "$t/heta.log" -screen none > /dev/null 2>&1; then
+        bad "fix hcbd, 2 ranks: viscosity run failed: $(grep ERROR "$t/heta.log" | head -n 1)"; return
+    fi
+    read -r E eE < <(awk '!/^#/ { ++n; if (n > 20) x[++m] = $2 / 0.005 } END { for (k = 1; k <= m; ++k) s += x[k]
+        s /= m; for (k = 1; k <= m; ++k) v += (x[k] - s) ^ 2; printf "%.6g %.3g\n", s, sqrt(v / (m * (m - 1))) }' "$t/heta.txt")
+    "$root/build/hcbd_polymer" C=2.5 gdot=5000 Lx=9.6739 Ly=9.6739 Lz=9.6739 le_steps=6000 rp_steps=30 eq_steps=2 \
+        blocks=10 pair=euler threads=1 seed=3 out="$t/hq" > "$t/hq.txt" 2>/dev/null
+    hE=$(awk -F= '$1 == "eta_total_lowest_rate" { print $2 }' "$t/hq.txt")
+    heE=$(awk -F= '$1 == "eta_total_lowest_rate_err" { print $2 }' "$t/hq.txt")
+    echo "    fix hcbd: viscosity at Wi = 1 (C = 2.5 C*, preset=quick's parameters) $E +- $eE, hcbd_polymer's $hE +- $heE"
+    if [[ "$E $eE $hE $heE" =~ ^[0-9.e+-]+\ [0-9.e+-]+\ [0-9.e+-]+\ [0-9.e+-]+$ ]] && within "$E" "$eE" "$hE" "$heE"; then
+        ok "fix hcbd, 2 ranks: the polymer solution's viscosity at Wi = 1 is hcbd_polymer's"
+    else bad "fix hcbd, 2 ranks: viscosity $E +- $eE, hcbd_polymer's $hE +- $heE"; fi
 }

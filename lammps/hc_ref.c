@@ -11,9 +11,13 @@
    coupling shepard|raw, gdot (Lees-Edwards from IN on, offset 0 there), gx
    (a body force per mass along x), every k: stdout gets the step and
    hcbd_hc_world_temperature every k steps (as LAMMPS's compute temp of the
-   fluid with its momentum zero) before the stress; threads (1). */
+   fluid with its momentum zero) before the stress; threads (1); timing=1:
+   stderr gets the steps' wall-clock seconds. */
+#define _POSIX_C_SOURCE 199309L
 #define HCBD_IMPLEMENTATION
 #include "hcbd.h"
+
+#include <time.h>
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -26,7 +30,8 @@ int main(int argc, char **argv)
     hcbd_hc_world w;
     char line[512];
     double lo[3], hi[3], *x, *v, dt_f = 0;
-    int n = 0, nf = -1, i, d, steps, every = 0, s, a;
+    int n = 0, nf = -1, i, d, steps, every = 0, s, a, timing = 0;
+    struct timespec t0, t1;
     FILE *in, *out;
     if (argc < 4) {
         fprintf(stderr, "usage: hc_ref IN OUT steps key=value ...\n");
@@ -56,6 +61,7 @@ int main(int argc, char **argv)
         else if (!strncmp(argv[a], "substeps=", 9)) p->substeps = atoi(val);
         else if (!strncmp(argv[a], "every=", 6)) every = atoi(val);
         else if (!strncmp(argv[a], "threads=", 8)) p->threads = atoi(val);
+        else if (!strncmp(argv[a], "timing=", 7)) timing = atoi(val);
         else if (!strncmp(argv[a], "fluct=", 6)) p->fluctuations = !strcmp(val, "yes");
         else if (!strncmp(argv[a], "pair=", 5)) p->pair_integrator = strcmp(val, "euler") ? HCBD_PAIR_SHARDLOW : HCBD_PAIR_EULER;
         else if (!strncmp(argv[a], "coupling=", 9)) p->coupling = strcmp(val, "raw") ? HCBD_COUPLE_SHEPARD : HCBD_COUPLE_RAW;
@@ -99,7 +105,8 @@ int main(int argc, char **argv)
         fprintf(stderr, "hc_ref: %s\n", w.err.msg);
         return 1;
     }
-    hcbd_hc_world_stress_enable(&w, 1);
+    if (!timing) hcbd_hc_world_stress_enable(&w, 1);
+    clock_gettime(CLOCK_MONOTONIC, &t0);
     for (s = 0; s < steps; s += every) {
         if (hcbd_hc_world_step(&w, every) != HCBD_OK) {
             fprintf(stderr, "hc_ref: %s\n", w.err.msg);
@@ -107,6 +114,8 @@ int main(int argc, char **argv)
         }
         if (every < steps) printf("%d %.10g\n", s + every, hcbd_hc_world_temperature(&w));
     }
+    clock_gettime(CLOCK_MONOTONIC, &t1);
+    if (timing) fprintf(stderr, "seconds %.6f\n", (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec));
     {
         double st[HCBD_HC_NSTRESS];
         hcbd_hc_world_stress_read(&w, st, NULL);
