@@ -7,7 +7,7 @@
 # ranks and through a restart file; bad fix arguments stop LAMMPS with an
 # error naming them.  And 20 steps from the same atoms equal hcbd's world's
 # to round-off, ideal carriers and pair_style star.  fix hcbd (the 2018
-# model's fluid so far) has its part in lammps/check_hcbd.sh.
+# model) has its part in lammps/check_hcbd.sh.
 # HCBD_LAMMPS_DIR: another
 # build (lmp, plugin/gibdplugin.so, hcbdplugin.so); HCBD_LAMMPS_QUICK=1: only the bad
 # inputs and the atom-by-atom checks (seconds); HCBD_LAMMPS_BITS=1: those

@@ -50,6 +50,7 @@
 // the order of the pairs or on which rank holds them, and dp_ji = -dp_ij
 // exactly conserves momentum.
 #include "fix_gibd.h"
+#include "le_wrap.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -58,7 +59,6 @@
 #include "force.h"
 #include "math_const.h"
 #include "memory.h"
-#include "modify.h"
 #include "neigh_list.h"
 #include "neigh_request.h"
 #include "neighbor.h"
@@ -208,12 +208,7 @@ void FixGIBD::init()
       error->all(FLERR, "fix gibd: {}", msg);
   }
   if (!comm->ghost_velocity) error->all(FLERR, "fix gibd: needs ghost velocities (comm_modify vel yes)");
-  // fix deform's box flip wraps the atoms past y's edge without their
-  // velocity jump; pre_exchange wraps them first (see there)
-  for (int f = 0; f < modify->find_fix(id); ++f)
-    if (!strcmp(modify->fix[f]->style, "deform"))
-      error->all(FLERR, "fix gibd: define it before fix deform {} (so that the atoms past y's edge take "
-                        "their velocity jump before a box flip wraps them)", modify->fix[f]->id);
+  hcbd_le::require_before_deform(this, modify, error); // see pre_exchange
   if (!force->newton_pair) error->all(FLERR, "fix gibd: needs newton on (each pair once, sums to the owners)");
   if (!force->pair || force->pair->cutforce < p.Rc)
     error->all(FLERR, "fix gibd: the pair cut-off must reach Rc = {} (pair_style zero {} for ideal carriers)",
@@ -420,12 +415,6 @@ void FixGIBD::euler_pairs(int64_t step)
   comm->reverse_comm_fix(this, 3);
 }
 
-// minimum image of a difference of canonical coordinates (|d| < 1.5 L)
-static inline double min_image(double d, double L)
-{
-  return d > 0.5 * L ? d - L : (d < -0.5 * L ? d + L : d);
-}
-
 // r^2 between canonical positions ri and rj by the nearest image of j,
 // under Lees-Edwards the image k boxes up sitting k le_s further along x;
 // returns k
@@ -440,7 +429,7 @@ inline int FixGIBD::le_delta(const double *ri, const double *rj, double *r2, dou
     dy += p.L[1];
     k = -1;
   }
-  const double dx = min_image(ri[0] - rj[0] - k * le_s, p.L[0]), dz = min_image(ri[2] - rj[2], p.L[2]);
+  const double dx = hcbd_le::min_image(ri[0] - rj[0] - k * le_s, p.L[0]), dz = hcbd_le::min_image(ri[2] - rj[2], p.L[2]);
   *r2 = dx * dx + dy * dy + dz * dz;
   *ry = dy;
   return k;
@@ -546,21 +535,8 @@ void FixGIBD::canonical()
 {
   double **x = atom->x, **v = atom->v;
   for (int i = 0; i < atom->nlocal; ++i) {
-    double u[3];
-    for (int d = 0; d < 3; ++d) u[d] = x[i][d] - domain->boxlo[d];
-    const int k = u[1] < 0.0 ? -1 : (u[1] >= p.L[1] ? 1 : 0);
-    kw[i] = k;
-    if (k) {
-      u[1] -= k * p.L[1];
-      u[0] -= k * le_s;
-    }
-    for (int d = 0; d < 3; ++d) {
-      while (u[d] < 0.0) u[d] += p.L[d];
-      while (u[d] >= p.L[d]) u[d] -= p.L[d];
-      if (!(u[d] >= 0.0 && u[d] < p.L[d])) u[d] = 0.0;
-      xw[3 * i + d] = u[d];
-      vc[3 * i + d] = v[i][d];
-    }
+    const int k = kw[i] = hcbd_le::canonical_position(x[i], domain->boxlo, p.L, le_s, xw + 3 * i);
+    for (int d = 0; d < 3; ++d) vc[3 * i + d] = v[i][d];
     if (k) vc[3 * i] -= k * le_v;
   }
 }
@@ -633,16 +609,21 @@ void FixGIBD::final_integrate()
   densities();
   if (fric_every && update->ntimestep % fric_every == 0) friction_averages();
   sbg = scr = 0.0;
+  // an atom's force of t: LAMMPS's and the Gaussian walls' repulsion
+  auto force = [&](int i, double F[3]) {
+    for (int d = 0; d < 3; ++d) F[d] = f[i][d];
+    if (gauss) {
+      double fy;
+      hcbd_params_wall_potential(&p, xw[3 * i + 1], &fy);
+      F[1] += fy;
+    }
+  };
   if (exact) {
     // the kick with the forces of t before the sweep (its ghosts get the
     // kicked velocities with the sweep's first communication)
     for (int i = 0; i < nlocal; ++i) {
-      double F[3] = {f[i][0], f[i][1], f[i][2]};
-      if (gauss) {
-        double fy;
-        hcbd_params_wall_potential(&p, xw[3 * i + 1], &fy);
-        F[1] += fy;
-      }
+      double F[3];
+      force(i, F);
       for (int d = 0; d < 3; ++d) uk[3 * i + d] = vc[3 * i + d] += F[d] * dt_m;
     }
     sweep(step);
@@ -658,13 +639,9 @@ void FixGIBD::final_integrate()
       for (int d = 0; d < 3; ++d) z[d] += z1[d];
     }
     const int k0 = stress && le_v != 0.0 ? y_wraps(x[i][1]) : 0;
-    double F[3] = {f[i][0], f[i][1], f[i][2]};
+    double F[3];
+    force(i, F);
     const double y0 = x[i][1];
-    if (gauss) {
-      double fy;
-      hcbd_params_wall_potential(&p, xw[3 * i + 1], &fy);
-      F[1] += fy;
-    }
     if (exact) {
       // half a drift with the kicked velocity, half with the swept one (in
       // LAMMPS's frame: v is vc and the jump of an atom past y's edge)
@@ -718,28 +695,11 @@ void FixGIBD::final_integrate()
   }
 }
 
-// Lees-Edwards: before a neighbour-list build, the atoms past y's edge
-// become their images inside (moved along x by the offset, slowed by the
-// jump), as LAMMPS's periodic wrap would (remap v) right after; doing it
-// here, before fix deform's box flip (defined after this fix), keeps the
-// flip from wrapping them without the jump (its wrap leaves velocities
-// alone)
+// Lees-Edwards: the atoms past y's edge wrapped before fix deform's box
+// flip can wrap them without their velocity jump (le_wrap.h)
 void FixGIBD::pre_exchange()
 {
-  if (!domain->triclinic || !domain->deform_vremap) return;
-  double **x = atom->x, **v = atom->v;
-  imageint *image = atom->image;
-  const double Ly = domain->prd[1], ylo = domain->boxlo[1], xy = domain->xy, vj = domain->h_rate[5];
-  for (int i = 0; i < atom->nlocal; ++i) {
-    const double u = x[i][1] - ylo;
-    const int k = u < 0.0 ? -1 : (u >= Ly ? 1 : 0);
-    if (!k) continue;
-    x[i][1] -= k * Ly;
-    x[i][0] -= k * xy;
-    v[i][0] -= k * vj;
-    const imageint yb = ((image[i] >> IMGBITS) & IMGMASK) + k;
-    image[i] = (image[i] & ~((imageint) IMGMASK << IMGBITS)) | ((yb & IMGMASK) << IMGBITS);
-  }
+  hcbd_le::wrap_past_y(atom, domain);
 }
 
 int FixGIBD::pack_forward_comm(int n, int *slist, double *buf, int, int *)

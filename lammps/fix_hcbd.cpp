@@ -38,6 +38,7 @@
 // across y's edge is its image, k boxes up, moved along x by k times the
 // offset and faster by k times the velocity jump, as in hcbd's world.
 #include "fix_hcbd.h"
+#include "le_wrap.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -45,7 +46,6 @@
 #include "error.h"
 #include "force.h"
 #include "memory.h"
-#include "modify.h"
 #include "neigh_list.h"
 #include "neigh_request.h"
 #include "neighbor.h"
@@ -195,12 +195,7 @@ void FixHCBD::init()
     error->all(FLERR, "fix hcbd: {} atom types: the fix takes the fluid's (fluid {}) and the polymers' (polymer "
                       "{}, 0: none), no other", atom->ntypes, tf, tp);
   if (!comm->ghost_velocity) error->all(FLERR, "fix hcbd: needs ghost velocities (comm_modify vel yes)");
-  // fix deform's box flip wraps the atoms past y's edge without their
-  // velocity jump; pre_exchange wraps them first (see there)
-  for (int f = 0; f < modify->find_fix(id); ++f)
-    if (!strcmp(modify->fix[f]->style, "deform"))
-      error->all(FLERR, "fix hcbd: define it before fix deform {} (so that the atoms past y's edge take "
-                        "their velocity jump before a box flip wraps them)", modify->fix[f]->id);
+  hcbd_le::require_before_deform(this, modify, error); // see pre_exchange
   if (!force->newton_pair) error->all(FLERR, "fix hcbd: needs newton on (each pair once, sums to the owners)");
   const double reach = tp && p.rc > 2.0 * p.h ? p.rc : 2.0 * p.h;
   if (!force->pair || force->pair->cutforce < reach)
@@ -276,12 +271,6 @@ void FixHCBD::setup(int)
                atom->natoms, all[2]);
 }
 
-// minimum image of a difference of wrapped coordinates (|d| < L)
-static inline double min_image(double d, double L)
-{
-  return d > 0.5 * L ? d - L : (d < -0.5 * L ? d + L : d);
-}
-
 // d = x_i - x_j from the wrapped positions, j's image the nearest (k
 // boxes up in y, moved along x by k offsets); returns k
 inline int FixHCBD::delta(int i, int j, double *d) const
@@ -296,8 +285,8 @@ inline int FixHCBD::delta(int i, int j, double *d) const
     d[1] += L[1];
     k = -1;
   }
-  d[0] = min_image(ri[0] - rj[0] - k * le_s, L[0]);
-  d[2] = min_image(ri[2] - rj[2], L[2]);
+  d[0] = hcbd_le::min_image(ri[0] - rj[0] - k * le_s, L[0]);
+  d[2] = hcbd_le::min_image(ri[2] - rj[2], L[2]);
   return k;
 }
 
@@ -372,21 +361,8 @@ void FixHCBD::canonical()
 {
   double **x = atom->x, **v = atom->v;
   for (int i = 0; i < atom->nlocal; ++i) {
-    double u[3];
-    for (int d = 0; d < 3; ++d) u[d] = x[i][d] - domain->boxlo[d];
-    const int k = u[1] < 0.0 ? -1 : (u[1] >= p.L[1] ? 1 : 0);
-    kw[i] = k;
-    if (k) {
-      u[1] -= k * p.L[1];
-      u[0] -= k * le_s;
-    }
-    for (int d = 0; d < 3; ++d) {
-      while (u[d] < 0.0) u[d] += p.L[d];
-      while (u[d] >= p.L[d]) u[d] -= p.L[d];
-      if (!(u[d] >= 0.0 && u[d] < p.L[d])) u[d] = 0.0;
-      xw[3 * i + d] = u[d];
-      vc[3 * i + d] = v[i][d];
-    }
+    const int k = kw[i] = hcbd_le::canonical_position(x[i], domain->boxlo, p.L, le_s, xw + 3 * i);
+    for (int d = 0; d < 3; ++d) vc[3 * i + d] = v[i][d];
     if (k) vc[3 * i] -= k * le_v;
   }
   fwd = 6;
@@ -726,39 +702,23 @@ void FixHCBD::final_integrate()
     for (int d = 0; d < 3; ++d) {
       v[i][d] += dt_m * ((double) acc[3 * i + d] / fscale + (tp ? st[i][1 + d] : 0.0) + f[i][d]);
       x[i][d] += v[i][d] * dt;
-      u2 += v[i][d] * v[i][d];
+      const double u = v[i][d] - (d == 0 ? kw[i] * le_v : 0.0); // hcbd's frame, as its guard
+      u2 += u * u;
     }
     if (!(u2 * dt * dt <= lim2) && atom->tag[i] < bad) bad = atom->tag[i];
   }
   stop_at(bad, "moved more than h/2 in one step (or its velocity is not finite): dt is too long");
-  if (tp && sub == nsub - 1) {
+  if (tp && last) {
     if (p.alpha > 0) lambda_step(step);
     polymer_move(step);
   }
 }
 
-// Lees-Edwards: before a neighbour-list build, the atoms past y's edge
-// become their images inside (moved along x by the offset, slowed by the
-// jump), as LAMMPS's periodic wrap would (remap v) right after; doing it
-// here, before fix deform's box flip (defined after this fix), keeps the
-// flip from wrapping them without the jump (its wrap leaves velocities
-// alone)
+// Lees-Edwards: the atoms past y's edge wrapped before fix deform's box
+// flip can wrap them without their velocity jump (le_wrap.h)
 void FixHCBD::pre_exchange()
 {
-  if (!domain->triclinic || !domain->deform_vremap) return;
-  double **x = atom->x, **v = atom->v;
-  imageint *image = atom->image;
-  const double Ly = domain->prd[1], ylo = domain->boxlo[1], xy = domain->xy, vj = domain->h_rate[5];
-  for (int i = 0; i < atom->nlocal; ++i) {
-    const double u = x[i][1] - ylo;
-    const int k = u < 0.0 ? -1 : (u >= Ly ? 1 : 0);
-    if (!k) continue;
-    x[i][1] -= k * Ly;
-    x[i][0] -= k * xy;
-    v[i][0] -= k * vj;
-    const imageint yb = ((image[i] >> IMGBITS) & IMGMASK) + k;
-    image[i] = (image[i] & ~((imageint) IMGMASK << IMGBITS)) | ((yb & IMGMASK) << IMGBITS);
-  }
+  hcbd_le::wrap_past_y(atom, domain);
 }
 
 int FixHCBD::pack_forward_comm(int n, int *slist, double *buf, int, int *)

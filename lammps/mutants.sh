@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # make mutants-lammps: each injected error of the plugin (a single
-# coefficient 10 % off in fix_gibd.cpp, pair_star.cpp, or the functions of
+# coefficient 10 % off in fix_gibd.cpp, fix_hcbd.cpp, le_wrap.h, pair_star.cpp, or the functions of
 # hcbd.h that only the plugin calls (hcbd_gibd_pair_exact, hcbd_walls_morris)) must make the
 # quick part of make test-lammps fail (lammps/check.sh with
 # HCBD_LAMMPS_QUICK=1: the atom-by-atom comparison with hcbd's world).
@@ -60,7 +60,7 @@ noise_step|fix_gibd.cpp|update->ntimestep - 1;|update->ntimestep;
 exact_kick|fix_gibd.cpp|vc[3 * i + d] += F[d] * dt_m;|vc[3 * i + d] += 1.1 * F[d] * dt_m;
 exact_drift_mean|fix_gibd.cpp|(u + v[i][d]) * (0.5 * dt)|(u + v[i][d]) * (0.55 * dt)
 exact_mobility|fix_gibd.cpp|x[i][d] += F[d] * dt_xi|x[i][d] += 1.1 * F[d] * dt_xi
-exact_advection|fix_gibd.cpp|+ v[i][d] * dt;|+ 1.1 * v[i][d] * dt;
+exact_advection|fix_gibd.cpp|(u + v[i][d]) * (0.5 * dt)|(u + 1.1 * v[i][d]) * (0.5 * dt)
 lm_amplitude|fix_gibd.cpp|sdz = lmw ? 0.5 * bd : bd|sdz = lmw ? 0.55 * bd : bd
 lm_next_step|fix_gibd.cpp|hcbd_noise_particle(&ns, step + 1, id, z1);|hcbd_noise_particle(&ns, step + 2, id, z1);
 sweep_rows|fix_gibd.cpp|n[d] = k >= 3.0 ? 3 * (int)|n[d] = k >= 5.5 ? 3 * (int)
@@ -72,7 +72,8 @@ le_pair_shift|fix_gibd.cpp|part_k[t] * le_v, vc|1.1 * part_k[t] * le_v, vc
 le_image_offset|fix_gibd.cpp|min_image(ri[0] - rj[0] - k * le_s|min_image(ri[0] - rj[0] - 1.1 * k * le_s
 le_frame|fix_gibd.cpp|if (k) vc[3 * i] -= k * le_v;|if (k) vc[3 * i] -= 1.1 * k * le_v;
 le_frame_back|fix_gibd.cpp|if (kw[i]) v[i][0] += kw[i] * le_v;|if (kw[i]) v[i][0] += 1.1 * kw[i] * le_v;
-le_flip_jump|fix_gibd.cpp|v[i][0] -= k * vj;|v[i][0] -= 1.1 * k * vj;
+le_flip_jump|le_wrap.h|v[i][0] -= k * vj;|v[i][0] -= 1.1 * k * vj;
+le_flip_offset|le_wrap.h|x[i][0] -= k * xy;|x[i][0] -= 1.1 * k * xy;
 stress_exchange|fix_gibd.cpp|sfl[0] = -tot[0] / (p.L[0]|sfl[0] = -1.1 * tot[0] / (p.L[0]
 stress_exchange_euler|fix_gibd.cpp|if (stress) sbg += dy * (sdt|if (stress) sbg += 1.1 * dy * (sdt
 stress_carrier_up|fix_gibd.cpp|if (k1 > k0) scr += m * vx;|if (k1 > k0) scr += 1.1 * m * vx;
@@ -122,8 +123,6 @@ hc_poly_id|fix_hcbd.cpp|(int32_t) (atom->tag[a] - 1 - nfluid)|(int32_t) (atom->t
 hc_poly_drift|fix_hcbd.cpp|dr[e] = st[a][1 + e] * dt + sdr * z[e];|dr[e] = 1.1 * st[a][1 + e] * dt + sdr * z[e];
 hc_polymer_step|fix_hcbd.cpp|p.dt = update->dt * p.substeps;|p.dt = 1.1 * update->dt * p.substeps;
 hc_restart_pairs|fix_hcbd.cpp|std::memcpy(st[n], &extra[n][m + 1], sizeof(double) * width);|std::memset(st[n], 0, sizeof(double) * width);
-hc_flip_jump|fix_hcbd.cpp|v[i][0] -= k * vj;|v[i][0] -= 1.1 * k * vj;
-hc_flip_offset|fix_hcbd.cpp|x[i][0] -= k * xy;|x[i][0] -= 1.1 * k * xy;
 hc_polymer_frame|fix_hcbd.cpp|dr[0] += kw[a] * le_v * dt;|dr[0] += 1.1 * kw[a] * le_v * dt;
 hc_stress_pressure|fix_hcbd.cpp|ss[0] += d[1] * Fp[0];|ss[0] += 1.1 * d[1] * Fp[0];
 hc_stress_viscous|fix_hcbd.cpp|ss[1] += d[1] * (Fv[0] - Fp[0]);|ss[1] += 1.1 * d[1] * (Fv[0] - Fp[0]);

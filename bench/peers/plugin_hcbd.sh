@@ -27,9 +27,9 @@ cc -std=c99 -O2 -march=native -fopenmp -ffp-contract=off -fno-math-errno -DHCBD_
     -o "$t/hc_ref" "$root/lammps/hc_ref.c" -lm
 # Table I, reduced (hcbd_polymer preset=paper prints the same)
 P="rho 7.54476e+08 nbar 0.238738 eta 3.0179e+07 P0 3923.28 h 2 kT 1 xi 6.03581e+08 sigma 1 rc 2.5 alpha 500"
-P="$P tau_lambda 1e+06 p 300000 n_max 2387.32 chi 0.5 dt 12.5 substeps 8 fluct no jitter 0.3 warm 8 stress no"
+P="$P tau_lambda 1e+06 p 300000 n_max 2387.32 chi 0.5 dt 12.5 substeps 8 fluct no jitter 0.3 warm 8 stress no pairs 64"
 lvars() { local out=""; set -- $P; while [ $# -gt 1 ]; do out="$out -var $1 $2"; shift 2; done; echo "$out"; }
-hvars() { local out=""; set -- $P; while [ $# -gt 1 ]; do case $1 in jitter|warm|stress) ;; *) out="$out $1=$2" ;; esac; shift 2; done; echo "$out"; }
+hvars() { local out=""; set -- $P; while [ $# -gt 1 ]; do case $1 in jitter|warm|stress|pairs) ;; *) out="$out $1=$2" ;; esac; shift 2; done; echo "$out"; }
 loop_ns() { awk '/^Loop time of/ { s = $4; st = $9; n = $12 } END { printf "%.1f\n", s / (st * n) * 1e9 }'; }
 median() { sort -g | awk 'NF { a[++n] = $1 } END { print a[int((n + 1) / 2)] }'; }
 for ns in $SIZES; do
