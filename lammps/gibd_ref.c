@@ -16,6 +16,7 @@
    x velocities vlo and vhi), fx: a body force along x on every carrier. */
 #define HCBD_IMPLEMENTATION
 #include "hcbd.h"
+#include "ref_dump.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -26,34 +27,17 @@ int main(int argc, char **argv)
     hcbd_world_def def = hcbd_world_def_default();
     hcbd_params *p = &def.params;
     hcbd_world w;
-    char line[512];
     double lo[3], hi[3], fr[3], *x, *v;
     int n = 0, i, d, steps;
-    FILE *in, *out;
+    FILE *out;
     if (argc != 21 && argc != 26) {
         fprintf(stderr, "usage: gibd_ref IN OUT steps dt tau xi xip kT Rc density norm seed noise f sigma eps "
                         "rcut pair brownian gdot [wall mode vlo vhi fx]\n");
         return 2;
     }
-    in = fopen(argv[1], "r");
-    if (!in) { fprintf(stderr, "gibd_ref: cannot read %s\n", argv[1]); return 1; }
-    for (i = 0; i < 9 && fgets(line, sizeof line, in); ++i) {
-        if (i == 3) n = atoi(line);
-        if (i >= 5 && i <= 7 && sscanf(line, "%lf %lf", &lo[i - 5], &hi[i - 5]) != 2) n = 0;
-    }
-    if (n < 2) { fprintf(stderr, "gibd_ref: %s is not a dump of atoms and box\n", argv[1]); return 1; }
-    x = (double *)malloc(6 * (size_t)n * sizeof(double));
+    x = ref_read_dump("gibd_ref", argv[1], 0, &n, lo, hi);
+    if (!x) return 1;
     v = x + 3 * (size_t)n;
-    for (i = 0; i < n; ++i) {
-        int id;
-        if (fscanf(in, "%d %lf %lf %lf %lf %lf %lf", &id, &x[3 * i], &x[3 * i + 1], &x[3 * i + 2],
-                   &v[3 * i], &v[3 * i + 1], &v[3 * i + 2]) != 7 || id != i + 1) {
-            fprintf(stderr, "gibd_ref: atom line %d of %s (ids must run 1..n in order)\n", i + 1, argv[1]);
-            return 1;
-        }
-        for (d = 0; d < 3; ++d) x[3 * i + d] -= lo[d];
-    }
-    fclose(in);
     steps = atoi(argv[3]);
     p->dt = atof(argv[4]);
     def.capacity = n;

@@ -16,6 +16,7 @@
 #define _POSIX_C_SOURCE 199309L
 #define HCBD_IMPLEMENTATION
 #include "hcbd.h"
+#include "ref_dump.h"
 
 #include <time.h>
 
@@ -28,11 +29,10 @@ int main(int argc, char **argv)
     hcbd_hc_world_def def = hcbd_hc_world_def_default();
     hcbd_hc_params *p = &def.params;
     hcbd_hc_world w;
-    char line[512];
     double lo[3], hi[3], *x, *v, dt_f = 0;
     int n = 0, nf = -1, i, d, steps, every = 0, s, a, timing = 0;
     struct timespec t0, t1;
-    FILE *in, *out;
+    FILE *out;
     if (argc < 4) {
         fprintf(stderr, "usage: hc_ref IN OUT steps key=value ...\n");
         return 2;
@@ -71,30 +71,10 @@ int main(int argc, char **argv)
         }
     }
     p->dt = dt_f * p->substeps;
-    in = fopen(argv[1], "r");
-    if (!in) { fprintf(stderr, "hc_ref: cannot read %s\n", argv[1]); return 1; }
-    for (i = 0; i < 9 && fgets(line, sizeof line, in); ++i) {
-        if (i == 3) n = atoi(line);
-        if (i >= 5 && i <= 7 && sscanf(line, "%lf %lf", &lo[i - 5], &hi[i - 5]) != 2) n = 0;
-    }
-    if (n < 2) { fprintf(stderr, "hc_ref: %s is not a dump of atoms and box\n", argv[1]); return 1; }
-    if (nf < 0 || nf > n) nf = n;
-    x = (double *)malloc(6 * (size_t)n * sizeof(double));
+    x = ref_read_dump("hc_ref", argv[1], 1, &n, lo, hi);
+    if (!x) return 1;
     v = x + 3 * (size_t)n;
-    for (i = 0; i < n; ++i) {
-        int id;
-        if (fscanf(in, "%d %lf %lf %lf %lf %lf %lf", &id, &x[3 * i], &x[3 * i + 1], &x[3 * i + 2],
-                   &v[3 * i], &v[3 * i + 1], &v[3 * i + 2]) != 7 || id != i + 1) {
-            fprintf(stderr, "hc_ref: atom line %d of %s (ids must run 1..n in order)\n", i + 1, argv[1]);
-            return 1;
-        }
-        for (d = 0; d < 3; ++d) {
-            x[3 * i + d] -= lo[d];
-            if (x[3 * i + d] < 0) x[3 * i + d] += hi[d] - lo[d];
-            if (x[3 * i + d] >= hi[d] - lo[d]) x[3 * i + d] -= hi[d] - lo[d];
-        }
-    }
-    fclose(in);
+    if (nf < 0 || nf > n) nf = n;
     steps = atoi(argv[3]);
     def.fluid_capacity = nf;
     def.polymer_capacity = n - nf;
