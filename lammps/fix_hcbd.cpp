@@ -369,20 +369,26 @@ void FixHCBD::canonical()
   comm->forward_comm_fix(this, 6);
 }
 
-// the fluid's n and P of owned and ghost atoms from the positions of now;
-// stops at a blob whose n/nbar left (1/3, 3), as hcbd's world
-void FixHCBD::densities()
+// one species' pair weights of the positions of now, summed per pair in
+// fixed point on both atoms, ghosts' sums to their owners: acc
+template <class W> void FixHCBD::weight_sums(int kind, double cut, double scale, W weight)
 {
-  const int nall = atom->nlocal + atom->nghost;
-  tagint bad = MAXTAGINT;
-  std::memset(acc, 0, sizeof(int64_t) * nall);
-  each_pair(FF, 2.0 * p.h, [this](int i, int j, const double *, double r, int) {
-    const int64_t w = llrint(hcbd_hc_fluid_weight(&c, r) * wscale);
+  std::memset(acc, 0, sizeof(int64_t) * (atom->nlocal + atom->nghost));
+  each_pair(kind, cut, [&](int i, int j, const double *, double r, int) {
+    const int64_t w = llrint(weight(r) * scale);
     acc[i] += w;
     acc[j] += w;
   });
   nacc = 1;
   comm->reverse_comm_fix(this, 1);
+}
+
+// the fluid's n and P of owned and ghost atoms from the positions of now;
+// stops at a blob whose n/nbar left (1/3, 3), as hcbd's world
+void FixHCBD::densities()
+{
+  tagint bad = MAXTAGINT;
+  weight_sums(FF, 2.0 * p.h, wscale, [this](double r) { return hcbd_hc_fluid_weight(&c, r); });
   for (int i = 0; i < atom->nlocal; ++i) {
     if (atom->type[i] != tf) continue;
     const double n = hcbd_hc_fluid_density(&c, (double) acc[i] / wscale), x = n / p.nbar;
@@ -438,16 +444,8 @@ void FixHCBD::euler_pairs(int64_t k, int sum)
 // the polymers' n and mu of owned and ghost atoms; stops at phi >= 1
 void FixHCBD::polymer_densities()
 {
-  const int nall = atom->nlocal + atom->nghost;
   tagint bad = MAXTAGINT;
-  std::memset(acc, 0, sizeof(int64_t) * nall);
-  each_pair(PP, p.rc, [this](int i, int j, const double *, double r, int) {
-    const int64_t wp = llrint(hcbd_hc_polymer_weight(&c, r) * pwscale);
-    acc[i] += wp;
-    acc[j] += wp;
-  });
-  nacc = 1;
-  comm->reverse_comm_fix(this, 1);
+  weight_sums(PP, p.rc, pwscale, [this](double r) { return hcbd_hc_polymer_weight(&c, r); });
   for (int i = 0; i < atom->nlocal; ++i) {
     if (atom->type[i] != tp) continue;
     const double n = hcbd_hc_polymer_density(&c, (double) acc[i] / pwscale);

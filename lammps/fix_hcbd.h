@@ -58,6 +58,7 @@ class FixHCBD : public Fix {
   void lambda_step(int64_t step);
   void polymer_move(int64_t step);
   template <class F> void each_pair(int kind, double cut, F fn);
+  template <class W> void weight_sums(int kind, double cut, double scale, W weight);
   template <class F> void each_near(int a, int type, double cut, F fn);
   int delta(int i, int j, double *d) const;
   void stop_at(tagint bad, const char *what);

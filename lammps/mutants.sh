@@ -103,8 +103,7 @@ hc_noise_lower_tag|fix_hcbd.cpp|const int i = tag[i0] < tag[j0] ? i0 : j0|const 
 hc_le_velocity|fix_hcbd.cpp|(vj[0] + kj * le_v)|(vj[0] + 1.1 * kj * le_v)
 hc_le_offset|fix_hcbd.cpp|min_image(ri[0] - rj[0] - k * le_s|min_image(ri[0] - rj[0] - 1.1 * k * le_s
 hc_le_frame|fix_hcbd.cpp|if (k) vc[3 * i] -= k * le_v;|if (k) vc[3 * i] -= 1.1 * k * le_v;
-hc_poly_weight|fix_hcbd.cpp|llrint(hcbd_hc_polymer_weight(&c, r) * pwscale)|llrint(1.1 * hcbd_hc_polymer_weight(&c, r) * pwscale)
-hc_poly_weight_partner|fix_hcbd.cpp|acc[j] += wp;|acc[j] += wp + wp / 10;
+hc_poly_weight|fix_hcbd.cpp|return hcbd_hc_polymer_weight(&c, r); });|return 1.1 * hcbd_hc_polymer_weight(&c, r); });
 hc_poly_mu|fix_hcbd.cpp|np_[2 * i + 1] = hcbd_hc_polymer_mu(&c, n);|np_[2 * i + 1] = 1.1 * hcbd_hc_polymer_mu(&c, n);
 hc_poly_reaction|fix_hcbd.cpp|acc[3 * j + e] -= qp;|acc[3 * j + e] -= qp + qp / 10;
 hc_lambda_kept|fix_hcbd.cpp|lam = e >= 0 ? st[o][4 + 3 * e + 1]|lam = e >= 0 ? 1.1 * st[o][4 + 3 * e + 1]
