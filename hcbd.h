@@ -128,7 +128,7 @@
      >>HCBD: theory and stability limits [hcbd_hc_params_theory hcbd_hc_params_stability]
      >>HCBD: kernels of the 2018 model [hcbd_m4 hcbd_rapid_w hcbd_flory_]
      >>HCBD: equations without a world [hcbd_hc_params_coef hcbd_hc_fluid_ hcbd_hc_polymer_
-        hcbd_hc_lambda_ hcbd_hc_noise_]
+        hcbd_hc_lambda_ hcbd_hc_noise_ hcbd_hc_sweep_grid]
      >>checkpoint/restart [hcbd_world_checkpoint_ hcbd_world_save hcbd_world_load hcbd_world_set_threads]
      >>trajectories and logs [hcbd_world_write_ hcbd_thermo_header hcbd_world_thermo_line]
      >>HCBD: checkpoints, threads, XYZ and thermo [hcbd_hc_world_checkpoint_ hcbd_hc_world_save
@@ -178,7 +178,7 @@
      >>HCBD: parameters and units [hcbd_hc_si_ hcbd_hc_params_ hcbd_hc_world_def_default
         hcbd_hc_params_theory hcbd_hc_params_stability]
      >>HCBD: equations without a world [hcbd_hc_params_coef hcbd_hc_fluid_ hcbd_hc_polymer_
-        hcbd_hc_lambda_ hcbd_hc_noise_]
+        hcbd_hc_lambda_ hcbd_hc_noise_ hcbd_hc_sweep_grid]
      >>HCBD: storage [hcbd_hc_world_]
      >>HCBD: set-up [hcbd_hc_world_set_fluid hcbd_hc_world_set_polymers hcbd_hc_world_place_
         hcbd_hc_world_get_fluid hcbd_hc_world_get_polymers]
@@ -1276,7 +1276,24 @@ double hcbd_flory_g1(double phi, double chi);
      Ornstein-Uhlenbeck step over dt, hcbd_hc_lambda_step (z a unit
      deviate; 0 when kT = 0).
    The coupling weight of fluid blob i at polymer a is W(r_ai) / n_i.
-   Without c the terms are NAN (hcbd_hc_fluid_pair adds nothing). */
+   Without c the terms are NAN (hcbd_hc_fluid_pair adds nothing).
+   The exact fluid sweep (HCBD_PAIR_SHARDLOW, the default): a fluid step
+   takes v' = the sweep of v(t), each pair in turn through
+   hcbd_hc_fluid_pair_exact (its Morris friction and noise solved exactly:
+   v_i and v_j change by +-P/m, P returned; du the velocity jump of j's
+   image along x, z as above, NULL without noise), then v(t + dt) = v' +
+   (pressure forces of x(t) + other forces) dt/m.  The sweep's order is
+   the world's: hcbd_hc_sweep_grid gives the blocks nb (nc colours) and
+   fine cells nf along each axis at Lees-Edwards offset s.  Blob q's
+   place r is its position relative to blob 0's, r_y and r_z as they
+   are, r_x - t r_y with t = s'/L_y (s' = s taken into [-L_x/2, L_x/2)),
+   each wrapped into [0, L_d); its block index c_d = (int)(r_d (nb_d /
+   L_d)) and fine index e_d = (int)(r_d (nf_d / L_d)) (each at most
+   nb_d - 1, nf_d - 1); its colour (c_0 mod nc_0) + nc_0 ((c_1 mod nc_1)
+   + nc_1 (c_2 mod nc_2)).  The colours run in increasing order; inside a
+   block, owners by fine cell (e_2 nf_1 + e_1) nf_0 + e_0, then by id; an
+   owner's pairs (partners of higher id within 2h) by increasing id.
+   Blocks of one colour share no blob, so they may run side by side. */
 typedef struct hcbd_hc_coef {
     double m, h, kT, dt;                 /* blob mass, M4 support, kT, step */
     double w0, c0, c1h, two_eta, P0, inv_nbar; /* w(0), 1/(4 pi h^3), 1/(4 pi h^5) */
@@ -1290,6 +1307,10 @@ double hcbd_hc_fluid_density(const hcbd_hc_coef *c, double wsum);
 double hcbd_hc_fluid_pressure(const hcbd_hc_coef *c, double n);
 void hcbd_hc_fluid_pair(const hcbd_hc_coef *c, const double d[3], double r, double n_i, double n_j,
                         double P_i, double P_j, const double dv[3], const double z[3], double F[3]);
+void hcbd_hc_fluid_pair_exact(const hcbd_hc_coef *c, double r, double inv_n_i, double inv_n_j, double du,
+                              const double z[3], double v_i[3], double v_j[3], double P[3]);
+hcbd_result hcbd_hc_sweep_grid(const hcbd_hc_params *p, double s, int nb[3], int nc[3], int nf[3], char *msg,
+                               size_t msg_size);
 double hcbd_hc_polymer_weight(const hcbd_hc_coef *c, double r);
 double hcbd_hc_polymer_density(const hcbd_hc_coef *c, double wsum);
 double hcbd_hc_polymer_mu(const hcbd_hc_coef *c, double n);
@@ -8143,30 +8164,6 @@ void hcbd_hc_noise_polymer(const hcbd_hc_noise_stream *ns, int64_t step, int32_t
                     out);
 }
 
-/* >>HCBD: storage */
-
-static double hcbd__hc_reach(const hcbd_hc_params *p)
-{
-    return 2.0 * p->h > p->rc ? 2.0 * p->h : p->rc;
-}
-
-/* The Verlet skin of all three lists: a tenth of the longest range (blobs
-   move about 1e-4 h per step at Table I, so the lists last for hundreds of
-   steps), and the cells of a list of range cut. */
-static double hcbd__hc_skin(const hcbd_hc_params *p)
-{
-    return 0.1 * hcbd__hc_reach(p);
-}
-
-static void hcbd__hc_dims(const hcbd_hc_params *p, double cut, int nc[3])
-{
-    int d;
-    for (d = 0; d < 3; ++d) {
-        double k = floor(p->L[d] / cut);
-        nc[d] = k < 1 ? 1 : (k > 1024 ? 1024 : (int)k);
-    }
-}
-
 /* Blocks of the exact fluid sweep (hcbd__hc_fluid_shardlow).  Along an
    axis either one block, or, for s = 1, 2 or 3, blocks a hair wider than
    reach/s (so that round-off in the block of a blob cannot let a pair span
@@ -8225,6 +8222,75 @@ static int hcbd__hc_fine_cells(const hcbd_hc_params *p, int nf[3])
         nf[d] = k < 1.0 ? 1 : (k > 256.0 ? 256 : (int)k);
     }
     return nf[0] * nf[1] * nf[2];
+}
+
+/* the exact sweep's pair and order for engines of their own (see the
+   declarations; hcbd__hc_sweep_pairs is the world's pair, held to this
+   one by test_hc_exact_sweep_exported) */
+void hcbd_hc_fluid_pair_exact(const hcbd_hc_coef *c, double r, double inv_n_i, double inv_n_j, double du,
+                              const double z[3], double v_i[3], double v_j[3], double P[3])
+{
+    double q, x, om, cc, inv_m;
+    int k;
+    if (!c || !v_i || !v_j || !P) return;
+    P[0] = P[1] = P[2] = 0.0;
+    q = r * (1.0 / c->h);
+    if (!(q < 2.0) || !(r >= 0.0)) return;
+    inv_m = 1.0 / c->m;
+    x = 2.0 * c->dt * inv_m * c->two_eta * inv_n_i * hcbd__m4_wdr(q, c->c1h) * inv_n_j;
+    om = x < 0.125 ? hcbd__one_minus_exp_series(x) : -expm1(-x);
+    cc = 0.5 * c->m * om;
+    P[0] = -cc * (v_i[0] - v_j[0] - du);
+    P[1] = -cc * (v_i[1] - v_j[1]);
+    P[2] = -cc * (v_i[2] - v_j[2]);
+    if (z && c->sn > 0.0) {
+        const double b = sqrt(0.5 * c->kT * c->m * om * (2.0 - om));
+        for (k = 0; k < 3; ++k) P[k] += b * z[k];
+    }
+    for (k = 0; k < 3; ++k) {
+        v_i[k] += P[k] * inv_m;
+        v_j[k] -= P[k] * inv_m;
+    }
+}
+
+hcbd_result hcbd_hc_sweep_grid(const hcbd_hc_params *p, double s, int nb[3], int nc[3], int nf[3], char *msg,
+                               size_t msg_size)
+{
+    hcbd_result r;
+    if (!p || !nb || !nc || !nf) return HCBD_ERR_NULL;
+    if ((r = hcbd_hc_params_check(p, msg, msg_size)) != HCBD_OK) return r;
+    if (!isfinite(s)) {
+        if (msg && msg_size) snprintf(msg, msg_size, "Lees-Edwards offset s = %.17g is not finite", s);
+        return HCBD_ERR_PARAM;
+    }
+    s -= p->L[0] * floor(s / p->L[0] + 0.5);
+    hcbd__hc_fine_cells(p, nf);
+    hcbd__hc_sweep_blocks(p, s / p->L[1], nb, nc, NULL);
+    return HCBD_OK;
+}
+
+/* >>HCBD: storage */
+
+static double hcbd__hc_reach(const hcbd_hc_params *p)
+{
+    return 2.0 * p->h > p->rc ? 2.0 * p->h : p->rc;
+}
+
+/* The Verlet skin of all three lists: a tenth of the longest range (blobs
+   move about 1e-4 h per step at Table I, so the lists last for hundreds of
+   steps), and the cells of a list of range cut. */
+static double hcbd__hc_skin(const hcbd_hc_params *p)
+{
+    return 0.1 * hcbd__hc_reach(p);
+}
+
+static void hcbd__hc_dims(const hcbd_hc_params *p, double cut, int nc[3])
+{
+    int d;
+    for (d = 0; d < 3; ++d) {
+        double k = floor(p->L[d] / cut);
+        nc[d] = k < 1 ? 1 : (k > 1024 ? 1024 : (int)k);
+    }
 }
 
 /* Fixed-point bounds of the fluid sums (see hcbd__fixed_scales): a weight

@@ -43,6 +43,8 @@ same_bits() {
     [ -s "$1${RANKS%% *}.txt" ] || return 1
     for np in $RANKS; do cmp -s "$1${RANKS%% *}.txt" "$1$np.txt" || return 1; done
 }
+# a and b (errors ea, eb) agree within four combined errors
+within() { awk -v a="$1" -v ea="$2" -v b="$3" -v eb="$4" 'BEGIN { d = a - b; if (d < 0) d = -d; exit !(d <= 4 * sqrt(ea * ea + eb * eb)) }'; }
 in=$root/lammps/in.gibd_ideal
 # shellcheck source=lammps/check_hcbd.sh
 . "$root/lammps/check_hcbd.sh"
@@ -233,7 +235,6 @@ stats() {
         }' "$1"
 }
 
-within() { awk -v a="$1" -v ea="$2" -v b="$3" -v eb="$4" 'BEGIN { d = a - b; if (d < 0) d = -d; exit !(d <= 4 * sqrt(ea * ea + eb * eb)) }'; }
 
 if [ -n "$STATS" ]; then
     # hcbd's run of the scene: T, nu_initial and the MSD at t = 0.15 with block errors

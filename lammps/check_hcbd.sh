@@ -24,34 +24,38 @@ hcbd_quick() {
     # fixed-point sums resolve 3e-11 of a pair force); the atoms move by
     # 0.6-5 and the fluid's velocities change by 1.7-10, sqrt(kT/m) = 1.14,
     # so an error of 1e-3 in any term would show by orders of magnitude
-    hcompare() { # name ranks fluct gdot gx [npoly substeps coupling steps every]
+    hcompare() { # name ranks fluct gdot gx [npoly substeps coupling steps every pair lattice rp]
         local name=$1 np=$2 fluct=$3 gdot=$4 gx=$5 npoly=${6:-0} sub=${7:-1} cpl=${8:-shepard} ns=${9:-20}
-        local every=${10:-1} skin=0.5 L dx dv n mx mv
+        local every=${10:-1} pair=${11:-euler} lat=${12:-8} rp=${13:-0} skin=0.5 L dx dv n mx mv procs="* * *"
+        local nfl=$((lat * lat * lat))
         [ "$every" -gt 1 ] && skin=2
+        [ "$pair" = exact ] && procs="1 * *"
         if ! $MPI -np "$np" "$lmp" -in "$hin" -var plugin "$hplug" -var fluct "$fluct" -var gdot "$gdot" -var gx "$gx" \
             -var npoly "$npoly" -var substeps "$sub" -var coupling "$cpl" -var steps $((ns * sub)) \
-            -var every "$every" -var skin "$skin" \
+            -var every "$every" -var skin "$skin" -var pair "$pair" -var ns "$lat" -var procs "$procs" \
+            -var rp "$rp" -var dir "$root/lammps" \
             -var start "$t/h0.txt" -var end "$t/h1.txt" -var stressf "$t/hs.txt" -log none -screen none \
             > /dev/null 2>&1; then
             bad "fix hcbd, $name: LAMMPS failed"; return
         fi
         # shellcheck disable=SC2086
-        if ! "$t/hc_ref" "$t/h0.txt" "$t/hr.txt" "$ns" $hcoef seed=1 fluct="$fluct" gdot="$gdot" gx="$gx" \
-            substeps="$sub" coupling="$cpl" > "$t/hrs.txt"; then
+        if ! "$t/hc_ref" "$t/h0.txt" "$t/hr.txt" "$ns" $hcoef nf="$nfl" seed=1 fluct="$fluct" gdot="$gdot" gx="$gx" \
+            substeps="$sub" coupling="$cpl" pair="$pair" $([ "$rp" != 0 ] && echo "rp=1 gx=$rp") > "$t/hrs.txt"; then
             bad "fix hcbd, $name: hc_ref failed"; return
         fi
         L=$(awk 'NR == 6 { printf "%.17g", $2 - $1 }' "$t/h0.txt")
-        # sheared: LAMMPS's atoms in hcbd's frame (a polymer carries no velocity)
+        # sheared: LAMMPS's atoms in hcbd's frame (a polymer's velocity is its
+        # drift velocity of the last polymer step, in hc_ref too)
         awk -v vle="$(awk -v g="$gdot" -v L="$L" 'BEGIN { printf "%.17g", g * L }')" -f "$root/lammps/le_canon.awk" \
-            "$t/h1.txt" | awk '$1 > 512 { $5 = $6 = $7 = 0 } 1' > "$t/h1c.txt"
+            "$t/h1.txt" > "$t/h1c.txt"
         read -r dx dv n < <(awk -v L="$L" -f "$root/lammps/maxdiff.awk" "$t/h1c.txt" "$t/hr.txt")
         read -r mx mv _ < <(awk -v L="$L" -f "$root/lammps/maxdiff.awk" "$t/h0.txt" "$t/h1c.txt")
         if [ "$npoly" -gt 0 ]; then # the polymers' own largest move
-            awk '$1 > 512' "$t/h0.txt" > "$t/hp0.txt"; awk '$1 > 512' "$t/h1c.txt" > "$t/hp1.txt"
+            awk -v nf="$nfl" '$1 > nf' "$t/h0.txt" > "$t/hp0.txt"; awk -v nf="$nfl" '$1 > nf' "$t/h1c.txt" > "$t/hp1.txt"
             read -r mp _ < <(awk -v L="$L" -f "$root/lammps/maxdiff.awk" "$t/hp0.txt" "$t/hp1.txt")
         else mp=1; fi
         echo "    fix hcbd, $name: largest |x - x_hcbd| $dx, |v - v_hcbd| $dv (moved by $mx, $mv; polymers by $mp)"
-        if awk -v dx="$dx" -v dv="$dv" -v mx="$mx" -v mv="$mv" -v mp="$mp" -v n="$n" -v N=$((512 + npoly)) \
+        if awk -v dx="$dx" -v dv="$dv" -v mx="$mx" -v mv="$mv" -v mp="$mp" -v n="$n" -v N=$((nfl + npoly)) \
             'BEGIN { exit !(n == N && dx < 1e-9 && dv < 1e-8 && mx > 0.3 && mv > 1 && mp > 0.3) }'; then
             ok "fix hcbd, $name: $ns steps = hcbd's world, atom by atom"
         else bad "fix hcbd, $name: fix hcbd and hcbd's world part: |dx| $dx, |dv| $dv"; fi
@@ -82,6 +86,29 @@ hcbd_quick() {
     # lists checked every 4th step (skin 2): polymers stay past y's edge for
     # steps before LAMMPS wraps them, and move in their image's frame
     hcompare "60 polymers, sheared, lists every 4 steps, 2 ranks" 2 yes 0.8 0 60 1 shepard 20 4
+    # pair exact, hcbd's exact fluid sweep in its order: the 8^3 lattice
+    # has one block (owners by fine cell and tag); the 11^3 lattice (13.86^3)
+    # 6^3 blocks in 27 colours, split between ranks along y and z
+    # (processors 1 * *), and sheared past a tilt of 0.32 the x blocks give
+    # way to 10 in 5 colours (gdot 0.8 would move its polymers too far)
+    hcompare "fluid, exact sweep with fluctuations, one block, 1 rank" 1 yes 0 0 0 1 shepard 20 1 exact
+    hcompare "60 polymers, exact sweep, 6^3 blocks, 2 ranks" 2 yes 0 0 60 1 shepard 20 1 exact 11
+    hcompare "60 polymers, exact sweep without fluctuations, raw coupling, 4 ranks" 4 no 0 0 60 1 raw 20 1 exact 11
+    hcompare "60 polymers, exact sweep, sheared (gdot = 0.5) through a box flip and new blocks, 3 sub-steps, 2 ranks" \
+        2 yes 0.5 0 60 3 shepard 20 1 exact 11
+    hcompare "60 polymers, exact sweep, 2 sub-steps, body force (gx = 0.5), lists every 4 steps, 4 ranks" \
+        4 yes 0 0.5 60 2 shepard 20 4 exact 11
+    # the reverse-Poiseuille force of lammps/in.hcbd_channel (lammps/in.hcbd_rp_force) = hcbd's world's
+    hcompare "60 polymers, exact sweep, reverse Poiseuille (g = 3), 2 ranks" 2 yes 0 0 60 1 shepard 20 1 exact 11 3
+    # the channel input itself runs (tau_lambda scaled to 1e4, Wi = 0.1, one
+    # tau_lambda of start-up and one of profile): the fluid and the polymers
+    # move along +x in the upper half and along -x in the lower
+    if "$lmp" -in "$root/lammps/in.hcbd_channel" -var plugin "$hplug" -var dir "$root/lammps" -var tau 1e4 \
+        -var alpha 5e4 -var Wi 0.1 -var startup 1 -var blocks 1 -var out "$t/hch" -log "$t/hch.log" -screen none \
+        > /dev/null 2>&1 && awk 'FNR == 1 { f++ } NF == 4 && $1 ~ /^[0-9]+$/ { s = $2 < 0.5 ? -1 : 1; if ($4 * s > 0) ok[f]++; n[f]++ }
+        END { exit !(n[1] == 12 && ok[1] == 12 && n[2] == 12 && ok[2] >= 11) }' "$t/hch.f" "$t/hch.p"; then
+        ok "lammps/in.hcbd_channel: fluid and polymers flow along +-g in the two halves"
+    else bad "lammps/in.hcbd_channel: $(grep ERROR "$t/hch.log" | head -n 1) (profiles $t/hch.f, $t/hch.p)"; fi
     # bad arguments and settings: LAMMPS stops with an error naming them
     hexpect() {
         name=$1 edit=$2
@@ -98,7 +125,7 @@ hcbd_quick() {
     hexpect "keyword seed has no value" "$fl $tail_; s/kT \${kT}\$/kT \${kT} seed/"
     hexpect "fluct = maybe is not yes or no" "$fl fluct maybe $tail_"
     hexpect "pair = bogus is not exact or euler" "$fl pair bogus $tail_"
-    hexpect "pair exact .* is not built yet" "$fl pair exact $tail_"
+    hexpect "pair exact needs an atom map" "s/^atom_modify .*//; s/^variable  *pair index euler/variable pair index exact/"
     hexpect "seed = -3 is not an unsigned integer" "$fl seed -3 $tail_"
     hexpect "comm_modify vel yes" "/^comm_modify/d"
     hexpect "needs newton on" "s/^units .*/&\nnewton off/"
@@ -113,6 +140,15 @@ hcbd_quick() {
     hexpect "moved more than h/2 in one step" "s/^variable  *dt index 0.02/variable dt index 0.2/"
     hexpect "may only shear" "s/^fix  *g all hcbd .*/&\nfix grow all deform 1 x scale 1.01/"
     hexpect "define it before fix deform" "s/^fix  *g all hcbd/fix early all deform 1 xy erate 0.1 remap v\n&/; s/^if \"\\\${gdot} == 0\" then \"region/if \"1 == 0\" then \"region/"
+    # pair exact on two ranks: x must not be split, nor an axis without blocks
+    hranks() {
+        out=$($MPI -np 2 "$lmp" -in "$hin" -var plugin "$hplug" -var pair exact -var warm 2 -var steps 2 -log none \
+            -var ns "$2" -var procs "$3" 2>&1)
+        if printf '%s' "$out" | grep -q "ERROR.*$1"; then ok "fix hcbd: pair exact on processors $3 -> error names $1"
+        else bad "fix hcbd: pair exact on processors $3: $(printf '%s' "$out" | grep ERROR | head -n 1)"; fi
+    }
+    hranks "needs processors 1 \* \*" 11 "2 1 1"
+    hranks "2 ranks along y needs the sweep's blocks" 8 "1 2 1"
     # with polymers (npoly 60)
     hpoly() { sed "s/^variable  *npoly index 0/variable npoly index 60/; $2" "$hin" > "$t/hbad0.in"; hin0=$hin; hin=$t/hbad0.in; hexpect "$1" "$3"; hin=$hin0; }
     hpoly "polymer = 1 is the fluid's type" "" "s/polymer 2 xi/polymer 1 xi/"
@@ -146,6 +182,19 @@ hcbd_quick() {
 hcbd_bits() {
     local np g
     [ -f "$hplug" ] || return
+    # pair exact: 1331 fluid blobs in 6^3 blocks, on processors 1 * *, 100
+    # steps (sheared: the box flips and the blocks along x change)
+    for g in 0 0.8; do
+        "$lmp" -in "$hin" -var plugin "$hplug" -var npoly 60 -var ns 11 -var pair exact -var gdot "$g" -var steps 20 \
+            -var save "$t/hx$g" -log none -screen none > /dev/null 2>&1
+        for np in $RANKS; do
+            $MPI -np "$np" "$lmp" -in "$hin" -var plugin "$hplug" -var npoly 60 -var ns 11 -var pair exact -var procs "1 * *" \
+                -var from restart -var restart "$t/hx$g" -var gdot "$g" -var steps 100 -var end "$t/hy$g-$np.txt" \
+                -log none -screen none > /dev/null 2>&1
+        done
+        if same_bits "$t/hy$g-"; then ok "fix hcbd, pair exact, 60 polymers, gdot = $g, ranks $RANKS: the same atoms bit for bit after 100 steps"
+        else bad "fix hcbd, pair exact, 60 polymers, gdot = $g, ranks $RANKS: the atoms differ after 100 steps"; fi
+    done
     for g in 0 0.8; do
         "$lmp" -in "$hin" -var plugin "$hplug" -var npoly 60 -var gdot "$g" -var steps 100 -var save "$t/hr$g" \
             -log none -screen none > /dev/null 2>&1
@@ -184,22 +233,32 @@ hcbd_stats() {
     if awk -v T="$T" 'BEGIN { d = T / 1.7 - 1; exit !(d > -0.03 && d < 0.03) }'; then
         ok "fix hcbd, 2 ranks: the fluid's temperature is kT within 3 % ($T)"
     else bad "fix hcbd, 2 ranks: temperature $T is not kT = 1.7"; fi
-    # the viscosity of a polymer solution at Wi = 1 on 2 ranks equals
-    # hcbd_polymer's at the same parameters within four combined errors:
-    # preset=quick's Table I (tau_lambda = 200 us, alpha and P0 scaled,
-    # dt = 1 us), C = 2.5 C* in a 9.67^3 box (216 fluid blobs on the lattice
-    # and 540 polymers), gdot = 5000 / s, the paper's Euler fluid pairs,
-    # 6000 steps of which the last 2000 are measured in 10 blocks
+    # pair exact (the default) has no such bias: kT within four errors (1 rank,
+    # the 8^3 lattice is one block)
+    if ! "$lmp" -in "$hin" -var plugin "$hplug" -var npoly 60 -var pair exact -var seed 23 -var steps 22000 -var thermo 10 \
+        -log "$t/hx.log" -screen none > /dev/null 2>&1; then
+        bad "fix hcbd, pair exact: temperature run failed: $(grep ERROR "$t/hx.log" | head -n 1)"; return
+    fi
+    read -r T eT < <(awk '/^ *Step/ { f = 1; next } /^Loop/ { f = 0 } f && NF == 2' "$t/hx.log" | blocks)
+    echo "    fix hcbd, pair exact: fluid temperature $T +- $eT (kT = 1.7)"
+    if [[ "$T $eT" =~ ^[0-9.e-]+\ [0-9.e-]+$ ]] && within "$T" "$eT" 1.7 0; then
+        ok "fix hcbd, pair exact: the fluid's temperature is kT within four errors"
+    else bad "fix hcbd, pair exact: temperature $T +- $eT is not kT = 1.7"; fi
+    # the viscosity of a polymer solution at Wi = 1 on 2 ranks, from the
+    # Table I input (lammps/in.hcbd_table1), equals hcbd_polymer's at the
+    # same parameters within four combined errors: preset=quick's Table I
+    # (tau_lambda = 200 us, alpha and P0 scaled, dt = 1 us, no sub-steps), C
+    # = 2.5 C* in a 9.67^3 box (216 fluid blobs on the lattice and 540
+    # polymers), gdot = 5000 / s, the paper's Euler fluid pairs, 20
+    # tau_lambda (4000 steps) of start-up, then 10 blocks of one
     local E eE hE heE
-    local Q="-var ns 6 -var nbar 0.238738 -var npoly 540 -var pairs 128 -var rho 7.54476e+08 -var eta 3.0179e+07"
-    Q="$Q -var P0 1.72452e+07 -var h 2 -var kT 1 -var xi 6.03581e+08 -var sigma 1 -var rc 2.5 -var alpha 2.5e+06"
-    Q="$Q -var tau_lambda 200 -var p 300000 -var n_max 2387.32 -var chi 0.5 -var dt 1 -var fluct no -var gdot 0.005"
+    local Q="-var P0 1.72452e+07 -var alpha 2.5e+06 -var tau 200 -var dt 1 -var sub 1 -var pair euler -var Wi 1"
     # shellcheck disable=SC2086
-    if ! $MPI -np 2 "$lmp" -in "$hin" -var plugin "$hplug" $Q -var seed 5 -var warm 50 -var steps 6000 -var blocks 30 \
-        -var sfile "$t/heta.txt" -log "$t/heta.log" -screen none > /dev/null 2>&1; then
+    if ! $MPI -np 2 "$lmp" -in "$root/lammps/in.hcbd_table1" -var plugin "$hplug" $Q -var seed 5 -var startup 20 \
+        -var blocks 10 -var out "$t/heta.txt" -log "$t/heta.log" -screen none > /dev/null 2>&1; then
         bad "fix hcbd, 2 ranks: viscosity run failed: $(grep ERROR "$t/heta.log" | head -n 1)"; return
     fi
-    read -r E eE < <(awk '!/^#/ { ++n; if (n > 20) x[++m] = $2 / 0.005 } END { for (k = 1; k <= m; ++k) s += x[k]
+    read -r E eE < <(awk '!/^#/ { x[++m] = $11 / 0.005 } END { for (k = 1; k <= m; ++k) s += x[k]
         s /= m; for (k = 1; k <= m; ++k) v += (x[k] - s) ^ 2; printf "%.6g %.3g\n", s, sqrt(v / (m * (m - 1))) }' "$t/heta.txt")
     "$root/build/hcbd_polymer" C=2.5 gdot=5000 Lx=9.6739 Ly=9.6739 Lz=9.6739 le_steps=6000 rp_steps=30 eq_steps=2 \
         blocks=10 pair=euler threads=1 seed=3 out="$t/hq" > "$t/hq.txt" 2>/dev/null

@@ -21,8 +21,8 @@
 //   at its last: lambda_ab = lambda_eq + (lambda_ab - lambda_eq) e^(-dt/tau)
 //     + noise (exact Ornstein-Uhlenbeck, as hcbd); x_a += u_a dt +
 //     sqrt(2 kT dt / xi) z_a
-// as hcbd_hc_world_step with HCBD_PAIR_EULER.  A polymer's LAMMPS velocity
-// is zero (polymers are massless here); its force f is not used.
+// as hcbd_hc_world_step.  A polymer's LAMMPS velocity is its drift
+// velocity u_a (polymers are massless here); its force f is not used.
 //
 // The same bits on any number of ranks: every pair is evaluated from the
 // positions its atoms' owners wrapped into the box (hcbd's frame, sent to
@@ -80,10 +80,9 @@ static int integer(Error *error, const char *key, const char *v, int lo, int hi)
 
 FixHCBD::FixHCBD(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), list(nullptr), flist(nullptr), tf(1), tp(0), cap(32), nfluid(0), np_(nullptr), xw(nullptr), vc(nullptr),
-    fs(nullptr), kw(nullptr), acc(nullptr), nmax(0), nacc(1), fwd(0), wscale(0), fscale(0), pwscale(0), pfscale(0),
+    fs(nullptr), kw(nullptr), acc(nullptr), touched(nullptr), nmax(0), nacc(1), fwd(0), rev_v(0), exact(1), wscale(0), fscale(0), pwscale(0), pfscale(0),
     limF(0), limP(0), le_s(0), le_v(0), stress(0), ss{0, 0, 0, 0, 0, 0, 0}, sv{0}, st(nullptr), width(0)
 {
-  int euler = 1;
   p = hcbd_hc_params_default();
   p.fluctuations = 0;
   p.substeps = 1;
@@ -127,18 +126,15 @@ FixHCBD::FixHCBD(LAMMPS *lmp, int narg, char **arg) :
         error->all(FLERR, "fix hcbd: seed = {} is not an unsigned integer", v);
       p.seed = s;
     } else if (!strcmp(key, "pair")) {
-      if (!strcmp(v, "euler")) euler = 1;
-      else if (!strcmp(v, "exact")) euler = 0;
+      if (!strcmp(v, "euler")) exact = 0;
+      else if (!strcmp(v, "exact")) exact = 1;
       else error->all(FLERR, "fix hcbd: pair = {} is not exact or euler", v);
     } else {
       error->all(FLERR, "fix hcbd: unknown keyword {}", key);
     }
   }
-  if (!euler)
-    error->all(FLERR, "fix hcbd: pair exact (hcbd's exact fluid sweep) is not built yet: pair euler "
-                      "(the paper's explicit pairs, stable to about 2.8 viscous time steps)");
   if (tp == tf) error->all(FLERR, "fix hcbd: polymer = {} is the fluid's type", tp);
-  p.pair_integrator = HCBD_PAIR_EULER;
+  p.pair_integrator = exact ? HCBD_PAIR_SHARDLOW : HCBD_PAIR_EULER;
   if (igroup != 0) error->all(FLERR, "fix hcbd: the group must be all (densities sum over every atom)");
   time_integrate = 1;
   if (stress) {
@@ -148,7 +144,7 @@ FixHCBD::FixHCBD(LAMMPS *lmp, int narg, char **arg) :
     extvector = 0;
   }
   comm_forward = 6;
-  comm_reverse = 3;
+  comm_reverse = 4;
   width = 4 + 3 * cap;
   restart_peratom = 1;
   create_attribute = 1;
@@ -174,6 +170,7 @@ void FixHCBD::release()
   memory->destroy(fs);
   memory->destroy(kw);
   memory->destroy(acc);
+  memory->destroy(touched);
 }
 
 int FixHCBD::setmask()
@@ -220,17 +217,69 @@ void FixHCBD::init()
   fscale = std::ldexp(1.0, 50 - std::ilogb(limF));
   pwscale = std::ldexp(1.0, 50 - std::ilogb(c.W0));
   pfscale = std::ldexp(1.0, 50 - std::ilogb(limP));
+  if (exact) sweep_init();
   int irequest = neighbor->request(this, instance_me);
   neighbor->requests[irequest]->pair = 0;
   neighbor->requests[irequest]->fix = 1;
-  if (tp) {
-    // a polymer's pairs, whichever rank the half list gives a pair to
+  if (tp || exact) {
+    // a polymer's pairs, whichever rank the half list gives a pair to;
+    // the sweep's partners, ghosts' too (on one rank as well: without
+    // ghosts LAMMPS would derive the half list from this one, with other
+    // images, and the last bits would depend on the rank count)
     irequest = neighbor->request(this, instance_me);
     neighbor->requests[irequest]->pair = 0;
     neighbor->requests[irequest]->fix = 1;
     neighbor->requests[irequest]->half = 0;
     neighbor->requests[irequest]->full = 1;
+    neighbor->requests[irequest]->ghost = exact;
     neighbor->requests[irequest]->id = 1;
+  }
+}
+
+// pair exact: the sweep's settings.  A rank sweeps the blocks whose corner
+// lies in its subdomain (any rule that gives each block to one rank within
+// the ghosts' reach gives the same bits); they span x, so x is not split,
+// and an axis split between ranks needs blocks along it at every
+// Lees-Edwards offset the box may take (the grid is hcbd's world's)
+void FixHCBD::sweep_init()
+{
+  char msg[256];
+  if (atom->map_style == Atom::MAP_NONE)
+    error->all(FLERR, "fix hcbd: pair exact needs an atom map (atom_modify map array before the box)");
+  // the widest blocks along y and z over the offsets (x's count changes with the
+  // tilt, and the grid with it)
+  double width[3] = {0, 0, 0};
+  const int ns = domain->triclinic ? 2001 : 1;
+  for (int q = 0; q < ns; ++q) {
+    int nb[3], nc[3], nf[3];
+    const double s = ns > 1 ? p.L[0] * (q / (ns - 1.0) - 0.5) : 0.0;
+    if (hcbd_hc_sweep_grid(&p, s, nb, nc, nf, msg, sizeof msg) != HCBD_OK) error->all(FLERR, "fix hcbd: {}", msg);
+    for (int d = 1; d < 3; ++d) {
+      if (comm->nprocs > 1 && comm->procgrid[d] > 1 && nb[d] == 1)
+        error->all(FLERR, "fix hcbd: pair exact with {} ranks along {} needs the sweep's blocks along it, and "
+                          "hcbd's grid has none there (L = {}, h = {}, offset {}): processors 1 * 1 or 1 1 *, "
+                          "or pair euler", comm->procgrid[d], d == 1 ? "y" : "z", p.L[d], p.h, s);
+      width[d] = std::max(width[d], p.L[d] / nb[d]);
+    }
+  }
+  blk_width[0] = width[1];
+  blk_width[1] = width[2];
+  if (comm->nprocs == 1) return;
+  if (comm->style != 0 || comm->procgrid[0] != 1)
+    error->all(FLERR, "fix hcbd: pair exact needs processors 1 * * (the sweep's blocks span x in LAMMPS's "
+                      "subdomains), or pair euler");
+  if (comm->mode != 0) error->all(FLERR, "fix hcbd: pair exact needs comm_modify mode single");
+  // a block and its partners reach a block and 2h beyond its corner; the
+  // ghost neighbour list finds them if the ghosts reach another 1.5 skin
+  // (atoms move skin/2 between builds, and the list reaches its cut-off + skin)
+  double need = 0;
+  for (int d = 1; d < 3; ++d)
+    if (comm->procgrid[d] > 1) need = std::max(need, width[d] + 2.0 * p.h + 1.5 * neighbor->skin);
+  if (comm->cutghostuser < need) {
+    comm->cutghostuser = need * (1.0 + 1e-9);
+    if (comm->me == 0)
+      utils::logmesg(lmp, "fix hcbd: ghost cutoff raised to {:.6g} for the exact fluid sweep (a block {:.6g} + "
+                          "2 h + 1.5 skin)\n", comm->cutghostuser, need - 2.0 * p.h - 1.5 * neighbor->skin);
   }
 }
 
@@ -343,6 +392,7 @@ void FixHCBD::grow()
   memory->create(fs, 4 * nmax, "hcbd:fs");
   memory->create(kw, nmax, "hcbd:kw");
   memory->create(acc, 3 * nmax, "hcbd:acc");
+  memory->create(touched, nmax, "hcbd:touched");
 }
 
 // stops the run naming the smallest tag of any rank's bad atom, if any
@@ -402,8 +452,9 @@ void FixHCBD::densities()
 }
 
 // the Euler pair forces of x and v of t into acc (owned atoms, after the
-// reverse communication); the noise of fluid step k, +z on the lower tag
-void FixHCBD::euler_pairs(int64_t k, int sum)
+// reverse communication); the noise of fluid step k, +z on the lower tag;
+// pair exact: the pressure forces alone (the sweep takes the rest)
+void FixHCBD::fluid_pairs(int64_t k, int sum)
 {
   const int nall = atom->nlocal + atom->nghost;
   const tagint *tag = atom->tag;
@@ -411,12 +462,19 @@ void FixHCBD::euler_pairs(int64_t k, int sum)
   std::memset(acc, 0, sizeof(int64_t) * 3 * nall);
   each_pair(FF, 2.0 * p.h, [&](int i, int j, const double *d, double r, int kj) {
     const double *vi = vc + 3 * i, *vj = vc + 3 * j;
-    const double dv[3] = {vi[0] - (vj[0] + kj * le_v), vi[1] - vj[1], vi[2] - vj[2]};
-    double z[3], F[3] = {0, 0, 0};
-    if (p.fluctuations) hcbd_hc_noise_fluid_pair(&ns, k, (int32_t) (tag[i] - 1), (int32_t) (tag[j] - 1), z);
-    hcbd_hc_fluid_pair(&c, d, r, np_[2 * i], np_[2 * j], np_[2 * i + 1], np_[2 * j + 1], dv,
-                       p.fluctuations ? z : nullptr, F);
-    if (sum) {
+    double dv[3] = {0, 0, 0}, z[3], F[3] = {0, 0, 0};
+    if (exact) {
+      hcbd_hc_fluid_pair(&c, d, r, np_[2 * i], np_[2 * j], np_[2 * i + 1], np_[2 * j + 1], dv, nullptr, F);
+      if (sum) ss[0] += d[1] * F[0];
+    } else {
+      dv[0] = vi[0] - (vj[0] + kj * le_v);
+      dv[1] = vi[1] - vj[1];
+      dv[2] = vi[2] - vj[2];
+      if (p.fluctuations) hcbd_hc_noise_fluid_pair(&ns, k, (int32_t) (tag[i] - 1), (int32_t) (tag[j] - 1), z);
+      hcbd_hc_fluid_pair(&c, d, r, np_[2 * i], np_[2 * j], np_[2 * i + 1], np_[2 * j + 1], dv,
+                         p.fluctuations ? z : nullptr, F);
+    }
+    if (sum && !exact) {
       // the pair's pressure, viscous and noise parts of F_x, as hcbd's world splits them
       double Fp[3] = {0, 0, 0}, Fv[3] = {0, 0, 0};
       const double dv0[3] = {0, 0, 0};
@@ -439,6 +497,151 @@ void FixHCBD::euler_pairs(int64_t k, int sum)
   stop_at(bad, "has a pair force beyond 16 h m / dt^2 (a move of 16 h in one step): dt is too long");
   nacc = 3;
   comm->reverse_comm_fix(this, 3);
+}
+
+// The exact sweep's plan for fluid step k: this rank's owners (one copy of
+// each atom takes part: atom->map's, the owned one where there is one) by
+// colour, block, fine cell and tag, each with its partners (higher tags
+// within 2h, from every copy's neighbours in the ghost list) by tag, from
+// the positions xw (the same bits on every rank), as hcbd_hc_sweep_grid
+// describes hcbd's world's order.
+void FixHCBD::sweep_plan()
+{
+  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
+  const tagint *tag = atom->tag;
+  const int *type = atom->type;
+  const double *L = p.L, cut2 = 4.0 * p.h * p.h;
+  char msg[256];
+  int nb[3], nc[3], nf[3];
+  if (hcbd_hc_sweep_grid(&p, le_s, nb, nc, nf, msg, sizeof msg) != HCBD_OK) error->all(FLERR, "fix hcbd: {}", msg);
+  for (int d = 1; d < 3 && comm->nprocs > 1; ++d)
+    if (comm->procgrid[d] > 1 && (nb[d] == 1 || L[d] / nb[d] > blk_width[d - 1] * (1.0 + 1e-12)))
+      error->all(FLERR, "fix hcbd: pair exact at step {}: the sweep's blocks along {} ({}) are not those the "
+                        "ghost cutoff was set for (split the box along the other axis only)",
+                 update->ntimestep, d == 1 ? "y" : "z", nb[d]);
+  ncol = nc[0] * nc[1] * nc[2];
+  // blocks are measured from the blob of tag 1, as hcbd's from id 0
+  double a0[3] = {-1.0, -1.0, -1.0}, o[3];
+  const int i1 = atom->map(1);
+  if (i1 >= 0 && i1 < nlocal)
+    for (int d = 0; d < 3; ++d) a0[d] = xw[3 * i1 + d];
+  MPI_Allreduce(a0, o, 3, MPI_DOUBLE, MPI_MAX, world);
+  const double t = le_s / L[1];
+  const double f[3] = {nb[0] / L[0], nb[1] / L[1], nb[2] / L[2]}, g[3] = {nf[0] / L[0], nf[1] / L[1], nf[2] / L[2]};
+  const int tri = domain->triclinic;
+  const double lo[2] = {tri ? domain->sublo_lamda[1] * L[1] : domain->sublo[1] - domain->boxlo[1],
+                        tri ? domain->sublo_lamda[2] * L[2] : domain->sublo[2] - domain->boxlo[2]};
+  const double hi[2] = {tri ? domain->subhi_lamda[1] * L[1] : domain->subhi[1] - domain->boxlo[1],
+                        tri ? domain->subhi_lamda[2] * L[2] : domain->subhi[2] - domain->boxlo[2]};
+  owners.clear();
+  for (int k = 0; k < nall; ++k) {
+    if (type[k] != tf || atom->map(tag[k]) != k) continue;
+    const double *x = xw + 3 * k;
+    double r[3];
+    int cb[3], cf[3];
+    r[1] = x[1] - o[1];
+    r[0] = x[0] - o[0] - t * r[1];
+    r[2] = x[2] - o[2];
+    for (int d = 0; d < 3; ++d) {
+      r[d] -= L[d] * std::floor(r[d] / L[d]);
+      cb[d] = std::min(std::max((int) (r[d] * f[d]), 0), nb[d] - 1);
+      cf[d] = std::min(std::max((int) (r[d] * g[d]), 0), nf[d] - 1);
+    }
+    // the block is this rank's when its corner lies here
+    bool mine = true;
+    for (int d = 1; d < 3; ++d) {
+      if (comm->procgrid[d] == 1) continue;
+      double cy = o[d] + cb[d] / f[d];
+      if (cy >= L[d]) cy -= L[d];
+      mine = mine && cy >= lo[d - 1] && cy < hi[d - 1];
+    }
+    if (!mine) continue;
+    Owner w;
+    w.colour = cb[0] % nc[0] + nc[0] * (cb[1] % nc[1] + nc[1] * (cb[2] % nc[2]));
+    w.block = (cb[2] * nb[1] + cb[1]) * nb[0] + cb[0];
+    w.fine = (cf[2] * nf[1] + cf[1]) * nf[0] + cf[0];
+    w.tag = tag[k];
+    w.i = k;
+    owners.push_back(w);
+  }
+  std::sort(owners.begin(), owners.end(), [](const Owner &a, const Owner &b) {
+    if (a.colour != b.colour) return a.colour < b.colour;
+    if (a.block != b.block) return a.block < b.block;
+    if (a.fine != b.fine) return a.fine < b.fine;
+    return a.tag < b.tag;
+  });
+  col_start.assign(ncol + 1, 0);
+  for (const Owner &w : owners) col_start[w.colour + 1]++;
+  for (int q = 0; q < ncol; ++q) col_start[q + 1] += col_start[q];
+  part_start.assign(owners.size() + 1, 0);
+  parts.clear();
+  for (size_t q = 0; q < owners.size(); ++q) {
+    const int i = owners[q].i;
+    cand.clear();
+    // an owned atom's list is whole; a ghost copy near the edge of the
+    // ghosts has an incomplete one, but the atom has a copy whose list is
+    // whole: take every copy's neighbours
+    for (int ic = i; ic >= 0; ic = i < nlocal ? -1 : atom->sametag[ic]) {
+      const int *jlist = flist->firstneigh[ic];
+      for (int jj = 0; jj < flist->numneigh[ic]; ++jj) {
+        const int j0 = jlist[jj] & NEIGHMASK;
+        if (type[j0] != tf || tag[j0] <= tag[i]) continue;
+        const int j = atom->map(tag[j0]);
+        Part pt;
+        double d[3];
+        pt.k = delta(i, j, d);
+        const double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+        if (!(r2 < cut2)) continue;
+        pt.tag = tag[j];
+        pt.j = j;
+        pt.r = std::sqrt(r2);
+        pt.y = d[1];
+        cand.push_back(pt);
+      }
+    }
+    std::sort(cand.begin(), cand.end(), [](const Part &a, const Part &b) { return a.tag < b.tag; });
+    for (size_t u = 0; u < cand.size(); ++u)
+      if (!u || cand[u].tag != cand[u - 1].tag) parts.push_back(cand[u]); // found from two copies
+    part_start[q + 1] = (int) parts.size();
+  }
+}
+
+// hcbd's exact fluid sweep of fluid step k on this rank's blocks, colour by
+// colour: every pair's Morris friction and noise solved exactly in turn
+// (hcbd_hc_fluid_pair_exact) on the velocities vc; the velocities a colour
+// changed on ghost copies go back to their owners, and the ghosts are
+// refreshed before the next colour.  sum: the viscous stress column.
+void FixHCBD::sweep(int64_t k, int sum)
+{
+  const tagint *tag = atom->tag;
+  const int nall = atom->nlocal + atom->nghost;
+  sweep_plan();
+  for (int col = 0; col < ncol; ++col) {
+    std::memset(touched, 0, sizeof(int) * nall);
+    for (int q = col_start[col]; q < col_start[col + 1]; ++q) {
+      const int i = owners[q].i;
+      const double ini = 1.0 / np_[2 * i];
+      for (int u = part_start[q]; u < part_start[q + 1]; ++u) {
+        const Part &pt = parts[u];
+        const int j = pt.j;
+        double z[3], P[3];
+        if (p.fluctuations) hcbd_hc_noise_fluid_pair(&ns, k, (int32_t) (tag[i] - 1), (int32_t) (tag[j] - 1), z);
+        hcbd_hc_fluid_pair_exact(&c, pt.r, ini, 1.0 / np_[2 * j], pt.k * le_v, p.fluctuations ? z : nullptr,
+                                 vc + 3 * i, vc + 3 * j, P);
+        if (sum) ss[1] += pt.y * P[0] / c.dt;
+        touched[j] = 1;
+      }
+      touched[i] = 1;
+    }
+    if (comm->nprocs == 1) continue; // every copy that takes part is owned
+    rev_v = 1;
+    comm->reverse_comm_fix(this, 4);
+    rev_v = 0;
+    if (col < ncol - 1) {
+      fwd = 3;
+      comm->forward_comm_fix(this, 3);
+    }
+  }
 }
 
 // the polymers' n and mu of owned and ghost atoms; stops at phi >= 1
@@ -672,7 +875,8 @@ void FixHCBD::final_integrate()
     interpolate();
     redistribute();
   }
-  euler_pairs(k, stress && last);
+  fluid_pairs(k, stress && last);
+  if (exact) sweep(k, stress && last);
   if (stress && last) { // the kinetic part of t, relative to the Lees-Edwards profile
     const double gdot = le_v / p.L[1];
     for (int i = 0; i < nlocal; ++i)
@@ -692,11 +896,13 @@ void FixHCBD::final_integrate()
     sv[HCBD_HC_S_TOTAL] = sv[HCBD_HC_S_FLUID] + sv[HCBD_HC_S_POLYMER] + sv[HCBD_HC_S_INTERACTION];
   }
   for (int i = 0; i < nlocal; ++i) {
-    if (atom->type[i] != tf) {
-      v[i][0] = v[i][1] = v[i][2] = 0.0;
+    if (atom->type[i] != tf) { // a polymer: its drift velocity u_a of this polymer step, LAMMPS's frame
+      for (int d = 0; d < 3; ++d) v[i][d] = tp ? st[i][1 + d] + (d == 0 ? kw[i] * le_v : 0.0) : 0.0;
       continue;
     }
     double u2 = 0;
+    if (exact) // the swept velocities, in LAMMPS's frame
+      for (int d = 0; d < 3; ++d) v[i][d] = vc[3 * i + d] + (d == 0 ? kw[i] * le_v : 0.0);
     for (int d = 0; d < 3; ++d) {
       v[i][d] += dt_m * ((double) acc[3 * i + d] / fscale + (tp ? st[i][1 + d] : 0.0) + f[i][d]);
       x[i][d] += v[i][d] * dt;
@@ -724,7 +930,8 @@ int FixHCBD::pack_forward_comm(int n, int *slist, double *buf, int, int *)
   for (int k = 0; k < n; ++k)
     for (int d = 0; d < fwd; ++d) {
       const int i = slist[k];
-      buf[fwd * k + d] = fwd == 2 ? np_[2 * i + d] : fwd == 4 ? fs[4 * i + d] : d < 3 ? xw[3 * i + d] : vc[3 * i + d - 3];
+      buf[fwd * k + d] = fwd == 2 ? np_[2 * i + d] : fwd == 4 ? fs[4 * i + d] : fwd == 3 ? vc[3 * i + d]
+                       : d < 3 ? xw[3 * i + d] : vc[3 * i + d - 3];
     }
   return fwd * n;
 }
@@ -737,20 +944,38 @@ void FixHCBD::unpack_forward_comm(int n, int first, double *buf)
       const int i = first + k;
       if (fwd == 2) np_[2 * i + d] = b;
       else if (fwd == 4) fs[4 * i + d] = b;
+      else if (fwd == 3) vc[3 * i + d] = b;
       else if (d < 3) xw[3 * i + d] = b;
       else vc[3 * i + d - 3] = b;
     }
 }
 
-// the ghosts' fixed-point sums travel as the bits of doubles
+// the ghosts' fixed-point sums travel as the bits of doubles; in the
+// sweep, a velocity the colour set travels with a flag, and the owner
+// takes it (one copy of an atom takes part in a colour)
 int FixHCBD::pack_reverse_comm(int n, int first, double *buf)
 {
+  if (rev_v) {
+    for (int k = 0; k < n; ++k) {
+      buf[4 * k] = touched[first + k];
+      for (int d = 0; d < 3; ++d) buf[4 * k + 1 + d] = vc[3 * (first + k) + d];
+    }
+    return 4 * n;
+  }
   std::memcpy(buf, acc + (size_t) nacc * first, sizeof(int64_t) * nacc * n);
   return nacc * n;
 }
 
 void FixHCBD::unpack_reverse_comm(int n, int *slist, double *buf)
 {
+  if (rev_v) {
+    for (int k = 0; k < n; ++k)
+      if (buf[4 * k] != 0.0) { // to a ghost, too, that passes it on (ghosts of ghosts)
+        touched[slist[k]] = 1;
+        for (int d = 0; d < 3; ++d) vc[3 * slist[k] + d] = buf[4 * k + 1 + d];
+      }
+    return;
+  }
   for (int k = 0; k < n; ++k)
     for (int d = 0; d < nacc; ++d) {
       int64_t q;

@@ -50,7 +50,10 @@ class FixHCBD : public Fix {
   void release();
   void canonical();
   void densities();
-  void euler_pairs(int64_t k, int sum);
+  void fluid_pairs(int64_t k, int sum);
+  void sweep_init();
+  void sweep_plan();
+  void sweep(int64_t k, int sum);
   void polymer_densities();
   void polymer_forces();
   void interpolate();
@@ -75,7 +78,10 @@ class FixHCBD : public Fix {
   double *fs;              // a polymer's force and psi normaliser S (owned and ghost)
   int *kw;                 // y-wraps of an owned atom's position (Lees-Edwards)
   int64_t *acc;            // fixed-point pair sums (nacc per atom)
+  int *touched;            // atoms whose velocity this colour of the sweep set
   int nmax, nacc, fwd;     // fwd: what the next forward communication carries
+  int rev_v;               // the next reverse communication carries the sweep's velocities
+  int exact;               // pair exact (default): hcbd's exact fluid sweep; 0: Euler pairs
   double wscale, fscale;   // fixed-point scales of the fluid's weights and forces
   double pwscale, pfscale; // and of the polymers' (forces: polymer and redistributed)
   double limF, limP;       // force bounds: a move of 16 h (fluid) or 16 rc (polymer) in one step
@@ -103,6 +109,23 @@ class FixHCBD : public Fix {
     double w, v[3];
   };
   std::vector<Near> near;
+  // this step's sweep on this rank: owners by colour, block, fine cell and
+  // tag (colour c from col_start[c]), each one's partners by tag from part_start
+  struct Owner {
+    int colour, block, fine;
+    tagint tag;
+    int i;
+  };
+  struct Part {            // a partner: tag, copy, image (k boxes up), r, y_ij
+    tagint tag;
+    int j, k;
+    double r, y;
+  };
+  std::vector<Owner> owners;
+  std::vector<Part> parts, cand;
+  std::vector<int> col_start, part_start;
+  int ncol;                // the sweep's colours this step
+  double blk_width[2];     // the widest blocks along y and z (the ghost cutoff's)
 };
 
 }    // namespace LAMMPS_NS

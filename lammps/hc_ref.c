@@ -4,12 +4,13 @@
    IN: write_dump custom id x y z vx vy vz, sorted by id (tags 1..n, the nf
    fluid blobs first, then the polymers); OUT: "id x y z vx vy vz" after
    `steps` polymer steps (of substeps fluid steps each), wrapped into the
-   box, the polymers' velocities 0; stdout: hcbd_hc_world_stress_read's
+   box, a polymer's velocity its drift velocity u_a of the last step; stdout: hcbd_hc_world_stress_read's
    ten columns, averaged over the steps.  Keys: nf (default all), dt (the fluid
    step: LAMMPS's), rho nbar eta P0 h kT seed xi sigma rc alpha tau_lambda
    p n_max chi substeps (hcbd_hc_params), fluct yes|no, pair euler|exact,
    coupling shepard|raw, gdot (Lees-Edwards from IN on, offset 0 there), gx
-   (a body force per mass along x), every k: stdout gets the step and
+   (a body force per mass along x; with rp=1 the reverse-Poiseuille force:
+   +gx in the upper half of y, -gx in the lower, less the mean), every k: stdout gets the step and
    hcbd_hc_world_temperature every k steps (as LAMMPS's compute temp of the
    fluid with its momentum zero) before the stress; threads (1); timing=1:
    stderr gets the steps' wall-clock seconds. */
@@ -29,7 +30,7 @@ int main(int argc, char **argv)
     hcbd_hc_world_def def = hcbd_hc_world_def_default();
     hcbd_hc_params *p = &def.params;
     hcbd_hc_world w;
-    double lo[3], hi[3], *x, *v, dt_f = 0;
+    double lo[3], hi[3], *x, *v, *u, dt_f = 0;
     int n = 0, nf = -1, i, d, steps, every = 0, s, a, timing = 0;
     struct timespec t0, t1;
     FILE *out;
@@ -60,6 +61,7 @@ int main(int argc, char **argv)
         else if (!strncmp(argv[a], "seed=", 5)) p->seed = strtoull(val, NULL, 10);
         else if (!strncmp(argv[a], "substeps=", 9)) p->substeps = atoi(val);
         else if (!strncmp(argv[a], "every=", 6)) every = atoi(val);
+        else if (!strncmp(argv[a], "rp=", 3)) p->reverse_poiseuille = atoi(val);
         else if (!strncmp(argv[a], "threads=", 8)) p->threads = atoi(val);
         else if (!strncmp(argv[a], "timing=", 7)) timing = atoi(val);
         else if (!strncmp(argv[a], "fluct=", 6)) p->fluctuations = !strcmp(val, "yes");
@@ -87,8 +89,18 @@ int main(int argc, char **argv)
     }
     if (!timing) hcbd_hc_world_stress_enable(&w, 1);
     clock_gettime(CLOCK_MONOTONIC, &t0);
+    u = (double *)calloc(3 * (size_t)(n - nf) + 1, sizeof(double));
     for (s = 0; s < steps; s += every) {
-        if (hcbd_hc_world_step(&w, every) != HCBD_OK) {
+        /* the last step's drift velocities are prepared before it */
+        const int last = s + every >= steps, k = last ? every - 1 : every;
+        if (hcbd_hc_world_step(&w, k) != HCBD_OK) {
+            fprintf(stderr, "hc_ref: %s\n", w.err.msg);
+            return 1;
+        }
+        for (i = 0; last && i < n - nf; ++i) {
+            u[3 * i] = w.pux[i]; u[3 * i + 1] = w.puy[i]; u[3 * i + 2] = w.puz[i];
+        }
+        if (last && hcbd_hc_world_step(&w, 1) != HCBD_OK) {
             fprintf(stderr, "hc_ref: %s\n", w.err.msg);
             return 1;
         }
@@ -107,10 +119,11 @@ int main(int argc, char **argv)
     if (!out) { fprintf(stderr, "hc_ref: cannot write %s\n", argv[2]); return 1; }
     for (i = 0; i < n; ++i)
         fprintf(out, "%d %.17g %.17g %.17g %.17g %.17g %.17g\n", i + 1, x[3 * i] + lo[0], x[3 * i + 1] + lo[1],
-                x[3 * i + 2] + lo[2], i < nf ? v[3 * i] : 0.0, i < nf ? v[3 * i + 1] : 0.0,
-                i < nf ? v[3 * i + 2] : 0.0);
+                x[3 * i + 2] + lo[2], i < nf ? v[3 * i] : u[3 * (i - nf)], i < nf ? v[3 * i + 1] : u[3 * (i - nf) + 1],
+                i < nf ? v[3 * i + 2] : u[3 * (i - nf) + 2]);
     fclose(out);
     hcbd_hc_world_destroy(&w);
     free(x);
+    free(u);
     return 0;
 }

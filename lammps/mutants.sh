@@ -98,7 +98,19 @@ hc_pressure|fix_hcbd.cpp|np_[2 * i + 1] = hcbd_hc_fluid_pressure(&c, n);|np_[2 *
 hc_kick|fix_hcbd.cpp|v[i][d] += dt_m * (|v[i][d] += 1.1 * dt_m * (
 hc_lammps_force|fix_hcbd.cpp|: 0.0) + f[i][d])|: 0.0) + 1.1 * f[i][d])
 hc_advection|fix_hcbd.cpp|x[i][d] += v[i][d] * dt;|x[i][d] += 1.1 * v[i][d] * dt;
-hc_noise_step|fix_hcbd.cpp|euler_pairs(k, stress && last);|euler_pairs(k + 1, stress && last);
+hc_noise_step|fix_hcbd.cpp|fluid_pairs(k, stress && last);|fluid_pairs(k + 1, stress && last);
+hc_exact_noise_step|fix_hcbd.cpp|if (exact) sweep(k, stress && last);|if (exact) sweep(k + 1, stress && last);
+hc_exact_owner_density|fix_hcbd.cpp|const double ini = 1.0 / np_[2 * i];|const double ini = 1.1 / np_[2 * i];
+hc_exact_partner_density|fix_hcbd.cpp|ini, 1.0 / np_[2 * j],|ini, 1.1 / np_[2 * j],
+hc_exact_le_velocity|fix_hcbd.cpp|pt.k * le_v,|1.1 * pt.k * le_v,
+hc_exact_frame|fix_hcbd.cpp|v[i][d] = vc[3 * i + d] + (d == 0 ? kw[i] * le_v : 0.0);|v[i][d] = vc[3 * i + d] + (d == 0 ? 1.1 * kw[i] * le_v : 0.0);
+hc_exact_stress_pressure|fix_hcbd.cpp|if (sum) ss[0] += d[1] * F[0];|if (sum) ss[0] += 1.1 * d[1] * F[0];
+hc_exact_stress_viscous|fix_hcbd.cpp|ss[1] += pt.y * P[0] / c.dt;|ss[1] += 1.1 * pt.y * P[0] / c.dt;
+hc_exact_fine_order|fix_hcbd.cpp|if (a.fine != b.fine) return a.fine < b.fine;|if (a.fine != b.fine) return a.fine > b.fine;
+hc_exact_colour|fix_hcbd.cpp|w.colour = cb[0] % nc[0] + nc[0] *|w.colour = cb[0] % nc[0] + (nc[0] + 1) *
+hc_exact_origin|fix_hcbd.cpp|for (int d = 0; d < 3; ++d) a0[d] = xw[3 * i1 + d];|for (int d = 0; d < 3; ++d) a0[d] = 1.1 * xw[3 * i1 + d];
+hc_exact_shear_cut|fix_hcbd.cpp|r[0] = x[0] - o[0] - t * r[1];|r[0] = x[0] - o[0] - 1.1 * t * r[1];
+hc_exact_ghost_relay|fix_hcbd.cpp|touched[slist[k]] = 1;|touched[slist[k]] = 0;
 hc_noise_lower_tag|fix_hcbd.cpp|const int i = tag[i0] < tag[j0] ? i0 : j0|const int i = tag[i0] > tag[j0] ? i0 : j0
 hc_le_velocity|fix_hcbd.cpp|(vj[0] + kj * le_v)|(vj[0] + 1.1 * kj * le_v)
 hc_le_offset|fix_hcbd.cpp|min_image(ri[0] - rj[0] - k * le_s|min_image(ri[0] - rj[0] - 1.1 * k * le_s

@@ -1106,6 +1106,201 @@ static void a_equations(int noisy)
     free(v); free(n); free(P); free(F); free(fa);
 }
 
+/* The exact sweep for an engine of its own (hcbd_hc_fluid_pair_exact,
+   hcbd_hc_sweep_grid), held to the formulas and to the world:
+   - one pair: the relative velocity u relaxes as an Ornstein-Uhlenbeck
+     process with rate 2 f/m, f = -2 eta w'(r) / (n_i n_j r) the Euler
+     pairs' friction: u' = e^(-x) u + sqrt(2 kT/m (1 - e^(-2x))) z, x = 2 f
+     dt/m, in both branches of 1 - e^(-x) (x below and above 1/8), the
+     momentum exact, P the change of m v_i;
+   - the grid: blocks of one colour at least the reach apart (2h, along x
+     2h sqrt(1 + t^2)), nb a multiple of nc, fine cells h wide;
+   - the world (fluid with 6 polymers, 15 x 5 x 5 sites, so that x has six
+     blocks in three colours): one step, noise on, equals the sweep done
+     here from the header's description of the order, then the pressure,
+     body and polymer forces. */
+static void a_exact_pair(const hcbd_hc_params *p0, double dt, double r, int noisy, double *e_u, double *e_m,
+                         double *x_out)
+{
+    hcbd_hc_params p = *p0;
+    hcbd_hc_coef c;
+    char msg[160];
+    const double ni = 0.11, nj = 0.09, du = 0.37, z[3] = {0.8, -1.3, 0.45};
+    double vi[3] = {0.4, -0.2, 0.9}, vj[3] = {-0.7, 0.3, 0.1}, u0[3], P[3], f, x, m;
+    int k;
+    p.dt = dt;
+    p.substeps = 1;
+    p.fluctuations = noisy;
+    *e_u = *e_m = 1;
+    *x_out = 0;
+    if (hcbd_hc_params_coef(&p, &c, msg, sizeof msg) != HCBD_OK) {
+        CHECK(0, "coef: %s", msg);
+        return;
+    }
+    m = c.m;
+    f = -2.0 * p.eta * a_m4d(r, p.h) / (ni * nj * r);
+    x = 2.0 * f * dt / m;
+    for (k = 0; k < 3; ++k) u0[k] = vi[k] - vj[k] - (k == 0 ? du : 0.0);
+    {
+        const double pi0[3] = {vi[0], vi[1], vi[2]}, pj0[3] = {vj[0], vj[1], vj[2]};
+        hcbd_hc_fluid_pair_exact(&c, r, 1.0 / ni, 1.0 / nj, du, noisy ? z : NULL, vi, vj, P);
+        *e_u = *e_m = 0;
+        for (k = 0; k < 3; ++k) {
+            const double want = exp(-x) * u0[k] + (noisy ? sqrt(2.0 * p.kT / m * -expm1(-2.0 * x)) * z[k] : 0.0);
+            const double u1 = vi[k] - vj[k] - (k == 0 ? du : 0.0);
+            if (fabs(u1 - want) > *e_u) *e_u = fabs(u1 - want);
+            if (fabs(vi[k] + vj[k] - pi0[k] - pj0[k]) > *e_m) *e_m = fabs(vi[k] + vj[k] - pi0[k] - pj0[k]);
+            if (fabs(m * (vi[k] - pi0[k]) - P[k]) > *e_m) *e_m = fabs(m * (vi[k] - pi0[k]) - P[k]);
+        }
+    }
+    *x_out = x;
+}
+
+typedef struct a_owner {
+    int colour, block, fine, id;
+} a_owner;
+
+static int a_owner_cmp(const void *a, const void *b)
+{
+    const a_owner *x = (const a_owner *)a, *y = (const a_owner *)b;
+    if (x->colour != y->colour) return x->colour < y->colour ? -1 : 1;
+    if (x->block != y->block) return x->block < y->block ? -1 : 1;
+    if (x->fine != y->fine) return x->fine < y->fine ? -1 : 1;
+    return x->id < y->id ? -1 : (x->id > y->id);
+}
+
+void test_hc_exact_sweep_exported(void)
+{
+    const double tol = ABS_FLOAT ? 1e-4 : 1e-9;
+    hcbd_hc_world_def d = hc_scene(15, 5, 5, 6);
+    hcbd_hc_params *p = &d.params;
+    hcbd_hc_world w;
+    hcbd_hc_coef c;
+    hcbd_hc_noise_stream ns;
+    const int nf = d.fluid_capacity;
+    double lam[36], e_u = 1, e_m = 1, x = 0, e_v = 0, sF = 0;
+    double *v = (double *)malloc(sizeof(double) * 3 * nf), *n = (double *)malloc(sizeof(double) * nf);
+    double *P = (double *)malloc(sizeof(double) * nf), *F = (double *)malloc(sizeof(double) * 3 * nf);
+    a_owner *o = (a_owner *)malloc(sizeof(a_owner) * nf);
+    char msg[160];
+    int nb[3], nc[3], nfc[3], i, j, k, q, npair, e;
+    /* one pair, both branches, with and without noise */
+    for (e = 0; e < 4; ++e) {
+        a_exact_pair(p, e < 2 ? 0.02 : 2.0, 1.3, e % 2, &e_u, &e_m, &x);
+        NOTE("pair exact, x = %.3g, %s: |u' - formula| %.1e, momentum and P %.1e", x, e % 2 ? "noise" : "no noise",
+             e_u, e_m);
+        CHECK(e < 2 ? x < 0.125 : x > 0.125, "x = %g in the branch meant", x);
+        CHECK(e_u < 1e-13 && e_m < 1e-13, "pair exact: u' off the formula by %g, momentum or P by %g", e_u, e_m);
+    }
+    /* the grid */
+    {
+        const double Ls[4][3] = {{24.18, 8.06, 8.06}, {13.86, 13.86, 13.86}, {40.0, 9.0, 61.0}, {10.08, 10.08, 10.08}};
+        hcbd_hc_params g = *p;
+        int bad = 0, t;
+        for (t = 0; t < 4; ++t)
+            for (e = 0; e < 5; ++e) {
+                const double s = (e - 2) * 0.3 * Ls[t][0];
+                int dd;
+                for (dd = 0; dd < 3; ++dd) g.L[dd] = Ls[t][dd];
+                g.h = 1.1;
+                if (hcbd_hc_sweep_grid(&g, s, nb, nc, nfc, msg, sizeof msg) != HCBD_OK) {
+                    CHECK(0, "grid: %s", msg);
+                    continue;
+                }
+                for (dd = 0; dd < 3; ++dd) {
+                    double sw = s - g.L[0] * floor(s / g.L[0] + 0.5), tl = sw / g.L[1];
+                    const double reach = dd == 0 ? 2.2 * sqrt(1.0 + tl * tl) : 2.2;
+                    const int half = (nc[dd] - 1) / 2;
+                    if (nb[dd] % nc[dd] || (nc[dd] != 1 && nc[dd] != 3 && nc[dd] != 5 && nc[dd] != 7)) bad++;
+                    if (nb[dd] > 1 && (nb[dd] / nc[dd] < 2 || half * g.L[dd] / nb[dd] < reach)) bad++;
+                    if (nfc[dd] != (int)floor(g.L[dd] / 1.1)) bad++;
+                }
+            }
+        g.L[0] = g.L[1] = g.L[2] = 13.86;
+        hcbd_hc_sweep_grid(&g, 0.0, nb, nc, nfc, msg, sizeof msg);
+        NOTE("grid of a 13.86^3 box, h = 1.1: %d x %d x %d blocks, %d x %d x %d colours", nb[0], nb[1], nb[2], nc[0],
+             nc[1], nc[2]);
+        CHECK(!bad && nb[0] == 6 && nb[1] == 6 && nb[2] == 6 && nc[0] == 3 && nc[1] == 3 && nc[2] == 3,
+              "grid: %d broken rules; 13.86^3: %d %d %d blocks, %d %d %d colours", bad, nb[0], nb[1], nb[2], nc[0],
+              nc[1], nc[2]);
+        CHECK(hcbd_hc_sweep_grid(&g, NAN, nb, nc, nfc, msg, sizeof msg) == HCBD_ERR_PARAM && strstr(msg, "s = nan"),
+              "a NaN offset refused: %s", msg);
+        g.h = -1;
+        CHECK(hcbd_hc_sweep_grid(&g, 0.0, nb, nc, nfc, msg, sizeof msg) == HCBD_ERR_PARAM && strstr(msg, "h = -1"),
+              "h = -1 refused: %s", msg);
+    }
+    /* the world against the sweep done here */
+    p->g[0] = 0.3; p->g[1] = -0.2; p->g[2] = 0.1;
+    p->pair_integrator = HCBD_PAIR_SHARDLOW;
+    CHECK(hcbd_hc_params_coef(p, &c, msg, sizeof msg) == HCBD_OK, "coef: %s", msg);
+    hcbd_hc_noise_stream_init(&ns, p->seed);
+    if (!a_step_scene(&w, &d, 29, lam, &npair)) goto out;
+    CHECK(hcbd_hc_sweep_grid(p, 0.0, nb, nc, nfc, msg, sizeof msg) == HCBD_OK, "grid: %s", msg);
+    NOTE("world: %d blobs, %d x %d x %d blocks, %d colours along x", nf, nb[0], nb[1], nb[2], nc[0]);
+    CHECK(nb[0] == 6 && nc[0] == 3, "the scene has %d blocks in %d colours along x (6 in 3 meant)", nb[0], nc[0]);
+    for (i = 0; i < nf; ++i) {
+        double s = 0, dd[3];
+        for (j = 0; j < nf; ++j)
+            if (j != i) s += hcbd_hc_fluid_weight(&c, a_ff(&w, i, j, dd));
+        n[i] = hcbd_hc_fluid_density(&c, s);
+        P[i] = hcbd_hc_fluid_pressure(&c, n[i]);
+        v[3 * i] = w.fvx[i]; v[3 * i + 1] = w.fvy[i]; v[3 * i + 2] = w.fvz[i];
+    }
+    for (i = 0; i < nf; ++i) {
+        const double r[3] = {w.fx[i] - w.fx[0], w.fy[i] - w.fy[0], w.fz[i] - w.fz[0]};
+        int cb[3], cf[3];
+        for (k = 0; k < 3; ++k) {
+            const double y = r[k] - p->L[k] * floor(r[k] / p->L[k]);
+            cb[k] = (int)(y * (nb[k] / p->L[k]));
+            cf[k] = (int)(y * (nfc[k] / p->L[k]));
+            if (cb[k] > nb[k] - 1) cb[k] = nb[k] - 1;
+            if (cf[k] > nfc[k] - 1) cf[k] = nfc[k] - 1;
+        }
+        o[i].colour = cb[0] % nc[0] + nc[0] * (cb[1] % nc[1] + nc[1] * (cb[2] % nc[2]));
+        o[i].block = (cb[2] * nb[1] + cb[1]) * nb[0] + cb[0];
+        o[i].fine = (cf[2] * nfc[1] + cf[1]) * nfc[0] + cf[0];
+        o[i].id = i;
+    }
+    qsort(o, (size_t)nf, sizeof *o, a_owner_cmp);
+    for (q = 0; q < nf; ++q) {
+        const int a = o[q].id;
+        for (j = a + 1; j < nf; ++j) {
+            double dd[3], z[3], dP[3];
+            const double r = a_ff(&w, a, j, dd);
+            if (!(r < 2.0 * p->h)) continue;
+            hcbd_hc_noise_fluid_pair(&ns, 0, a, j, z);
+            hcbd_hc_fluid_pair_exact(&c, r, 1.0 / n[a], 1.0 / n[j], 0.0, z, v + 3 * a, v + 3 * j, dP);
+        }
+    }
+    for (i = 0; i < nf; ++i) {
+        const double fa[3] = {w.fax[i], w.fay[i], w.faz[i]}, zero[3] = {0, 0, 0};
+        double Fp[3] = {0, 0, 0};
+        for (j = 0; j < nf; ++j) {
+            double dd[3];
+            const double r = a_ff(&w, i, j, dd);
+            if (j != i) hcbd_hc_fluid_pair(&c, dd, r, n[i], n[j], P[i], P[j], zero, NULL, Fp);
+        }
+        for (k = 0; k < 3; ++k) {
+            F[3 * i + k] = Fp[k] + c.m * p->g[k] + fa[k];
+            v[3 * i + k] += c.dt / c.m * F[3 * i + k];
+            if (fabs(F[3 * i + k]) > sF) sF = fabs(F[3 * i + k]);
+        }
+    }
+    if (!hc_run(&w, 1)) goto out;
+    for (i = 0; i < nf; ++i)
+        for (k = 0; k < 3; ++k) {
+            const double vk = k == 0 ? w.fvx[i] : (k == 1 ? w.fvy[i] : w.fvz[i]);
+            if (fabs(vk - v[3 * i + k]) > e_v) e_v = fabs(vk - v[3 * i + k]);
+        }
+    e_v /= c.dt / c.m * sF;
+    NOTE("world, one exact step: velocities within %.1e of dt |F|/m of the sweep done here", e_v);
+    /* the world sums the pressure in 64-bit fixed point: ~1e-9 of it */
+    CHECK(e_v < (ABS_FLOAT ? tol : 1e-8), "the world's exact step is off the sweep by %g of dt |F|/m", e_v);
+    hcbd_hc_world_destroy(&w);
+out:
+    free(v); free(n); free(P); free(F); free(o);
+}
+
 void test_hc_equations_exported(void)
 {
     hcbd_hc_world_def d = hc_scene(5, 5, 5, 6);

@@ -4,10 +4,11 @@
 # world (lammps/hc_ref.c, built here as make builds the library: -O2
 # -march=native -fopenmp) at the same parameters from the same atoms:
 # Table I in reduced units (sigma, kT, 1 us; the fluid's step 12.5 us in 8
-# sub-steps of a 100 us polymer step, preset=paper's), the paper's Euler
-# fluid pairs without fluctuations (fix hcbd has no exact sweep yet), N
-# fluid blobs and N polymers in a cube (lammps/in.hcbd_compare's lattice and
-# random start), on the ranks / threads of RANKS (default "1 2").
+# sub-steps of a 100 us polymer step, preset=paper's), without fluid
+# fluctuations, the fluid pairs of PAIRS (default "euler exact": the paper's
+# Euler pairs, hcbd's exact sweep; fix hcbd's exact sweep on processors
+# 1 * *), N fluid blobs and N polymers in a cube (lammps/in.hcbd_compare's
+# lattice and random start), on the ranks / threads of RANKS (default "1 2").
 # Interleaved rounds (ROUNDS, default 3), medians; LAMMPS's figure is its
 # "Loop time", hcbd's the wall-clock time of its steps, both over the
 # fluid steps and all blobs.  SIZES: the fluid lattice's edges (default
@@ -18,6 +19,7 @@ B=${HCBD_LAMMPS_DIR:-$root/build/lammps}
 ROUNDS=${ROUNDS:-3}
 RANKS=${RANKS:-1 2}
 SIZES=${SIZES:-20}
+PAIRS=${PAIRS:-euler exact}
 STEPS=${STEPS:-80}
 [ -x "$B/lmp" ] && [ -f "$B/plugin/hcbdplugin.so" ] || { echo "plugin_hcbd.sh: make lammps first"; exit 1; }
 MPI=${HCBD_MPIRUN:-mpirun --allow-run-as-root --oversubscribe}
@@ -40,14 +42,17 @@ for ns in $SIZES; do
         -var npoly "$N" -var steps 0 -var start "$t/start$ns.txt" -log none -screen none
     for r in $(seq 1 "$ROUNDS"); do
         echo "N = $N + $N, round $r/$ROUNDS" >&2
-        for np in $RANKS; do
-            # shellcheck disable=SC2046
-            $MPI -np "$np" "$B/lmp" -in "$root/lammps/in.hcbd_compare" -var plugin "$B/plugin/hcbdplugin.so" \
-                $(lvars) -var ns "$ns" -var npoly "$N" -var steps "$STEPS" -log none | loop_ns >> "$t/lmp$ns-$np"
-            # shellcheck disable=SC2046
-            "$t/hc_ref" "$t/start$ns.txt" /dev/null $((STEPS / 8)) nf=$N $(hvars) pair=euler threads="$np" timing=1 \
-                2>&1 >/dev/null | awk -v n=$((2 * N)) -v s="$STEPS" '/^seconds/ { printf "%.1f\n", $2 / (s * n) * 1e9 }' \
-                >> "$t/hcbd$ns-$np"
+        for pair in $PAIRS; do
+            for np in $RANKS; do
+                # shellcheck disable=SC2046
+                $MPI -np "$np" "$B/lmp" -in "$root/lammps/in.hcbd_compare" -var plugin "$B/plugin/hcbdplugin.so" \
+                    $(lvars) -var ns "$ns" -var npoly "$N" -var steps "$STEPS" -var pair "$pair" -var procs "1 * *" \
+                    -log none | loop_ns >> "$t/lmp$ns-$pair-$np"
+                # shellcheck disable=SC2046
+                "$t/hc_ref" "$t/start$ns.txt" /dev/null $((STEPS / 8)) nf=$N $(hvars) pair="$pair" threads="$np" \
+                    timing=1 2>&1 >/dev/null | awk -v n=$((2 * N)) -v s="$STEPS" '/^seconds/ { printf "%.1f\n", $2 / (s * n) * 1e9 }' \
+                    >> "$t/hcbd$ns-$pair-$np"
+            done
         done
     done
 done
@@ -57,6 +62,10 @@ for np in $RANKS; do printf ' %s rank(s) / thread(s) |' "$np"; done
 printf '\n|---|'; for _ in $RANKS; do printf -- '---:|'; done; printf '\n'
 for ns in $SIZES; do
     N=$((ns * ns * ns))
-    printf '| fix hcbd, %d + %d |' "$N" "$N"; for np in $RANKS; do printf ' %s |' "$(median < "$t/lmp$ns-$np")"; done; printf '\n'
-    printf '| hcbd world, %d + %d |' "$N" "$N"; for np in $RANKS; do printf ' %s |' "$(median < "$t/hcbd$ns-$np")"; done; printf '\n'
+    for pair in $PAIRS; do
+        printf '| fix hcbd, %d + %d, pair %s |' "$N" "$N" "$pair"
+        for np in $RANKS; do printf ' %s |' "$(median < "$t/lmp$ns-$pair-$np")"; done; printf '\n'
+        printf '| hcbd world, %d + %d, pair %s |' "$N" "$N" "$pair"
+        for np in $RANKS; do printf ' %s |' "$(median < "$t/hcbd$ns-$pair-$np")"; done; printf '\n'
+    done
 done
