@@ -15,9 +15,12 @@
 //     F^fp_i = sum_a psi_ai F_a, held over the polymer step; psi_ai =
 //     (W(r_ai) / n_i) / S_a, S_a = sum_i W(r_ai) / n_i (Shepard, the
 //     default) or 1 (coupling raw, the paper's)
-//   every sub-step: v_i += (F_i + F^fp_i + f_i) dt_f / m;  x_i += v_i dt_f
-//     (F_i the paper's Euler pair forces of x and v of t, 2018 eq. 18-19;
-//     f_i LAMMPS's force, fix addforce m g for a body force)
+//   every sub-step: pair exact (the default): v = the exact sweep of v (each
+//     pair's Morris friction and noise solved exactly in turn, in hcbd's
+//     world's order), F_i the pressure forces of x(t); pair euler: F_i the
+//     paper's Euler pair forces of x and v of t (2018 eq. 18-19); then
+//     v_i += (F_i + F^fp_i + f_i) dt_f / m;  x_i += v_i dt_f
+//     (f_i LAMMPS's force, fix addforce m g for a body force)
 //   at its last: lambda_ab = lambda_eq + (lambda_ab - lambda_eq) e^(-dt/tau)
 //     + noise (exact Ornstein-Uhlenbeck, as hcbd); x_a += u_a dt +
 //     sqrt(2 kT dt / xi) z_a
@@ -499,7 +502,7 @@ void FixHCBD::fluid_pairs(int64_t k, int sum)
   comm->reverse_comm_fix(this, 3);
 }
 
-// The exact sweep's plan for fluid step k: this rank's owners (one copy of
+// The exact sweep's plan for this fluid step: this rank's owners (one copy of
 // each atom takes part: atom->map's, the owned one where there is one) by
 // colour, block, fine cell and tag, each with its partners (higher tags
 // within 2h, from every copy's neighbours in the ghost list) by tag, from

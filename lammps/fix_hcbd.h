@@ -1,7 +1,8 @@
 // fix hcbd: the 2018 HCBD model (Ahuja et al.) on LAMMPS's engine, with the
-// equations and the noise of hcbd.h: the SPH fluid with the paper's Euler
-// pairs, the RaPiD polymer blobs with their pair variables, the two-way
-// coupling and the fluid's sub-steps; see docs/LAMMPS.md.
+// equations and the noise of hcbd.h: the SPH fluid (hcbd's exact sweep or
+// the paper's Euler pairs), the RaPiD polymer blobs with their pair
+// variables, the two-way coupling and the fluid's sub-steps; see
+// docs/LAMMPS.md.
 #ifdef FIX_CLASS
 // clang-format off
 FixStyle(hcbd,FixHCBD);

@@ -967,6 +967,19 @@ void test_hc_abs_viscosity_fluct_shardlow(void) { a_fluct_wave(HCBD_PAIR_SHARDLO
    reports), polymer densities, mu and pair forces, and the pair
    variables' step.  Checked against the formulas by the tests above, the
    world holds the API to them as well. */
+/* fluid densities and pressures from the exported equations, every pair */
+static void a_fluid_np(const hcbd_hc_world *w, const hcbd_hc_coef *c, double *n, double *P)
+{
+    int i, j;
+    for (i = 0; i < w->nf; ++i) {
+        double s = 0, dd[3];
+        for (j = 0; j < w->nf; ++j)
+            if (j != i) s += hcbd_hc_fluid_weight(c, a_ff(w, i, j, dd));
+        n[i] = hcbd_hc_fluid_density(c, s);
+        P[i] = hcbd_hc_fluid_pressure(c, n[i]);
+    }
+}
+
 static void a_equations(int noisy)
 {
     const double tol = ABS_FLOAT ? 2e-4 : 1e-9;
@@ -1004,12 +1017,8 @@ static void a_equations(int noisy)
         }
     if (!ok) return;
     /* fluid: densities, pressures, the Euler pair forces of t */
+    a_fluid_np(&w, &c, n, P);
     for (i = 0; i < nf; ++i) {
-        double s = 0, dd[3];
-        for (j = 0; j < nf; ++j)
-            if (j != i) s += hcbd_hc_fluid_weight(&c, a_ff(&w, i, j, dd));
-        n[i] = hcbd_hc_fluid_density(&c, s);
-        P[i] = hcbd_hc_fluid_pressure(&c, n[i]);
         if (fabs(w.fn[i] / n[i] - 1) > e_n) e_n = fabs(w.fn[i] / n[i] - 1);
         if (fabs(w.fP[i] - P[i]) / p->P0 > e_P) e_P = fabs(w.fP[i] - P[i]) / p->P0;
     }
@@ -1238,12 +1247,8 @@ void test_hc_exact_sweep_exported(void)
     CHECK(hcbd_hc_sweep_grid(p, 0.0, nb, nc, nfc, msg, sizeof msg) == HCBD_OK, "grid: %s", msg);
     NOTE("world: %d blobs, %d x %d x %d blocks, %d colours along x", nf, nb[0], nb[1], nb[2], nc[0]);
     CHECK(nb[0] == 6 && nc[0] == 3, "the scene has %d blocks in %d colours along x (6 in 3 meant)", nb[0], nc[0]);
+    a_fluid_np(&w, &c, n, P);
     for (i = 0; i < nf; ++i) {
-        double s = 0, dd[3];
-        for (j = 0; j < nf; ++j)
-            if (j != i) s += hcbd_hc_fluid_weight(&c, a_ff(&w, i, j, dd));
-        n[i] = hcbd_hc_fluid_density(&c, s);
-        P[i] = hcbd_hc_fluid_pressure(&c, n[i]);
         v[3 * i] = w.fvx[i]; v[3 * i + 1] = w.fvy[i]; v[3 * i + 2] = w.fvz[i];
     }
     for (i = 0; i < nf; ++i) {
