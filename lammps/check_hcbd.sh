@@ -268,4 +268,13 @@ hcbd_stats() {
     if [[ "$E $eE $hE $heE" =~ ^[0-9.e+-]+\ [0-9.e+-]+\ [0-9.e+-]+\ [0-9.e+-]+$ ]] && within "$E" "$eE" "$hE" "$heE"; then
         ok "fix hcbd, 2 ranks: the polymer solution's viscosity at Wi = 1 is hcbd_polymer's"
     else bad "fix hcbd, 2 ranks: viscosity $E +- $eE, hcbd_polymer's $hE +- $heE"; fi
+    # and the input's own figure in mPa s (its unit conversion) is hcbd_polymer's
+    local M eM hM heM
+    read -r M eM < <(awk '/^C = .*eta = / { for (k = 1; k <= NF; ++k) if ($k == "eta") { print $(k + 2), $(k + 4); exit } }' \
+        "$t/heta.log")
+    read -r hM heM < <(awk -F, 'NR == 2 { print $13, $14 }' "$t/hq/flowcurve.csv")
+    echo "    lammps/in.hcbd_table1: $M +- $eM mPa s, hcbd_polymer's $hM +- $heM"
+    if [[ "$M $eM $hM $heM" =~ ^[0-9.e+-]+\ [0-9.e+-]+\ [0-9.e+-]+\ [0-9.e+-]+$ ]] && within "$M" "$eM" "$hM" "$heM"; then
+        ok "lammps/in.hcbd_table1: its viscosity in mPa s is hcbd_polymer's"
+    else bad "lammps/in.hcbd_table1: viscosity $M +- $eM mPa s, hcbd_polymer's $hM +- $heM"; fi
 }
