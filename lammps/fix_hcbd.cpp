@@ -84,7 +84,7 @@ static int integer(Error *error, const char *key, const char *v, int lo, int hi)
 FixHCBD::FixHCBD(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), list(nullptr), flist(nullptr), tf(1), tp(0), cap(32), nfluid(0), np_(nullptr), xw(nullptr), vc(nullptr),
     fs(nullptr), kw(nullptr), acc(nullptr), touched(nullptr), nmax(0), nacc(1), fwd(0), rev_v(0), exact(1), wscale(0), fscale(0), pwscale(0), pfscale(0),
-    limF(0), limP(0), le_s(0), le_v(0), stress(0), ss{0, 0, 0, 0, 0, 0, 0}, sv{0}, st(nullptr), width(0)
+    limF(0), limP(0), le_s(0), le_v(0), stress(0), ss{0, 0, 0, 0, 0, 0, 0}, sv{0}, st(nullptr), width(0), cand_built(-1), ncol(0), blk_width{0, 0}
 {
   p = hcbd_hc_params_default();
   p.fluctuations = 0;
@@ -296,6 +296,7 @@ void FixHCBD::init_list(int id, NeighList *ptr)
 // fluid's tags come first (hcbd's ids: fluid blobs, then polymers)
 void FixHCBD::setup(int)
 {
+  cand_built = -1; // a run's setup builds the lists again
   if (domain->triclinic && (domain->xz != 0.0 || domain->yz != 0.0))
     error->all(FLERR, "fix hcbd: a triclinic box may tilt in xy only (Lees-Edwards), not xz = {}, yz = {}",
                domain->xz, domain->yz);
@@ -576,35 +577,49 @@ void FixHCBD::sweep_plan()
   col_start.assign(ncol + 1, 0);
   for (const Owner &w : owners) col_start[w.colour + 1]++;
   for (int q = 0; q < ncol; ++q) col_start[q + 1] += col_start[q];
+  // every taking-part copy's candidates (higher fluid tags in the lists,
+  // by tag), kept until the lists are built again
+  if (neighbor->ago == 0 || cand_built < 0) {
+    cand_start.assign(nall + 1, 0);
+    cand_j.clear();
+    std::vector<std::pair<tagint, int>> c;
+    for (int i = 0; i < nall; ++i) {
+      cand_start[i] = (int) cand_j.size();
+      if (type[i] != tf || atom->map(tag[i]) != i) continue;
+      c.clear();
+      // an owned atom's list is whole; a ghost copy near the edge of the
+      // ghosts has an incomplete one, but the atom has a copy whose list
+      // is whole: take every copy's neighbours
+      for (int ic = i; ic >= 0; ic = i < nlocal ? -1 : atom->sametag[ic]) {
+        const int *jlist = flist->firstneigh[ic];
+        for (int jj = 0; jj < flist->numneigh[ic]; ++jj) {
+          const int j0 = jlist[jj] & NEIGHMASK;
+          if (type[j0] == tf && tag[j0] > tag[i]) c.emplace_back(tag[j0], atom->map(tag[j0]));
+        }
+      }
+      std::sort(c.begin(), c.end());
+      for (size_t u = 0; u < c.size(); ++u)
+        if (!u || c[u].first != c[u - 1].first) cand_j.push_back(c[u].second); // found from two copies
+    }
+    cand_start[nall] = (int) cand_j.size();
+    cand_built = update->ntimestep;
+  }
   part_start.assign(owners.size() + 1, 0);
   parts.clear();
   for (size_t q = 0; q < owners.size(); ++q) {
     const int i = owners[q].i;
-    cand.clear();
-    // an owned atom's list is whole; a ghost copy near the edge of the
-    // ghosts has an incomplete one, but the atom has a copy whose list is
-    // whole: take every copy's neighbours
-    for (int ic = i; ic >= 0; ic = i < nlocal ? -1 : atom->sametag[ic]) {
-      const int *jlist = flist->firstneigh[ic];
-      for (int jj = 0; jj < flist->numneigh[ic]; ++jj) {
-        const int j0 = jlist[jj] & NEIGHMASK;
-        if (type[j0] != tf || tag[j0] <= tag[i]) continue;
-        const int j = atom->map(tag[j0]);
-        Part pt;
-        double d[3];
-        pt.k = delta(i, j, d);
-        const double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-        if (!(r2 < cut2)) continue;
-        pt.tag = tag[j];
-        pt.j = j;
-        pt.r = std::sqrt(r2);
-        pt.y = d[1];
-        cand.push_back(pt);
-      }
+    for (int u = cand_start[i]; u < cand_start[i + 1]; ++u) {
+      const int j = cand_j[u];
+      Part pt;
+      double d[3];
+      pt.k = delta(i, j, d);
+      const double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+      if (!(r2 < cut2)) continue;
+      pt.j = j;
+      pt.r = std::sqrt(r2);
+      pt.y = d[1];
+      parts.push_back(pt);
     }
-    std::sort(cand.begin(), cand.end(), [](const Part &a, const Part &b) { return a.tag < b.tag; });
-    for (size_t u = 0; u < cand.size(); ++u)
-      if (!u || cand[u].tag != cand[u - 1].tag) parts.push_back(cand[u]); // found from two copies
     part_start[q + 1] = (int) parts.size();
   }
 }

@@ -117,14 +117,17 @@ class FixHCBD : public Fix {
     tagint tag;
     int i;
   };
-  struct Part {            // a partner: tag, copy, image (k boxes up), r, y_ij
-    tagint tag;
+  struct Part {            // a partner: copy, image (k boxes up), r, y_ij
     int j, k;
     double r, y;
   };
   std::vector<Owner> owners;
-  std::vector<Part> parts, cand;
+  std::vector<Part> parts;
   std::vector<int> col_start, part_start;
+  // each taking-part copy's candidate partners (higher fluid tags within the
+  // lists' reach, by tag) from cand_start, as of the list build at step cand_built
+  std::vector<int> cand_start, cand_j;
+  bigint cand_built;
   int ncol;                // the sweep's colours this step
   double blk_width[2];     // the widest blocks along y and z (the ghost cutoff's)
 };
