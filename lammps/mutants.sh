@@ -111,6 +111,7 @@ hc_exact_colour|fix_hcbd.cpp|w.colour = cb[0] % nc[0] + nc[0] *|w.colour = cb[0]
 hc_exact_origin|fix_hcbd.cpp|for (int d = 0; d < 3; ++d) a0[d] = xw[3 * i1 + d];|for (int d = 0; d < 3; ++d) a0[d] = 1.1 * xw[3 * i1 + d];
 hc_exact_shear_cut|fix_hcbd.cpp|r[0] = x[0] - o[0] - t * r[1];|r[0] = x[0] - o[0] - 1.1 * t * r[1];
 hc_exact_ghost_relay|fix_hcbd.cpp|touched[slist[k]] = 1;|touched[slist[k]] = 0;
+hc_exact_stale_partners|fix_hcbd.cpp|neighbor->ago == 0|neighbor->ago == -1
 hc_poly_velocity|fix_hcbd.cpp|v[i][d] = tp ? st[i][1 + d] + (d == 0 ? kw[i] * le_v : 0.0) : 0.0;|v[i][d] = tp ? 1.1 * st[i][1 + d] + (d == 0 ? kw[i] * le_v : 0.0) : 0.0;
 hc_noise_lower_tag|fix_hcbd.cpp|const int i = tag[i0] < tag[j0] ? i0 : j0|const int i = tag[i0] > tag[j0] ? i0 : j0
 hc_le_velocity|fix_hcbd.cpp|(vj[0] + kj * le_v)|(vj[0] + 1.1 * kj * le_v)
