@@ -27,19 +27,22 @@ hcbd_quick() {
     hcompare() { # name ranks fluct gdot gx [npoly substeps coupling steps every pair lattice rp]
         local name=$1 np=$2 fluct=$3 gdot=$4 gx=$5 npoly=${6:-0} sub=${7:-1} cpl=${8:-shepard} ns=${9:-20}
         local every=${10:-1} pair=${11:-euler} lat=${12:-8} rp=${13:-0} skin=0.5 L dx dv n mx mv procs="* * *"
+        # hxv, hxc: another scene's LAMMPS variables and hc_ref's parameters;
+        # hxs, hxu: its length and velocity scales (this scene's: 1)
+        local co=${hxc:-$hcoef} sx=${hxs:-1} su=${hxu:-1}
         local nfl=$((lat * lat * lat))
         [ "$every" -gt 1 ] && skin=2
         [ "$pair" = exact ] && procs="1 * *"
         if ! $MPI -np "$np" "$lmp" -in "$hin" -var plugin "$hplug" -var fluct "$fluct" -var gdot "$gdot" -var gx "$gx" \
             -var npoly "$npoly" -var substeps "$sub" -var coupling "$cpl" -var steps $((ns * sub)) \
             -var every "$every" -var skin "$skin" -var pair "$pair" -var ns "$lat" -var procs "$procs" \
-            -var rp "$rp" -var dir "$root/lammps" \
+            -var rp "$rp" -var dir "$root/lammps" ${hxv:-} \
             -var start "$t/h0.txt" -var end "$t/h1.txt" -var stressf "$t/hs.txt" -log none -screen none \
             > /dev/null 2>&1; then
             bad "fix hcbd, $name: LAMMPS failed"; return
         fi
         # shellcheck disable=SC2086
-        if ! "$t/hc_ref" "$t/h0.txt" "$t/hr.txt" "$ns" $hcoef nf="$nfl" seed=1 fluct="$fluct" gdot="$gdot" gx="$gx" \
+        if ! "$t/hc_ref" "$t/h0.txt" "$t/hr.txt" "$ns" $co nf="$nfl" seed=1 fluct="$fluct" gdot="$gdot" gx="$gx" \
             substeps="$sub" coupling="$cpl" pair="$pair" $([ "$rp" != 0 ] && echo "rp=1 gx=$rp") > "$t/hrs.txt"; then
             bad "fix hcbd, $name: hc_ref failed"; return
         fi
@@ -53,10 +56,10 @@ hcbd_quick() {
         if [ "$npoly" -gt 0 ]; then # the polymers' own largest move
             awk -v nf="$nfl" '$1 > nf' "$t/h0.txt" > "$t/hp0.txt"; awk -v nf="$nfl" '$1 > nf' "$t/h1c.txt" > "$t/hp1.txt"
             read -r mp _ < <(awk -v L="$L" -f "$root/lammps/maxdiff.awk" "$t/hp0.txt" "$t/hp1.txt")
-        else mp=1; fi
+        else mp=$sx; fi
         echo "    fix hcbd, $name: largest |x - x_hcbd| $dx, |v - v_hcbd| $dv (moved by $mx, $mv; polymers by $mp)"
-        if awk -v dx="$dx" -v dv="$dv" -v mx="$mx" -v mv="$mv" -v mp="$mp" -v n="$n" -v N=$((nfl + npoly)) \
-            'BEGIN { exit !(n == N && dx < 1e-9 && dv < 1e-8 && mx > 0.3 && mv > 1 && mp > 0.3) }'; then
+        if awk -v dx="$dx" -v dv="$dv" -v mx="$mx" -v mv="$mv" -v mp="$mp" -v n="$n" -v N=$((nfl + npoly)) -v sx="$sx" -v su="$su" \
+            'BEGIN { exit !(n == N && dx < 1e-9 * sx && dv < 1e-8 * su && mx > 0.3 * sx && mv > su && mp > 0.3 * sx) }'; then
             ok "fix hcbd, $name: $ns steps = hcbd's world, atom by atom"
         else bad "fix hcbd, $name: fix hcbd and hcbd's world part: |dx| $dx, |dv| $dv"; fi
         # the stress vector (stress yes), the run's mean over its polymer
@@ -100,6 +103,54 @@ hcbd_quick() {
         4 yes 0 0.5 60 2 shepard 20 4 exact 11
     # the reverse-Poiseuille force of lammps/in.hcbd_channel (lammps/in.hcbd_rp_force) = hcbd's world's
     hcompare "60 polymers, exact sweep, reverse Poiseuille (g = 3), 2 ranks" 2 yes 0 0 60 1 shepard 20 1 exact 11 3
+    # through a restart file: 10 steps, the restart, 10 more (the pair
+    # variables, 0.4 tau_lambda away from lambda_eq by then, come from the
+    # file) = hcbd's world's 20 steps from the same atoms, atom by atom
+    hrestart() { # name ranks gdot pair lattice
+        local name=$1 np=$2 gdot=$3 pair=$4 lat=$5 procs="* * *" L dx dv n mx mv
+        local nfl=$((lat * lat * lat)) a="-var plugin $hplug -var npoly 60 -var gdot $gdot -var pair $pair -var ns $lat"
+        [ "$pair" = exact ] && procs="1 * *"
+        # shellcheck disable=SC2086
+        if ! { $MPI -np "$np" "$lmp" -in "$hin" $a -var procs "$procs" -var steps 10 -var start "$t/hz0.txt" \
+                -var save "$t/hz.rst" -log none -screen none && $MPI -np "$np" "$lmp" -in "$hin" $a -var procs "$procs" \
+                -var from restart -var restart "$t/hz.rst" -var steps 10 -var end "$t/hz2.txt" -log none -screen none
+            } > /dev/null 2>&1; then bad "fix hcbd, $name: LAMMPS failed"; return; fi
+        # shellcheck disable=SC2086
+        "$t/hc_ref" "$t/hz0.txt" "$t/hzr.txt" 20 $hcoef nf="$nfl" seed=1 fluct=yes gdot="$gdot" pair="$pair" > /dev/null
+        L=$(awk 'NR == 6 { printf "%.17g", $2 - $1 }' "$t/hz0.txt")
+        awk -v vle="$(awk -v g="$gdot" -v L="$L" 'BEGIN { printf "%.17g", g * L }')" -f "$root/lammps/le_canon.awk" \
+            "$t/hz2.txt" > "$t/hz2c.txt"
+        read -r dx dv n < <(awk -v L="$L" -f "$root/lammps/maxdiff.awk" "$t/hz2c.txt" "$t/hzr.txt")
+        read -r mx mv _ < <(awk -v L="$L" -f "$root/lammps/maxdiff.awk" "$t/hz0.txt" "$t/hz2c.txt")
+        echo "    fix hcbd, $name: largest |x - x_hcbd| $dx, |v - v_hcbd| $dv (moved by $mx, $mv)"
+        if awk -v dx="$dx" -v dv="$dv" -v mx="$mx" -v mv="$mv" -v n="$n" -v N=$((nfl + 60)) \
+            'BEGIN { exit !(n == N && dx < 1e-9 && dv < 1e-8 && mx > 0.3 && mv > 1) }'; then
+            ok "fix hcbd, $name: 10 + 10 steps through a restart file = hcbd's world's 20, atom by atom"
+        else bad "fix hcbd, $name: through a restart file: |dx| $dx, |dv| $dv ($n atoms)"; fi
+    }
+    hrestart "60 polymers, Euler pairs, sheared (gdot = 0.8), 2 ranks" 2 0.8 euler 8
+    hrestart "60 polymers, exact sweep, 6^3 blocks, 4 ranks" 4 0 exact 11
+    # Table I's own numbers (lammps/in.hcbd_table1's reduced units: sigma,
+    # kT, 1 us; xi 6e8, tau_lambda 1e6, a fluid blob's mass 3.2e9, so
+    # sqrt(kT/m) = 1.8e-5): 20 polymer steps of 8 fluid steps move the atoms
+    # by 0.05-0.2 and the fluid's velocities by 6e-5-2e-4, hence the
+    # scales hxs = 0.1, hxu = 3e-5.  The sheared cases (Wi = 10 and 3) have
+    # polymers crossing y's edge inside a polymer step
+    local t1="rho=7.54476e+08 nbar=0.238738 eta=3.0179e+07 P0=3923.28 h=2 kT=1 xi=6.03581e+08 sigma=1 rc=2.5 alpha=500"
+    t1="$t1 tau_lambda=1e6 p=300000 n_max=2387.32 chi=0.5 dt=12.5"
+    local t1v="-var ${t1// / -var }" t1c="$t1"
+    t1v=${t1v//=/ }
+    hxv="$t1v -var pairs 96" hxc=$t1c hxs=0.1 hxu=3e-5 hcompare \
+        "Table I, C = 2.5 C*, exact sweep without fluctuations, 8 sub-steps, sheared (Wi = 10), 1 rank" \
+        1 no 1e-5 0 540 8 shepard 20 1 exact 6
+    hxv="$t1v -var pairs 96" hxc=$t1c hxs=0.1 hxu=3e-5 hcompare \
+        "Table I, C = 2.5 C*, Euler pairs with fluctuations, 8 sub-steps, 2 ranks" 2 yes 0 0 540 8 shepard 20 1 euler 6
+    hxv="$t1v -var pairs 192" hxc=$t1c hxs=0.1 hxu=3e-5 hcompare \
+        "Table I, C = 5 C*, Euler pairs with fluctuations, raw coupling, 8 sub-steps, sheared (Wi = 3), 4 ranks" \
+        4 yes 3e-6 0 1080 8 raw 20 1 euler 6
+    hxv="$t1v -var pairs 96" hxc=$t1c hxs=0.1 hxu=3e-5 hcompare \
+        "Table I, C = 2.5 C*, 6048 blobs, exact sweep with fluctuations, 8 sub-steps, sheared (Wi = 10), 2 ranks" \
+        2 yes 1e-5 0 4320 8 shepard 20 1 exact 12
     # the channel input itself runs (tau_lambda scaled to 1e4, Wi = 0.1, one
     # tau_lambda of start-up and one of profile): the fluid and the polymers
     # move along +x in the upper half and along -x in the lower
@@ -158,6 +209,13 @@ hcbd_quick() {
     hpoly "phi = n / n_max >= 1" "s/^variable  *n_max index 5/variable n_max index 0.05/" ""
     hpoly "fluid blobs need the tags 1..512" "s/^create_atoms    1 box/create_atoms 2 single 1 1 1\n&/; s/random \${npoly}/random \$(v_npoly-1)/" ""
     hpoly "3 atom types" "s/^create_box .*/create_box 3 box/; s/^mass  *1 .*/mass * \$(v_rho\/v_nbar)/" ""
+    # pairs auto (the default): twice the polymers' mean number within rc, and 16
+    local want
+    want=$(awk 'BEGIN { m = 60 / 1024 * 4 / 3 * atan2(0, -1) * 8; c = int(2 * m); if (c < 2 * m) ++c; print c + 16 }')
+    out=$("$lmp" -in "$hin" -var plugin "$hplug" -var npoly 60 -var pairs auto -var warm 2 -var steps 2 -log none 2>&1)
+    if printf '%s' "$out" | grep -q "pairs auto = $want " && ! printf '%s' "$out" | grep -q ERROR; then
+        ok "fix hcbd: pairs auto holds $want pair variables for 60 polymers in 1024 sigma^3 (rc = 2)"
+    else bad "fix hcbd: pairs auto: $(printf '%s' "$out" | grep 'pairs auto\|ERROR' | head -n 1), not $want"; fi
     # 100 + 100 steps through a restart file (with the pair variables)
     # equal 200 steps within round-off (reading a restart wraps the atoms
     # into the box at another step than the run does)
@@ -244,6 +302,24 @@ hcbd_stats() {
     if [[ "$T $eT" =~ ^[0-9.e-]+\ [0-9.e-]+$ ]] && within "$T" "$eT" 1.7 0; then
         ok "fix hcbd, pair exact: the fluid's temperature is kT within four errors"
     else bad "fix hcbd, pair exact: temperature $T +- $eT is not kT = 1.7"; fi
+    # the polymers' temperature: on 2 ranks, each polymer step's displacement
+    # less its drift u dt (LAMMPS's velocity of a polymer) has per component
+    # the variance 2 kT dt / xi (400 steps of 60 polymers, independent
+    # noise, so the error of the mean from the samples' own spread)
+    local R eR
+    if ! $MPI -np 2 "$lmp" -in "$hin" -var plugin "$hplug" -var npoly 60 -var seed 31 -var steps 400 -var tevery 1 \
+        -var traj "$t/htraj" -log "$t/htraj.log" -screen none > /dev/null 2>&1; then
+        bad "fix hcbd, 2 ranks: polymer trajectory run failed: $(grep ERROR "$t/htraj.log" | head -n 1)"; return
+    fi
+    read -r R eR < <(awk -v dt=0.02 -v s2="$(awk 'BEGIN { print 2 * 1.7 * 0.02 / 30 }')" '
+        /^ITEM: ATOMS/ { f = 1; next } /^ITEM/ { f = 0; next }
+        f && $2 == 2 { if (seen[$1]) for (e = 0; e < 3; ++e) { d = $(3 + e) - x[$1, e] - $(6 + e) * dt; r = d * d / s2; S += r; Q += r * r; ++N }
+            seen[$1] = 1; for (e = 0; e < 3; ++e) x[$1, e] = $(3 + e) }
+        END { m = S / N; printf "%.6g %.3g\n", m, sqrt((Q / N - m * m) / N) }' "$t/htraj")
+    echo "    fix hcbd: the polymers' displacements less u dt over 2 kT dt / xi: $R +- $eR"
+    if [[ "$R $eR" =~ ^[0-9.e-]+\ [0-9.e-]+$ ]] && within "$R" "$eR" 1 0; then
+        ok "fix hcbd, 2 ranks: the polymers' Brownian displacements have the variance 2 kT dt / xi within four errors"
+    else bad "fix hcbd, 2 ranks: the polymers' displacement variance is $R +- $eR of 2 kT dt / xi"; fi
     # the viscosity of a polymer solution at Wi = 1 on 2 ranks, from the
     # Table I input (lammps/in.hcbd_table1), equals hcbd_polymer's at the
     # same parameters within four combined errors: preset=quick's Table I

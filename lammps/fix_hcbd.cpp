@@ -82,7 +82,7 @@ static int integer(Error *error, const char *key, const char *v, int lo, int hi)
 }
 
 FixHCBD::FixHCBD(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), list(nullptr), flist(nullptr), tf(1), tp(0), cap(32), nfluid(0), np_(nullptr), xw(nullptr), vc(nullptr),
+    Fix(lmp, narg, arg), list(nullptr), flist(nullptr), tf(1), tp(0), cap(0), nfluid(0), np_(nullptr), xw(nullptr), vc(nullptr),
     fs(nullptr), kw(nullptr), acc(nullptr), touched(nullptr), nmax(0), nacc(1), fwd(0), rev_v(0), exact(1), wscale(0), fscale(0), pwscale(0), pfscale(0),
     limF(0), limP(0), le_s(0), le_v(0), stress(0), ss{0, 0, 0, 0, 0, 0, 0}, sv{0}, st(nullptr), width(0), cand_built(-1), ncol(0), blk_width{0, 0}
 {
@@ -108,7 +108,7 @@ FixHCBD::FixHCBD(LAMMPS *lmp, int narg, char **arg) :
     else if (!strcmp(key, "chi")) p.chi = number(error, key, v);
     else if (!strcmp(key, "fluid")) tf = integer(error, key, v, 1, 1000000);
     else if (!strcmp(key, "polymer")) tp = integer(error, key, v, 1, 1000000);
-    else if (!strcmp(key, "pairs")) cap = integer(error, key, v, 1, 100000);
+    else if (!strcmp(key, "pairs")) cap = strcmp(v, "auto") ? integer(error, key, v, 1, 100000) : 0;
     else if (!strcmp(key, "substeps")) p.substeps = integer(error, key, v, 1, 1000);
     else if (!strcmp(key, "coupling")) {
       if (!strcmp(v, "shepard")) p.coupling = HCBD_COUPLE_SHEPARD;
@@ -148,6 +148,14 @@ FixHCBD::FixHCBD(LAMMPS *lmp, int narg, char **arg) :
   }
   comm_forward = 6;
   comm_reverse = 4;
+  if (cap == 0) { // pairs auto: twice the mean number of partners within rc, and 16
+    bigint mine = 0, all = 0;
+    for (int i = 0; i < atom->nlocal; ++i) mine += tp && atom->type[i] == tp;
+    MPI_Allreduce(&mine, &all, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+    const double mean = (double) all / (domain->xprd * domain->yprd * domain->zprd) * 4.0 / 3.0 * std::acos(-1.0) * p.rc * p.rc * p.rc;
+    cap = (int) std::min(100000.0, std::ceil(2.0 * mean) + 16.0);
+    if (comm->me == 0) utils::logmesg(lmp, "fix hcbd: pairs auto = {} (a polymer's mean partners within rc: {:.3g})\n", cap, mean);
+  }
   width = 4 + 3 * cap;
   restart_peratom = 1;
   create_attribute = 1;
@@ -861,9 +869,6 @@ void FixHCBD::polymer_move(int64_t step)
     hcbd_hc_noise_polymer(&ns, step, (int32_t) (atom->tag[a] - 1 - nfluid), z);
     for (int e = 0; e < 3; ++e) dr[e] = st[a][1 + e] * dt + sdr * z[e];
     if (!(dr[0] * dr[0] + dr[1] * dr[1] + dr[2] * dr[2] <= lim2) && atom->tag[a] < bad) bad = atom->tag[a];
-    // u is hcbd's frame's: a polymer past y's edge (LAMMPS wraps it at the
-    // next neighbour-list build) moves in its image's, faster by the jump
-    dr[0] += kw[a] * le_v * dt;
     for (int e = 0; e < 3; ++e) x[a][e] += dr[e];
   }
   stop_at(bad, "(a polymer) moved more than rc/4 in one step (or not by a finite amount): dt is too long");
@@ -916,6 +921,10 @@ void FixHCBD::final_integrate()
   for (int i = 0; i < nlocal; ++i) {
     if (atom->type[i] != tf) { // a polymer: its drift velocity u_a of this polymer step, LAMMPS's frame
       for (int d = 0; d < 3; ++d) v[i][d] = tp ? st[i][1 + d] + (d == 0 ? kw[i] * le_v : 0.0) : 0.0;
+      // past y's edge (LAMMPS wraps it at the next neighbour-list build,
+      // perhaps inside a polymer step) it keeps its place in its image's
+      // frame, which moves by the jump every fluid step
+      x[i][0] += kw[i] * le_v * dt;
       continue;
     }
     double u2 = 0;

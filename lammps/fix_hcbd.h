@@ -72,7 +72,7 @@ class FixHCBD : public Fix {
   class NeighList *list;   // half list within max(2h, rc)
   class NeighList *flist;  // full list (with polymers): a polymer's own pairs
   int tf, tp;              // the fluid's and the polymers' atom types (tp 0: none)
-  int cap;                 // pair variables per polymer (keyword pairs)
+  int cap;                 // pair variables per polymer (keyword pairs; auto: from the polymers' density)
   tagint nfluid;           // fluid blobs: tags 1..nfluid, polymers after them
   double *np_;             // n and P (fluid) or n and mu (polymers), owned and ghost atoms
   double *xw, *vc;         // positions in [0, L) and velocities, hcbd's frame, as the owner wraps them

@@ -126,6 +126,8 @@ hc_lambda_eq_held|fix_hcbd.cpp|row[4 + 3 * e + 2], z);|1.1 * row[4 + 3 * e + 2],
 hc_lambda_noise_step|fix_hcbd.cpp|hcbd_hc_noise_lambda(&ns, step,|hcbd_hc_noise_lambda(&ns, step + 1,
 hc_interp_weight|fix_hcbd.cpp|const Near nb = {tag[i], hcbd_hc_polymer_weight(&c, r) / np_[2 * i],|const Near nb = {tag[i], 1.1 * hcbd_hc_polymer_weight(&c, r) / np_[2 * i],
 hc_interp_image|fix_hcbd.cpp|{vc[3 * i] - k * le_v,|{vc[3 * i] - 1.1 * k * le_v,
+hc_poly_image_once|fix_hcbd.cpp|x[i][0] += kw[i] * le_v * dt;|x[i][0] += (sub == nsub - 1) * kw[i] * le_v * p.dt;
+hc_pairs_auto|fix_hcbd.cpp|std::ceil(2.0 * mean) + 16.0|std::ceil(2.2 * mean) + 16.0
 hc_interp_shepard|fix_hcbd.cpp|v[e] = shep ? ref + dv[e] / S|v[e] = shep ? ref + 1.1 * dv[e] / S
 hc_mobility|fix_hcbd.cpp|st[a][1 + e] = v[e] + fs[4 * a + e] / p.xi;|st[a][1 + e] = v[e] + 1.1 * fs[4 * a + e] / p.xi;
 hc_redistribution|fix_hcbd.cpp|const double psi = hcbd_hc_polymer_weight(&c, r)|const double psi = 1.1 * hcbd_hc_polymer_weight(&c, r)
@@ -136,7 +138,7 @@ hc_poly_id|fix_hcbd.cpp|(int32_t) (atom->tag[a] - 1 - nfluid)|(int32_t) (atom->t
 hc_poly_drift|fix_hcbd.cpp|dr[e] = st[a][1 + e] * dt + sdr * z[e];|dr[e] = 1.1 * st[a][1 + e] * dt + sdr * z[e];
 hc_polymer_step|fix_hcbd.cpp|p.dt = update->dt * p.substeps;|p.dt = 1.1 * update->dt * p.substeps;
 hc_restart_pairs|fix_hcbd.cpp|std::memcpy(st[n], &extra[n][m + 1], sizeof(double) * width);|std::memset(st[n], 0, sizeof(double) * width);
-hc_polymer_frame|fix_hcbd.cpp|dr[0] += kw[a] * le_v * dt;|dr[0] += 1.1 * kw[a] * le_v * dt;
+hc_polymer_frame|fix_hcbd.cpp|x[i][0] += kw[i] * le_v * dt;|x[i][0] += 1.1 * kw[i] * le_v * dt;
 hc_stress_pressure|fix_hcbd.cpp|ss[0] += d[1] * Fp[0];|ss[0] += 1.1 * d[1] * Fp[0];
 hc_stress_viscous|fix_hcbd.cpp|ss[1] += d[1] * (Fv[0] - Fp[0]);|ss[1] += 1.1 * d[1] * (Fv[0] - Fp[0]);
 hc_stress_noise|fix_hcbd.cpp|ss[2] += d[1] * (F[0] - Fv[0]);|ss[2] += 1.1 * d[1] * (F[0] - Fv[0]);
