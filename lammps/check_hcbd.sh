@@ -160,6 +160,23 @@ hcbd_quick() {
         END { exit !(n[1] == 12 && ok[1] == 12 && n[2] == 12 && ok[2] >= 11) }' "$t/hch.f" "$t/hch.p"; then
         ok "lammps/in.hcbd_channel: fluid and polymers flow along +-g in the two halves"
     else bad "lammps/in.hcbd_channel: $(grep ERROR "$t/hch.log" | head -n 1) (profiles $t/hch.f, $t/hch.p)"; fi
+    # its force's set point: the fluid alone (C = 0) in a channel 38.7 sigma
+    # wide at gdot = 5e-6 / us flows with the amplitude gdot Ly / 8 of the
+    # Newtonian profile of its viscosity, within the kernel's smoothing of the
+    # force's sign change at the planes (+2.0-2.4 % at this width, +4.5 % at
+    # half of it: bench/results/table2_rp_fluid); 10 % off in g would read
+    # 0.93 or 1.13
+    local amp
+    if $MPI -np 2 "$lmp" -in "$root/lammps/in.hcbd_channel" -var plugin "$hplug" -var dir "$root/lammps" -var C 0 \
+        -var eta0 1 -var ny 24 -var tau 1000 -var Wi 0.005 -var startup 10 -var blocks 20 -var tevery 80 -var out "$t/hcf" \
+        -log "$t/hcf.log" -screen none > /dev/null 2>&1; then
+        amp=$(awk -v g=5e-6 -f "$root/lammps/rp_amplitude.awk" "$t/hcf.traj" | awk '$1 > 1600 { s += $2; n++ }
+            END { if (n) printf "%.4f", s / n }')
+    fi
+    echo "    lammps/in.hcbd_channel, the fluid alone: amplitude ${amp:-none} of the Newtonian profile's"
+    if awk -v a="${amp:-0}" 'BEGIN { exit !(a > 1 && a < 1.05) }'; then
+        ok "lammps/in.hcbd_channel: the fluid alone flows with its Newtonian amplitude within the kernel's smoothing ($amp)"
+    else bad "lammps/in.hcbd_channel: the fluid alone: amplitude ${amp:-none} of gdot Ly / 8 ($(grep ERROR "$t/hcf.log" | head -n 1))"; fi
     # bad arguments and settings: LAMMPS stops with an error naming them
     hexpect() {
         name=$1 edit=$2
