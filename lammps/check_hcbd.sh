@@ -165,7 +165,8 @@ hcbd_quick() {
     # Newtonian profile of its viscosity, within the kernel's smoothing of the
     # force's sign change at the planes (+2.0-2.4 % at this width, +4.5 % at
     # half of it: bench/results/table2_rp_fluid); 10 % off in g would read
-    # 0.93 or 1.13
+    # 0.93 or 1.13.  (create_atoms numbers the lattice by rank, so 1 and 2
+    # ranks run other tags, another sweep order: 1.0244 and 1.0257)
     local amp
     if $MPI -np 2 "$lmp" -in "$root/lammps/in.hcbd_channel" -var plugin "$hplug" -var dir "$root/lammps" -var C 0 \
         -var eta0 1 -var ny 24 -var tau 1000 -var Wi 0.005 -var startup 10 -var blocks 20 -var tevery 80 -var out "$t/hcf" \
@@ -247,6 +248,12 @@ hcbd_quick() {
     if [ "$n" = 572 ] && awk -v a="$dx" -v b="$dv" 'BEGIN { exit !(a < 1e-6 && b < 1e-6) }'; then
         ok "fix hcbd, 60 polymers: 100 + 100 steps through a restart file = 200 steps within $dx, $dv"
     else bad "fix hcbd: a restart does not continue the run: largest differences $dx, $dv ($n atoms)"; fi
+    # a restart file read with another pairs: refused, naming the file's
+    out=$("$lmp" -in "$hin" -var plugin "$hplug" -var npoly 60 -var from restart -var restart "$t/hq0" -var pairs 20 \
+        -var steps 2 -log none 2>&1)
+    if printf '%s' "$out" | grep -q "ERROR.*written with pairs = 32, this fix has pairs = 20"; then
+        ok "fix hcbd: a restart file of pairs 32 read with pairs 20 -> error names both"
+    else bad "fix hcbd: restart with another pairs: $(printf '%s' "$out" | grep ERROR | head -n 1)"; fi
 }
 
 # from one restart file (with polymers, after 100 steps: the pair variables

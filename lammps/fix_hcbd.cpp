@@ -148,9 +148,10 @@ FixHCBD::FixHCBD(LAMMPS *lmp, int narg, char **arg) :
   }
   comm_forward = 6;
   comm_reverse = 4;
-  if (cap == 0) { // pairs auto: twice the mean number of partners within rc, and 16
+  if (cap == 0 && !tp) cap = 1; // pairs auto without polymers: the rows' least width
+  if (cap == 0) {               // pairs auto: twice the mean number of partners within rc, and 16
     bigint mine = 0, all = 0;
-    for (int i = 0; i < atom->nlocal; ++i) mine += tp && atom->type[i] == tp;
+    for (int i = 0; i < atom->nlocal; ++i) mine += atom->type[i] == tp;
     MPI_Allreduce(&mine, &all, 1, MPI_LMP_BIGINT, MPI_SUM, world);
     const double mean = (double) all / (domain->xprd * domain->yprd * domain->zprd) * 4.0 / 3.0 * std::acos(-1.0) * p.rc * p.rc * p.rc;
     cap = (int) std::min(100000.0, std::ceil(2.0 * mean) + 16.0);
@@ -1057,8 +1058,8 @@ void FixHCBD::unpack_restart(int n, int nth)
   int m = 0;
   for (int k = 0; k < nth; ++k) m += (int) extra[n][m];
   if ((int) extra[n][m] != width + 1)
-    error->one(FLERR, "fix hcbd: the restart file holds {} values per atom, this fix {} (pairs = {})",
-               (int) extra[n][m] - 1, width, cap);
+    error->one(FLERR, "fix hcbd: the restart file was written with pairs = {}, this fix has pairs = {}: give pairs {}",
+               ((int) extra[n][m] - 5) / 3, cap, ((int) extra[n][m] - 5) / 3);
   std::memcpy(st[n], &extra[n][m + 1], sizeof(double) * width);
 }
 
