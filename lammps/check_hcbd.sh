@@ -24,6 +24,16 @@ hcbd_quick() {
     # fixed-point sums resolve 3e-11 of a pair force); the atoms move by
     # 0.6-5 and the fluid's velocities change by 1.7-10, sqrt(kT/m) = 1.14,
     # so an error of 1e-3 in any term would show by orders of magnitude
+    # hmatch START END REF GDOT: LAMMPS's END in hcbd's frame (END.c) against
+    # hc_ref's REF and START; sets the caller's L, dx dv n (END - REF) and
+    # mx mv (END - START)
+    hmatch() {
+        L=$(awk 'NR == 6 { printf "%.17g", $2 - $1 }' "$1")
+        awk -v vle="$(awk -v g="$4" -v L="$L" 'BEGIN { printf "%.17g", g * L }')" -f "$root/lammps/le_canon.awk" \
+            "$2" > "$2.c"
+        read -r dx dv n < <(awk -v L="$L" -f "$root/lammps/maxdiff.awk" "$2.c" "$3")
+        read -r mx mv _ < <(awk -v L="$L" -f "$root/lammps/maxdiff.awk" "$1" "$2.c")
+    }
     hcompare() { # name ranks fluct gdot gx [npoly substeps coupling steps every pair lattice rp]
         local name=$1 np=$2 fluct=$3 gdot=$4 gx=$5 npoly=${6:-0} sub=${7:-1} cpl=${8:-shepard} ns=${9:-20}
         local every=${10:-1} pair=${11:-euler} lat=${12:-8} rp=${13:-0} skin=0.5 L dx dv n mx mv procs="* * *"
@@ -46,15 +56,11 @@ hcbd_quick() {
             substeps="$sub" coupling="$cpl" pair="$pair" $([ "$rp" != 0 ] && echo "rp=1 gx=$rp") > "$t/hrs.txt"; then
             bad "fix hcbd, $name: hc_ref failed"; return
         fi
-        L=$(awk 'NR == 6 { printf "%.17g", $2 - $1 }' "$t/h0.txt")
         # sheared: LAMMPS's atoms in hcbd's frame (a polymer's velocity is its
         # drift velocity of the last polymer step, in hc_ref too)
-        awk -v vle="$(awk -v g="$gdot" -v L="$L" 'BEGIN { printf "%.17g", g * L }')" -f "$root/lammps/le_canon.awk" \
-            "$t/h1.txt" > "$t/h1c.txt"
-        read -r dx dv n < <(awk -v L="$L" -f "$root/lammps/maxdiff.awk" "$t/h1c.txt" "$t/hr.txt")
-        read -r mx mv _ < <(awk -v L="$L" -f "$root/lammps/maxdiff.awk" "$t/h0.txt" "$t/h1c.txt")
+        hmatch "$t/h0.txt" "$t/h1.txt" "$t/hr.txt" "$gdot"
         if [ "$npoly" -gt 0 ]; then # the polymers' own largest move
-            awk -v nf="$nfl" '$1 > nf' "$t/h0.txt" > "$t/hp0.txt"; awk -v nf="$nfl" '$1 > nf' "$t/h1c.txt" > "$t/hp1.txt"
+            awk -v nf="$nfl" '$1 > nf' "$t/h0.txt" > "$t/hp0.txt"; awk -v nf="$nfl" '$1 > nf' "$t/h1.txt.c" > "$t/hp1.txt"
             read -r mp _ < <(awk -v L="$L" -f "$root/lammps/maxdiff.awk" "$t/hp0.txt" "$t/hp1.txt")
         else mp=$sx; fi
         echo "    fix hcbd, $name: largest |x - x_hcbd| $dx, |v - v_hcbd| $dv (moved by $mx, $mv; polymers by $mp)"
@@ -117,11 +123,7 @@ hcbd_quick() {
             } > /dev/null 2>&1; then bad "fix hcbd, $name: LAMMPS failed"; return; fi
         # shellcheck disable=SC2086
         "$t/hc_ref" "$t/hz0.txt" "$t/hzr.txt" 20 $hcoef nf="$nfl" seed=1 fluct=yes gdot="$gdot" pair="$pair" > /dev/null
-        L=$(awk 'NR == 6 { printf "%.17g", $2 - $1 }' "$t/hz0.txt")
-        awk -v vle="$(awk -v g="$gdot" -v L="$L" 'BEGIN { printf "%.17g", g * L }')" -f "$root/lammps/le_canon.awk" \
-            "$t/hz2.txt" > "$t/hz2c.txt"
-        read -r dx dv n < <(awk -v L="$L" -f "$root/lammps/maxdiff.awk" "$t/hz2c.txt" "$t/hzr.txt")
-        read -r mx mv _ < <(awk -v L="$L" -f "$root/lammps/maxdiff.awk" "$t/hz0.txt" "$t/hz2c.txt")
+        hmatch "$t/hz0.txt" "$t/hz2.txt" "$t/hzr.txt" "$gdot"
         echo "    fix hcbd, $name: largest |x - x_hcbd| $dx, |v - v_hcbd| $dv (moved by $mx, $mv)"
         if awk -v dx="$dx" -v dv="$dv" -v mx="$mx" -v mv="$mv" -v n="$n" -v N=$((nfl + 60)) \
             'BEGIN { exit !(n == N && dx < 1e-9 && dv < 1e-8 && mx > 0.3 && mv > 1) }'; then
