@@ -161,9 +161,9 @@ test-gibd: $(B)/run_tests_gibd | $(B)/logs
 test-hcbd: $(B)/run_tests_hcbd | $(B)/logs
 	./$(B)/run_tests_hcbd test_hc_ test_golden $(call LOG,hcbd)
 
-# Every example's argument handling, first_step against its theory, and
-# the exercise checker on exercises 1 and 2.
-test-examples: $(EXAMPLES) $(HC_EXAMPLES) | $(B)/logs
+# Every example's argument handling, first_step against its theory, the
+# exercise checker on exercises 1 and 2, and carreau_refit's pooled fit.
+test-examples: $(EXAMPLES) $(HC_EXAMPLES) $(B)/carreau_refit | $(B)/logs
 	tests/examples.sh $(B) $(call LOG,examples)
 
 # make exercise N=k [ANSWER=x]: runs exercise k of docs/exercises.md and

@@ -11,7 +11,17 @@
    the outputs of an older build are scored as the present one would, and
    each rate's viscosity over Table II's curve is printed.
 
-   usage: carreau_refit FLOWCURVE.csv [RUN_DIR] */
+   With --pool and several run folders (seeds of one preset), each rate's
+   viscosity is the mean over the folders and its error the larger of the
+   scatter's (standard deviation / sqrt(runs)) and the stated errors'
+   (root sum of squares / runs): at the slow rates a window is worth a few
+   independent samples, its blocking error is a lower bound, and the seeds'
+   scatter is the honest one (issue 41).  One fit of the pooled points,
+   rather than the mean of per-seed fits, keeps a fit that hangs on its two
+   slowest points from amplifying their scatter.
+
+   usage: carreau_refit FLOWCURVE.csv [RUN_DIR]
+          carreau_refit --pool RUN_DIR RUN_DIR... */
 #include "../hcbd.h"
 #include <math.h>
 #include <stdio.h>
@@ -64,19 +74,20 @@ static double window_error(const char *dir, double conc, double wi)
     }
 }
 
-int main(int argc, char **argv)
+/* reads FLOWCURVE (raising each error to its window's blocking error when
+   dir is given) into C, g, wi, e, s from index n up to cap; returns the new
+   count */
+static int read_curve(const char *path, const char *dir, double *C, double *g, double *wi, double *e, double *s,
+                      int n, int cap)
 {
-    static const double table2[2][4] = {{2.5, 2.526, 3.0504, 0.3441}, {5, 6.6688, 2.1408, 0.0008}};
-    double C[MAXP], g[MAXP], wi[MAXP], e[MAXP], s[MAXP];
-    int n = 0, k, c;
     char line[4096];
-    FILE *f;
-    if (argc < 2 || argc > 3 || !(f = fopen(argv[1], "r"))) {
-        fprintf(stderr, "usage: carreau_refit FLOWCURVE.csv [RUN_DIR] (hcbd_polymer's)\n");
-        return 2;
+    FILE *f = fopen(path, "r");
+    if (!f || !fgets(line, sizeof line, f)) { /* header */
+        fprintf(stderr, "carreau_refit: cannot read %s\n", path);
+        if (f) fclose(f);
+        return -1;
     }
-    if (!fgets(line, sizeof line, f)) return 2; /* header */
-    while (n < MAXP && fgets(line, sizeof line, f)) {
+    while (n < cap && fgets(line, sizeof line, f)) {
         double v[32];
         int m = 0;
         char *tok = strtok(line, ",");
@@ -84,10 +95,58 @@ int main(int argc, char **argv)
         if (m < 14) continue;
         /* C, gdot_per_s, gdot, Wi, 4 x (eta, err) reduced, then mPa s */
         C[n] = v[0]; g[n] = v[1]; wi[n] = v[3]; e[n] = v[12]; s[n] = v[13] > 0 ? v[13] : 1e-9;
-        if (argc == 3) s[n] = fmax(s[n], window_error(argv[2], C[n], wi[n]));
+        if (dir) s[n] = fmax(s[n], window_error(dir, C[n], wi[n]));
         ++n;
     }
     fclose(f);
+    return n;
+}
+
+int main(int argc, char **argv)
+{
+    static const double table2[2][4] = {{2.5, 2.526, 3.0504, 0.3441}, {5, 6.6688, 2.1408, 0.0008}};
+    double C[MAXP], g[MAXP], wi[MAXP], e[MAXP], s[MAXP];
+    int n = 0, k, c;
+    const int pool = argc >= 3 && !strcmp(argv[1], "--pool");
+    if (pool) {
+        /* every folder's curve, then the mean of each (C, rate) over them */
+        static double PC[MAXP * 8], Pg[MAXP * 8], Pw[MAXP * 8], Pe[MAXP * 8], Ps[MAXP * 8];
+        char path[1024];
+        int np = 0, r, d;
+        if (argc - 2 > 8) {
+            fprintf(stderr, "carreau_refit: at most 8 folders to pool (%d given)\n", argc - 2);
+            return 2;
+        }
+        for (d = 2; d < argc; ++d) {
+            const int before = np;
+            snprintf(path, sizeof path, "%s/flowcurve.csv", argv[d]);
+            if ((np = read_curve(path, argv[d], PC, Pg, Pw, Pe, Ps, np, MAXP * 8)) < 0) return 2;
+            printf("%s: %d rates\n", argv[d], np - before);
+        }
+        for (k = 0; k < np; ++k) {
+            double sum = 0, sum2 = 0, var = 0;
+            int runs = 0, seen = 0;
+            for (r = 0; r < k && !seen; ++r) seen = PC[r] == PC[k] && Pg[r] == Pg[k];
+            if (seen || n == MAXP) continue;
+            for (r = k; r < np; ++r)
+                if (PC[r] == PC[k] && Pg[r] == Pg[k]) { sum += Pe[r]; sum2 += Ps[r] * Ps[r]; ++runs; }
+            C[n] = PC[k]; g[n] = Pg[k]; wi[n] = Pw[k]; e[n] = sum / runs;
+            for (r = k; r < np; ++r)
+                if (PC[r] == PC[k] && Pg[r] == Pg[k]) var += (Pe[r] - e[n]) * (Pe[r] - e[n]);
+            var = runs > 1 ? var / (runs - 1) : 0;
+            s[n] = fmax(sqrt(var / runs), sqrt(sum2) / runs);
+            printf("C = %g, Wi = %g: %d runs, mean %.4f mPa s, scatter's error %.4f, stated %.4f\n", C[n], wi[n],
+                   runs, e[n], sqrt(var / runs), sqrt(sum2) / runs);
+            ++n;
+        }
+    } else {
+        if (argc < 2 || argc > 3) {
+            fprintf(stderr, "usage: carreau_refit FLOWCURVE.csv [RUN_DIR] | --pool RUN_DIR RUN_DIR... "
+                            "(hcbd_polymer's)\n");
+            return 2;
+        }
+        if ((n = read_curve(argv[1], argc == 3 ? argv[2] : NULL, C, g, wi, e, s, 0, MAXP)) < 0) return 2;
+    }
     for (c = 0; c < 2; ++c) {
         double gg[MAXP], ee[MAXP], ss[MAXP], chi = 0;
         int m = 0;

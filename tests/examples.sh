@@ -69,9 +69,11 @@ t=$(mktemp -d)
 up=$(sed -n 's/^startup_tau_lambda_gdot2000=//p' "$t/log")
 nw=$(awk -F, '$1 == 0.4 && $5 == 1' "$t/o/startup_C2.5.csv" | wc -l)
 ne=$(awk -F, 'NR > 1 && $(NF - 1) > 0' "$t/o/flowcurve.csv" | wc -l)
-if awk -v u="$up" 'BEGIN {exit !(u >= 2.5)}' && [ "$nw" -eq 12 ] && [ "$ne" -eq 2 ]
+# gnuplot divides integers: a Carreau exponent (n - 1) / 2 with n at its bound, printed 0, would read 0
+ie=$(grep -c -- ' - 1) / 2)' "$t/o/plots.gp")
+if awk -v u="$up" 'BEGIN {exit !(u >= 2.5)}' && [ "$nw" -eq 12 ] && [ "$ne" -eq 2 ] && [ "$ie" -eq 0 ]
 then ok "hcbd_polymer plateau=1: start-up $up tau_lambda >= strain 1 / Wi 0.4, 12 measured half blocks, n_eff per rate"
-else bad "hcbd_polymer plateau=1: start-up '$up' (>= 2.5), measured half blocks $nw (12), rates with n_eff $ne (2)"; fi
+else bad "hcbd_polymer plateau=1: start-up '$up' (>= 2.5), measured half blocks $nw (12), rates with n_eff $ne (2), integer exponents in plots.gp $ie (0)"; fi
 rm -rf "$t"
 for key in rho eta nbar P0 T dt sigma h amp; do expect $key "$B/hcbd_sound" $key=0; done
 expect relax_steps "$B/hcbd_sound" relax_steps=-1
@@ -176,6 +178,28 @@ o=$(examples/exercise.sh /nonexistent 1 2>&1); rc=$?
 if [ $rc -eq 3 ] && printf '%s' "$o" | grep -q "the example failed" && printf '%s' "$o" | grep -q "not built"
 then ok "exercise with no build: exit 3, says the example failed and how to build it"
 else bad "exercise with no build: rc $rc: $(printf '%s' "$o" | head -n 2)"; fi
+
+# carreau_refit --pool: three runs at 0.99, 1 and 1.01 of Table II's C2
+# curve (computed here) pool to the curve itself, each rate's error the
+# scatter's 0.01 / sqrt(3) of it, and the fit gives back Table II's eta0
+t=$(mktemp -d)
+for f in 0.99 1 1.01; do
+    mkdir -p "$t/$f"
+    awk -v f=$f 'BEGIN { print "C,gdot_per_s,gdot,Wi,a,b,c,d,e,f,g,h,eta_total_mPas,eta_total_err_mPas";
+        split("0.1 0.3 1 3 10 30", w, " ");
+        for (k = 1; k <= 6; ++k) { x = 2.1408 * w[k];
+            eta = 0.9 + (6.6688 - 0.9) * (1 + x * x) ^ ((0.0008 - 1) / 2);
+            printf "5,%g,0,%g,0,0,0,0,0,0,0,0,%.9g,%.9g\n", w[k], w[k], f * eta, 1e-5 * eta } }' > "$t/$f/flowcurve.csv"
+done
+"$B/carreau_refit" --pool "$t/0.99" "$t/1" "$t/1.01" > "$t/log" 2>&1
+if awk '/^C = 5, Wi = 1:/ { m = $10; e = $15 }
+        /over Table II/ { split($0, a, ":"); n = split(a[2], r, " "); for (k = 1; k <= n; k += 3) if (r[k] < 0.9999 || r[k] > 1.0001) bad = 1 }
+        /fit, eta_inf = 0.9/ { eta0 = $8 }
+        END { x = 2.1408; c = 0.9 + 5.7688 * (1 + x * x) ^ (-0.4996);
+              exit !(!bad && eta0 > 6.662 && eta0 < 6.676 && e > 0.0099 * c / sqrt(3) && e < 0.0101 * c / sqrt(3) && m > 0.9999 * c && m < 1.0001 * c) }' "$t/log"
+then ok "carreau_refit --pool: three runs at 0.99, 1, 1.01 of Table II's curve pool to it, scatter's error, eta0 back"
+else bad "carreau_refit --pool: $(grep -E 'Wi = 1:|over Table|eta_inf = 0.9' "$t/log" | tr '\n' ' ')"; fi
+rm -rf "$t"
 
 echo "$pass passed, $fail failed"
 [ $fail -eq 0 ]

@@ -25,15 +25,15 @@ set xtics (0.1, 0.3, 1, 3, 10, 30)
 set x2tics (0.1, 0.3, 1, 3, 10, 30)
 set title "C = 5 C*\n{/*0.8 Carreau fit: η_0 = 6.59 ± 0.037 mPa s, λ = 2.4 ± 0.051 s, n = 0 ± 0.0053}" font ',12'
 plot 'flowcurve.csv' u ($1==5&&$13>0?$2:1/0):13:14 w yerrorbars pt 7 ps 1.3 lc 1 t 'total', 'flowcurve.csv' u ($1==5&&$15>0?$2:1/0):15:16 w yerrorbars pt 5 ps 1.3 lc 2 t 'fluid', 'flowcurve.csv' u ($1==5&&$17>0?$2:1/0):17:18 w yerrorbars pt 9 ps 1.3 lc 3 t 'polymer', 'flowcurve.csv' u ($1==5&&$19>0?$2:1/0):19:20 w yerrorbars pt 11 ps 1.3 lc 4 t 'interaction', \
-     0.90000000000000013 + (6.5856078114663221 - 0.90000000000000013) * (1 + (2.4010635008786707 * x)**2)**((0 - 1) / 2) w l lw 2 lc 1 t 'Carreau fit of the total', \
-     0.8999999999999998 + (6.6687999999999983 - 0.8999999999999998) * (1 + (2.1408 * x)**2)**((0.00080000000000000004 - 1) / 2) w l dt 4 lw 2 lc 'gray30' t '2018 Table II Carreau, λ scaled to this τ_λ', \
+     0.90000000000000013 + (6.5856078114663221 - 0.90000000000000013) * (1 + (2.4010635008786707 * x)**2)**((0 - 1.0) / 2) w l lw 2 lc 1 t 'Carreau fit of the total', \
+     0.8999999999999998 + (6.6687999999999983 - 0.8999999999999998) * (1 + (2.1408 * x)**2)**((0.00080000000000000004 - 1.0) / 2) w l dt 4 lw 2 lc 'gray30' t '2018 Table II Carreau, λ scaled to this τ_λ', \
      0.90000000000000013 w l dt 2 lc 1 t 'η_∞ = 0.9 mPa s (held fixed)', 0.99999999999999978 w l dt 3 lc 2 t 'solvent η = 1 mPa s'
 unset logscale y
 set format y '%.2f'
 set ylabel 'run / Table II Carreau'
 set yrange [0.85:1.15]
 set key top right
-t2c0(x) = 0.8999999999999998 + (6.6687999999999983 - 0.8999999999999998) * (1 + (2.1408 * x)**2)**((0.00080000000000000004 - 1) / 2)
+t2c0(x) = 0.8999999999999998 + (6.6687999999999983 - 0.8999999999999998) * (1 + (2.1408 * x)**2)**((0.00080000000000000004 - 1.0) / 2)
 set title "C = 5 C*: total viscosity over 2018 Table II's Carreau curve" font ',12'
 plot 'flowcurve.csv' u ($1==5&&$13>0?$2:1/0):($13/t2c0($2)):($14/t2c0($2)) w yerrorbars pt 7 ps 1.3 lc 1 t 'this run (error from the correlation time)', 1 w l lc 'gray30' notitle, 1.03 w l dt 2 lc 'gray50' t '± 3 %', 0.97 w l dt 2 lc 'gray50' notitle
 unset multiplot
