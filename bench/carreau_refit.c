@@ -107,7 +107,11 @@ int main(int argc, char **argv)
     static const double table2[2][4] = {{2.5, 2.526, 3.0504, 0.3441}, {5, 6.6688, 2.1408, 0.0008}};
     double C[MAXP], g[MAXP], wi[MAXP], e[MAXP], s[MAXP];
     int n = 0, k, c;
-    const int pool = argc >= 3 && !strcmp(argv[1], "--pool");
+    const int pool = argc >= 2 && !strcmp(argv[1], "--pool");
+    if (pool && argc < 3) {
+        fprintf(stderr, "usage: carreau_refit --pool RUN_DIR RUN_DIR... (hcbd_polymer's output folders)\n");
+        return 2;
+    }
     if (pool) {
         /* every folder's curve, then the mean of each (C, rate) over them */
         static double PC[MAXP * 8], Pg[MAXP * 8], Pw[MAXP * 8], Pe[MAXP * 8], Ps[MAXP * 8];
@@ -127,7 +131,12 @@ int main(int argc, char **argv)
             double sum = 0, sum2 = 0, var = 0;
             int runs = 0, seen = 0;
             for (r = 0; r < k && !seen; ++r) seen = PC[r] == PC[k] && Pg[r] == Pg[k];
-            if (seen || n == MAXP) continue;
+            if (seen) continue;
+            if (n == MAXP) {
+                fprintf(stderr, "carreau_refit: more than %d rates to pool: C = %g, %g 1/s left out\n", MAXP,
+                        PC[k], Pg[k]);
+                continue;
+            }
             for (r = k; r < np; ++r)
                 if (PC[r] == PC[k] && Pg[r] == Pg[k]) { sum += Pe[r]; sum2 += Ps[r] * Ps[r]; ++runs; }
             C[n] = PC[k]; g[n] = Pg[k]; wi[n] = Pw[k]; e[n] = sum / runs;
@@ -139,6 +148,17 @@ int main(int argc, char **argv)
                    runs, e[n], sqrt(var / runs), sqrt(sum2) / runs);
             ++n;
         }
+        /* by rate, as a single curve is: the fits that leave out the lowest
+           or the highest rate take the ends of the list */
+        for (k = 1; k < n; ++k)
+            for (r = k; r > 0 && g[r] < g[r - 1]; --r) {
+                double t;
+                t = C[r]; C[r] = C[r - 1]; C[r - 1] = t;
+                t = g[r]; g[r] = g[r - 1]; g[r - 1] = t;
+                t = wi[r]; wi[r] = wi[r - 1]; wi[r - 1] = t;
+                t = e[r]; e[r] = e[r - 1]; e[r - 1] = t;
+                t = s[r]; s[r] = s[r - 1]; s[r - 1] = t;
+            }
     } else {
         if (argc < 2 || argc > 3) {
             fprintf(stderr, "usage: carreau_refit FLOWCURVE.csv [RUN_DIR] | --pool RUN_DIR RUN_DIR... "

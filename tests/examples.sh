@@ -192,7 +192,7 @@ for f in 0.99 1 1.01; do
             printf "5,%g,0,%g,0,0,0,0,0,0,0,0,%.9g,%.9g\n", w[k], w[k], f * eta, 1e-5 * eta } }' > "$t/$f/flowcurve.csv"
 done
 "$B/carreau_refit" --pool "$t/0.99" "$t/1" "$t/1.01" > "$t/log" 2>&1
-if awk '/^C = 5, Wi = 1:/ { m = $10; e = $15 }
+if awk '/^C = 5, Wi = 1:/ { m = $10 + 0; e = $15 + 0 }
         /over Table II/ { split($0, a, ":"); n = split(a[2], r, " "); for (k = 1; k <= n; k += 3) if (r[k] < 0.9999 || r[k] > 1.0001) bad = 1 }
         /fit, eta_inf = 0.9/ { eta0 = $8 }
         END { x = 2.1408; c = 0.9 + 5.7688 * (1 + x * x) ^ (-0.4996);
