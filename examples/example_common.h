@@ -578,6 +578,10 @@ static inline hcbd_result run_steps(const config *c, run_out *o, ex_world *w, in
 #define GP_MU "\316\274"
 #define GP_PI "\317\200"
 #define GP_SUM "\316\243"
+/* the Carreau curve eta_inf + (eta0 - eta_inf) (1 + (lambda x)^2)^((n - 1) / 2)
+   in gnuplot, from eta_inf, eta0, eta_inf, lambda, n: 1.0, since gnuplot
+   divides integers and n printed as 0 would make the exponent 0 */
+#define GP_CARREAU "%.17g + (%.17g - %.17g) * (1 + (%.17g * x)**2)**((%.17g - 1.0) / 2)"
 #define GP_PM "\302\261"
 #define GP_GEQ "\342\211\245"
 #define GP_INF "\342\210\236"

@@ -1344,12 +1344,12 @@ static void write_plots(const config *c, const conc_run *runs, const hcbd_hc_par
             fprintf(f, "%s'flowcurve.csv' u ($1==%g&&$%d>0?$2:1/0):%d:%d w yerrorbars pt %d ps 1.3 lc %d t '%s'",
                     k ? ", " : "", cr->C, 13 + 2 * k, 13 + 2 * k, 14 + 2 * k, pt[k], k + 1, comp_name[k]);
         if (cr->fitted)
-            fprintf(f, ", \\\n     %.17g + (%.17g - %.17g) * (1 + (%.17g * x)**2)**((%.17g - 1.0) / 2) w l lw 2 lc 1 "
+            fprintf(f, ", \\\n     " GP_CARREAU " w l lw 2 lc 1 "
                        "t 'Carreau fit of the total'", ei, cr->pc[0] * u->eta * 1e3, ei, cr->pc[1] * u->t, cr->pc[2]);
         if (table2(cr->C, t2)) {
             /* Table II with eta = 1 mPa s, scaled by this run's solvent */
             double e0 = t2[0] * eta_f, l = t2[1] * tau_s, n = t2[2], einf = 0.9 * eta_f;
-            fprintf(f, ", \\\n     %.17g + (%.17g - %.17g) * (1 + (%.17g * x)**2)**((%.17g - 1.0) / 2) w l dt 4 lw 2 "
+            fprintf(f, ", \\\n     " GP_CARREAU " w l dt 4 lw 2 "
                        "lc 'gray30' t '2018 Table II Carreau, " GP_LAMBDA " scaled to this " GP_TAU "_" GP_LAMBDA "'",
                     einf, e0, einf, l, n);
         }
@@ -1368,7 +1368,7 @@ static void write_plots(const config *c, const conc_run *runs, const hcbd_hc_par
         }
         {
             const double e0 = t2[0] * eta_f, l = t2[1] * tau_s, n = t2[2], einf = 0.9 * eta_f;
-            fprintf(f, "t2c%d(x) = %.17g + (%.17g - %.17g) * (1 + (%.17g * x)**2)**((%.17g - 1.0) / 2)\n", ci, einf,
+            fprintf(f, "t2c%d(x) = " GP_CARREAU "\n", ci, einf,
                     e0, einf, l, n);
             fprintf(f, "set title \"C = %g C*: total viscosity over 2018 Table II's Carreau curve\" font ',12'\n"
                        "plot 'flowcurve.csv' u ($1==%g&&$13>0?$2:1/0):($13/t2c%d($2)):($14/t2c%d($2)) w yerrorbars "

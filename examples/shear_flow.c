@@ -253,7 +253,7 @@ int main(int argc, char **argv)
             fprintf(f, ", \\\n     'flowcurve.csv' u ($1==%g?$2:1/0):3:4 w yerrorbars pt 7 ps 1.3 lc %d "
                        "t \"" GP_XIP "/" GP_XI " = %g\"", xips[x], x + 1, xips[x] / p->xi);
             if (fitted[x])
-                fprintf(f, ", %.17g + (%.17g - %.17g) * (1 + (%.17g * x)**2)**((%.17g - 1.0) / 2) w l lw 2 lc %d "
+                fprintf(f, ", " GP_CARREAU " w l lw 2 lc %d "
                            "notitle", ei, carreau[x][0], ei, carreau[x][1], carreau[x][2], x + 1);
             fprintf(f, ", %.17g w l dt 2 lc %d notitle", ei, x + 1);
         }
