@@ -74,6 +74,14 @@ ie=$(grep -c -- ' - 1) / 2)' "$t/o/plots.gp")
 if awk -v u="$up" 'BEGIN {exit !(u >= 2.5)}' && [ "$nw" -eq 12 ] && [ "$ne" -eq 2 ] && [ "$ie" -eq 0 ]
 then ok "hcbd_polymer plateau=1: start-up $up tau_lambda >= strain 1 / Wi 0.4, 12 measured half blocks, n_eff per rate"
 else bad "hcbd_polymer plateau=1: start-up '$up' (>= 2.5), measured half blocks $nw (12), rates with n_eff $ne (2), integer exponents in plots.gp $ie (0)"; fi
+# the summary's rate-by-rate verdict is the total over Table II's C1 Carreau
+# curve (eta_inf 0.9, eta0 2.526 mPa s, lambda 3.0504 tau_lambda, n 0.3441)
+rr=$(awk -F, 'NR > 1 && $2 == 2000 {print $13 / (0.9 + (2.526 - 0.9) * (1 + (3.0504 * $4)^2)^((0.3441 - 1) / 2))}' \
+    "$t/o/flowcurve.csv")
+rs=$(awk '$2 == "eta_over_table2_gdot2000" {print $3}' "$t/log")
+if awk -v a="$rr" -v b="$rs" 'BEGIN {exit !(a > 0 && b > 0 && (a - b)^2 < (1e-3 * a)^2)}'
+then ok "hcbd_polymer: eta_over_table2 $rs is the total over Table II's curve ($rr)"
+else bad "hcbd_polymer: eta_over_table2 '$rs' against the total over Table II's curve '$rr'"; fi
 rm -rf "$t"
 for key in rho eta nbar P0 T dt sigma h amp; do expect $key "$B/hcbd_sound" $key=0; done
 expect relax_steps "$B/hcbd_sound" relax_steps=-1
