@@ -209,5 +209,27 @@ then ok "carreau_refit --pool: three runs at 0.99, 1, 1.01 of Table II's curve p
 else bad "carreau_refit --pool: $(grep -E 'Wi = 1:|over Table|eta_inf = 0.9' "$t/log" | tr '\n' ' ')"; fi
 rm -rf "$t"
 
+# carreau_refit's chi^2/dof and its errors scaled by sqrt(chi^2/dof) (the
+# same rule as hcbd_polymer's summary): Table II's C1 curve, 9 % above and
+# below it in turn, each with a 3 % error; chi^2 is recomputed here from
+# the printed fit, which must also beat the curve's own chi^2 of 54
+t=$(mktemp -d)
+awk 'BEGIN { print "C,gdot_per_s,gdot,Wi,a,b,c,d,e,f,g,h,eta_total_mPas,eta_total_err_mPas";
+    split("0.1 0.3 1 3 10 30", w, " ");
+    for (k = 1; k <= 6; ++k) { x = 3.0504 * w[k]; eta = 0.9 + (2.526 - 0.9) * (1 + x * x) ^ ((0.3441 - 1) / 2);
+        printf "2.5,%g,0,%g,0,0,0,0,0,0,0,0,%.9g,%.9g\n", w[k], w[k], eta * (1 + (k % 2 ? 0.09 : -0.09)), 0.03 * eta } }' \
+    > "$t/flowcurve.csv"
+"$B/carreau_refit" "$t/flowcurve.csv" "$t" > "$t/log" 2>&1
+if awk -F, 'NR == FNR { if (/fit, eta_inf = 0.9/) { gsub(/[()]/, " "); m = split($0, f, " ");
+            for (k = 1; k < m; ++k) { if (f[k] == "eta0") { p0 = f[k + 1]; r0 = f[k + 4] / f[k + 3] }
+                if (f[k] == "lambda") { p1 = f[k + 1]; r1 = f[k + 4] / f[k + 3] }
+                if (f[k] == "n") pn = f[k + 1]; if (f[k] == "chi2/dof") cd = f[k + 1] } } next }
+        FNR > 1 { x = p1 * $2; r = ($13 - 0.9 - (p0 - 0.9) * (1 + x * x) ^ ((pn - 1) / 2)) / $14; c += r * r }
+        END { s = sqrt(c / 3); exit !(c > 0 && c < 54 && (cd - c / 3)^2 < (0.02 * c / 3)^2 &&
+                                   (r0 - s)^2 < (0.1 * s)^2 && (r1 - s)^2 < (0.1 * s)^2) }' "$t/log" "$t/flowcurve.csv"
+then ok "carreau_refit: chi^2/dof is the printed fit's, below the curve's, errors scaled by its square root"
+else bad "carreau_refit: chi^2/dof or scaled errors wrong: $(grep 'eta_inf = 0.9' "$t/log")"; fi
+rm -rf "$t"
+
 echo "$pass passed, $fail failed"
 [ $fail -eq 0 ]
