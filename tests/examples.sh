@@ -75,9 +75,10 @@ if awk -v u="$up" 'BEGIN {exit !(u >= 2.5)}' && [ "$nw" -eq 12 ] && [ "$ne" -eq 
 then ok "hcbd_polymer plateau=1: start-up $up tau_lambda >= strain 1 / Wi 0.4, 12 measured half blocks, n_eff per rate"
 else bad "hcbd_polymer plateau=1: start-up '$up' (>= 2.5), measured half blocks $nw (12), rates with n_eff $ne (2), integer exponents in plots.gp $ie (0)"; fi
 # the summary's rate-by-rate verdict is the total over Table II's C1 Carreau
-# curve (eta_inf 0.9, eta0 2.526 mPa s, lambda 3.0504 tau_lambda, n 0.3441)
-rr=$(awk -F, 'NR > 1 && $2 == 2000 {print $13 / (0.9 + (2.526 - 0.9) * (1 + (3.0504 * $4)^2)^((0.3441 - 1) / 2))}' \
-    "$t/o/flowcurve.csv")
+# curve (eta_inf 0.9, eta0 2.526 mPa s, lambda 3.0504 tau_lambda, n 0.3441;
+# c1 is that curve at Wi, written out once here for this and a later check)
+c1='function c1(wi, x) { x = 3.0504 * wi; return 0.9 + (2.526 - 0.9) * (1 + x * x) ^ ((0.3441 - 1) / 2) }'
+rr=$(awk -F, "$c1"' NR > 1 && $2 == 2000 {print $13 / c1($4)}' "$t/o/flowcurve.csv")
 rs=$(awk '$2 == "eta_over_table2_gdot2000" {print $3}' "$t/log")
 if awk -v a="$rr" -v b="$rs" 'BEGIN {exit !(a > 0 && b > 0 && (a - b)^2 < (1e-3 * a)^2)}'
 then ok "hcbd_polymer: eta_over_table2 $rs is the total over Table II's curve ($rr)"
@@ -214,9 +215,9 @@ rm -rf "$t"
 # below it in turn, each with a 3 % error; chi^2 is recomputed here from
 # the printed fit, which must also beat the curve's own chi^2 of 54
 t=$(mktemp -d)
-awk 'BEGIN { print "C,gdot_per_s,gdot,Wi,a,b,c,d,e,f,g,h,eta_total_mPas,eta_total_err_mPas";
+awk "$c1"' BEGIN { print "C,gdot_per_s,gdot,Wi,a,b,c,d,e,f,g,h,eta_total_mPas,eta_total_err_mPas";
     split("0.1 0.3 1 3 10 30", w, " ");
-    for (k = 1; k <= 6; ++k) { x = 3.0504 * w[k]; eta = 0.9 + (2.526 - 0.9) * (1 + x * x) ^ ((0.3441 - 1) / 2);
+    for (k = 1; k <= 6; ++k) { eta = c1(w[k]);
         printf "2.5,%g,0,%g,0,0,0,0,0,0,0,0,%.9g,%.9g\n", w[k], w[k], eta * (1 + (k % 2 ? 0.09 : -0.09)), 0.03 * eta } }' \
     > "$t/flowcurve.csv"
 "$B/carreau_refit" "$t/flowcurve.csv" "$t" > "$t/log" 2>&1
