@@ -4296,10 +4296,28 @@ HCBD__INLINE int64_t hcbd__scatter(int64_t *HCBD__RESTRICT sink, int s, const in
 HCBD__INLINE void hcbd__rev_add(const int32_t *rv_start, const int32_t *rv_p, const double *ent, int ne, int b,
                                 double sg, double *s)
 {
+    const int32_t e0 = rv_start[b], e1 = rv_start[b + 1];
     int32_t e;
     int k;
-    for (e = rv_start[b]; e < rv_start[b + 1]; ++e)
-        for (k = 0; k < ne; ++k) s[k] += sg * ent[(size_t)ne * (size_t)rv_p[e] + (size_t)k];
+    /* the sums in registers: through s, each entry's add would wait on
+       the store of the one before */
+    if (ne == 1) {
+        double a = s[0];
+        for (e = e0; e < e1; ++e) a += sg * ent[rv_p[e]];
+        s[0] = a;
+    } else if (ne == 3) {
+        double a0 = s[0], a1 = s[1], a2 = s[2];
+        for (e = e0; e < e1; ++e) {
+            const double *v = ent + 3 * (size_t)rv_p[e];
+            a0 += sg * v[0];
+            a1 += sg * v[1];
+            a2 += sg * v[2];
+        }
+        s[0] = a0; s[1] = a1; s[2] = a2;
+    } else {
+        for (e = e0; e < e1; ++e)
+            for (k = 0; k < ne; ++k) s[k] += sg * ent[(size_t)ne * (size_t)rv_p[e] + (size_t)k];
+    }
 }
 
 #if HCBD__WALLS
@@ -9066,53 +9084,68 @@ HCBD__INLINE void hcbd__hc_pforce_pairs(void *ctx, int a, const hcbd__near *c, i
 {
     hcbd__hc_poly_ctx *s = (hcbd__hc_poly_ctx *)ctx;
     hcbd_hc_world *w = s->w;
-    const double rc = s->rc, sg = s->sg, A = s->A, mua = w->pmu[a];
+    const double rc = s->rc, sg = s->sg, A = s->A, mua = w->pmu[a], cfh = s->cfh, al = s->alpha;
+    const double r0 = 1e-12 * sg; /* below: no direction, counted, no force */
     const size_t cap = s->cap, o0 = (size_t)a * cap;
-    const int on = s->tr && !w->fresh_pairs ? w->pair_n[a] : 0;
+    const int fc = s->fc, tr = s->tr, on = tr && !w->fresh_pairs ? w->pair_n[a] : 0;
     const int32_t *ob = w->pair_b + o0;
-    const hcbd_real *ol = w->pair_l + o0;
+    const hcbd_real *ol = w->pair_l + o0, *HCBD__RESTRICT mu = w->pmu;
     int32_t *nb = w->pair_b2 + o0;
     hcbd_real *nl = w->pair_l2 + o0, *ne = w->pair_eq2 + o0;
+    /* the merge with the old list goes pair by pair; the forces, apart
+       from it, in SIMD loops (the same operations on each pair, so the
+       same bits), and their sums again in order */
+    double r[HCBD__CHUNK], leq[HCBD__CHUNK], lam[HCBD__CHUNK], fr[HCBD__CHUNK], ft[HCBD__CHUNK];
+    double *HCBD__RESTRICT fx = u->e[0], *HCBD__RESTRICT fy = u->e[1], *HCBD__RESTRICT fz = u->e[2];
     int t;
+    HCBD__OMP(omp simd)
     for (t = 0; t < m; ++t) {
-        const int b = c->j[t];
-        const double r = sqrt(c->r2[t]);
-        double f[3], fr = 0, ft = 0, lam = 0;
-        u->e[0][t] = u->e[1][t] = u->e[2][t] = 0;
-        if (s->tr) {
-            const double leq = hcbd__leq(r, rc);
+        r[t] = sqrt(c->r2[t]);
+        leq[t] = hcbd__leq(r[t], rc);
+        lam[t] = 0;
+    }
+    if (tr)
+        for (t = 0; t < m; ++t) {
+            const int b = c->j[t];
             int o = (int)acc->q[1];
             while (o < on && ob[o] < b) ++o;
             acc->q[1] = o;
             if (o < on && ob[o] == b) {
-                lam = ol[o];
+                lam[t] = ol[o];
             } else {
-                lam = (hcbd_real)leq;
+                lam[t] = (hcbd_real)leq[t];
                 ++s->created;
             }
             if (acc->q[0] < (int64_t)cap) {
                 nb[acc->q[0]] = b;
-                ne[acc->q[0]] = (hcbd_real)leq;
-                nl[acc->q[0]] = (hcbd_real)lam;
+                ne[acc->q[0]] = (hcbd_real)leq[t];
+                nl[acc->q[0]] = (hcbd_real)lam[t];
             }
             acc->q[0]++;
         }
-        if (r < 1e-12 * sg) { /* no direction: counted, no force */
+    HCBD__OMP(omp simd)
+    for (t = 0; t < m; ++t) {
+        const double rt = r[t];
+        const int live = !(rt < r0);
+        const double a1 = fc ? hcbd__flory_fr(cfh, mua, mu[c->j[t]], hcbd__rapid_dr(rt, sg, rc, A), rt) : 0.0;
+        const double a2 = tr ? hcbd__spring_fr(al, lam[t], rt, rc) : 0.0;
+        fr[t] = a1;
+        ft[t] = a2;
+        fx[t] = live ? (a1 + a2) * c->x[t] : 0.0;
+        fy[t] = live ? (a1 + a2) * c->y[t] : 0.0;
+        fz[t] = live ? (a1 + a2) * c->z[t] : 0.0;
+    }
+    for (t = 0; t < m; ++t) {
+        if (r[t] < r0) {
             ++s->coinc;
             continue;
         }
-        if (s->fc) fr = hcbd__flory_fr(s->cfh, mua, w->pmu[b], hcbd__rapid_dr(r, sg, rc, A), r);
-        if (s->tr) ft = hcbd__spring_fr(s->alpha, lam, r, rc);
-        f[0] = (fr + ft) * c->x[t];
-        f[1] = (fr + ft) * c->y[t];
-        f[2] = (fr + ft) * c->z[t];
-        u->e[0][t] = f[0]; u->e[1][t] = f[1]; u->e[2][t] = f[2];
-        acc->r[0] += f[0];
-        acc->r[1] += f[1];
-        acc->r[2] += f[2];
+        acc->r[0] += fx[t];
+        acc->r[1] += fy[t];
+        acc->r[2] += fz[t];
         if (s->stress) {
-            acc->r[3] += c->y[t] * fr * c->x[t];
-            acc->r[4] += c->y[t] * ft * c->x[t];
+            acc->r[3] += c->y[t] * fr[t] * c->x[t];
+            acc->r[4] += c->y[t] * ft[t] * c->x[t];
         }
     }
 }
