@@ -111,7 +111,7 @@
         hcbd_params_wall_potential hcbd_world_checksum]
      >>theory and stability limits [hcbd_params_theory hcbd_params_stability hcbd_limits_format]
      >>accumulators [hcbd_profile_ hcbd_rdf_ hcbd_mtcorr_ hcbd_msd_ hcbd_slabs_]
-     >>statistics of a run's results [hcbd_carreau_fit hcbd_blocking_error]
+     >>statistics of a run's results [hcbd_carreau_fit hcbd_carreau_err_scale hcbd_blocking_error]
      >>random numbers [hcbd_splitmix64 hcbd_rng_ hcbd_world_rng_normal hcbd_world_pair_normals
         hcbd_world_particle_normals
         hcbd_noise_]
@@ -164,7 +164,7 @@
         hcbd_world_config_temperature hcbd_world_forces hcbd_world_checksum]
      >>g(r) [hcbd_rdf_]
      >>multiple-tau correlator [hcbd_mtcorr_]
-     >>Carreau fit [hcbd_carreau_fit]
+     >>Carreau fit [hcbd_carreau_fit hcbd_carreau_err_scale]
      >>blocking error [hcbd_blocking_error]
      >>mean-squared displacement [hcbd_msd_]
      >>slab profiles [hcbd_profile_]
@@ -870,6 +870,12 @@ int64_t hcbd_slabs_result(const hcbd_slabs *s, double *out);
 hcbd_result hcbd_carreau_fit(const double *gdot, const double *eta, const double *err,
                              int n_points, double eta_inf, int p_start, double p[3],
                              double perr[3], double *chi2);
+
+/* The factor by which to scale a Carreau fit's errors where the form does
+   not fit the points within their errors (the Birge ratio): sqrt(chi2 /
+   (n_points - 3)) where that is above 1, else 1.  NaN for n_points < 4 or a
+   chi2 that is negative or not finite. */
+double hcbd_carreau_err_scale(double chi2, int n_points);
 
 /* Standard error of the mean of a correlated series x[0..n) by blocking
    (Flyvbjerg and Petersen, J. Chem. Phys. 91, 461 (1989)): the series is
@@ -6400,6 +6406,14 @@ hcbd_result hcbd_carreau_fit(const double *gdot, const double *eta, const double
     }
     if (chi2) *chi2 = c2;
     return isfinite(p[0] + p[1] + p[2]) ? HCBD_OK : HCBD_ERR_NONFINITE;
+}
+
+double hcbd_carreau_err_scale(double chi2, int n_points)
+{
+    double r;
+    if (n_points < 4 || !(chi2 >= 0) || !isfinite(chi2)) return NAN;
+    r = chi2 / (n_points - 3); /* three parameters: eta0, lambda, n */
+    return r > 1 ? sqrt(r) : 1.0;
 }
 
 /* >>blocking error of a correlated mean */

@@ -9,7 +9,9 @@
    the blocking error (hcbd_blocking_error as this build has it) of the
    half-block series of its measured window (startup_C<C>.csv), so that
    the outputs of an older build are scored as the present one would, and
-   each rate's viscosity over Table II's curve is printed.
+   each rate's viscosity over Table II's curve is printed.  Two fits weigh
+   the points without their errors (equal relative, equal absolute), as
+   the paper, which does not say, may have.
 
    With --pool and several run folders (seeds of one preset), each rate's
    viscosity is the mean over the folders and its error the larger of the
@@ -44,7 +46,7 @@ static void fit(const char *what, const double *g, const double *e, const double
     }
     {
         /* in brackets the errors scaled by sqrt(chi^2/dof) where it is above 1 */
-        const double sc = chi2 / (n - 3) > 1 ? sqrt(chi2 / (n - 3)) : 1;
+        const double sc = hcbd_carreau_err_scale(chi2, n);
         printf("  %-34s eta0 %7.3f +- %-6.2g (%-6.2g) lambda %8.4g +- %-6.2g (%-6.2g) n %6.3f +- %-6.2g (%-6.2g) "
                "chi2/dof %.2f\n", what, p[0], pe[0], pe[0] * sc, p[1], pe[1], pe[1] * sc, p[2], pe[2], pe[2] * sc,
                chi2 / (n - 3));
@@ -191,6 +193,17 @@ int main(int argc, char **argv)
         fit("fit, eta_inf = 1.0 (the solvent)", gg, ee, ss, m, 1.0);
         fit("fit, lowest rate left out", gg + 1, ee + 1, ss + 1, m - 1, 0.9);
         fit("fit, highest rate left out", gg, ee, ss, m - 1, 0.9);
+        {
+            /* weights the paper may have used instead of the errors: each
+               point's relative, or absolute, misfit counting the same.  The
+               stated 0.1 % is far below the misfit, so the bracketed
+               errors are those of the unweighted fit, from its scatter */
+            double rel[MAXP], same[MAXP], mean = 0;
+            for (k = 0; k < m; ++k) mean += ee[k] / m;
+            for (k = 0; k < m; ++k) { rel[k] = 1e-3 * ee[k]; same[k] = 1e-3 * mean; }
+            fit("fit, equal relative weights", gg, ee, rel, m, 0.9);
+            fit("fit, equal weights", gg, ee, same, m, 0.9);
+        }
     }
     return 0;
 }

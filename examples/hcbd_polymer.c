@@ -227,7 +227,7 @@ static void usage(FILE *f)
             "                      substeps=8 (bench/wp_table1.c), plateau=1, blocks=4,\n"
             "                      rp_steps=50000 (5 tau_lambda), eq_steps=1000, start-ups of at\n"
             "                      least a strain of 3 (startup_strain) and 6 correlation times\n"
-            "                      (startup_corr), then 4 blocks: 67 min with threads=2\n"
+            "                      (startup_corr), then 4 blocks: 61 min with threads=2\n"
             "                      (the slow rates' errors are lower bounds: their windows are\n"
             "                      shorter than the stress stays correlated);\n"
             "                      paper-long: the same with windows of at least a strain of 2\n"
@@ -1201,7 +1201,7 @@ static void print_summary(const conc_run *cr, const hcbd_hc_params *p, const rp_
     /* the Carreau form does not fit the points within their errors (chi^2/dof
        of 40-300 at Table I), so the fit's errors are compared scaled */
     const double dof_chi2 = cr->fitted && opt.ngdot > 3 ? cr->chi2 / (opt.ngdot - 3) : 0,
-                 sc = dof_chi2 > 1 ? sqrt(dof_chi2) : 1;
+                 sc = cr->fitted && opt.ngdot > 3 ? hcbd_carreau_err_scale(cr->chi2, opt.ngdot) : 1;
     double t2[3];
     int k;
     printf("# summary C=%g (C/C* = %g, %d polymers; reduced units: sigma, kT, time unit %g s; "

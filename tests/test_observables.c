@@ -280,6 +280,38 @@ void test_carreau_fit(void)
                       d, s);
             }
     }
+    {
+        /* The error scale on the preset's six rates, with points scattered
+           K times their stated errors (the Carreau form of a run fits no
+           better): chi^2 / dof, and so the squared scale, is K^2 on average
+           (three fitted parameters; its spread sqrt(2 / dof) K^2 per fit). */
+        enum { N6 = 6, FITS = 400 };
+        const double K = 3, g6[N6] = {0.1, 0.3, 1, 3, 10, 30};
+        double y6[N6], e6[N6], s2 = 0;
+        int f, bad = 0;
+        for (f = 0; f < FITS; ++f) {
+            for (k = 0; k < N6; ++k) {
+                const double c6 =
+                    eta_inf + (truth[0] - eta_inf) * pow(1 + pow(truth[1] * g6[k], 2), (truth[2] - 1) / 2);
+                e6[k] = 0.01 * c6;
+                y6[k] = c6 + K * e6[k] * hcbd_world_rng_normal(&w, &r);
+            }
+            if (hcbd_carreau_fit(g6, y6, e6, N6, eta_inf, 0, p, pe, &chi2) != HCBD_OK) {
+                ++bad;
+                continue;
+            }
+            s2 += pow(hcbd_carreau_err_scale(chi2, N6), 2);
+        }
+        s2 /= FITS - bad;
+        NOTE("six rates scattered %g errors: mean squared scale %.3f (%d fits failed)", K, s2, bad);
+        CHECK(bad == 0 && fabs(s2 - K * K) < 4 * sqrt(2.0 / (N6 - 3)) * K * K / sqrt((double)FITS),
+              "mean squared error scale %g, expected %g", s2, K * K);
+        CHECK(hcbd_carreau_err_scale(27, 6) == 3 && hcbd_carreau_err_scale(2, 6) == 1 &&
+                  hcbd_carreau_err_scale(0, 4) == 1, "scale of exact cases");
+        CHECK(isnan(hcbd_carreau_err_scale(1, 3)) && isnan(hcbd_carreau_err_scale(-1, 6)) &&
+                  isnan(hcbd_carreau_err_scale(INFINITY, 6)) && isnan(hcbd_carreau_err_scale(NAN, 6)),
+              "bad chi^2 or too few points accepted");
+    }
     CHECK(hcbd_carreau_fit(g, eta, err, 3, eta_inf, 0, p, pe, NULL) == HCBD_ERR_PARAM, "3 points accepted");
     err[2] = 0;
     CHECK(hcbd_carreau_fit(g, eta, err, NP, eta_inf, 0, p, pe, NULL) == HCBD_ERR_PARAM, "zero error accepted");
