@@ -4298,20 +4298,19 @@ HCBD__INLINE int64_t hcbd__scatter(int64_t *HCBD__RESTRICT sink, int s, const in
 /* The partner side of values kept per entry (hcbd__trav.ent, ne per
    entry): b's entries as a partner, through the reverse list (rv_p from
    rv_start[b], owners in increasing id), added to s[0 .. ne) with sign sg,
-   in that fixed order */
+   in that fixed order; ne is 1 (weights) or 3 (forces) */
 HCBD__INLINE void hcbd__rev_add(const int32_t *rv_start, const int32_t *rv_p, const double *ent, int ne, int b,
                                 double sg, double *s)
 {
     const int32_t e0 = rv_start[b], e1 = rv_start[b + 1];
     int32_t e;
-    int k;
     /* the sums in registers: through s, each entry's add would wait on
        the store of the one before */
     if (ne == 1) {
         double a = s[0];
         for (e = e0; e < e1; ++e) a += sg * ent[rv_p[e]];
         s[0] = a;
-    } else if (ne == 3) {
+    } else {
         double a0 = s[0], a1 = s[1], a2 = s[2];
         for (e = e0; e < e1; ++e) {
             const double *v = ent + 3 * (size_t)rv_p[e];
@@ -4320,9 +4319,6 @@ HCBD__INLINE void hcbd__rev_add(const int32_t *rv_start, const int32_t *rv_p, co
             a2 += sg * v[2];
         }
         s[0] = a0; s[1] = a1; s[2] = a2;
-    } else {
-        for (e = e0; e < e1; ++e)
-            for (k = 0; k < ne; ++k) s[k] += sg * ent[(size_t)ne * (size_t)rv_p[e] + (size_t)k];
     }
 }
 

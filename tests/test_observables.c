@@ -281,10 +281,11 @@ void test_carreau_fit(void)
             }
     }
     {
-        /* The error scale on the preset's six rates, with points scattered
-           K times their stated errors (the Carreau form of a run fits no
-           better): chi^2 / dof, and so the squared scale, is K^2 on average
-           (three fitted parameters; its spread sqrt(2 / dof) K^2 per fit). */
+        /* The error scale on the preset's six rates, the points scattered
+           K times their stated errors (as a run's scatter about the
+           Carreau form exceeds its errors): chi^2 / dof, and so the squared
+           scale, is K^2 on average with dof = 6 - 3, its spread
+           sqrt(2 / dof) K^2 per fit. */
         enum { N6 = 6, FITS = 400 };
         const double K = 3, g6[N6] = {0.1, 0.3, 1, 3, 10, 30};
         double y6[N6], e6[N6], s2 = 0;
