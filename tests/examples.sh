@@ -210,10 +210,11 @@ then ok "carreau_refit --pool: three runs at 0.99, 1, 1.01 of Table II's curve p
 else bad "carreau_refit --pool: $(grep -E 'Wi = 1:|over Table|eta_inf = 0.9' "$t/log" | tr '\n' ' ')"; fi
 rm -rf "$t"
 
-# carreau_refit's chi^2/dof and its errors scaled by sqrt(chi^2/dof) (the
-# same rule as hcbd_polymer's summary): Table II's C1 curve, 9 % above and
-# below it in turn, each with a 3 % error; chi^2 is recomputed here from
-# the printed fit, which must also beat the curve's own chi^2 of 54
+# carreau_refit's chi^2/dof and its errors scaled by sqrt(chi^2/dof)
+# (hcbd_carreau_err_scale, as in hcbd_polymer's summary): Table II's C1
+# curve, 9 % above and below it in turn, each with a 3 % error; chi^2 is
+# recomputed here from the printed fit, which must also beat the curve's
+# own chi^2 of 54
 t=$(mktemp -d)
 awk "$c1"' BEGIN { print "C,gdot_per_s,gdot,Wi,a,b,c,d,e,f,g,h,eta_total_mPas,eta_total_err_mPas";
     split("0.1 0.3 1 3 10 30", w, " ");
