@@ -532,6 +532,20 @@ typedef struct hcbd__nlist {
     int list_valid;
 } hcbd__nlist;
 
+/* A pass's pairs within cut, kept for a later pass over the same list at
+   the same positions (hcbd__trav.kout, .kin): owner i's n[i] pairs from
+   its first entry nb_start[i] on, in entry order, each with its partner,
+   entry and separation (no Lees-Edwards image: no reader needs it). */
+typedef struct hcbd__kpair {
+    double x, y, z, r2;
+    int32_t j, e;
+} hcbd__kpair;
+typedef struct hcbd__kept {
+    int32_t *n;
+    hcbd__kpair *q; /* one record per pair: copied into and out of a chunk's
+                       arrays field by field, not by six calls to memcpy */
+} hcbd__kept;
+
 /* The constants of the star potential (2014 eq. 28) for f arms, core size
    sigma and energy eps: a = eps (5/18) f^(3/2), b = 1 / (1 + sqrt(f) / 2),
    s = sqrt(f) / 2, ab = a b, s_sigma = s / sigma (hcbd_star_coef_init). */
@@ -1142,6 +1156,8 @@ typedef struct hcbd_hc_world {
        increasing id) */
     double *pw, *pf, *pown;
     int32_t *rv_start, *rv_p;
+    hcbd__kept pk;               /* the density pass's pairs within rc, for
+                                    the force pass right after it          */
     double *xw;                  /* W-RaPiD weight of each cross pair (0
                                     beyond rc), entry xt_p[k] of lx for the
                                     transpose's entry k                    */
@@ -4147,6 +4163,36 @@ HCBD__INLINE int hcbd__gather_r2(const int32_t *HCBD__RESTRICT nb, const double 
     return m;
 }
 
+/* The pairs an earlier pass kept (hcbd__trav.kin), from *p up to pend,
+   already within cut */
+HCBD__INLINE int hcbd__gather_kept(const hcbd__kept *HCBD__RESTRICT k, int32_t *p, int32_t pend,
+                                   hcbd__near *c)
+{
+    const int32_t p0 = *p, m = pend - p0 > HCBD__CHUNK ? HCBD__CHUNK : pend - p0;
+    int t;
+    for (t = 0; t < m; ++t) {
+        const hcbd__kpair *r = k->q + p0 + t;
+        c->j[t] = r->j; c->k[t] = 0; c->e[t] = r->e;
+        c->x[t] = r->x; c->y[t] = r->y; c->z[t] = r->z; c->r2[t] = r->r2;
+    }
+    *p = p0 + m;
+    return m;
+}
+
+/* owner i's pairs c[0 .. m) into k after the cnt it holds; returns the new
+   count (never past the owner's entries: a pair is one of them) */
+HCBD__INLINE int32_t hcbd__keep(hcbd__kept *HCBD__RESTRICT k, int32_t p0, int32_t cnt, const hcbd__near *c,
+                                int m)
+{
+    int t;
+    for (t = 0; t < m; ++t) {
+        hcbd__kpair *r = k->q + p0 + cnt + t;
+        r->j = c->j[t]; r->e = c->e[t];
+        r->x = c->x[t]; r->y = c->y[t]; r->z = c->z[t]; r->r2 = c->r2[t];
+    }
+    return cnt + m;
+}
+
 /* The third source (hcbd__trav.emap): all of the owner's entries, each
    with the entry of the transposed list where an earlier pass kept its
    values. */
@@ -4245,6 +4291,8 @@ typedef struct hcbd__trav {
     double cut2;
     double *r2out;                 /* store every entry's r^2 (or NULL)       */
     const double *r2in;            /* take r^2 from there (or NULL)           */
+    hcbd__kept *kout;              /* keep the pairs within cut (or NULL)     */
+    const hcbd__kept *kin;         /* take them from there (or NULL)          */
     /* the third source: every entry is a partner, with no geometry, and
        emap[p] names the entry of the list it transposes (or NULL) */
     const int32_t *emap;
@@ -4379,16 +4427,19 @@ HCBD__INLINE void hcbd__partners(const hcbd__trav *T, int i, double xi, double y
     }
 #endif
     {
-        const int32_t pend = T->start[i + 1];
-        int32_t p = T->start[i];
+        const int32_t p0 = T->start[i], pend = T->kin ? p0 + T->kin->n[i] : T->start[i + 1];
+        int32_t p = p0, kept = 0;
         if (T->ent) /* the skin's entries read 0 */
-            memset(T->ent + (size_t)T->ne * (size_t)p, 0, (size_t)T->ne * (size_t)(pend - p) * sizeof *T->ent);
+            memset(T->ent + (size_t)T->ne * (size_t)p0, 0,
+                   (size_t)T->ne * (size_t)(T->start[i + 1] - p0) * sizeof *T->ent);
         while (p < pend) {
             const int m = T->emap ? hcbd__gather_map(T->nb, T->emap, &p, pend, &c)
+                          : T->kin ? hcbd__gather_kept(T->kin, &p, pend, &c)
                           : T->r2in ? hcbd__gather_r2(T->nb, T->r2in, &p, pend, T->cut2, &c)
                                     : hcbd__gather_at(T->x, T->y, T->z, T->nb, &T->box, xi, yi, zi, &p,
                                                       pend, T->cut2, T->r2out, &c);
             int k, t;
+            if (T->kout) kept = hcbd__keep(T->kout, p0, kept, &c, m);
             pairs(ctx, i, &c, m, a, &u);
             for (k = 0; k < HCBD__NQ; ++k)
                 if (T->sink[k]) own[k] += hcbd__scatter(T->sink[k], T->sgn[k], u.u[k], c.j, 0, m);
@@ -4396,6 +4447,7 @@ HCBD__INLINE void hcbd__partners(const hcbd__trav *T, int i, double xi, double y
                 for (k = 0; k < T->ne; ++k)
                     for (t = 0; t < m; ++t) T->ent[(size_t)T->ne * (size_t)c.e[t] + (size_t)k] = u.e[k][t];
         }
+        if (T->kout) T->kout->n[i] = kept;
     }
 }
 
@@ -8408,6 +8460,7 @@ static size_t hcbd__hc_layout(const hcbd_hc_world_def *def, hcbd_hc_world *t, ch
     HCBD__HA(pw, (size_t)mp[1] * D);
     HCBD__HA(pf, 3 * (size_t)mp[1] * D); HCBD__HA(pown, np * D);
     HCBD__HA(rv_start, (np + 1) * I); HCBD__HA(rv_p, (size_t)mp[1] * I);
+    HCBD__HA(pk.n, np * I); HCBD__HA(pk.q, (size_t)mp[1] * sizeof(hcbd__kpair));
     HCBD__HA(xw, (size_t)mp[2] * D); HCBD__HA(xt_p, (size_t)mp[2] * I);
     HCBD__HA(scratch, ((nf > np ? nf : np) + 1) * I);
     HCBD__HA(fid, nf * I); HCBD__HA(fslot, nf * I);
@@ -9033,17 +9086,19 @@ HCBD__INLINE int hcbd__hc_pdens_end(void *ctx, int a, hcbd__acc *acc)
     return INT_MAX;
 }
 
-/* RaPiD densities and mu(phi) (MODEL 8).  Returns the first id with
-   phi >= 1, or -1. */
+/* RaPiD densities and mu(phi) (MODEL 8), keeping the pairs within rc for
+   hcbd__hc_poly_forces (w->pk).  Returns the first id with phi >= 1, or
+   -1. */
 static int hcbd__hc_poly_density(hcbd_hc_world *w)
 {
     const int n = w->np, nt = w->p.threads, fc = w->has_fc;
     const double rc = w->p.rc, sg = w->p.sigma, A = hcbd__rapid_A(sg, rc);
     const double w0 = A * (rc - sg) * (rc + sg), inv_nmax = 1.0 / w->p.n_max;
-    const hcbd__trav T = hcbd__hc_trav_p(w, w->pw, 1);
+    hcbd__trav T = hcbd__hc_trav_p(w, w->pw, 1);
     const hcbd__hc_poly_ctx base = hcbd__hc_poly_ctx_of(w);
     int q, bad = INT_MAX;
     (void)nt;
+    T.kout = &w->pk;
     HCBD__OMP(omp parallel num_threads(nt))
     {
         hcbd__hc_poly_ctx s = base;
@@ -9179,17 +9234,20 @@ HCBD__INLINE int hcbd__hc_pforce_end(void *ctx, int a, hcbd__acc *acc)
     return cnt > (int)s->cap ? a : INT_MAX;
 }
 
-/* Returns the first polymer whose transient pairs overflow pair_cap (with
+/* Over the pairs hcbd__hc_poly_density kept, so only right after it, at
+   the same positions: the gather and its minimum image are done once.
+   Returns the first polymer whose transient pairs overflow pair_cap (with
    the largest count in *need), or -1; on success the new pair list
    replaces the old. */
 static int hcbd__hc_poly_forces(hcbd_hc_world *w, int *need)
 {
     const int n = w->np, nt = w->p.threads;
-    const hcbd__trav T = hcbd__hc_trav_p(w, w->pf, 3);
+    hcbd__trav T = hcbd__hc_trav_p(w, w->pf, 3);
     const hcbd__hc_poly_ctx base = hcbd__hc_poly_ctx_of(w);
     int q, bad = INT_MAX, most = 0;
     int64_t created = 0, total = 0, coinc = 0;
     (void)nt;
+    T.kin = &w->pk;
     if (!base.fc && !base.tr) { /* no polymer pair forces: nothing to sum */
         memset(w->pFx, 0, (size_t)n * sizeof(hcbd_real));
         memset(w->pFy, 0, (size_t)n * sizeof(hcbd_real));
