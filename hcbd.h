@@ -4248,7 +4248,8 @@ HCBD__INLINE int hcbd__gather_art(const hcbd__wallset *s, const double L[3], hcb
 /* The loop of every pair pass.  Owners come from a list of indices (cell
    order, a sweep block, id order); each meets its partners in chunks from
    one of three sources: its list entries within cut (hcbd__gather_at, or
-   the r^2 an earlier pass stored), the artificial wall particles around it
+   the r^2 or whole pairs an earlier pass stored: hcbd__gather_r2,
+   hcbd__gather_kept), the artificial wall particles around it
    (hcbd__gather_art), or a transposed list's entries (hcbd__gather_map).
    A pass plugs in three inline evaluators: begin (the owner's running
    state), pairs (one chunk: the pass's equation, its terms returned in
@@ -9098,7 +9099,7 @@ static int hcbd__hc_poly_density(hcbd_hc_world *w)
     const hcbd__hc_poly_ctx base = hcbd__hc_poly_ctx_of(w);
     int q, bad = INT_MAX;
     (void)nt;
-    T.kout = &w->pk;
+    if (base.fc || base.tr) T.kout = &w->pk; /* else no force pass reads them */
     HCBD__OMP(omp parallel num_threads(nt))
     {
         hcbd__hc_poly_ctx s = base;
@@ -9664,35 +9665,51 @@ HCBD__INLINE void hcbd__hc_kick_pairs(void *ctx, int i, const hcbd__near *c, int
     const hcbd_real *HCBD__RESTRICT vz = w->svz, *HCBD__RESTRICT Pn2 = w->sP, *HCBD__RESTRICT In = w->sIn;
     const int32_t *HCBD__RESTRICT fid = w->fid;
     const double vxi = a->r[0], vyi = a->r[1], vzi = a->r[2], Pi = a->r[3], ini = a->r[4];
-    const double qF = s->qF, lim = s->lim;
-    int t;
+    const double qF = s->qF, lim = s->lim, ih = s->ih, c1h = s->c1h, two_eta = s->two_eta, vj = s->vj;
+    /* the deterministic forces in a SIMD loop, the noise (one draw per
+       pair) and the stress sums (in pair order) apart: the same operations
+       on each pair, so the same bits */
+    double fp[HCBD__CHUNK], fv0[HCBD__CHUNK], fm[HCBD__CHUNK];
+    double *HCBD__RESTRICT Fx = u->e[0], *HCBD__RESTRICT Fy = u->e[1], *HCBD__RESTRICT Fz = u->e[2];
+    int64_t *HCBD__RESTRICT U0 = u->u[0], *HCBD__RESTRICT U1 = u->u[1], *HCBD__RESTRICT U2 = u->u[2];
+    int t, bad = 0;
+    HCBD__OMP(omp simd)
     for (t = 0; t < m; ++t) {
-        const int j = c->j[t], k = c->k[t];
-        const double wdr = hcbd__m4_wdr(sqrt(c->r2[t]) * s->ih, s->c1h);
-        const double f = hcbd__morris_f(s->two_eta, wdr, ini, In[j]);
-        double d[3], fp, F[3], Fv0;
-        d[0] = c->x[t]; d[1] = c->y[t]; d[2] = c->z[t];
-        fp = hcbd__tait_fr(Pi, Pn2[j], wdr);
-        F[0] = fp * d[0]; F[1] = fp * d[1]; F[2] = fp * d[2];
-        if (s->stress) a->r[5] += d[1] * F[0];
-        Fv0 = -f * (vxi - (vx[j] + k * s->vj));
-        F[0] += Fv0;
-        F[1] += -f * (vyi - vy[j]);
-        F[2] += -f * (vzi - vz[j]);
-        if (s->stress) a->r[6] += d[1] * Fv0;
-        if (s->noise) {
-            double zz[3], sf = s->sn * sqrt(f);
-            hcbd__deviates3(w->core.zig, HCBD_NOISE_GAUSS, hcbd__pair_key(s->skey, fid[i], fid[j]), zz);
-            F[0] += sf * zz[0];
-            F[1] += sf * zz[1];
-            F[2] += sf * zz[2];
-            if (s->stress) a->r[7] += d[1] * sf * zz[0];
-        }
-        a->bad |= !(fabs(F[0]) <= lim && fabs(F[1]) <= lim && fabs(F[2]) <= lim);
-        u->u[0][t] = hcbd__fix(F[0] * qF);
-        u->u[1][t] = hcbd__fix(F[1] * qF);
-        u->u[2][t] = hcbd__fix(F[2] * qF);
+        const int j = c->j[t];
+        const double wdr = hcbd__m4_wdr(sqrt(c->r2[t]) * ih, c1h);
+        const double f = hcbd__morris_f(two_eta, wdr, ini, In[j]);
+        const double p = hcbd__tait_fr(Pi, Pn2[j], wdr);
+        const double v0 = -f * (vxi - (vx[j] + c->k[t] * vj));
+        fp[t] = p;
+        fv0[t] = v0;
+        fm[t] = f;
+        Fx[t] = p * c->x[t] + v0;
+        Fy[t] = p * c->y[t] + -f * (vyi - vy[j]);
+        Fz[t] = p * c->z[t] + -f * (vzi - vz[j]);
     }
+    if (s->stress)
+        for (t = 0; t < m; ++t) {
+            a->r[5] += c->y[t] * (fp[t] * c->x[t]);
+            a->r[6] += c->y[t] * fv0[t];
+        }
+    if (s->noise)
+        for (t = 0; t < m; ++t) {
+            double zz[3];
+            const double sf = s->sn * sqrt(fm[t]);
+            hcbd__deviates3(w->core.zig, HCBD_NOISE_GAUSS, hcbd__pair_key(s->skey, fid[i], fid[c->j[t]]), zz);
+            Fx[t] += sf * zz[0];
+            Fy[t] += sf * zz[1];
+            Fz[t] += sf * zz[2];
+            if (s->stress) a->r[7] += c->y[t] * sf * zz[0];
+        }
+    HCBD__OMP(omp simd reduction(|:bad))
+    for (t = 0; t < m; ++t) {
+        bad |= !(fabs(Fx[t]) <= lim && fabs(Fy[t]) <= lim && fabs(Fz[t]) <= lim);
+        U0[t] = hcbd__fix(Fx[t] * qF);
+        U1[t] = hcbd__fix(Fy[t] * qF);
+        U2[t] = hcbd__fix(Fz[t] * qF);
+    }
+    a->bad |= bad;
 }
 
 HCBD__INLINE int hcbd__hc_kick_end(void *ctx, int i, hcbd__acc *a)

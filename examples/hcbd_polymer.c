@@ -1200,8 +1200,8 @@ static void print_summary(const conc_run *cr, const hcbd_hc_params *p, const rp_
     const double thin = cr->eta[0][hi] / cr->eta[0][0];
     /* the Carreau form does not fit the points within their errors (chi^2/dof
        of 40-300 at Table I), so the fit's errors are compared scaled */
-    const double dof_chi2 = cr->fitted && opt.ngdot > 3 ? cr->chi2 / (opt.ngdot - 3) : 0,
-                 sc = cr->fitted && opt.ngdot > 3 ? hcbd_carreau_err_scale(cr->chi2, opt.ngdot) : 1;
+    const double dof_chi2 = cr->fitted ? cr->chi2 / (opt.ngdot - 3) : 0, /* a fit has 4 rates or more */
+                 sc = cr->fitted ? hcbd_carreau_err_scale(cr->chi2, opt.ngdot) : 1;
     double t2[3];
     int k;
     printf("# summary C=%g (C/C* = %g, %d polymers; reduced units: sigma, kT, time unit %g s; "
