@@ -227,7 +227,7 @@ static void usage(FILE *f)
             "                      substeps=8 (bench/wp_table1.c), plateau=1, blocks=4,\n"
             "                      rp_steps=50000 (5 tau_lambda), eq_steps=1000, start-ups of at\n"
             "                      least a strain of 3 (startup_strain) and 6 correlation times\n"
-            "                      (startup_corr), then 4 blocks: 61 min with threads=2\n"
+            "                      (startup_corr), then 4 blocks: 60 min with threads=2\n"
             "                      (the slow rates' errors are lower bounds: their windows are\n"
             "                      shorter than the stress stays correlated);\n"
             "                      paper-long: the same with windows of at least a strain of 2\n"
