@@ -9668,7 +9668,8 @@ HCBD__INLINE void hcbd__hc_kick_pairs(void *ctx, int i, const hcbd__near *c, int
     const double qF = s->qF, lim = s->lim, ih = s->ih, c1h = s->c1h, two_eta = s->two_eta, vj = s->vj;
     /* the deterministic forces in a SIMD loop, the noise (one draw per
        pair) and the stress sums (in pair order) apart: the same operations
-       on each pair, so the same bits */
+       on each pair, so the same bits (the forces wait in u->e: this pass
+       keeps no values per entry) */
     double fp[HCBD__CHUNK], fv0[HCBD__CHUNK], fm[HCBD__CHUNK];
     double *HCBD__RESTRICT Fx = u->e[0], *HCBD__RESTRICT Fy = u->e[1], *HCBD__RESTRICT Fz = u->e[2];
     int64_t *HCBD__RESTRICT U0 = u->u[0], *HCBD__RESTRICT U1 = u->u[1], *HCBD__RESTRICT U2 = u->u[2];

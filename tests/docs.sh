@@ -1,9 +1,10 @@
 #!/bin/sh
 # make test, part "docs": the header's banners against its CONTENTS block
-# (tests/banners.sh), and every program the docs quote (build/NAME in
+# (tests/banners.sh), every program the docs quote (build/NAME in
 # README.md and docs/*.md) is one make knows how to build, so that a quoted
-# command cannot outlive its program.  build/logs, build/prefix and
-# build/lammps are folders that make test and make lammps create.
+# command cannot outlive its program (build/logs, build/prefix and
+# build/lammps are folders that make test and make lammps create), and
+# every mutant's pattern (tests/mutants/mutants.txt) is found.
 # Ends with "N passed, N failed".
 cd "$(dirname "$0")/.." || exit 1
 out=$(tests/banners.sh hcbd.h)
@@ -24,5 +25,21 @@ for p in $progs; do
     fi
 done
 echo "docs: $(echo "$progs" | wc -w) programs quoted in README.md and docs/"
+# every injected error of make mutants still finds its text exactly once:
+# code rewritten around a pattern would otherwise drop that mutant from
+# the check unseen until make mutants runs (it is not part of make test)
+bad=$(awk -F'\t' '
+    FNR == NR { src = src $0 "\n"; next }
+    /^#/ || NF < 4 { next }
+    { old = $3; gsub(/\\n/, "\n", old); n = 0; s = src
+      while ((i = index(s, old)) > 0) { n++; s = substr(s, i + 1) }
+      if (n != 1) print "docs: mutant " $1 "'"'"'s pattern occurs " n " times in hcbd.h" }' \
+    hcbd.h tests/mutants/mutants.txt)
+if [ -z "$bad" ]; then
+    passed=$((passed + 1))
+else
+    echo "$bad"
+    failed=$((failed + 1))
+fi
 echo "$passed passed, $failed failed"
 [ "$failed" = 0 ]
