@@ -232,6 +232,7 @@ static void usage(FILE *f)
             "                      shorter than the stress stays correlated);\n"
             "                      paper-long: the same with windows of at least a strain of 2\n"
             "                      (measure_strain=2: 20 tau_lambda at Wi = 0.1), 85 minutes\n"
+            "                      (timed when paper took 67 min)\n"
             "  C=2.5,5             polymer concentrations in C* = 3/(4 pi sigma^3)\n"
             "  gdot=a,b,...        Lees-Edwards shear rates in 1/s\n"
             "  tau_lambda=s        relaxation time of the transient pairs, seconds\n"
