@@ -8420,6 +8420,13 @@ static int hcbd__hc_pair_cap(const hcbd_hc_world_def *def)
     return (int)ceil(nexp + 5.0 * sqrt(nexp) + 16.0);
 }
 
+/* polymer pair forces (transient or Flory-Huggins): what hcbd__hc_poly_forces
+   sums, and what the kept pairs (hcbd_hc_world.pk) are for */
+static int hcbd__hc_poly_pairs(const hcbd_hc_params *p)
+{
+    return p->alpha > 0 || p->p_kuhn > 0;
+}
+
 static size_t hcbd__hc_layout(const hcbd_hc_world_def *def, hcbd_hc_world *t, char *base)
 {
     size_t off = 0, R = sizeof(hcbd_real), I = sizeof(int32_t), D = sizeof(double);
@@ -8461,7 +8468,9 @@ static size_t hcbd__hc_layout(const hcbd_hc_world_def *def, hcbd_hc_world *t, ch
     HCBD__HA(pw, (size_t)mp[1] * D);
     HCBD__HA(pf, 3 * (size_t)mp[1] * D); HCBD__HA(pown, np * D);
     HCBD__HA(rv_start, (np + 1) * I); HCBD__HA(rv_p, (size_t)mp[1] * I);
-    HCBD__HA(pk.n, np * I); HCBD__HA(pk.q, (size_t)mp[1] * sizeof(hcbd__kpair));
+    if (hcbd__hc_poly_pairs(p)) {
+        HCBD__HA(pk.n, np * I); HCBD__HA(pk.q, (size_t)mp[1] * sizeof(hcbd__kpair));
+    }
     HCBD__HA(xw, (size_t)mp[2] * D); HCBD__HA(xt_p, (size_t)mp[2] * I);
     HCBD__HA(scratch, ((nf > np ? nf : np) + 1) * I);
     HCBD__HA(fid, nf * I); HCBD__HA(fslot, nf * I);
@@ -9099,7 +9108,7 @@ static int hcbd__hc_poly_density(hcbd_hc_world *w)
     const hcbd__hc_poly_ctx base = hcbd__hc_poly_ctx_of(w);
     int q, bad = INT_MAX;
     (void)nt;
-    if (base.fc || base.tr) T.kout = &w->pk; /* else no force pass reads them */
+    if (hcbd__hc_poly_pairs(&w->p)) T.kout = &w->pk; /* else none allocated, none read */
     HCBD__OMP(omp parallel num_threads(nt))
     {
         hcbd__hc_poly_ctx s = base;
@@ -9249,7 +9258,7 @@ static int hcbd__hc_poly_forces(hcbd_hc_world *w, int *need)
     int64_t created = 0, total = 0, coinc = 0;
     (void)nt;
     T.kin = &w->pk;
-    if (!base.fc && !base.tr) { /* no polymer pair forces: nothing to sum */
+    if (!hcbd__hc_poly_pairs(&w->p)) { /* no polymer pair forces: nothing to sum */
         memset(w->pFx, 0, (size_t)n * sizeof(hcbd_real));
         memset(w->pFy, 0, (size_t)n * sizeof(hcbd_real));
         memset(w->pFz, 0, (size_t)n * sizeof(hcbd_real));
