@@ -233,6 +233,26 @@ if awk -F, 'NR == FNR { if (/fit, eta_inf = 0.9/) { gsub(/[()]/, " "); m = split
                                    (r0 - s)^2 < (0.1 * s)^2 && (r1 - s)^2 < (0.1 * s)^2) }' "$t/log" "$t/flowcurve.csv"
 then ok "carreau_refit: chi^2/dof is the printed fit's, below the curve's, errors scaled by its square root"
 else bad "carreau_refit: chi^2/dof or scaled errors wrong: $(grep 'eta_inf = 0.9' "$t/log")"; fi
+# the fits without the errors' weights (the paper states none): each
+# printed fit is the least-squares minimum of its own misfit, absolute or
+# relative to the point, recomputed here (a step of 1 % in eta0, 2 % in
+# lambda or 0.01 in n each way raises it); the weighted fit is not
+if awk -F, 'NR == FNR { w = /equal relative weights/ ? 1 : /equal weights/ ? 2 : /eta_inf = 0.9/ ? 3 : 0
+            if (!w) next; gsub(/[()]/, " "); m = split($0, f, " ")
+            for (k = 1; k < m; ++k) { if (f[k] == "eta0") p0[w] = f[k + 1]; if (f[k] == "lambda") p1[w] = f[k + 1]
+                if (f[k] == "n") pn[w] = f[k + 1] } next }
+        FNR > 1 { g[++np] = $2; y[np] = $13 }
+        function ssr(w, a, l, n,   k, x, r, s) { s = 0
+            for (k = 1; k <= np; ++k) { x = l * g[k]; r = y[k] - 0.9 - (a - 0.9) * (1 + x * x) ^ ((n - 1) / 2)
+                if (w == 1) r /= y[k]; s += r * r }
+            return s }
+        function minimum(w, v, a, l, n) { a = p0[v]; l = p1[v]; n = pn[v]; if (a == "") return 0
+            return ssr(w, a, l, n) < ssr(w, 1.01 * a, l, n) && ssr(w, a, l, n) < ssr(w, 0.99 * a, l, n) &&
+                   ssr(w, a, l, n) < ssr(w, a, 1.02 * l, n) && ssr(w, a, l, n) < ssr(w, a, 0.98 * l, n) &&
+                   ssr(w, a, l, n) < ssr(w, a, l, n + 0.01) && ssr(w, a, l, n) < ssr(w, a, l, n - 0.01) }
+        END { exit !(np == 6 && minimum(1, 1) && minimum(2, 2) && !minimum(1, 3) && !minimum(2, 3)) }' "$t/log" "$t/flowcurve.csv"
+then ok "carreau_refit: the equal-weight and equal-relative-weight fits minimise their own misfits"
+else bad "carreau_refit: an unweighted fit is not its misfit's minimum: $(grep 'equal' "$t/log" | tr '\n' ' ')"; fi
 rm -rf "$t"
 
 echo "$pass passed, $fail failed"
