@@ -1555,6 +1555,59 @@ static void write_startups(const config *c, const conc_run *cr, const hcbd_hc_pa
     fclose(f);
 }
 
+/* What one queued run needs of main's state; each job writes only its own slots. */
+typedef struct {
+    const hcbd_hc_params *p, *prp;
+    conc_run *runs;
+    const units *u;
+    double gmax, *dp, *dscale;
+    int nmom, *shear_done;
+    uint64_t (*sum_shear)[MAXG], *sum_rp, *sum_mom;
+} job_ctx;
+
+/* Queue entry q: q >= 0 a shear run (concentration q / MAXG, rate q % MAXG), -1 - ci the
+   reverse-Poiseuille run of concentration ci once its shear runs are done, -1 - MAXC the
+   momentum run. */
+static void run_job(const job_ctx *j, int q)
+{
+    int ok;
+    if (q >= 0) {
+        ok = shear_run(j->p, &j->runs[q / MAXG], q % MAXG, opt.gdot_si[q % MAXG] * j->u->t, &j->sum_shear[q / MAXG][q % MAXG]);
+    } else if (q > -1 - MAXC) {
+        conc_run *cr = &j->runs[-1 - q];
+        hcbd_hc_params q_rp = *j->prp;
+        int ready = 0, stop = 0;
+        while (!ready && !stop) {
+            PROGRESS_LOCK
+            {
+                ready = j->shear_done[-1 - q];
+                stop = prog.failed;
+            }
+            if (!ready && !stop) sleep_s(0.05);
+        }
+        ok = 0;
+        if (ready) {
+            /* the stress at the edges of the halves, rho g Ly / 4, is
+               the one measured at the fastest rate: the profile spans
+               the flow curve */
+            cr->g = opt.g_si > 0 ? opt.g_si / j->u->acc
+                                 : 4 * cr->eta[0][opt.ngdot - 1] * j->gmax / (j->p->rho * j->prp->L[1]);
+            q_rp.reverse_poiseuille = 1;
+            q_rp.g[0] = cr->g;
+            PROGRESS_LOCK
+            print_limits(&q_rp);
+            ok = rp_run(j->prp, cr, &j->sum_rp[-1 - q]);
+        }
+    } else {
+        ok = momentum_run(j->p, j->runs[j->nmom].np, j->dp, j->dscale, j->sum_mom);
+    }
+    PROGRESS_LOCK
+    {
+        if (!ok) prog.failed = 1;
+        if (q >= 0 && q % MAXG == opt.ngdot - 1) j->shear_done[q / MAXG] = 1;
+    }
+}
+
 int main(int argc, char **argv)
 {
     static conc_run runs[MAXC];
@@ -1776,48 +1829,18 @@ int main(int argc, char **argv)
     if (opt.ngdot < 3)
         for (ci = opt.nconc - 1; ci >= 0; --ci) queue[njob++] = -1 - ci;
     queue[njob++] = -1 - MAXC; /* momentum */
+    {
+        const job_ctx jc = {p, &prp, runs, &u, gmax, &dp, &dscale, nmom, shear_done, sum_shear, sum_rp, &sum_mom};
 #ifdef _OPENMP
-    if (p->threads > 1 && jobs > 1) omp_set_max_active_levels(2);
+        /* one run at a time takes no enclosing region: libgomp starts fresh threads for
+           every team nested in one, which made a single rate 5x slower with threads=2 */
+        if (jobs > 1) {
+            if (p->threads > 1) omp_set_max_active_levels(2);
 #pragma omp parallel for schedule(dynamic, 1) num_threads(jobs)
+            for (k = 0; k < njob; ++k) run_job(&jc, queue[k]);
+        } else
 #endif
-    for (k = 0; k < njob; ++k) {
-        const int q = queue[k];
-        int ok;
-        if (q >= 0) {
-            ok = shear_run(p, &runs[q / MAXG], q % MAXG, opt.gdot_si[q % MAXG] * u.t, &sum_shear[q / MAXG][q % MAXG]);
-        } else if (q > -1 - MAXC) {
-            conc_run *cr = &runs[-1 - q];
-            hcbd_hc_params q_rp = prp;
-            int ready = 0, stop = 0;
-            while (!ready && !stop) {
-                PROGRESS_LOCK
-                {
-                    ready = shear_done[-1 - q];
-                    stop = prog.failed;
-                }
-                if (!ready && !stop) sleep_s(0.05);
-            }
-            ok = 0;
-            if (ready) {
-                /* the stress at the edges of the halves, rho g Ly / 4, is
-                   the one measured at the fastest rate: the profile spans
-                   the flow curve */
-                cr->g = opt.g_si > 0 ? opt.g_si / u.acc
-                                     : 4 * cr->eta[0][opt.ngdot - 1] * gmax / (p->rho * prp.L[1]);
-                q_rp.reverse_poiseuille = 1;
-                q_rp.g[0] = cr->g;
-                PROGRESS_LOCK
-                print_limits(&q_rp);
-                ok = rp_run(&prp, cr, &sum_rp[-1 - q]);
-            }
-        } else {
-            ok = momentum_run(p, runs[nmom].np, &dp, &dscale, &sum_mom);
-        }
-        PROGRESS_LOCK
-        {
-            if (!ok) prog.failed = 1;
-            if (q >= 0 && q % MAXG == opt.ngdot - 1) shear_done[q / MAXG] = 1;
-        }
+            for (k = 0; k < njob; ++k) run_job(&jc, queue[k]);
     }
     if (prog.failed) return 1;
     for (ci = 0; ci < opt.nconc; ++ci) {
