@@ -56,20 +56,20 @@ $(B)/hcbd_%: examples/hcbd_%.c $(B)/hcbd_impl_hc.o $(HEADERS) examples/example_c
 run: $(B)/gibd_bulk
 	./$(B)/gibd_bulk out=out/gibd_bulk
 
-$(B)/run_tests: $(TEST_SRC) tests/test.h tests/scenes.h tests/list.h $(B)/hcbd_impl.o
+$(B)/run_tests: $(TEST_SRC) tests/test.h tests/scenes.h tests/list.h tests/hc_ref.h $(B)/hcbd_impl.o
 	$(CC) $(ALL_CFLAGS) $(TEST_SRC) $(B)/hcbd_impl.o -o $@ $(LDLIBS)
 
-$(B)/run_tests_float: $(TEST_SRC) tests/test.h tests/scenes.h tests/list.h hcbd_impl.c $(HEADERS) | $(B)
+$(B)/run_tests_float: $(TEST_SRC) tests/test.h tests/scenes.h tests/list.h tests/hc_ref.h hcbd_impl.c $(HEADERS) | $(B)
 	$(CC) $(ALL_CFLAGS) -DHCBD_REAL=float $(TEST_SRC) hcbd_impl.c -o $@ $(LDLIBS)
 
 SAN_CC ?= clang
 SAN := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
 
 # The HCBD build runs its own tests (test_hc_*) and the shared determinism tests.
-$(B)/run_tests_hcbd: $(TEST_SRC) tests/test.h tests/scenes.h tests/list.h $(B)/hcbd_impl_hc.o
+$(B)/run_tests_hcbd: $(TEST_SRC) tests/test.h tests/scenes.h tests/list.h tests/hc_ref.h $(B)/hcbd_impl_hc.o
 	$(CC) $(HC_CFLAGS) $(TEST_SRC) $(B)/hcbd_impl_hc.o -o $@ $(LDLIBS)
 
-$(B)/run_tests_hcbd_float: $(TEST_SRC) tests/test.h tests/scenes.h tests/list.h hcbd_impl.c $(HEADERS) | $(B)
+$(B)/run_tests_hcbd_float: $(TEST_SRC) tests/test.h tests/scenes.h tests/list.h tests/hc_ref.h hcbd_impl.c $(HEADERS) | $(B)
 	$(CC) $(HC_CFLAGS) -DHCBD_REAL=float $(TEST_SRC) hcbd_impl.c -o $@ $(LDLIBS)
 
 # The library under ASan + UBSan, one object per model, shared by the
@@ -82,14 +82,14 @@ $(B)/san_impl.o: hcbd_impl.c $(HEADERS) | $(B)
 $(B)/san_impl_hc.o: hcbd_impl.c $(HEADERS) | $(B)
 	$(SAN_CC) $(WARN) $(FP) $(HCBDFLAG) $(FUZZ_CAP) -O1 -g $(SAN) -c $< -o $@
 
-$(B)/run_tests_hcbd_san: $(TEST_SRC) tests/test.h tests/scenes.h tests/list.h $(B)/san_impl_hc.o
+$(B)/run_tests_hcbd_san: $(TEST_SRC) tests/test.h tests/scenes.h tests/list.h tests/hc_ref.h $(B)/san_impl_hc.o
 	$(SAN_CC) $(WARN) $(FP) $(HCBDFLAG) -O1 -g $(SAN) $(TEST_SRC) $(B)/san_impl_hc.o -o $@ $(LDLIBS)
 
 # The lean GI-BD build: no wall code compiled, wall parameters rejected.
-$(B)/run_tests_gibd: $(TEST_SRC) tests/test.h tests/scenes.h tests/list.h hcbd_impl.c $(HEADERS) | $(B)
+$(B)/run_tests_gibd: $(TEST_SRC) tests/test.h tests/scenes.h tests/list.h tests/hc_ref.h hcbd_impl.c $(HEADERS) | $(B)
 	$(CC) $(WARN) $(FP) $(CFLAGS) $(OMPFLAG) -DHCBD_MODEL=HCBD_MODEL_GIBD $(TEST_SRC) hcbd_impl.c -o $@ $(LDLIBS)
 
-$(B)/run_tests_san: $(TEST_SRC) tests/test.h tests/scenes.h tests/list.h $(B)/san_impl.o
+$(B)/run_tests_san: $(TEST_SRC) tests/test.h tests/scenes.h tests/list.h tests/hc_ref.h $(B)/san_impl.o
 	$(SAN_CC) $(WARN) $(FP) $(MODELFLAG) -O1 -g $(SAN) $(TEST_SRC) $(B)/san_impl.o -o $@ $(LDLIBS)
 
 # make test: every part below, JOBS at a time, each into its own log in
@@ -179,7 +179,7 @@ exercise: $(EXAMPLES) $(HC_EXAMPLES)
 # and -O2 alike): the same hashes for both compilers (gcc's straight-line
 # vectoriser once made them differ).  KMP_BLOCKTIME=0: clang's OpenMP
 # threads sleep instead of spinning between the golden runs' steps.
-$(B)/run_tests_hcbd_float_clang: $(TEST_SRC) tests/test.h tests/scenes.h tests/list.h hcbd_impl.c $(HEADERS) | $(B)
+$(B)/run_tests_hcbd_float_clang: $(TEST_SRC) tests/test.h tests/scenes.h tests/list.h tests/hc_ref.h hcbd_impl.c $(HEADERS) | $(B)
 	$(SAN_CC) $(WARN) $(FP) $(HCBDFLAG) -O1 $(OMPFLAG) -DHCBD_REAL=float $(TEST_SRC) hcbd_impl.c -o $@ $(LDLIBS)
 
 test-hcbd-float: $(B)/run_tests_hcbd_float | $(B)/logs
@@ -205,10 +205,10 @@ test-sanitize-hcbd: $(B)/run_tests_hcbd_san | $(B)/logs
 # gcc's libgomp is not instrumented (hundreds of false reports).
 TSAN := -fsanitize=thread -fopenmp -O1 -g
 TSAN_ENV := TSAN_OPTIONS='ignore_noninstrumented_modules=1 halt_on_error=1'
-$(B)/run_tests_tsan: $(TEST_SRC) tests/test.h tests/scenes.h tests/list.h hcbd_impl.c $(HEADERS) | $(B)
+$(B)/run_tests_tsan: $(TEST_SRC) tests/test.h tests/scenes.h tests/list.h tests/hc_ref.h hcbd_impl.c $(HEADERS) | $(B)
 	$(SAN_CC) $(WARN) $(FP) $(MODELFLAG) $(TSAN) $(TEST_SRC) hcbd_impl.c -o $@ $(LDLIBS)
 
-$(B)/run_tests_hcbd_tsan: $(TEST_SRC) tests/test.h tests/scenes.h tests/list.h hcbd_impl.c $(HEADERS) | $(B)
+$(B)/run_tests_hcbd_tsan: $(TEST_SRC) tests/test.h tests/scenes.h tests/list.h tests/hc_ref.h hcbd_impl.c $(HEADERS) | $(B)
 	$(SAN_CC) $(WARN) $(FP) $(HCBDFLAG) $(TSAN) $(TEST_SRC) hcbd_impl.c -o $@ $(LDLIBS)
 
 test-tsan: $(B)/run_tests_tsan | $(B)/logs
