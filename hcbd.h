@@ -4108,32 +4108,9 @@ typedef struct hcbd__near {
     double x[HCBD__CHUNK], y[HCBD__CHUNK], z[HCBD__CHUNK], r2[HCBD__CHUNK];
 } hcbd__near;
 
-/* Entries [p, pe) of an owner at (xi, yi, zi) into the arrays from place
-   m on, each written and kept only if within cut2; returns the new count.
-   r2out: r^2 of every entry is also stored there, by entry. */
-HCBD__INLINE int hcbd__gather_into(const hcbd_real *HCBD__RESTRICT x, const hcbd_real *HCBD__RESTRICT y,
-                                   const hcbd_real *HCBD__RESTRICT z, const int32_t *HCBD__RESTRICT nb,
-                                   const hcbd__box *box, double xi, double yi, double zi, int32_t p,
-                                   int32_t pe, double cut2, double *HCBD__RESTRICT r2out, int m,
-                                   int32_t *HCBD__RESTRICT oj, int32_t *HCBD__RESTRICT ok,
-                                   int32_t *HCBD__RESTRICT oe, double *HCBD__RESTRICT ox,
-                                   double *HCBD__RESTRICT oy, double *HCBD__RESTRICT oz,
-                                   double *HCBD__RESTRICT or2)
-{
-    for (; p < pe; ++p) {
-        const int j = nb[p];
-        double d[3], r2;
-        const int k = hcbd__delta_box(box, xi - x[j], yi - y[j], zi - z[j], d);
-        r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-        oj[m] = j;
-        if (ok) { ok[m] = k; oe[m] = p; }
-        ox[m] = d[0]; oy[m] = d[1]; oz[m] = d[2]; or2[m] = r2;
-        if (r2out) r2out[p] = r2;
-        m += r2 < cut2;
-    }
-    return m;
-}
-
+/* Written into the one struct c (not through seven pointers, as the
+   stream's hcbd__gather_into is): the 2018 fluid's passes ran 10 % faster
+   so, the same bits (bench/paired.sh, issue 62). */
 HCBD__INLINE int hcbd__gather_at(const hcbd_real *HCBD__RESTRICT x, const hcbd_real *HCBD__RESTRICT y,
                                  const hcbd_real *HCBD__RESTRICT z, const int32_t *HCBD__RESTRICT nb,
                                  const hcbd__box *box, double xi, double yi, double zi, int32_t *p,
@@ -4141,9 +4118,17 @@ HCBD__INLINE int hcbd__gather_at(const hcbd_real *HCBD__RESTRICT x, const hcbd_r
                                  hcbd__near *c)
 {
     const int32_t pe = pend - *p > HCBD__CHUNK ? *p + HCBD__CHUNK : pend;
-    const int m = hcbd__gather_into(x, y, z, nb, box, xi, yi, zi, *p, pe, cut2, r2out, 0, c->j, c->k,
-                                    c->e, c->x, c->y, c->z, c->r2);
-    *p = pe;
+    int m = 0;
+    for (; *p < pe; ++*p) {
+        const int j = nb[*p];
+        double d[3], r2;
+        const int k = hcbd__delta_box(box, xi - x[j], yi - y[j], zi - z[j], d);
+        r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+        c->j[m] = j; c->k[m] = k; c->e[m] = *p;
+        c->x[m] = d[0]; c->y[m] = d[1]; c->z[m] = d[2]; c->r2[m] = r2;
+        if (r2out) r2out[*p] = r2;
+        m += r2 < cut2;
+    }
     return m;
 }
 
@@ -4452,11 +4437,49 @@ HCBD__INLINE void hcbd__partners(const hcbd__trav *T, int i, double xi, double y
     }
 }
 
+/* A traversal in the lean form: partners from the list (or the r^2 it
+   stored) alone, nothing kept per entry, and no channels: its evaluator
+   adds its fixed-point terms to both sides itself, inside its own loop.
+   The 2018 fluid's density, sweep and Euler pairs take it: through the
+   general form with the traversal's channels their step cost 13 % more,
+   the same bits (bench/paired.sh against 251f3af, issue 62). */
+static inline int hcbd__trav_lean(const hcbd__trav *T)
+{
+    int k, lean = !T->emap && !T->kin && !T->kout && !T->ent;
+#if HCBD__WALLS
+    lean &= !T->art;
+#endif
+    for (k = 0; k < HCBD__NQ; ++k) lean &= !T->sink[k];
+    return lean;
+}
+
 HCBD__INLINE int hcbd__traverse(const hcbd__trav *T, const int32_t *owners, int q0, int q1,
                                 void *ctx, hcbd__ev_begin begin, hcbd__ev_pairs pairs,
                                 hcbd__ev_end end)
 {
     int q, k, worst = INT_MAX;
+    if (hcbd__trav_lean(T)) {
+        for (q = q0; q < q1; ++q) {
+            const int i = owners[q];
+            const int32_t pend = T->start[i + 1];
+            int32_t p = T->start[i];
+            hcbd__acc a;
+            int b;
+            if (q + 2 < q1) hcbd__prefetch_owner(T, owners[q + 2]);
+            begin(ctx, i, &a);
+            while (p < pend) {
+                hcbd__near c;
+                hcbd__terms u; /* not read: no channels */
+                const int m = T->r2in ? hcbd__gather_r2(T->nb, T->r2in, &p, pend, T->cut2, &c)
+                                      : hcbd__gather_at(T->x, T->y, T->z, T->nb, &T->box, T->ox[i], T->oy[i],
+                                                        T->oz[i], &p, pend, T->cut2, T->r2out, &c);
+                pairs(ctx, i, &c, m, &a, &u);
+            }
+            b = end(ctx, i, &a);
+            if (b < worst) worst = b;
+        }
+        return worst;
+    }
     for (q = q0; q < q1; ++q) {
         const int i = owners[q];
         int64_t own[HCBD__NQ] = {0, 0, 0, 0, 0, 0, 0};
@@ -4491,6 +4514,28 @@ typedef struct hcbd__stream {
 /* evaluates pairs [0, m) and adds their terms; returns as end does */
 typedef int (*hcbd__ev_stream)(void *ctx, const hcbd__stream *s);
 
+/* Entries [p, pe) of an owner at (xi, yi, zi) into the stream from place
+   m on, each written and kept only if within cut2; returns the new count.
+   r2out: r^2 of every entry is also stored there, by entry. */
+HCBD__INLINE int hcbd__gather_into(const hcbd_real *HCBD__RESTRICT x, const hcbd_real *HCBD__RESTRICT y,
+                                   const hcbd_real *HCBD__RESTRICT z, const int32_t *HCBD__RESTRICT nb,
+                                   const hcbd__box *box, double xi, double yi, double zi, int32_t p,
+                                   int32_t pe, double cut2, double *HCBD__RESTRICT r2out, int m,
+                                   hcbd__stream *s)
+{
+    for (; p < pe; ++p) {
+        const int j = nb[p];
+        double d[3], r2;
+        hcbd__delta_box(box, xi - x[j], yi - y[j], zi - z[j], d);
+        r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+        s->j[m] = j;
+        s->x[m] = d[0]; s->y[m] = d[1]; s->z[m] = d[2]; s->r2[m] = r2;
+        if (r2out) r2out[p] = r2;
+        m += r2 < cut2;
+    }
+    return m;
+}
+
 HCBD__INLINE int hcbd__traverse_stream(const hcbd__trav *T, const int32_t *owners, int q0, int q1,
                                        void *ctx, hcbd__ev_stream flush)
 {
@@ -4517,7 +4562,7 @@ HCBD__INLINE int hcbd__traverse_stream(const hcbd__trav *T, const int32_t *owner
                 s.nseg = 1;
             }
             s.m = hcbd__gather_into(T->x, T->y, T->z, T->nb, &T->box, xi, yi, zi, p, pe, T->cut2,
-                                    T->r2out, m, s.j, NULL, NULL, s.x, s.y, s.z, s.r2);
+                                    T->r2out, m, &s);
             p = pe;
         }
         if (s.at[s.nseg - 1] == s.m) s.nseg--; /* no pair in range: no segment */
@@ -8965,7 +9010,8 @@ static void hcbd__hc_lists_stale(hcbd_hc_world *w)
 }
 
 
-/* Fluid density weights w(r_ij) (MODEL 6) into aW, each pair once */
+/* Fluid density weights w(r_ij) (MODEL 6) into aW, each pair once, in
+   the traversal's lean form (its own sums: q[0] the owner's) */
 typedef struct hcbd__hc_dens_ctx {
     hcbd_hc_world *w;
     double ih, cq;
@@ -8975,26 +9021,27 @@ HCBD__INLINE void hcbd__hc_dens_pairs(void *ctx, int i, const hcbd__near *c, int
                                      hcbd__terms *u)
 {
     const hcbd__hc_dens_ctx *d = (const hcbd__hc_dens_ctx *)ctx;
-    int64_t *HCBD__RESTRICT v = u->u[0];
+    int64_t *HCBD__RESTRICT aW = d->w->aW, v[HCBD__CHUNK];
     int t;
-    (void)i; (void)a;
+    (void)i; (void)u;
     HCBD__OMP(omp simd)
     for (t = 0; t < m; ++t) v[t] = hcbd__fix(d->cq * hcbd__m4u(sqrt(c->r2[t]) * d->ih));
+    for (t = 0; t < m; ++t) {
+        a->q[0] += v[t];
+        aW[c->j[t]] += v[t];
+    }
+}
+
+HCBD__INLINE int hcbd__hc_dens_end(void *ctx, int i, hcbd__acc *a)
+{
+    ((hcbd__hc_dens_ctx *)ctx)->w->aW[i] += a->q[0];
+    return INT_MAX;
 }
 
 /* the fluid's half list over its cell-ordered copy, within range */
 static inline hcbd__trav hcbd__hc_trav_f(const hcbd_hc_world *w, double range)
 {
     return hcbd__trav_make(&w->lf, w->sx, w->sy, w->sz, w->sx, w->sy, w->sz, hcbd__hc_box(w), range);
-}
-
-/* the same, its channels 0..2 summing the pair forces into aF */
-static inline hcbd__trav hcbd__hc_trav_force(hcbd_hc_world *w, double range)
-{
-    hcbd__trav T = hcbd__hc_trav_f(w, range);
-    int d;
-    for (d = 0; d < 3; ++d) hcbd__trav_sink(&T, d, w->aF[d], -1);
-    return T;
 }
 
 static int hcbd__hc_dens_owners(void *ctx, int q0, int q1)
@@ -9006,8 +9053,7 @@ static int hcbd__hc_dens_owners(void *ctx, int q0, int q1)
     d.w = w;
     d.ih = 1.0 / h;
     d.cq = w->core.qW / (4.0 * HCBD__PI * h * h * h);
-    hcbd__trav_sink(&T, 0, w->aW, 1);
-    return hcbd__traverse(&T, w->lf.perm, q0, q1, &d, hcbd__ev_zero, hcbd__hc_dens_pairs, hcbd__ev_done);
+    return hcbd__traverse(&T, w->lf.perm, q0, q1, &d, hcbd__ev_zero, hcbd__hc_dens_pairs, hcbd__hc_dens_end);
 }
 
 /* Fluid densities and Tait pressures (MODEL 6). */
@@ -9491,9 +9537,9 @@ typedef struct hcbd__hc_sweep_ctx {
     int noise, stress;
 } hcbd__hc_sweep_ctx;
 
-/* terms: 0..2 the pressure force; acc: r[0..2] the owner's velocity (in
-   registers: no partner is the owner itself), r[3] r[4] its viscous and
-   pressure stress */
+/* the traversal's lean form: acc q[0..2] the owner's pressure force
+   (fixed point), r[0..2] its velocity (in registers: no partner is the
+   owner itself), r[3] r[4] its viscous and pressure stress */
 HCBD__INLINE void hcbd__hc_sweep_begin(void *ctx, int i, hcbd__acc *a)
 {
     const hcbd_hc_world *w = ((const hcbd__hc_sweep_ctx *)ctx)->w;
@@ -9513,8 +9559,10 @@ HCBD__INLINE void hcbd__hc_sweep_pairs(void *ctx, int i, const hcbd__near *c, in
     const int32_t *HCBD__RESTRICT fid = w->fid;
     const int32_t idi = fid[i];
     double vxi = a->r[0], vyi = a->r[1], vzi = a->r[2], x[HCBD__CHUNK], om[HCBD__CHUNK], f0[HCBD__CHUNK];
-    int64_t *HCBD__RESTRICT u0 = u->u[0], *HCBD__RESTRICT u1 = u->u[1], *HCBD__RESTRICT u2 = u->u[2];
+    int64_t u0[HCBD__CHUNK], u1[HCBD__CHUNK], u2[HCBD__CHUNK];
+    int64_t *HCBD__RESTRICT aFx = w->aF[0], *HCBD__RESTRICT aFy = w->aF[1], *HCBD__RESTRICT aFz = w->aF[2];
     int t, bad = 0;
+    (void)u;
     HCBD__OMP(omp simd reduction(|:bad))
     for (t = 0; t < mm; ++t) {
         const int j = c->j[t];
@@ -9548,6 +9596,9 @@ HCBD__INLINE void hcbd__hc_sweep_pairs(void *ctx, int i, const hcbd__near *c, in
         vxi = (hcbd_real)(vxi + P[0] * inv_m); vx[j] = (hcbd_real)(vx[j] - P[0] * inv_m);
         vyi = (hcbd_real)(vyi + P[1] * inv_m); vy[j] = (hcbd_real)(vy[j] - P[1] * inv_m);
         vzi = (hcbd_real)(vzi + P[2] * inv_m); vz[j] = (hcbd_real)(vz[j] - P[2] * inv_m);
+        a->q[0] += u0[t]; aFx[j] -= u0[t];
+        a->q[1] += u1[t]; aFy[j] -= u1[t];
+        a->q[2] += u2[t]; aFz[j] -= u2[t];
         a->r[3] += c->y[t] * P[0];
         a->r[4] += c->y[t] * f0[t];
     }
@@ -9560,6 +9611,7 @@ HCBD__INLINE int hcbd__hc_sweep_end(void *ctx, int i, hcbd__acc *a)
     hcbd_hc_world *w = s->w;
     const int32_t idi = w->fid[i];
     w->svx[i] = (hcbd_real)a->r[0]; w->svy[i] = (hcbd_real)a->r[1]; w->svz[i] = (hcbd_real)a->r[2];
+    w->aF[0][i] += a->q[0]; w->aF[1][i] += a->q[1]; w->aF[2][i] += a->q[2];
     if (s->stress) {
         w->fs[3 * idi] = a->r[4];
         w->fs[3 * idi + 1] = a->r[3] / s->dt;
@@ -9583,7 +9635,7 @@ static int hcbd__hc_fluid_shardlow(hcbd_hc_world *w, double dt, uint64_t skey)
     const double s = w->core.le_on ? w->core.le_offset - L[0] * floor(w->core.le_offset / L[0] + 0.5) : 0.0;
     const double t = s / L[1];
     const double h = w->p.h;
-    const hcbd__trav T = hcbd__hc_trav_force(w, 2.0 * h);
+    const hcbd__trav T = hcbd__hc_trav_f(w, 2.0 * h);
     hcbd__hc_sweep_ctx sc;
     /* blocks move with blob 0, so that a boosted copy of the world sweeps
        in the same order (Galilean invariance of the trajectory) */
@@ -9655,8 +9707,9 @@ typedef struct hcbd__hc_kick_ctx {
     int noise, stress;
 } hcbd__hc_kick_ctx;
 
-/* terms: 0..2 the force; acc: r[0..2] the owner's velocity, r[3] its
-   P/n^2, r[4] its 1/n, r[5..7] its pressure, viscous and noise stress */
+/* the traversal's lean form: acc q[0..2] the owner's force (fixed point),
+   r[0..2] its velocity, r[3] its P/n^2, r[4] its 1/n, r[5..7] its
+   pressure, viscous and noise stress */
 HCBD__INLINE void hcbd__hc_kick_begin(void *ctx, int i, hcbd__acc *a)
 {
     const hcbd_hc_world *w = ((const hcbd__hc_kick_ctx *)ctx)->w;
@@ -9677,12 +9730,12 @@ HCBD__INLINE void hcbd__hc_kick_pairs(void *ctx, int i, const hcbd__near *c, int
     const double qF = s->qF, lim = s->lim, ih = s->ih, c1h = s->c1h, two_eta = s->two_eta, vj = s->vj;
     /* the deterministic forces in a SIMD loop, the noise (one draw per
        pair) and the stress sums (in pair order) apart: the same operations
-       on each pair, so the same bits (the forces wait in u->e: this pass
-       keeps no values per entry) */
-    double fp[HCBD__CHUNK], fv0[HCBD__CHUNK], fm[HCBD__CHUNK];
-    double *HCBD__RESTRICT Fx = u->e[0], *HCBD__RESTRICT Fy = u->e[1], *HCBD__RESTRICT Fz = u->e[2];
-    int64_t *HCBD__RESTRICT U0 = u->u[0], *HCBD__RESTRICT U1 = u->u[1], *HCBD__RESTRICT U2 = u->u[2];
+       on each pair, so the same bits */
+    double fp[HCBD__CHUNK], fv0[HCBD__CHUNK], fm[HCBD__CHUNK], Fx[HCBD__CHUNK], Fy[HCBD__CHUNK], Fz[HCBD__CHUNK];
+    int64_t U0[HCBD__CHUNK], U1[HCBD__CHUNK], U2[HCBD__CHUNK];
+    int64_t *HCBD__RESTRICT aFx = w->aF[0], *HCBD__RESTRICT aFy = w->aF[1], *HCBD__RESTRICT aFz = w->aF[2];
     int t, bad = 0;
+    (void)u;
     HCBD__OMP(omp simd)
     for (t = 0; t < m; ++t) {
         const int j = c->j[t];
@@ -9719,6 +9772,12 @@ HCBD__INLINE void hcbd__hc_kick_pairs(void *ctx, int i, const hcbd__near *c, int
         U1[t] = hcbd__fix(Fy[t] * qF);
         U2[t] = hcbd__fix(Fz[t] * qF);
     }
+    for (t = 0; t < m; ++t) {
+        const int j = c->j[t];
+        a->q[0] += U0[t]; aFx[j] -= U0[t];
+        a->q[1] += U1[t]; aFy[j] -= U1[t];
+        a->q[2] += U2[t]; aFz[j] -= U2[t];
+    }
     a->bad |= bad;
 }
 
@@ -9727,6 +9786,7 @@ HCBD__INLINE int hcbd__hc_kick_end(void *ctx, int i, hcbd__acc *a)
     const hcbd__hc_kick_ctx *s = (const hcbd__hc_kick_ctx *)ctx;
     hcbd_hc_world *w = s->w;
     const int32_t idi = w->fid[i];
+    w->aF[0][i] += a->q[0]; w->aF[1][i] += a->q[1]; w->aF[2][i] += a->q[2];
     if (s->stress) { /* by id: the sum over blobs in a fixed order */
         w->fs[3 * idi] = a->r[5];
         w->fs[3 * idi + 1] = a->r[6];
@@ -9739,7 +9799,7 @@ HCBD__INLINE int hcbd__hc_kick_run(hcbd_hc_world *w, int q0, int q1, const int n
                                    const int stress)
 {
     const double h = w->p.h, dt = w->p.dt / w->p.substeps;
-    const hcbd__trav T = hcbd__hc_trav_force(w, 2.0 * h);
+    const hcbd__trav T = hcbd__hc_trav_f(w, 2.0 * h);
     hcbd__hc_kick_ctx s;
     s.w = w;
     s.ih = 1.0 / h;
