@@ -25,9 +25,15 @@
    200/8, 400/16) and at 10 us and 12.5 us with a long polymer step
    (400/40, 400/32).  About 35 minutes on two threads.
 
+   pair=euler and coupling=raw take preset=paper's own schemes (the
+   explicit Euler fluid pairs, the weights w/n_i) instead of the library's
+   (the exact sweep, Shepard weights).
+
    usage: wp_table1 [C=5] [L=10] [Wi=0.3,1,3] [cfg=50/5,50/1,...] [startup=1]
-                    [blocks=2] [threads=2] [seed=1] [out=bench/results]
-   Writes OUT/wp_table1.csv. */
+                    [blocks=2] [threads=2] [seed=1] [pair=shardlow|euler]
+                    [coupling=shepard|raw] [out=bench/results]
+   Writes OUT/wp_table1.csv (OUT/wp_table1_euler_raw.csv and the like for
+   other schemes). */
 #include "bench_common.h"
 
 #define PI 3.14159265358979323846
@@ -164,7 +170,9 @@ int main(int argc, char **argv)
     int ncf = 9, nwi = 3, startup = 1, nblk = 2, threads = 2, k, i, j, np;
     unsigned long long seed = 1;
     const char *out = "bench/results";
-    char msg[256], path[512];
+    char msg[256], path[512], tag[32] = "";
+    hcbd_pair_integrator pair = HCBD_PAIR_SHARDLOW;
+    hcbd_coupling coupling = HCBD_COUPLE_SHEPARD;
     hcbd_hc_si si = hcbd_hc_si_default();
     hcbd_hc_params p;
     FILE *f;
@@ -192,7 +200,11 @@ int main(int argc, char **argv)
         else if (!strncmp(argv[k], "threads=", 8)) threads = atoi(v);
         else if (!strncmp(argv[k], "seed=", 5)) seed = strtoull(v, NULL, 10);
         else if (!strncmp(argv[k], "out=", 4)) out = v;
-        else { fprintf(stderr, "wp_table1: unknown key '%s'\n", argv[k]); return 2; }
+        else if (!strncmp(argv[k], "pair=", 5) && (!strcmp(v, "euler") || !strcmp(v, "shardlow")))
+            pair = !strcmp(v, "euler") ? HCBD_PAIR_EULER : HCBD_PAIR_SHARDLOW;
+        else if (!strncmp(argv[k], "coupling=", 9) && (!strcmp(v, "raw") || !strcmp(v, "shepard")))
+            coupling = !strcmp(v, "raw") ? HCBD_COUPLE_RAW : HCBD_COUPLE_SHEPARD;
+        else { fprintf(stderr, "wp_table1: unknown key or value '%s'\n", argv[k]); return 2; }
     }
     if (nwi < 1 || ncf < 1 || startup < 0 || nblk < 2 || nblk > MAXBLK || !(C > 0) || !(L >= 8)) {
         fprintf(stderr, "wp_table1: bad Wi, cfg, startup, blocks (2..%d), C or L (>= 8)\n", MAXBLK);
@@ -204,11 +216,18 @@ int main(int argc, char **argv)
     }
     p.L[0] = p.L[1] = p.L[2] = L;
     p.fluctuations = 0;
+    p.pair_integrator = pair;
+    p.coupling = coupling;
+    if (pair != HCBD_PAIR_SHARDLOW || coupling != HCBD_COUPLE_SHEPARD)
+        snprintf(tag, sizeof tag, "_%s_%s", pair == HCBD_PAIR_EULER ? "euler" : "shardlow",
+                 coupling == HCBD_COUPLE_RAW ? "raw" : "shepard");
     p.threads = threads;
     p.seed = seed;
     np = (int)floor(C * 3.0 / (4.0 * PI) * L * L * L + 0.5);
     printf("wp_table1: Table I, box %g^3, C = %g C* (%d polymers), tau_lambda = %g us, startup %d tau_lambda, "
-           "%d blocks of tau_lambda/2, threads %d\n", L, C, np, p.tau_lambda, startup, nblk, threads);
+           "%d blocks of tau_lambda/2, threads %d, %s fluid pairs, %s weights\n", L, C, np, p.tau_lambda, startup,
+           nblk, threads, pair == HCBD_PAIR_EULER ? "Euler" : "exact sweep",
+           coupling == HCBD_COUPLE_RAW ? "raw (w/n_i)" : "Shepard");
     printf("%-6s %-5s %-4s %9s %9s %9s %9s %9s %8s %9s %8s %8s %8s\n", "dt_us", "sub", "Wi", "eta/eta_s", "err",
            "d_eta", "d_err", "fluid", "polymer", "pairs", "msd_z", "T_fluid", "s/tau_l");
     fflush(stdout);
@@ -222,13 +241,15 @@ int main(int argc, char **argv)
                    cf[j].sub, wis[i], o[0], o[1], o[2], o[3], o[4], o[5], o[6], o[7], o[8], r->wall);
             fflush(stdout);
         }
-    snprintf(path, sizeof path, "%s/wp_table1.csv", out);
+    snprintf(path, sizeof path, "%s/wp_table1%s.csv", out, tag);
     if (!(f = fopen(path, "w"))) {
         fprintf(stderr, "wp_table1: cannot write %s\n", path);
         return 1;
     }
-    fprintf(f, "# wp_table1 C=%g L=%g startup=%d blocks=%d threads=%d seed=%llu; eta in units of the solvent eta; "
-               "d_eta: eta minus the first configuration's, paired block by block\n", C, L, startup, nblk, threads, seed);
+    fprintf(f, "# wp_table1 C=%g L=%g startup=%d blocks=%d threads=%d seed=%llu pair=%s coupling=%s; eta in units of "
+               "the solvent eta; d_eta: eta minus the first configuration's, paired block by block\n", C, L, startup,
+            nblk, threads, seed, pair == HCBD_PAIR_EULER ? "euler" : "shardlow",
+            coupling == HCBD_COUPLE_RAW ? "raw" : "shepard");
     fprintf(f, "dt_us,substeps,Wi,eta,eta_err,d_eta,d_eta_err,eta_fluid,eta_polymer,pairs_per_polymer,msd_z,T_fluid,"
                "seconds_per_tau_lambda\n");
     for (i = 0; i < nwi; ++i)
