@@ -32,7 +32,7 @@ HC_EXAMPLES := $(B)/hcbd_fluid $(B)/hcbd_polymer $(B)/hcbd_sound
 HEADERS  := hcbd.h
 TEST_SRC := $(wildcard tests/test_*.c) tests/main.c
 
-.PHONY: all run test validate mutants exercise lammps test-lammps mutants-lammps test-main test-walls test-float test-hcbd-float test-hcbd-float-clang test-examples test-gibd test-hcbd test-sanitize test-sanitize-hcbd test-tsan test-tsan-hcbd test-fuzz-args test-fuzz-ckpt test-install test-build build-check install fuzz bench bench-wp bench-wp-peers bench-wp-sph-peers bench-wp-table1 bench-table2-departures bench-stability bench-peers bench-parts bench-soak clean
+.PHONY: all run python test-python test validate mutants exercise lammps test-lammps mutants-lammps test-main test-walls test-float test-hcbd-float test-hcbd-float-clang test-examples test-gibd test-hcbd test-sanitize test-sanitize-hcbd test-tsan test-tsan-hcbd test-fuzz-args test-fuzz-ckpt test-install test-build build-check install fuzz bench bench-wp bench-wp-peers bench-wp-sph-peers bench-wp-table1 bench-table2-departures bench-stability bench-peers bench-parts bench-soak clean
 
 all: $(B)/hcbd_impl.o $(EXAMPLES) $(HC_EXAMPLES)
 
@@ -102,7 +102,7 @@ $(B)/run_tests_san: $(TEST_SRC) tests/test.h tests/scenes.h tests/list.h tests/h
 # the fuzz inputs replayed under ASan + UBSan; an install and a program
 # built against the installed header only.
 JOBS ?= 2
-TEST_PARTS := main sanitize walls hcbd sanitize-hcbd hcbd-float hcbd-float-clang examples float gibd tsan tsan-hcbd fuzz-args fuzz-ckpt install build docs
+TEST_PARTS := main sanitize walls hcbd sanitize-hcbd hcbd-float hcbd-float-clang examples float gibd tsan tsan-hcbd fuzz-args fuzz-ckpt install build docs python
 LOG = > $(CURDIR)/$(B)/logs/$(1).log 2>&1 || { tail -n 30 $(CURDIR)/$(B)/logs/$(1).log; exit 1; }
 # The parts share the cores: an OpenMP thread that waits sleeps instead of
 # spinning on a core another part needs (a threaded run took 7 s instead
@@ -116,6 +116,27 @@ test:
 	-@$(MAKE) --no-print-directory -j$(JOBS) $(B)/run_tests $(B)/gibd_bulk
 	-@$(MAKE) --no-print-directory -k -j$(JOBS) $(addprefix test-,$(TEST_PARTS))
 	@tests/summary.sh $(B)/logs $(TEST_PARTS)
+
+# make python: the Python package (python/hcbd, ctypes and numpy; no
+# compiled extension module): its two shared libraries, the walled build
+# and the 2018 one, each hcbd_impl.c with the package's C layer
+# (python/hcbd_py.c), and a .pth file in PYTHON's user site-packages that
+# points at python/.  PYTHON: the first python3 that imports numpy
+# (Debian's /usr/bin/python3 after apt-get install python3-numpy), or
+# PYTHON=... to choose.
+PYTHON ?= $(shell for p in python3 /usr/bin/python3; do $$p -c 'import numpy' >/dev/null 2>&1 && { command -v $$p; break; }; done)
+PY_LIBS := python/hcbd/_hcbd_walled.so python/hcbd/_hcbd_hc.so
+python/hcbd/_hcbd_walled.so: hcbd_impl.c python/hcbd_py.c $(HEADERS) Makefile
+	$(CC) $(WARN) $(FP) -DHCBD_MODEL=HCBD_MODEL_WALLED $(CFLAGS) $(OMPFLAG) -fPIC -shared hcbd_impl.c python/hcbd_py.c -o $@ $(LDLIBS)
+
+python/hcbd/_hcbd_hc.so: hcbd_impl.c python/hcbd_py.c $(HEADERS) Makefile
+	$(CC) $(HC_CFLAGS) -fPIC -shared hcbd_impl.c python/hcbd_py.c -o $@ $(LDLIBS)
+
+python: $(PY_LIBS)
+	@test -n "$(PYTHON)" || { echo "make python: no python3 here imports numpy (apt-get install python3-numpy, or PYTHON=...)"; exit 1; }
+	@site=$$($(PYTHON) -c 'import site; print(site.getusersitepackages())') && mkdir -p "$$site" && \
+	  echo "$(CURDIR)/python" > "$$site/hcbd.pth" && \
+	  echo "make python: $(PYTHON) imports hcbd from $(CURDIR)/python ($$site/hcbd.pth)"
 
 # make lammps: LAMMPS with the PLUGIN package and MPI, from Debian's source
 # package, into build/lammps (cached), and the GI-BD plugin against it;
@@ -292,6 +313,11 @@ CONV := -Wshadow -Wconversion -Wno-sign-conversion
 # the header's banners against its CONTENTS, and the programs the docs quote
 test-docs: | $(B)/logs
 	tests/docs.sh $(call LOG,docs)
+
+# the Python package's pytest suite (tests/python), or a line saying why
+# it was skipped; its counts join the total
+test-python: | $(B)/logs
+	PYTHON="$(PYTHON)" MAKE="$(MAKE)" tests/python.sh $(call LOG,python)
 
 test-build: | $(B)/logs
 	$(MAKE) --no-print-directory build-check $(call LOG,build)
