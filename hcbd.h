@@ -4247,7 +4247,10 @@ HCBD__INLINE int hcbd__gather_art(const hcbd__wallset *s, const double L[3], hcb
    of its model (hcbd__weight, hcbd__star_table, hcbd__sdt; hcbd__rapid,
    hcbd__flory_fr, hcbd__spring_fr, hcbd__tait_fr, hcbd__morris_f).  The
    schedulers (slabs: hcbd__nl_owners; colours: hcbd__colours) hand it
-   ranges of owners.  A pass whose terms need only the separation may take
+   ranges of owners.  A pass with no channels, nothing kept and its
+   partners from the list takes the loop's lean form (hcbd__trav_lean),
+   its evaluator adding its own fixed-point terms inside its loop: the hot
+   fluid passes, measured faster so.  A pass whose terms need only the separation may take
    the streamed form below instead (same owners, same partners, same bits,
    the same scatter). */
 typedef struct hcbd__acc {

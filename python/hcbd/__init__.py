@@ -164,6 +164,19 @@ def _define(lib, params):
     return d
 
 
+def _create(lib, params):
+    """A world of the C defaults and params, or ValueError with the library's message."""
+    d = _define(lib, params)
+    msg = _msgbuf()
+    try:
+        h = lib.hpy_world_new(d, msg, _MSG)
+    finally:
+        lib.hpy_def_free(d)
+    if not h:
+        raise ValueError(msg.value.decode(errors="replace"))
+    return h
+
+
 class _Base:
     _kind = None
     _prefix = None
@@ -299,14 +312,7 @@ class World(_Base):
                 raise ValueError("wall_thickness = %r is not a number" % (wall,))
             edge = math.cbrt(N / float(dens))
             params["L"] = [edge, edge + 2.0 * float(wall) if wall else edge, edge]
-        d = _define(lib, params)
-        msg = _msgbuf()
-        try:
-            h = lib.hpy_world_new(d, msg, _MSG)
-        finally:
-            lib.hpy_def_free(d)
-        if not h:
-            raise ValueError(msg.value.decode(errors="replace"))
+        h = _create(lib, params)
         _Base.__init__(self, h, lib)
         if positions is not None:
             self.set_positions(positions)
@@ -388,14 +394,7 @@ class HCWorld(_Base):
                              (fluid, polymers))
         params.setdefault("fluid_capacity", fluid)
         params.setdefault("polymer_capacity", polymers)
-        d = _define(lib, params)
-        msg = _msgbuf()
-        try:
-            h = lib.hpy_world_new(d, msg, _MSG)
-        finally:
-            lib.hpy_def_free(d)
-        if not h:
-            raise ValueError(msg.value.decode(errors="replace"))
+        h = _create(lib, params)
         _Base.__init__(self, h, lib)
         if fluid_positions is not None:
             self.set_fluid(fluid_positions, fluid_velocities)
