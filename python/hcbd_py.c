@@ -39,15 +39,19 @@ typedef char hpy_enum_is_int[sizeof(hcbd_pair_integrator) == sizeof(int) ? 1 : -
 
 #define P(f) offsetof(hpy_def, params.f)
 #define D(f) offsetof(hpy_def, f)
+/* the keys both builds share, each at its own build's offset */
+#define HPY_COMMON_KEYS                                                                                      \
+    {"max_pairs", D(max_pairs), 'I', 1, {0}}, {"L", P(L), 'd', 3, {0}}, {"dt", P(dt), 'd', 1, {0}},             \
+        {"kT", P(kT), 'd', 1, {0}}, {"xi", P(xi), 'd', 1, {0}}, {"sigma", P(sigma), 'd', 1, {0}},               \
+        {"gdot", P(gdot), 'd', 1, {0}}, {"pair_integrator", P(pair_integrator), 'c', 1, {"euler", "shardlow", 0}}, \
+        {"seed", P(seed), 'u', 1, {0}}, {"threads", P(threads), 'i', 1, {0}},                                 \
+        {"guard_every", P(guard_every), 'i', 1, {0}},
 static const hpy_key hpy_keys[] = {
+    HPY_COMMON_KEYS
 #if HCBD_MODEL == HCBD_MODEL_HCBD
     {"fluid_capacity", D(fluid_capacity), 'i', 1, {0}},
     {"polymer_capacity", D(polymer_capacity), 'i', 1, {0}},
     {"pair_capacity", D(pair_capacity), 'i', 1, {0}},
-    {"max_pairs", D(max_pairs), 'I', 1, {0}},
-    {"L", P(L), 'd', 3, {0}},
-    {"dt", P(dt), 'd', 1, {0}},
-    {"kT", P(kT), 'd', 1, {0}},
     {"rho", P(rho), 'd', 1, {0}},
     {"nbar", P(nbar), 'd', 1, {0}},
     {"eta", P(eta), 'd', 1, {0}},
@@ -56,9 +60,6 @@ static const hpy_key hpy_keys[] = {
     {"fluctuations", P(fluctuations), 'i', 1, {0}},
     {"g", P(g), 'd', 3, {0}},
     {"reverse_poiseuille", P(reverse_poiseuille), 'i', 1, {0}},
-    {"gdot", P(gdot), 'd', 1, {0}},
-    {"xi", P(xi), 'd', 1, {0}},
-    {"sigma", P(sigma), 'd', 1, {0}},
     {"rc", P(rc), 'd', 1, {0}},
     {"alpha", P(alpha), 'd', 1, {0}},
     {"tau_lambda", P(tau_lambda), 'd', 1, {0}},
@@ -66,18 +67,9 @@ static const hpy_key hpy_keys[] = {
     {"n_max", P(n_max), 'd', 1, {0}},
     {"chi", P(chi), 'd', 1, {0}},
     {"coupling", P(coupling), 'c', 1, {"shepard", "raw", 0}},
-    {"pair_integrator", P(pair_integrator), 'c', 1, {"euler", "shardlow", 0}},
     {"substeps", P(substeps), 'i', 1, {0}},
-    {"seed", P(seed), 'u', 1, {0}},
-    {"threads", P(threads), 'i', 1, {0}},
-    {"guard_every", P(guard_every), 'i', 1, {0}},
 #else
     {"capacity", D(capacity), 'i', 1, {0}},
-    {"max_pairs", D(max_pairs), 'I', 1, {0}},
-    {"L", P(L), 'd', 3, {0}},
-    {"dt", P(dt), 'd', 1, {0}},
-    {"kT", P(kT), 'd', 1, {0}},
-    {"xi", P(xi), 'd', 1, {0}},
     {"xip", P(xip), 'd', 1, {0}},
     {"tau", P(tau), 'd', 1, {0}},
     {"Rc", P(Rc), 'd', 1, {0}},
@@ -87,16 +79,13 @@ static const hpy_key hpy_keys[] = {
     {"dynamics", P(dynamics), 'c', 1, {"gibd", "bd", 0}},
     {"potential", P(potential), 'c', 1, {"ideal", "star", 0}},
     {"noise", P(noise), 'c', 1, {"gauss", "uniform", 0}},
-    {"pair_integrator", P(pair_integrator), 'c', 1, {"euler", "shardlow", 0}},
     {"brownian", P(brownian), 'c', 1, {"euler", "lm", 0}},
     {"f", P(f), 'd', 1, {0}},
-    {"sigma", P(sigma), 'd', 1, {0}},
     {"star_eps", P(star_eps), 'd', 1, {0}},
     {"rcut", P(rcut), 'd', 1, {0}},
     {"force_table", P(force_table), 'i', 1, {0}},
     {"fext", P(fext), 'd', 3, {0}},
     {"fext_background_only", P(fext_background_only), 'i', 1, {0}},
-    {"gdot", P(gdot), 'd', 1, {0}},
 #if HCBD_MODEL == HCBD_MODEL_WALLED
     {"wall_thickness", P(wall.thickness), 'd', 1, {0}},
     {"wall_vx", P(wall.vx), 'd', 2, {0}},
@@ -111,13 +100,11 @@ static const hpy_key hpy_keys[] = {
 #endif
     {"skin", P(skin), 'd', 1, {0}},
     {"sort", P(sort), 'i', 1, {0}},
-    {"seed", P(seed), 'u', 1, {0}},
-    {"threads", P(threads), 'i', 1, {0}},
     {"min_distance", P(min_distance), 'd', 1, {0}},
-    {"guard_every", P(guard_every), 'i', 1, {0}},
     {"guard_step", P(guard_step), 'd', 1, {0}},
 #endif
 };
+#undef HPY_COMMON_KEYS
 #undef P
 #undef D
 
