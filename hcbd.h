@@ -514,6 +514,10 @@ typedef struct hcbd__core {
     uint64_t live;        /* HCBD__LIVE while initialised: loaders replace
                              a live world only once the new one is built */
     void *mem;            /* the block _create allocated (NULL after _init) */
+    /* 1: every pass in its general form, the reference a test holds the
+       fast paths to bit for bit (no fused or skipped pass, no stream
+       form, no reused r^2, no specialised loop); not saved */
+    int general;
 } hcbd__core;
 
 /* Cells and a half Verlet list of one set of particles, the machinery both
@@ -5080,7 +5084,7 @@ HCBD__INLINE int hcbd__forces_run(hcbd_world *w, int q0, int q1, const int pot, 
         if (fric) hcbd__trav_sink(&T, 3 + d, w->aP[d], -1);
     }
     if (lag) hcbd__trav_sink(&T, 6, w->aW, 1);
-    if (pot && !fric && !flux && f.table && w->p.rcut > w->p.sigma)
+    if (pot && !fric && !flux && f.table && w->p.rcut > w->p.sigma && !w->core.general)
         return hcbd__traverse_stream(&T, w->nl.perm, q0, q1, &f,
                                      lag ? hcbd__force_stream_dens : hcbd__force_stream_pot);
     return hcbd__traverse(&T, w->nl.perm, q0, q1, &f, hcbd__force_begin, hcbd__force_pairs,
@@ -5124,10 +5128,10 @@ static hcbd_result hcbd__forces(hcbd_world *w, int dens)
     }
     if (w->gibd && (w->p.lagged_density || dens)) hcbd__zero64(w->aW, n);
     /* the exact sweep that follows takes the pairs' r^2 from this pass */
-    w->pr2_ok = dens && w->pr2 && !w->core.le_on;
+    w->pr2_ok = dens && w->pr2 && !w->core.le_on && !w->core.general;
     {
         const int pot = w->p.potential != HCBD_POT_IDEAL, fric = w->gibd && !w->shardlow;
-        const int plain = !w->core.stress_on && !(w->gibd && w->p.lagged_density) && pot;
+        const int plain = !w->core.stress_on && !(w->gibd && w->p.lagged_density) && pot && !w->core.general;
         bad = hcbd__owners(w, dens ? hcbd__forces_dens : plain && !fric ? hcbd__forces_pot
                               : plain ? hcbd__forces_gibd : hcbd__forces_any);
     }
@@ -5694,10 +5698,10 @@ hcbd_result hcbd_world_step(hcbd_world *w, int nsteps)
         }
         const int dens = w->gibd && hcbd__density_stale(w);
         const int fuse = dens && w->shardlow && w->p.potential != HCBD_POT_IDEAL &&
-                         !w->p.lagged_density && !w->core.stress_on;
+                         !w->p.lagged_density && !w->core.stress_on && !w->core.general;
         if (dens && !fuse) hcbd__density(w);
         if (w->has_pairs && !(w->shardlow && w->p.potential == HCBD_POT_IDEAL &&
-                              !w->p.lagged_density && !w->core.stress_on)) {
+                              !w->p.lagged_density && !w->core.stress_on && !w->core.general)) {
             r = hcbd__forces(w, fuse);
             if (r != HCBD_OK) return r;
         }
@@ -9856,7 +9860,7 @@ static int hcbd__hc_fluid_kick(hcbd_hc_world *w, double dt, uint64_t skey)
     w->kick_key = skey;
     bad = exact ? hcbd__hc_fluid_shardlow(w, dt, skey)
                 : hcbd__nl_owners(&w->lf, n, nt, w,
-                                  w->core.stress_on ? hcbd__hc_kick_any
+                                  w->core.stress_on || w->core.general ? hcbd__hc_kick_any
                                   : w->noise_f ? hcbd__hc_kick_vn
                                                : hcbd__hc_kick_v);
     HCBD__OMP(omp parallel for num_threads(nt) schedule(static))
