@@ -261,6 +261,48 @@ void hpy_world_free(void *w)
     free(w);
 }
 
+/* The world's value of parameter `key` (its params, as set and checked
+   at creation): the number of values written to out (at most 3), a
+   choice as its position in the list with its name in *choice, *integer
+   1 for an integer; -1 for an unknown key or one of the definition's
+   sizes (not a parameter). */
+int hpy_param_get(const void *wv, const char *key, double *out, const char **choice, int *integer)
+{
+    const hpy_world *w = (const hpy_world *)wv;
+    const size_t base = offsetof(hpy_def, params);
+    int k, c;
+    if (!w || !key || !out) return -1;
+    for (k = 0; k < (int)(sizeof hpy_keys / sizeof hpy_keys[0]); ++k) {
+        const hpy_key *e = hpy_keys + k;
+        const char *f = (const char *)&w->p + (e->off - base);
+        if (strcmp(e->name, key)) continue;
+        if (e->off < base || e->off >= base + sizeof w->p) return -1;
+        if (integer) *integer = e->kind != 'd' && e->kind != 'c';
+        for (c = 0; c < e->n; ++c) {
+            if (e->kind == 'd') {
+                memcpy(out + c, f + c * sizeof(double), sizeof(double));
+            } else if (e->kind == 'u') {
+                uint64_t y;
+                memcpy(&y, f, sizeof y);
+                out[c] = (double)y;
+            } else if (e->kind == 'I') {
+                int64_t y;
+                memcpy(&y, f, sizeof y);
+                out[c] = (double)y;
+            } else {
+                int y;
+                memcpy(&y, f, sizeof y);
+                out[c] = y;
+                if (e->kind == 'c' && choice) *choice = y >= 0 && y < 3 ? e->choices[y] : NULL;
+            }
+        }
+        return e->n;
+    }
+    return -1;
+}
+
+uint64_t hpy_seed(const void *w) { return w ? ((const hpy_world *)w)->p.seed : 0; }
+
 /* the message of the world's last error */
 const char *hpy_error(const void *w) { return w ? ((const hpy_world *)w)->err.msg : "no world"; }
 

@@ -25,6 +25,8 @@ rm -f "$out"
 p=$(echo "$summary" | sed -n 's/.* \([0-9][0-9]*\) passed.*/\1/p; s/^\([0-9][0-9]*\) passed.*/\1/p' | head -1)
 f=$(echo "$summary" | sed -n 's/.* \([0-9][0-9]*\) failed.*/\1/p; s/^\([0-9][0-9]*\) failed.*/\1/p' | head -1)
 e=$(echo "$summary" | sed -n 's/.* \([0-9][0-9]*\) error.*/\1/p' | head -1)
+sk=$(echo "$summary" | sed -n 's/.* \([0-9][0-9]*\) skipped.*/\1/p' | head -1)
+[ -n "$sk" ] && echo "python: $sk skipped (the notebooks need python3-nbclient, python3-ipykernel, python3-nbformat, python3-matplotlib)"
 p=${p:-0}; f=$(( ${f:-0} + ${e:-0} ))
 [ "$f" = 0 ] && [ "$p" = 0 ] && f=1  # nothing ran: count it as a failure
 echo "$p passed, $f failed"

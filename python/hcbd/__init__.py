@@ -65,7 +65,7 @@ def _load(kind):
     sig = {
         "hpy_def_new": (vp, []), "hpy_def_free": (None, [vp]),
         "hpy_def_set": (i, [vp, cp, _dbl_p, i, cp, cp, i]), "hpy_def_set_seed": (i, [vp, ctypes.c_uint64]),
-        "hpy_key_name": (cp, [i]),
+        "hpy_key_name": (cp, [i]), "hpy_seed": (ctypes.c_uint64, [vp]), "hpy_param_get": (i, [vp, cp, _dbl_p, ctypes.POINTER(cp), ctypes.POINTER(i)]),
         "hpy_world_new": (vp, [vp, cp, i]), "hpy_world_load": (vp, [cp, cp, i]), "hpy_world_free": (None, [vp]),
         "hpy_error": (cp, [vp]), "hpy_array": (vp, [vp, cp, ctypes.POINTER(i)]),
         "hpy_step_count": (ctypes.c_longlong, [vp]), "hpy_le_offset": (d, [vp]), "hpy_box": (None, [vp, _dbl_p]),
@@ -91,6 +91,7 @@ def _load(kind):
             "hcbd_hc_world_save": (i, [vp, cp]), "hcbd_hc_world_set_threads": (i, [vp, i]),
             "hcbd_hc_world_refresh": (i, [vp]), "hcbd_hc_world_density_range": (i, [vp, _dbl_p]),
             "hcbd_hc_world_polymer_energy": (d, [vp]),
+            "hcbd_hc_world_transverse_current": (i, [vp, i, _dbl_p]),
         })
     else:
         sig.update({
@@ -104,6 +105,9 @@ def _load(kind):
             "hcbd_world_save": (i, [vp, cp]), "hcbd_world_set_threads": (i, [vp, i]),
             "hcbd_world_config_temperature": (i, [vp, _dbl_p]),
             "hcbd_world_potential_energy": (d, [vp]),
+            "hcbd_world_friction_average": (i, [vp, i, _dbl_p]),
+            "hcbd_world_transverse_current": (i, [vp, i, _dbl_p]),
+            "hcbd_world_forces": (i, [vp, _dbl_p]),
             "hcbd_rdf_sample": (i, [vp, vp]), "hcbd_rdf_result": (ctypes.c_int64, [vp, _dbl_p, _dbl_p, _dbl_p]),
             "hcbd_rdf_coordination": (i, [vp, d, _dbl_p, _dbl_p]),
             "hpy_profile_new": (vp, [vp, i, i, cp, i]), "hcbd_profile_sample": (None, [vp, vp]),
@@ -226,6 +230,33 @@ class _Base:
                 break
 
     @property
+    def params(self):
+        """The world's parameters as created (after the library's defaults and checks): a dict by
+        the C field names, the keywords the constructor takes; choices by their names."""
+        out, names, k = {}, [], 0
+        while True:
+            nm = self._lib.hpy_key_name(k)
+            if nm is None:
+                break
+            names.append(nm.decode())
+            k += 1
+        v, ch, integer = np.zeros(3), ctypes.c_char_p(), ctypes.c_int(0)
+        for nm in names:
+            ch.value = None
+            n = self._lib.hpy_param_get(self._h, nm.encode(), _ptr(v), ctypes.byref(ch), ctypes.byref(integer))
+            if n < 0:
+                continue
+            if ch.value is not None:
+                out[nm] = ch.value.decode()
+            elif nm == "seed":
+                out[nm] = int(self._lib.hpy_seed(self._h))  # whole: a double holds 53 bits
+            elif integer.value:
+                out[nm] = int(v[0])
+            else:
+                out[nm] = float(v[0]) if n == 1 else v[:n].copy()
+        return out
+
+    @property
     def step_count(self):
         """Steps taken since the particles were set."""
         return int(self._lib.hpy_step_count(self._h))
@@ -252,6 +283,15 @@ class _Base:
         p = np.zeros(3)
         self._fn("momentum")(self._h, _ptr(p))
         return p
+
+    def transverse_current(self, nk=1):
+        """The transverse current at k = 2 pi nk / L_d along each axis d, (3, 2) complex:
+        [d, c] = sum_i v_i,a exp(-i k x_i,d), a = (d + 1 + c) mod 3 (the two components transverse
+        to d).
+        C_t(k, t) = <Re(j(t) conj(j(0)))> / n, averaged over d and c."""
+        out = np.zeros(12)
+        self._check(self._fn("transverse_current")(self._h, int(nk), _ptr(out)), "transverse_current: ")
+        return (out[0::2] + 1j * out[1::2]).reshape(3, 2)
 
     def set_threads(self, n):
         """OpenMP threads; the bits do not depend on them."""
@@ -373,6 +413,20 @@ class World(_Base):
     def potential_energy(self):
         return float(self._lib.hcbd_world_potential_energy(self._h))
 
+    def forces(self):
+        """The conservative force on each particle now (n, 3), id order: the one a step's drift uses."""
+        f = np.empty((self.n, 3))
+        self._check(self._lib.hcbd_world_forces(self._h, _ptr(f)), "forces: ")
+        return f
+
+    def friction_average(self, nk=1):
+        """Friction averages of the configuration (GI-BD, MODEL 10): a dict of sum_f = <sum_j f_ij>,
+        sum_f_r2 = <sum_j f_ij r_ij^2> and sum_f_k = <sum_j f_ij (1 - cos k.x_ij)> at
+        |k| = 2 pi nk / L (averaged over the axes).  nu_meanfield = sum_f_k / (tau k^2)."""
+        out = np.zeros(3)
+        self._check(self._lib.hcbd_world_friction_average(self._h, int(nk), _ptr(out)), "friction_average: ")
+        return {"sum_f": out[0], "sum_f_r2": out[1], "sum_f_k": out[2]}
+
 
 _HC_COLS = ("kinetic", "pressure", "viscous", "noise", "fluid", "conservative", "transient", "polymer",
             "interaction", "total")
@@ -455,6 +509,10 @@ class HCWorld(_Base):
         r = dict(zip(_HC_COLS, (float(x) for x in out)))
         r["steps"] = ns.value
         return r
+
+    def polymer_energy(self):
+        """The polymers' conservative energy (densities and pair variables) now."""
+        return float(self._lib.hcbd_hc_world_polymer_energy(self._h))
 
     def density_range(self):
         """(min n_i/nbar, max n_i/nbar, min pressure)."""

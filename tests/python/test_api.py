@@ -209,3 +209,41 @@ def test_hcworld_fluid_and_polymers(tmp_path):
         hcbd.HCWorld(fluid=806, coupling="exact")
     with pytest.raises(ValueError, match="eta"):
         hcbd.HCWorld(fluid=806, eta=-1.0)
+
+
+def test_params_read_back_what_was_set():
+    w = small(tau=2e-3, potential="ideal", pair_integrator="euler", seed=2 ** 64 - 1, fext=[1.0, 0, 0])
+    p = w.params
+    assert p["tau"] == 2e-3 and p["potential"] == "ideal" and p["pair_integrator"] == "euler"
+    assert p["seed"] == 2 ** 64 - 1 and isinstance(p["threads"], int)
+    assert np.array_equal(p["fext"], [1.0, 0, 0]) and np.allclose(p["L"], w.box)
+    assert hcbd.HCWorld(fluid=806, coupling="raw").params["coupling"] == "raw"
+
+
+def test_transverse_current_is_the_sum_over_particles():
+    """j(k) = sum_i v_i,a exp(-i k x_i,d) for the two components a = d+1, d+2 (mod 3), from
+    the copies in id order: the C sum and numpy's agree to round-off."""
+    w = small(potential="ideal")
+    w.step(20)
+    x, v, L = w.positions(), w.velocities(), w.box
+    j = w.transverse_current(2)
+    for d in range(3):
+        ph = np.exp(-1j * 2 * np.pi * 2 / L[d] * x[:, d])
+        ref = [np.sum(v[:, (d + c) % 3] * ph) for c in (1, 2)]
+        scale = np.sum(np.abs(v))
+        assert np.allclose(j[d], ref, rtol=0, atol=1e-12 * scale), (d, j[d], ref)
+
+
+def test_friction_average_and_forces():
+    """Averaged over the three axes, 1 - cos(k x_d) lies between k^2 r^2 / 6 (1 - k^2 r^2 / 12)
+    and k^2 r^2 / 6 pair by pair (r < Rc), so sum_f_k lies within the bounds sum_f_r2 sets (the C tests hold each average to its equation); the forces
+    sum to zero (Newton's third law)."""
+    w = small(N=512)
+    w.step(10)
+    f = w.forces()
+    assert f.shape == (512, 3) and np.abs(f.sum(axis=0)).max() < 1e-9 * np.abs(f).sum()
+    a = w.friction_average(1)
+    assert a["sum_f"] > 0 and a["sum_f_r2"] > 0
+    k = 2 * np.pi / w.box[0]
+    kr2 = (k * w.params["Rc"]) ** 2
+    assert a["sum_f_r2"] * k ** 2 / 6 * (1 - kr2 / 12) <= a["sum_f_k"] <= a["sum_f_r2"] * k ** 2 / 6
