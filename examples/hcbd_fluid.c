@@ -41,9 +41,9 @@
 
    What to look for: T_ratio near 1 and C_t(k,0) near kT/m (equipartition
    with the pair noise of 2018 eq. 18-19).  The default exact pair sweep
-   has no temperature bias; with pair=euler (the paper's explicit pair
-   step) T_ratio is 1 plus the first-order Euler bias of the pair
-   friction, euler_bias_first_order (~2.6 % at the paper's dt; a run with
+   has no temperature bias; the paper's explicit Euler pair step would
+   read 1 plus the first-order Euler bias of the pair friction,
+   euler_bias_first_order (~2.6 % at the paper's dt; a run with
    dt = 0.5 us halves it); T_ratio_expected says which applies.  The flow curve is flat (Newtonian) and
    the same with and without fluctuations.  The three C_t rates over k^2,
    the Lees-Edwards viscosity and the Poiseuille curvature measure one
@@ -1069,7 +1069,7 @@ int main(int argc, char **argv)
                "time unit, eta in kT time / sigma^3, v in sigma per time unit)\n", u_t);
         printf("T_ratio=%.5f\nT_ratio_err=%.5f\n", Tm, Te);
         printf("T_ratio_expected=%.5f\n", 1.0 + (p->pair_integrator == HCBD_PAIR_EULER ? eq.euler_bias : 0.0));
-        printf("# the first-order bias the paper's Euler pair step (pair=euler) would have here\n");
+        printf("# the first-order bias the paper's Euler pair step would have here\n");
         printf("euler_bias_first_order=%.5f\n", eq.euler_bias);
         printf("nu_theory=%.6g\nnu_theory_si=%.6g\n", x.th.nu, x.th.nu * u_nu);
         printf("# C_t: %ld time origins (every step) x 4 channels (Re, Im of j_y, j_z), %d blocks, "
