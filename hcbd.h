@@ -128,13 +128,12 @@
      >>HCBD: theory and stability limits [hcbd_hc_params_theory hcbd_hc_params_stability]
      >>HCBD: kernels of the 2018 model [hcbd_m4 hcbd_rapid_w hcbd_flory_]
      >>HCBD: equations without a world [hcbd_hc_params_coef hcbd_hc_fluid_ hcbd_hc_polymer_
-        hcbd_hc_lambda_ hcbd_hc_noise_ hcbd_hc_sweep_grid]
+        hcbd_hc_lambda_ hcbd_hc_noise_ hcbd_hc_params_sweep_grid]
      >>checkpoint/restart [hcbd_world_checkpoint_ hcbd_world_save hcbd_world_load hcbd_world_set_threads]
      >>trajectories and logs [hcbd_world_write_ hcbd_thermo_header hcbd_world_thermo_line]
      >>HCBD: checkpoints, threads, XYZ and thermo [hcbd_hc_world_checkpoint_ hcbd_hc_world_save
         hcbd_hc_world_load hcbd_hc_world_set_threads hcbd_hc_world_write_xyz hcbd_hc_thermo_header
         hcbd_hc_world_thermo_line]
-     >>old names
      The implementation:
      >>implementation
      >>errors [hcbd_result_name]
@@ -178,7 +177,7 @@
      >>HCBD: parameters and units [hcbd_hc_si_ hcbd_hc_params_ hcbd_hc_world_def_default
         hcbd_hc_params_theory hcbd_hc_params_stability]
      >>HCBD: equations without a world [hcbd_hc_params_coef hcbd_hc_fluid_ hcbd_hc_polymer_
-        hcbd_hc_lambda_ hcbd_hc_noise_ hcbd_hc_sweep_grid]
+        hcbd_hc_lambda_ hcbd_hc_noise_ hcbd_hc_params_sweep_grid]
      >>HCBD: storage [hcbd_hc_world_]
      >>HCBD: set-up [hcbd_hc_world_set_fluid hcbd_hc_world_set_polymers hcbd_hc_world_place_
         hcbd_hc_world_get_fluid hcbd_hc_world_get_polymers]
@@ -202,7 +201,13 @@
      is the type of the first argument and the verb what the call does or
      computes.  Objects: world (GI-BD and walled), hc_world (HCBD), params,
      hc_params, hc_si, the accumulators (rdf, mtcorr, msd, profile, slabs),
-     rng, noise (a counter-based stream), walls, gibd_coef, star_coef.
+     rng, noise (an hcbd_noise_stream: counter-based numbers), walls,
+     gibd_coef, hc_coef, star_coef, limits (an array of hcbd_limit).
+     Choices are enums named after the parameter they set (hcbd_noise is
+     params.noise, the noise's distribution; the noise_ functions take
+     the stream).  _enable(x, on) switches on (1) or off (0).  A world
+     lends its Gaussian table to a caller's generator:
+     hcbd_world_rng_normal(w, r).
      - Life cycle: hcbd_<object>_def_default() or _default() (a value),
        _bytes, _init (the object in the caller's memory, first argument),
        _create (allocated) and _destroy; parameters _check.
@@ -223,8 +228,8 @@
        are named by what they compute.
      Errors: a call on a world reports in w->err; a call without a world
      (params, coefficients, walls) in msg, msg_size: there is no world to
-     hold it.  Old names are kept for one version as deprecated wrappers
-     (">>old names"; CHANGELOG.md lists them).  For engines of their own
+     hold it.  Version 0.2 removed the old names of 0.1 (CHANGELOG.md
+     lists each with its new name).  For engines of their own
      (lammps/), the pieces of a step without a world: hcbd_gibd_*
      (equations), hcbd_noise_* (noise), hcbd_walls_* (walls).
 
@@ -253,7 +258,7 @@
 #include <stdio.h>
 
 #define HCBD_VERSION_MAJOR 0
-#define HCBD_VERSION_MINOR 1
+#define HCBD_VERSION_MINOR 2
 
 #define HCBD_MODEL_GIBD 1
 #define HCBD_MODEL_WALLED 2
@@ -1309,7 +1314,7 @@ double hcbd_flory_g1(double phi, double chi);
    v_i and v_j change by +-P/m, P returned; du the velocity jump of j's
    image along x, z as above, NULL without noise), then v(t + dt) = v' +
    (pressure forces of x(t) + other forces) dt/m.  The sweep's order is
-   the world's: hcbd_hc_sweep_grid gives the blocks nb (nc colours) and
+   the world's: hcbd_hc_params_sweep_grid gives the blocks nb (nc colours) and
    fine cells nf along each axis at Lees-Edwards offset s.  Blob q's
    place r is its position relative to blob 0's, r_y and r_z as they
    are, r_x - t r_y with t = s'/L_y (s' = s taken into [-L_x/2, L_x/2)),
@@ -1335,7 +1340,7 @@ void hcbd_hc_fluid_pair(const hcbd_hc_coef *c, const double d[3], double r, doub
                         double P_i, double P_j, const double dv[3], const double z[3], double F[3]);
 void hcbd_hc_fluid_pair_exact(const hcbd_hc_coef *c, double r, double inv_n_i, double inv_n_j, double du,
                               const double z[3], double v_i[3], double v_j[3], double P[3]);
-hcbd_result hcbd_hc_sweep_grid(const hcbd_hc_params *p, double s, int nb[3], int nc[3], int nf[3], char *msg,
+hcbd_result hcbd_hc_params_sweep_grid(const hcbd_hc_params *p, double s, int nb[3], int nc[3], int nf[3], char *msg,
                                size_t msg_size);
 double hcbd_hc_polymer_weight(const hcbd_hc_coef *c, double r);
 double hcbd_hc_polymer_density(const hcbd_hc_coef *c, double wsum);
@@ -1421,343 +1426,6 @@ hcbd_result hcbd_hc_world_set_threads(hcbd_hc_world *w, int threads);
 hcbd_result hcbd_hc_world_write_xyz(const hcbd_hc_world *w, FILE *f);
 int hcbd_hc_thermo_header(char *buf, size_t size);
 int hcbd_hc_world_thermo_line(const hcbd_hc_world *w, double ns_pstep, char *buf, size_t size);
-#endif
-
-/* >>old names, kept for one version (the compiler warns where it can) ----*/
-#if defined(__GNUC__) || defined(__clang__)
-#define HCBD_DEPRECATED(use) __attribute__((deprecated("use " use)))
-#else
-#define HCBD_DEPRECATED(use)
-#endif
-HCBD_DEPRECATED("hcbd_world_get_positions")
-static inline hcbd_result hcbd_get_positions(const hcbd_world *w, double *xyz, int unwrapped)
-{
-    return hcbd_world_get_positions(w, xyz, unwrapped);
-}
-HCBD_DEPRECATED("hcbd_world_get_velocities")
-static inline hcbd_result hcbd_get_velocities(const hcbd_world *w, double *v)
-{
-    return hcbd_world_get_velocities(w, v);
-}
-HCBD_DEPRECATED("hcbd_world_virial_stress")
-static inline hcbd_result hcbd_stress(hcbd_world *w, double s[9])
-{
-    return hcbd_world_virial_stress(w, s);
-}
-HCBD_DEPRECATED("hcbd_world_stress_enable")
-static inline hcbd_result hcbd_flux_enable(hcbd_world *w, int on)
-{
-    return hcbd_world_stress_enable(w, on);
-}
-HCBD_DEPRECATED("hcbd_world_stress_read")
-static inline hcbd_result hcbd_flux_read(const hcbd_world *w, double out[4], int64_t *nsteps)
-{
-    return hcbd_world_stress_read(w, out, nsteps);
-}
-/* renamed to one rule (issue 42: hcbd_<object>_<verb>, NAMING above) */
-HCBD_DEPRECATED("hcbd_world_step")
-static inline hcbd_result hcbd_step(hcbd_world *w, int nsteps)
-{
-    return hcbd_world_step(w, nsteps);
-}
-HCBD_DEPRECATED("hcbd_world_temperature")
-static inline double hcbd_temperature(const hcbd_world *w)
-{
-    return hcbd_world_temperature(w);
-}
-HCBD_DEPRECATED("hcbd_world_momentum")
-static inline void hcbd_momentum(const hcbd_world *w, double p[3])
-{
-    hcbd_world_momentum(w, p);
-}
-HCBD_DEPRECATED("hcbd_world_virial_stress")
-static inline hcbd_result hcbd_virial_stress(hcbd_world *w, double s[9])
-{
-    return hcbd_world_virial_stress(w, s);
-}
-HCBD_DEPRECATED("hcbd_world_friction_average")
-static inline hcbd_result hcbd_friction_average(hcbd_world *w, int nk, double out[3])
-{
-    return hcbd_world_friction_average(w, nk, out);
-}
-HCBD_DEPRECATED("hcbd_world_transverse_current")
-static inline hcbd_result hcbd_transverse_current(const hcbd_world *w, int nk, double out[12])
-{
-    return hcbd_world_transverse_current(w, nk, out);
-}
-HCBD_DEPRECATED("hcbd_world_potential_energy")
-static inline double hcbd_potential_energy(hcbd_world *w)
-{
-    return hcbd_world_potential_energy(w);
-}
-HCBD_DEPRECATED("hcbd_world_config_temperature")
-static inline hcbd_result hcbd_config_temperature(hcbd_world *w, double out[2])
-{
-    return hcbd_world_config_temperature(w, out);
-}
-HCBD_DEPRECATED("hcbd_world_forces")
-static inline hcbd_result hcbd_forces(hcbd_world *w, double *f)
-{
-    return hcbd_world_forces(w, f);
-}
-HCBD_DEPRECATED("hcbd_world_stress_enable")
-static inline hcbd_result hcbd_stress_enable(hcbd_world *w, int on)
-{
-    return hcbd_world_stress_enable(w, on);
-}
-HCBD_DEPRECATED("hcbd_world_stress_read")
-static inline hcbd_result hcbd_stress_read(const hcbd_world *w, double out[4], int64_t *nsteps)
-{
-    return hcbd_world_stress_read(w, out, nsteps);
-}
-HCBD_DEPRECATED("hcbd_world_wall_penetrations")
-static inline int64_t hcbd_wall_penetrations(const hcbd_world *w, int64_t *last_step, int *last_id)
-{
-    return hcbd_world_wall_penetrations(w, last_step, last_id);
-}
-HCBD_DEPRECATED("hcbd_world_checksum")
-static inline uint64_t hcbd_state_checksum(const hcbd_world *w)
-{
-    return hcbd_world_checksum(w);
-}
-HCBD_DEPRECATED("hcbd_world_checkpoint_size")
-static inline size_t hcbd_checkpoint_size(const hcbd_world *w)
-{
-    return hcbd_world_checkpoint_size(w);
-}
-HCBD_DEPRECATED("hcbd_world_checkpoint_save")
-static inline hcbd_result hcbd_checkpoint_save(hcbd_world *w, void *buf, size_t size)
-{
-    return hcbd_world_checkpoint_save(w, buf, size);
-}
-HCBD_DEPRECATED("hcbd_world_checkpoint_load")
-static inline hcbd_result hcbd_checkpoint_load(hcbd_world *w, const void *buf, size_t size)
-{
-    return hcbd_world_checkpoint_load(w, buf, size);
-}
-HCBD_DEPRECATED("hcbd_world_save")
-static inline hcbd_result hcbd_save(hcbd_world *w, const char *path)
-{
-    return hcbd_world_save(w, path);
-}
-HCBD_DEPRECATED("hcbd_world_load")
-static inline hcbd_result hcbd_load(hcbd_world *w, const char *path)
-{
-    return hcbd_world_load(w, path);
-}
-HCBD_DEPRECATED("hcbd_world_set_threads")
-static inline hcbd_result hcbd_set_threads(hcbd_world *w, int threads)
-{
-    return hcbd_world_set_threads(w, threads);
-}
-HCBD_DEPRECATED("hcbd_world_write_xyz")
-static inline hcbd_result hcbd_xyz_write(const hcbd_world *w, FILE *f, const int *ids, int nids)
-{
-    return hcbd_world_write_xyz(w, f, ids, nids);
-}
-HCBD_DEPRECATED("hcbd_world_write_offenders")
-static inline hcbd_result hcbd_xyz_offenders(const hcbd_world *w, FILE *f)
-{
-    return hcbd_world_write_offenders(w, f);
-}
-HCBD_DEPRECATED("hcbd_world_thermo_line")
-static inline int hcbd_thermo_line(const hcbd_world *w, double ns_pstep, char *buf, size_t size)
-{
-    return hcbd_world_thermo_line(w, ns_pstep, buf, size);
-}
-HCBD_DEPRECATED("hcbd_world_rng_normal")
-static inline double hcbd_rng_normal(const hcbd_world *w, hcbd_rng *r)
-{
-    return hcbd_world_rng_normal(w, r);
-}
-HCBD_DEPRECATED("hcbd_world_pair_normals")
-static inline void hcbd_pair_normals(const hcbd_world *w, int64_t s, int32_t a, int32_t b, double out[3])
-{
-    hcbd_world_pair_normals(w, s, a, b, out);
-}
-HCBD_DEPRECATED("hcbd_world_particle_normals")
-static inline void hcbd_particle_normals(const hcbd_world *w, int64_t s, int32_t id, double out[3])
-{
-    hcbd_world_particle_normals(w, s, id, out);
-}
-HCBD_DEPRECATED("hcbd_params_theory")
-static inline hcbd_result hcbd_theory_of(const hcbd_params *p, hcbd_theory *t)
-{
-    return hcbd_params_theory(p, t);
-}
-HCBD_DEPRECATED("hcbd_params_stability")
-static inline hcbd_result hcbd_stability(const hcbd_params *p, hcbd_limit *out, int *n)
-{
-    return hcbd_params_stability(p, out, n);
-}
-HCBD_DEPRECATED("hcbd_params_gibd_coef")
-static inline hcbd_result hcbd_gibd_coef_of(const hcbd_params *p, hcbd_gibd_coef *c, char *msg,
-                                            size_t msg_size)
-{
-    return hcbd_params_gibd_coef(p, c, msg, msg_size);
-}
-HCBD_DEPRECATED("hcbd_star_coef_init")
-static inline hcbd_result hcbd_star_coef_of(double f, double sigma, double eps, hcbd_star_coef *c,
-                                            char *msg, size_t msg_size)
-{
-    return hcbd_star_coef_init(c, f, sigma, eps, msg, msg_size);
-}
-#if HCBD_MODEL == HCBD_MODEL_WALLED
-HCBD_DEPRECATED("hcbd_params_wall_potential")
-static inline double hcbd_wall_potential(const hcbd_params *p, double y, double *fy)
-{
-    return hcbd_params_wall_potential(p, y, fy);
-}
-#endif
-#if HCBD_MODEL == HCBD_MODEL_HCBD
-typedef hcbd_hc_world_def hcbd_hc_def HCBD_DEPRECATED("hcbd_hc_world_def");
-HCBD_DEPRECATED("hcbd_hc_si_default")
-static inline hcbd_hc_si hcbd_hc_si_table1(void)
-{
-    return hcbd_hc_si_default();
-}
-HCBD_DEPRECATED("hcbd_hc_si_params")
-static inline hcbd_result hcbd_hc_params_si(const hcbd_hc_si *si, double time_unit, hcbd_hc_params *p,
-                                            char *msg, size_t msg_size)
-{
-    return hcbd_hc_si_params(si, time_unit, p, msg, msg_size);
-}
-HCBD_DEPRECATED("hcbd_hc_params_theory")
-static inline hcbd_result hcbd_hc_theory_of(const hcbd_hc_params *p, hcbd_hc_theory *t)
-{
-    return hcbd_hc_params_theory(p, t);
-}
-HCBD_DEPRECATED("hcbd_hc_params_stability")
-static inline hcbd_result hcbd_hc_stability(const hcbd_hc_params *p, hcbd_limit *out, int *n)
-{
-    return hcbd_hc_params_stability(p, out, n);
-}
-HCBD_DEPRECATED("hcbd_hc_world_def_default")
-static inline hcbd_hc_world_def hcbd_hc_def_default(void)
-{
-    return hcbd_hc_world_def_default();
-}
-HCBD_DEPRECATED("hcbd_hc_world_set_fluid")
-static inline hcbd_result hcbd_hc_set_fluid(hcbd_hc_world *w, int n, const double *xyz, const double *v)
-{
-    return hcbd_hc_world_set_fluid(w, n, xyz, v);
-}
-HCBD_DEPRECATED("hcbd_hc_world_place_fluid_lattice")
-static inline hcbd_result hcbd_hc_place_fluid_lattice(hcbd_hc_world *w, int n)
-{
-    return hcbd_hc_world_place_fluid_lattice(w, n);
-}
-HCBD_DEPRECATED("hcbd_hc_world_set_polymers")
-static inline hcbd_result hcbd_hc_set_polymers(hcbd_hc_world *w, int n, const double *xyz)
-{
-    return hcbd_hc_world_set_polymers(w, n, xyz);
-}
-HCBD_DEPRECATED("hcbd_hc_world_place_polymers_random")
-static inline hcbd_result hcbd_hc_place_polymers_random(hcbd_hc_world *w, int n)
-{
-    return hcbd_hc_world_place_polymers_random(w, n);
-}
-HCBD_DEPRECATED("hcbd_hc_world_refresh")
-static inline hcbd_result hcbd_hc_refresh(hcbd_hc_world *w)
-{
-    return hcbd_hc_world_refresh(w);
-}
-HCBD_DEPRECATED("hcbd_hc_world_step")
-static inline hcbd_result hcbd_hc_step(hcbd_hc_world *w, int nsteps)
-{
-    return hcbd_hc_world_step(w, nsteps);
-}
-HCBD_DEPRECATED("hcbd_hc_world_get_lambda")
-static inline hcbd_result hcbd_hc_lambda(const hcbd_hc_world *w, int a, int b, double *lambda)
-{
-    return hcbd_hc_world_get_lambda(w, a, b, lambda);
-}
-HCBD_DEPRECATED("hcbd_hc_world_set_lambda")
-static inline hcbd_result hcbd_hc_set_lambda(hcbd_hc_world *w, int a, int b, double lambda)
-{
-    return hcbd_hc_world_set_lambda(w, a, b, lambda);
-}
-HCBD_DEPRECATED("hcbd_hc_world_temperature")
-static inline double hcbd_hc_temperature(const hcbd_hc_world *w)
-{
-    return hcbd_hc_world_temperature(w);
-}
-HCBD_DEPRECATED("hcbd_hc_world_momentum")
-static inline void hcbd_hc_momentum(const hcbd_hc_world *w, double p[3])
-{
-    hcbd_hc_world_momentum(w, p);
-}
-HCBD_DEPRECATED("hcbd_hc_world_transverse_current")
-static inline hcbd_result hcbd_hc_transverse_current(const hcbd_hc_world *w, int nk, double out[12])
-{
-    return hcbd_hc_world_transverse_current(w, nk, out);
-}
-HCBD_DEPRECATED("hcbd_hc_world_polymer_energy")
-static inline double hcbd_hc_polymer_energy(const hcbd_hc_world *w)
-{
-    return hcbd_hc_world_polymer_energy(w);
-}
-HCBD_DEPRECATED("hcbd_hc_world_density_range")
-static inline hcbd_result hcbd_hc_density_range(const hcbd_hc_world *w, double out[3])
-{
-    return hcbd_hc_world_density_range(w, out);
-}
-HCBD_DEPRECATED("hcbd_hc_world_stress_enable")
-static inline hcbd_result hcbd_hc_stress_enable(hcbd_hc_world *w, int on)
-{
-    return hcbd_hc_world_stress_enable(w, on);
-}
-HCBD_DEPRECATED("hcbd_hc_world_stress_read")
-static inline hcbd_result hcbd_hc_stress_read(const hcbd_hc_world *w, double out[HCBD_HC_NSTRESS],
-                                              int64_t *nsteps)
-{
-    return hcbd_hc_world_stress_read(w, out, nsteps);
-}
-HCBD_DEPRECATED("hcbd_hc_world_checksum")
-static inline uint64_t hcbd_hc_state_checksum(const hcbd_hc_world *w)
-{
-    return hcbd_hc_world_checksum(w);
-}
-HCBD_DEPRECATED("hcbd_hc_world_checkpoint_size")
-static inline size_t hcbd_hc_checkpoint_size(const hcbd_hc_world *w)
-{
-    return hcbd_hc_world_checkpoint_size(w);
-}
-HCBD_DEPRECATED("hcbd_hc_world_checkpoint_save")
-static inline hcbd_result hcbd_hc_checkpoint_save(hcbd_hc_world *w, void *buf, size_t size)
-{
-    return hcbd_hc_world_checkpoint_save(w, buf, size);
-}
-HCBD_DEPRECATED("hcbd_hc_world_checkpoint_load")
-static inline hcbd_result hcbd_hc_checkpoint_load(hcbd_hc_world *w, const void *buf, size_t size)
-{
-    return hcbd_hc_world_checkpoint_load(w, buf, size);
-}
-HCBD_DEPRECATED("hcbd_hc_world_save")
-static inline hcbd_result hcbd_hc_save(hcbd_hc_world *w, const char *path)
-{
-    return hcbd_hc_world_save(w, path);
-}
-HCBD_DEPRECATED("hcbd_hc_world_load")
-static inline hcbd_result hcbd_hc_load(hcbd_hc_world *w, const char *path)
-{
-    return hcbd_hc_world_load(w, path);
-}
-HCBD_DEPRECATED("hcbd_hc_world_set_threads")
-static inline hcbd_result hcbd_hc_set_threads(hcbd_hc_world *w, int threads)
-{
-    return hcbd_hc_world_set_threads(w, threads);
-}
-HCBD_DEPRECATED("hcbd_hc_world_write_xyz")
-static inline hcbd_result hcbd_hc_xyz_write(const hcbd_hc_world *w, FILE *f)
-{
-    return hcbd_hc_world_write_xyz(w, f);
-}
-HCBD_DEPRECATED("hcbd_hc_world_thermo_line")
-static inline int hcbd_hc_thermo_line(const hcbd_hc_world *w, double ns_pstep, char *buf, size_t size)
-{
-    return hcbd_hc_world_thermo_line(w, ns_pstep, buf, size);
-}
 #endif
 
 #ifdef __cplusplus
@@ -8386,7 +8054,7 @@ void hcbd_hc_fluid_pair_exact(const hcbd_hc_coef *c, double r, double inv_n_i, d
     }
 }
 
-hcbd_result hcbd_hc_sweep_grid(const hcbd_hc_params *p, double s, int nb[3], int nc[3], int nf[3], char *msg,
+hcbd_result hcbd_hc_params_sweep_grid(const hcbd_hc_params *p, double s, int nb[3], int nc[3], int nf[3], char *msg,
                                size_t msg_size)
 {
     hcbd_result r;

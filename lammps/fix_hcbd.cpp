@@ -265,7 +265,7 @@ void FixHCBD::sweep_init()
   for (int q = 0; q < ns; ++q) {
     int nb[3], nc[3], nf[3];
     const double s = ns > 1 ? p.L[0] * (q / (ns - 1.0) - 0.5) : 0.0;
-    if (hcbd_hc_sweep_grid(&p, s, nb, nc, nf, msg, sizeof msg) != HCBD_OK) error->all(FLERR, "fix hcbd: {}", msg);
+    if (hcbd_hc_params_sweep_grid(&p, s, nb, nc, nf, msg, sizeof msg) != HCBD_OK) error->all(FLERR, "fix hcbd: {}", msg);
     for (int d = 1; d < 3; ++d) {
       if (comm->nprocs > 1 && comm->procgrid[d] > 1 && nb[d] == 1)
         error->all(FLERR, "fix hcbd: pair exact with {} ranks along {} needs the sweep's blocks along it, and "
@@ -516,7 +516,7 @@ void FixHCBD::fluid_pairs(int64_t k, int sum)
 // each atom takes part: atom->map's, the owned one where there is one) by
 // colour, block, fine cell and tag, each with its partners (higher tags
 // within 2h, from every copy's neighbours in the ghost list) by tag, from
-// the positions xw (the same bits on every rank), as hcbd_hc_sweep_grid
+// the positions xw (the same bits on every rank), as hcbd_hc_params_sweep_grid
 // describes hcbd's world's order.
 void FixHCBD::sweep_plan()
 {
@@ -526,7 +526,7 @@ void FixHCBD::sweep_plan()
   const double *L = p.L, cut2 = 4.0 * p.h * p.h;
   char msg[256];
   int nb[3], nc[3], nf[3];
-  if (hcbd_hc_sweep_grid(&p, le_s, nb, nc, nf, msg, sizeof msg) != HCBD_OK) error->all(FLERR, "fix hcbd: {}", msg);
+  if (hcbd_hc_params_sweep_grid(&p, le_s, nb, nc, nf, msg, sizeof msg) != HCBD_OK) error->all(FLERR, "fix hcbd: {}", msg);
   for (int d = 1; d < 3 && comm->nprocs > 1; ++d)
     if (comm->procgrid[d] > 1 && (nb[d] == 1 || L[d] / nb[d] > blk_width[d - 1] * (1.0 + 1e-12)))
       error->all(FLERR, "fix hcbd: pair exact at step {}: the sweep's blocks along {} ({}) are not those the "

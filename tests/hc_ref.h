@@ -238,7 +238,7 @@ static inline int a_step_scene(hcbd_hc_world *w, const hcbd_hc_world_def *d, uin
     return ok;
 }
 /* The exact fluid sweep's order, as the header describes it next to
-   hcbd_hc_sweep_grid: each blob's place relative to blob 0 (x tilted by
+   hcbd_hc_params_sweep_grid: each blob's place relative to blob 0 (x tilted by
    t = s'/L_y under the Lees-Edwards offset s), its block, colour and fine
    cell; owners go by colour, block, fine cell and id.  x: nf interleaved
    positions; o: the owners in sweep order.  Returns 0 if the grid is
@@ -261,7 +261,7 @@ static inline int a_sweep_order(const hcbd_hc_params *p, double s, const double 
     const double *L = p->L, t = (s - L[0] * floor(s / L[0] + 0.5)) / L[1];
     int nb[3], nc[3], nfc[3], i, c;
     char msg[160];
-    if (hcbd_hc_sweep_grid(p, s, nb, nc, nfc, msg, sizeof msg) != HCBD_OK) return 0;
+    if (hcbd_hc_params_sweep_grid(p, s, nb, nc, nfc, msg, sizeof msg) != HCBD_OK) return 0;
     for (i = 0; i < nf; ++i) {
         double r[3];
         int cb[3], cf[3];

@@ -892,7 +892,7 @@ static void a_equations(int noisy)
 }
 
 /* The exact sweep for an engine of its own (hcbd_hc_fluid_pair_exact,
-   hcbd_hc_sweep_grid), held to the formulas and to the world:
+   hcbd_hc_params_sweep_grid), held to the formulas and to the world:
    - one pair: the relative velocity u relaxes as an Ornstein-Uhlenbeck
      process with rate 2 f/m, f = -2 eta w'(r) / (n_i n_j r) the Euler
      pairs' friction: u' = e^(-x) u + sqrt(2 kT/m (1 - e^(-2x))) z, x = 2 f
@@ -975,7 +975,7 @@ void test_hc_exact_sweep_exported(void)
                 int dd;
                 for (dd = 0; dd < 3; ++dd) g.L[dd] = Ls[t][dd];
                 g.h = 1.1;
-                if (hcbd_hc_sweep_grid(&g, s, nb, nc, nfc, msg, sizeof msg) != HCBD_OK) {
+                if (hcbd_hc_params_sweep_grid(&g, s, nb, nc, nfc, msg, sizeof msg) != HCBD_OK) {
                     CHECK(0, "grid: %s", msg);
                     continue;
                 }
@@ -989,16 +989,16 @@ void test_hc_exact_sweep_exported(void)
                 }
             }
         g.L[0] = g.L[1] = g.L[2] = 13.86;
-        hcbd_hc_sweep_grid(&g, 0.0, nb, nc, nfc, msg, sizeof msg);
+        hcbd_hc_params_sweep_grid(&g, 0.0, nb, nc, nfc, msg, sizeof msg);
         NOTE("grid of a 13.86^3 box, h = 1.1: %d x %d x %d blocks, %d x %d x %d colours", nb[0], nb[1], nb[2], nc[0],
              nc[1], nc[2]);
         CHECK(!bad && nb[0] == 6 && nb[1] == 6 && nb[2] == 6 && nc[0] == 3 && nc[1] == 3 && nc[2] == 3,
               "grid: %d broken rules; 13.86^3: %d %d %d blocks, %d %d %d colours", bad, nb[0], nb[1], nb[2], nc[0],
               nc[1], nc[2]);
-        CHECK(hcbd_hc_sweep_grid(&g, NAN, nb, nc, nfc, msg, sizeof msg) == HCBD_ERR_PARAM && strstr(msg, "s = nan"),
+        CHECK(hcbd_hc_params_sweep_grid(&g, NAN, nb, nc, nfc, msg, sizeof msg) == HCBD_ERR_PARAM && strstr(msg, "s = nan"),
               "a NaN offset refused: %s", msg);
         g.h = -1;
-        CHECK(hcbd_hc_sweep_grid(&g, 0.0, nb, nc, nfc, msg, sizeof msg) == HCBD_ERR_PARAM && strstr(msg, "h = -1"),
+        CHECK(hcbd_hc_params_sweep_grid(&g, 0.0, nb, nc, nfc, msg, sizeof msg) == HCBD_ERR_PARAM && strstr(msg, "h = -1"),
               "h = -1 refused: %s", msg);
     }
     /* the world against the sweep done here */
@@ -1007,7 +1007,7 @@ void test_hc_exact_sweep_exported(void)
     CHECK(hcbd_hc_params_coef(p, &c, msg, sizeof msg) == HCBD_OK, "coef: %s", msg);
     hcbd_hc_noise_stream_init(&ns, p->seed);
     if (!a_step_scene(&w, &d, 29, lam, &npair)) goto out;
-    CHECK(hcbd_hc_sweep_grid(p, 0.0, nb, nc, nfc, msg, sizeof msg) == HCBD_OK, "grid: %s", msg);
+    CHECK(hcbd_hc_params_sweep_grid(p, 0.0, nb, nc, nfc, msg, sizeof msg) == HCBD_OK, "grid: %s", msg);
     NOTE("world: %d blobs, %d x %d x %d blocks, %d colours along x", nf, nb[0], nb[1], nb[2], nc[0]);
     CHECK(nb[0] == 6 && nc[0] == 3, "the scene has %d blocks in %d colours along x (6 in 3 meant)", nb[0], nc[0]);
     a_fluid_np(&w, &c, n, P);

@@ -500,7 +500,7 @@ void test_hc_raw_coupling(void)
    One step of the world done again here, pair by pair, as the momentum
    each pair hands over (MODEL 6-8): fluid pairs (pressure, and the Morris
    friction and noise: Euler from the velocities of t, or the exact sweep
-   in the world's order, hcbd_hc_sweep_grid and the order the header
+   in the world's order, hcbd_hc_params_sweep_grid and the order the header
    describes), polymer pairs, and each polymer's force handed to its
    fluid blobs with the Shepard weights.  A record: momentum F dt to the
    receiver, at y, from a giver at y - dy (its image). */
