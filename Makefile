@@ -32,7 +32,7 @@ HC_EXAMPLES := $(B)/hcbd_fluid $(B)/hcbd_polymer $(B)/hcbd_sound
 HEADERS  := hcbd.h
 TEST_SRC := $(wildcard tests/test_*.c) tests/main.c
 
-.PHONY: all run python test-python test validate mutants exercise lammps test-lammps mutants-lammps test-main test-walls test-float test-hcbd-float test-hcbd-float-clang test-examples test-gibd test-hcbd test-sanitize test-sanitize-hcbd test-tsan test-tsan-hcbd test-fuzz-args test-fuzz-ckpt test-install test-build build-check install fuzz bench bench-wp bench-wp-peers bench-wp-sph-peers bench-wp-table1 bench-table2-departures bench-stability bench-peers bench-parts bench-soak clean
+.PHONY: all run python test-python test validate mutants exercise lammps test-lammps mutants-lammps test-main test-walls test-float test-hcbd-float test-hcbd-float-clang test-examples test-gibd test-hcbd test-sanitize test-sanitize-hcbd test-tsan test-tsan-hcbd test-fuzz-args test-fuzz-ckpt test-install test-build build-check install fuzz bench bench-wp bench-wp-peers bench-wp-sph-peers bench-wp-sdpd-peers bench-wp-table1 bench-table2-departures bench-stability bench-peers bench-parts bench-soak clean
 
 all: $(B)/hcbd_impl.o $(EXAMPLES) $(HC_EXAMPLES)
 
@@ -364,6 +364,11 @@ bench-wp-peers: $(B)/wp_star $(B)/wp_estimate
 # error (bench/peers/wp_sph.sh, ~4 min; skipped with a message without lmp).
 bench-wp-sph-peers: $(B)/wp_sph
 	bench/peers/wp_sph.sh
+
+# The fluctuating fluid's temperature and viscosity against LAMMPS
+# sdpd/taitwater/isothermal at equal error (bench/peers/wp_sdpd.sh, ~17 min).
+bench-wp-sdpd-peers: $(B)/wp_sph
+	bench/peers/wp_sdpd.sh
 
 $(B)/wp_star: bench/wp_star.c $(B)/hcbd_impl.o $(HEADERS) bench/bench_common.h
 	$(CC) $(ALL_CFLAGS) $< $(B)/hcbd_impl.o -o $@ $(LDLIBS)

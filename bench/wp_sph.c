@@ -16,6 +16,13 @@
    hcbd's summation starts).  Prints seconds_per_time_unit: the wall time
    of the hcbd_hc_world_step calls alone per unit of simulated time.
 
+   kT=X (> 0, the SDPD work-precision study, bench/peers/wp_sdpd.sh): the
+   measured run has thermal fluctuations at kT, and starts from Maxwell
+   velocities at kT (zero total momentum; drawn here, the same in the data
+   file) plus the wave (amp=0: none); the series gets a fourth column, the
+   kinetic temperature over kT (hcbd_hc_world_temperature; LAMMPS's
+   compute temp, 3N - 3 degrees of freedom both).
+
    Fit mode (both codes): the decay rate G of the amplitude sqrt(S^2+C^2)
    by least squares on its logarithm, nu_fit = G / k^2, and its ratio to
    the continuum prediction nu K(k) of the code's kernel (K from the
@@ -24,7 +31,9 @@
 
    usage: wp_sph dt=DT [nu=1] [c=2.5] [nx=20] [ny=10] [time=20] [samples=41]
                  [amp=0.3] [pair=exact|euler] [seed=7] [data=FILE] series=FILE
-          wp_sph fit=FILE L=LX nu=NU kernel=m4|lucy */
+          wp_sph fit=FILE L=LX nu=NU kernel=m4|lucy
+          wp_sph temp=FILE [skip=0.2]: the mean of the fourth column past
+          the first `skip` of the samples, and its error from 10 block means */
 #include "bench_common.h"
 #include "../tests/scenes.h"
 
@@ -99,6 +108,44 @@ static int fit(const char *file, double L, double nu, int lucy)
     return 0;
 }
 
+static int temp_mean(const char *file, double skip)
+{
+    FILE *f = fopen(file, "r");
+    char line[512];
+    double t, S, C, T, *x = NULL, m = 0, e2 = 0, b[10];
+    int n = 0, cap = 0, i, k, n0, len;
+    if (!f) {
+        fprintf(stderr, "wp_sph: cannot read %s\n", file);
+        return 1;
+    }
+    while (fgets(line, sizeof line, f)) {
+        if (line[0] == '#' || sscanf(line, "%lf %lf %lf %lf", &t, &S, &C, &T) != 4) continue;
+        if (n == cap) {
+            double *y = (double *)realloc(x, sizeof(double) * (cap = cap ? 2 * cap : 256));
+            if (!y) break;
+            x = y;
+        }
+        x[n++] = T;
+    }
+    fclose(f);
+    n0 = (int)(skip * n);
+    len = (n - n0) / 10;
+    if (len < 2) {
+        printf("T=nan T_err=nan samples=%d\n", n);
+        free(x);
+        return 0;
+    }
+    for (k = 0; k < 10; ++k) {
+        b[k] = 0;
+        for (i = 0; i < len; ++i) b[k] += x[n0 + k * len + i] / len;
+        m += b[k] / 10;
+    }
+    for (k = 0; k < 10; ++k) e2 += (b[k] - m) * (b[k] - m) / 90;
+    printf("T=%.8f T_err=%.3g samples=%d\n", m, sqrt(e2), 10 * len);
+    free(x);
+    return 0;
+}
+
 static void sums(const hcbd_hc_world *w, double k, double *S, double *C)
 {
     int i;
@@ -139,10 +186,10 @@ static int write_data(const char *file, int N, const double *L, const double *xy
 
 int main(int argc, char **argv)
 {
-    double dt = 0, nu = 1, c = 2.5, T = 20, amp = 0.3, L = 0, spent = 0, k, S, Cs, vrms, *xyz, *v;
+    double dt = 0, nu = 1, c = 2.5, T = 20, amp = 0.3, L = 0, spent = 0, kT = 0, skip = 0.2, k, S, Cs, vrms, *xyz, *v;
     int nx = 20, ny = 10, samples = 41, integ = HCBD_PAIR_SHARDLOW, lucy = -1, i, s, every, N, quench;
     unsigned long long seed = 7;
-    const char *data = NULL, *series = NULL, *fitf = NULL;
+    const char *data = NULL, *series = NULL, *fitf = NULL, *tempf = NULL;
     hcbd_hc_world_def d;
     hcbd_hc_world w;
     FILE *f;
@@ -162,6 +209,9 @@ int main(int argc, char **argv)
         else if (!strncmp(a, "data=", 5)) data = a + 5;
         else if (!strncmp(a, "series=", 7)) series = a + 7;
         else if (!strncmp(a, "fit=", 4)) fitf = a + 4;
+        else if (!strncmp(a, "temp=", 5)) tempf = a + 5;
+        else if (!strncmp(a, "skip=", 5)) skip = atof(a + 5);
+        else if (!strncmp(a, "kT=", 3)) kT = atof(a + 3);
         else if (!strncmp(a, "L=", 2)) L = atof(a + 2);
         else if (!strcmp(a, "kernel=m4")) lucy = 0;
         else if (!strcmp(a, "kernel=lucy")) lucy = 1;
@@ -170,6 +220,7 @@ int main(int argc, char **argv)
             return 2;
         }
     }
+    if (tempf) return temp_mean(tempf, skip >= 0 && skip < 1 ? skip : 0.2);
     if (fitf) {
         if (!(L > 0) || !(nu > 0) || lucy < 0) {
             fprintf(stderr, "usage: wp_sph fit=FILE L=LX nu=NU kernel=m4|lucy\n");
@@ -177,7 +228,7 @@ int main(int argc, char **argv)
         }
         return fit(fitf, L, nu, lucy);
     }
-    if (!(dt > 0) || !series || !(T > dt) || !(nu > 0) || !(c > 0) || nx < 4 || ny < 4 || samples < 3) {
+    if (!(dt > 0) || !series || !(T > dt) || !(nu > 0) || !(c > 0) || nx < 4 || ny < 4 || samples < 3 || !(kT >= 0)) {
         fprintf(stderr, "usage: wp_sph dt=DT series=FILE [nu=] [c=] [nx=] [ny=] [time=] [samples=] [amp=] "
                         "[pair=exact|euler] [seed=] [data=FILE]\n");
         return 2;
@@ -218,12 +269,26 @@ int main(int argc, char **argv)
     k = 2 * PI_ / d.params.L[0];
     for (i = 0, vrms = 0; i < 3 * N; ++i) vrms += v[i] * v[i];
     vrms = sqrt(vrms / (3 * N));
-    for (i = 0; i < N; ++i) {
-        v[3 * i] = v[3 * i + 2] = 0;
-        v[3 * i + 1] = amp * sin(k * xyz[3 * i]);
-    }
     d = scene(nx, ny, dt, nu, c, integ, seed);
-    d.params.fluctuations = 0;
+    d.params.fluctuations = kT > 0;
+    if (kT > 0) d.params.kT = kT;
+    {
+        /* Maxwell velocities at kT (Box-Muller), zero total momentum */
+        const double sv = sqrt(kT * d.params.nbar / d.params.rho);
+        double mean[3] = {0, 0, 0};
+        hcbd_rng g;
+        hcbd_rng_seed(&g, seed + 1000);
+        for (i = 0; i < 3 * N; ++i) {
+            const double u1 = 1.0 - hcbd_rng_uniform(&g), u2 = hcbd_rng_uniform(&g);
+            v[i] = kT > 0 ? sv * sqrt(-2.0 * log(u1)) * cos(2 * PI_ * u2) : 0.0;
+            mean[i % 3] += v[i] / N;
+        }
+        for (i = 0; i < N; ++i) {
+            v[3 * i] -= mean[0];
+            v[3 * i + 1] += amp * sin(k * xyz[3 * i]) - mean[1];
+            v[3 * i + 2] -= mean[2];
+        }
+    }
     if (data && !write_data(data, N, d.params.L, xyz, v, d.params.rho / d.params.nbar)) {
         fprintf(stderr, "wp_sph: cannot write %s\n", data);
         return 1;
@@ -240,7 +305,7 @@ int main(int argc, char **argv)
     }
     every = (int)(T / (samples - 1) / dt + 0.5);
     if (every < 1) every = 1;
-    fprintf(f, "# t S C (S, C = sum v_y sin, cos (k x)); hcbd, dt = %g, N = %d\n", dt, N);
+    fprintf(f, "# t S C%s (S, C = sum v_y sin, cos (k x)); hcbd, dt = %g, N = %d\n", kT > 0 ? " T/kT" : "", dt, N);
     for (s = 0; s < samples; ++s) {
         if (s > 0) {
             const double t0 = now();
@@ -254,7 +319,8 @@ int main(int argc, char **argv)
             }
         }
         sums(&w, k, &S, &Cs);
-        fprintf(f, "%.10g %.12g %.12g\n", s * every * dt, S, Cs);
+        if (kT > 0) fprintf(f, "%.10g %.12g %.12g %.10g\n", s * every * dt, S, Cs, hcbd_hc_world_temperature(&w) / kT);
+        else fprintf(f, "%.10g %.12g %.12g\n", s * every * dt, S, Cs);
     }
     fclose(f);
     printf("seconds_per_time_unit=%.6g N=%d L=%.17g steps=%d quench_vrms=%.3g checksum=%016llx\n",

@@ -34,12 +34,8 @@ TOL=${TOL:-0.01}
 OUT=${WP_OUT:-out/wp_sph}
 case "$OUT" in /*) ;; *) OUT="$root/$OUT" ;; esac
 export OMP_NUM_THREADS=1
-
-LMP_BIN=""
-for cand in "${LMP:-}" /tmp/peer/build/lmp "$(command -v lmp 2>/dev/null)" "$root/build/lammps/lmp"; do
-    [ -n "$cand" ] && command -v "$cand" >/dev/null 2>&1 || continue
-    if "$cand" -h 2>/dev/null | grep -qw sph/taitwater/morris; then LMP_BIN=$(command -v "$cand"); break; fi
-done
+. "$here/lib.sh"
+find_lmp sph/taitwater/morris
 if [ -z "$LMP_BIN" ]; then
     echo "bench/peers/wp_sph.sh: no lmp with pair sph/taitwater/morris (../shared/PEERS.md); skipped"
     exit 0
@@ -49,9 +45,7 @@ mkdir -p "$OUT"
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/hcbd_wp_sph.XXXXXX")
 trap 'rm -rf "$tmp"' EXIT
 W="$root/build/wp_sph"
-lmp_version=$("$LMP_BIN" -nocite -log none -in /dev/null 2>/dev/null | head -n 1 | tr -d '\r')
-cpu=$(lscpu 2>/dev/null | awk -F: '/Model name/ {gsub(/^ +/, "", $2); print $2; exit}')
-avx=$(grep -qw avx512f /proc/cpuinfo 2>/dev/null && echo "AVX-512" || echo "AVX2 or less")
+machine_names
 echo "wp_sph.sh: $LMP_BIN ($lmp_version), $cpu ($avx), $ROUNDS rounds"
 t_start=$(date +%s)
 raw="$tmp/raw"
@@ -75,12 +69,7 @@ one() {
         (cd "$tmp" && "$LMP_BIN" -nocite -screen none -log "$tmp/log" -in "$here/in.sph_wave" -var data "$tmp/d.data" \
             -var dt "$dt" -var steps "$steps" -var every "$every" -var nu "$nu" -var k "$k") >/dev/null 2>&1
         awk '/^ *Step/ {p = 1; next} /^Loop time/ {p = 0} p && NF == 4 {print $2, $3, $4}' "$tmp/log" >"$tmp/l.txt"
-        if grep -q "^Loop time" "$tmp/log"; then
-            cost=$(awk -v dt="$dt" -v s="$steps" '/^Loop time of/ {t = $4} /^Output/ {o = $3}
-                       END {printf "%.6g", (t - o) / (s * dt)}' "$tmp/log")
-        else
-            cost=nan # LAMMPS stopped (lost atoms): unstable at this step
-        fi
+        cost=$(lmp_cost "$tmp/log" "$dt" "$steps")
         fitline=$("$W" fit="$tmp/l.txt" L="$L" nu="$nu" kernel=lucy)
         [ "$(wc -l <"$tmp/l.txt")" -lt "$SAMPLES" ] && fitline="nu_fit=nan ratio=nan"
     fi
