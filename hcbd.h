@@ -108,8 +108,8 @@
      >>observables [hcbd_world_get_ hcbd_world_temperature hcbd_world_momentum hcbd_world_virial_stress
         hcbd_world_friction_average hcbd_world_transverse_current hcbd_world_potential_energy
         hcbd_world_config_temperature hcbd_world_forces hcbd_world_stress_ hcbd_world_wall_penetrations
-        hcbd_params_wall_potential hcbd_world_checksum]
-     >>theory and stability limits [hcbd_params_theory hcbd_params_stability hcbd_limits_format]
+        hcbd_world_checksum]
+     >>theory and stability limits [hcbd_params_theory hcbd_params_stability hcbd_limits_]
      >>accumulators [hcbd_profile_ hcbd_rdf_ hcbd_mtcorr_ hcbd_msd_ hcbd_slabs_]
      >>statistics of a run's results [hcbd_carreau_fit hcbd_carreau_err_scale hcbd_blocking_error]
      >>random numbers [hcbd_splitmix64 hcbd_rng_ hcbd_world_rng_normal hcbd_world_pair_normals
@@ -117,7 +117,7 @@
         hcbd_noise_]
      >>GI-BD equations without a world [hcbd_params_gibd_coef hcbd_gibd_]
      >>walls without a world [hcbd_walls_]
-     >>kernels [hcbd_wendland hcbd_star_]
+     >>kernels [hcbd_wendland hcbd_star_ hcbd_star_coef_]
      >>HCBD (2018) [hcbd_hc_si_ hcbd_hc_params_ hcbd_hc_world_def_default]
      >>HCBD: world [hcbd_hc_world_ hcbd_hc_world_set_fluid hcbd_hc_world_set_polymers hcbd_hc_world_place_
         hcbd_hc_world_get_fluid hcbd_hc_world_get_polymers hcbd_hc_world_refresh]
@@ -129,7 +129,7 @@
      >>HCBD: kernels of the 2018 model [hcbd_m4 hcbd_rapid_w hcbd_flory_]
      >>HCBD: equations without a world [hcbd_hc_params_coef hcbd_hc_fluid_ hcbd_hc_polymer_
         hcbd_hc_lambda_ hcbd_hc_noise_ hcbd_hc_params_sweep_grid]
-     >>checkpoint/restart [hcbd_world_checkpoint_ hcbd_world_save hcbd_world_load hcbd_world_set_threads]
+     >>checkpoint/restart [hcbd_world_checkpoint_ hcbd_world_save hcbd_world_load]
      >>trajectories and logs [hcbd_world_write_ hcbd_thermo_header hcbd_world_thermo_line]
      >>HCBD: checkpoints, threads, XYZ and thermo [hcbd_hc_world_checkpoint_ hcbd_hc_world_save
         hcbd_hc_world_load hcbd_hc_world_set_threads hcbd_hc_world_write_xyz hcbd_hc_thermo_header
@@ -143,11 +143,11 @@
         hcbd_noise_]
      >>kernels [hcbd_wendland]
      >>GI-BD equations [hcbd_params_gibd_coef hcbd_gibd_]
-     >>star potential [hcbd_star_]
+     >>star potential [hcbd_star_ hcbd_star_coef_]
      >>fixed-point pair sums
      >>box and minimum image
-     >>walls [hcbd_params_wall_potential hcbd_world_wall_penetrations]
-     >>theory and stability limits [hcbd_params_theory hcbd_params_stability hcbd_limits_format]
+     >>walls [hcbd_params_wall_potential]
+     >>theory and stability limits [hcbd_params_theory hcbd_params_stability hcbd_limits_]
      >>world and storage [hcbd_world_]
      >>neighbour search
      >>pair traversal
@@ -160,7 +160,7 @@
      >>step [hcbd_world_step]
      >>observables [hcbd_world_get_ hcbd_world_temperature hcbd_world_momentum hcbd_world_virial_stress
         hcbd_world_friction_average hcbd_world_transverse_current hcbd_world_potential_energy
-        hcbd_world_config_temperature hcbd_world_forces hcbd_world_checksum]
+        hcbd_world_config_temperature hcbd_world_forces hcbd_world_wall_penetrations hcbd_world_checksum]
      >>g(r) [hcbd_rdf_]
      >>multiple-tau correlator [hcbd_mtcorr_]
      >>Carreau fit [hcbd_carreau_fit hcbd_carreau_err_scale]
@@ -199,8 +199,8 @@
    NAMING
      One rule, Box2D's object-verb: hcbd_<object>_<verb>, where the object
      is the type of the first argument and the verb what the call does or
-     computes.  Objects: world (GI-BD and walled), hc_world (HCBD), params,
-     hc_params, hc_si, the accumulators (rdf, mtcorr, msd, profile, slabs),
+     computes.  Objects: world (GI-BD and walled), hc_world (HCBD), their
+     definitions world_def and hc_world_def, params, hc_params, hc_si, the accumulators (rdf, mtcorr, msd, profile, slabs),
      rng, noise (an hcbd_noise_stream: counter-based numbers), walls,
      gibd_coef, hc_coef, star_coef, limits (an array of hcbd_limit).
      Choices are enums named after the parameter they set (hcbd_noise is
@@ -476,6 +476,12 @@ hcbd_world_def hcbd_world_def_default(void);
    hcbd_world_create to name, and leave the box as it was; the result is
    HCBD_ERR_PARAM then. */
 hcbd_result hcbd_world_def_set_density(hcbd_world_def *def, int n, double density);
+/* Wall repulsion on a particle at height y (MODEL 4, every plane at its
+   minimum-image distance): returns the energy, *fy the force (may be NULL).
+   0 without Gaussian walls. */
+#if HCBD_MODEL == HCBD_MODEL_WALLED
+double hcbd_params_wall_potential(const hcbd_params *p, double y, double *fy);
+#endif
 
 /* >>world -----------------------------------------------------------------*/
 typedef struct hcbd__zig {
@@ -635,6 +641,9 @@ hcbd_result hcbd_world_place_random(hcbd_world *w, int n);
 /* Background velocities in id order, 3n values. */
 hcbd_result hcbd_world_set_velocities(hcbd_world *w, const double *v);
 
+/* The thread count may change at any time (results do not). */
+hcbd_result hcbd_world_set_threads(hcbd_world *w, int threads);
+
 /* >>step ------------------------------------------------------------------*/
 /* Advances nsteps steps.  Returns HCBD_ERR_UNSTABLE when a particle moves
    more than half the interaction range in one step, HCBD_ERR_NONFINITE on
@@ -698,12 +707,6 @@ hcbd_result hcbd_world_stress_read(const hcbd_world *w, double out[4], int64_t *
    silently accepted, but not an error: the Gaussian repulsion is soft), and
    the last one's step and id (-1 if none). */
 int64_t hcbd_world_wall_penetrations(const hcbd_world *w, int64_t *last_step, int *last_id);
-/* Wall repulsion on a particle at height y (MODEL 4, every plane at its
-   minimum-image distance): returns the energy, *fy the force (may be NULL).
-   0 without Gaussian walls. */
-#if HCBD_MODEL == HCBD_MODEL_WALLED
-double hcbd_params_wall_potential(const hcbd_params *p, double y, double *fy);
-#endif
 
 /* 64-bit hash of the step, positions, images, Lees-Edwards shifts and
    velocities in id order: equal checksums mean bit-identical states (the
@@ -1387,8 +1390,6 @@ hcbd_result hcbd_world_checkpoint_save(hcbd_world *w, void *buf, size_t size);
 hcbd_result hcbd_world_checkpoint_load(hcbd_world *w, const void *buf, size_t size);
 hcbd_result hcbd_world_save(hcbd_world *w, const char *path);
 hcbd_result hcbd_world_load(hcbd_world *w, const char *path);
-/* The thread count may change at any time (results do not). */
-hcbd_result hcbd_world_set_threads(hcbd_world *w, int threads);
 
 /* >>trajectories and logs (called by the caller between steps: nothing
    runs, and nothing costs, unless called).
@@ -2732,13 +2733,6 @@ static inline uint64_t hcbd__ws_pair_step_key(const hcbd__wallset *s, int64_t st
 static inline int hcbd__wall_guard(const hcbd_world *w) { (void)w; return 0; }
 static inline double hcbd__wall_fy(const hcbd_world *w, double y) { (void)w; (void)y; return 0.0; }
 #endif
-
-int64_t hcbd_world_wall_penetrations(const hcbd_world *w, int64_t *last_step, int *last_id)
-{
-    if (last_step) *last_step = w ? w->wall_pen_step : -1;
-    if (last_id) *last_id = w ? w->wall_pen_id : -1;
-    return w ? w->wall_pen : 0;
-}
 
 /* >>theory and stability limits (hcbd_params_theory, hcbd_params_stability) */
 hcbd_result hcbd_params_theory(const hcbd_params *p, hcbd_theory *t)
@@ -5392,6 +5386,13 @@ hcbd_result hcbd_world_step(hcbd_world *w, int nsteps)
 }
 
 /* >>observables */
+int64_t hcbd_world_wall_penetrations(const hcbd_world *w, int64_t *last_step, int *last_id)
+{
+    if (last_step) *last_step = w ? w->wall_pen_step : -1;
+    if (last_id) *last_id = w ? w->wall_pen_id : -1;
+    return w ? w->wall_pen : 0;
+}
+
 hcbd_result hcbd_world_get_positions(const hcbd_world *w, double *xyz, int unwrapped)
 {
     int i;

@@ -5,11 +5,32 @@
 # defined at the start of a line) under a banner one of the prefixes its
 # CONTENTS line names in [ ], each prefix used at least once.  So a banner
 # cannot be moved, renamed or filled with another concern's API unnoticed.
+# And each public function stands with its object (the NAMING paragraph's:
+# hcbd_<object>_..., the longest object that fits): under a banner whose
+# CONTENTS line claims the object whole (the prefix hcbd_<object>_), or a
+# group for that object alone (every prefix of the line that belongs to an
+# object not claimed whole belongs to this one).  Functions of numbers
+# alone belong to no object.
 # Prints one line per disagreement and ends with "N passed, N failed" (one
 # check per banner, plus one for the banner count).
 h=${1:-hcbd.h}
 awk '
 function trim(t) { sub(/^[ \t]+/, "", t); sub(/[ \t]+$/, "", t); return t }
+# the object of a name: the longest of the objects NAMING lists
+function obj(f,   k, best) {
+    best = ""
+    for (k in OBJ) if (index(f, "hcbd_" k "_") == 1 && length(k) > length(best)) best = k
+    return best
+}
+BEGIN {
+    n = split("world world_def hc_world hc_world_def params hc_params hc_si rdf mtcorr msd profile slabs " \
+              "rng noise walls gibd_coef hc_coef star_coef limits", L, " ")
+    for (i = 1; i <= n; ++i) OBJ[L[i]] = 1
+}
+# every object above is named in the NAMING paragraph
+/^   NAMING/ { innm = 1; next }
+innm && /^   [A-Z][A-Z ]+$/ { innm = 0 }
+innm { naming = naming " " $0 }
 # the CONTENTS block: from its heading to the next heading of the header comment
 /^   CONTENTS/ { inc = 1; next }
 inc && /^   [A-Z][A-Z ]+$/ { inc = 0 }
@@ -74,6 +95,26 @@ END {
                 bad = 1
             }
         if (bad) fail++; else pass++
+    }
+    # each function with its object
+    for (k in OBJ) {
+        if (!match(naming, "[^a-z_]" k "[^a-z_]")) { printf "banners: object %s is not in the NAMING paragraph\n", k; fail++ }
+    }
+    for (i = 1; i <= nb && i <= nc; ++i) {
+        np = split(pre[i], P, /[ \t]+/); claim = " "; part = " "; npart = 0
+        for (q = 1; q <= np; ++q) if (P[q] != "" && (o = obj(P[q])) != "" && P[q] == "hcbd_" o "_") claim = claim o " "
+        for (q = 1; q <= np; ++q) {
+            if (P[q] == "" || (o = obj(P[q])) == "" || index(claim, " " o " ")) continue
+            if (!index(part, " " o " ")) { part = part o " "; npart++ }
+        }
+        bad = 0
+        for (k = 1; k <= nf[i]; ++k) {
+            o = obj(fn[i, k])
+            if (o == "" || index(claim, " " o " ") || (npart == 1 && index(part, " " o " "))) continue
+            printf "banners: %s (line %d, object %s) sits under \">>%s\", which neither claims %s (hcbd_%s_) nor is a group of it alone%s\n", fn[i, k], fl[i, k], o, title[i], o, o, (npart > 1 ? " (its CONTENTS line mixes objects)" : "")
+            bad = 1
+        }
+        if (bad) { fail++; pass-- }
     }
     printf "banners: %d banners, %d CONTENTS lines\n", nb, nc
     printf "%d passed, %d failed\n", pass, fail
