@@ -200,9 +200,10 @@
      One rule, Box2D's object-verb: hcbd_<object>_<verb>, where the object
      is the type of the first argument and the verb what the call does or
      computes.  Objects: world (GI-BD and walled), hc_world (HCBD), their
-     definitions world_def and hc_world_def, params, hc_params, hc_si, the accumulators (rdf, mtcorr, msd, profile, slabs),
-     rng, noise (an hcbd_noise_stream: counter-based numbers), walls,
-     gibd_coef, hc_coef, star_coef, limits (an array of hcbd_limit).
+     definitions world_def and hc_world_def, params, hc_params, hc_si,
+     the accumulators (rdf, mtcorr, msd, profile, slabs), rng, noise (an
+     hcbd_noise_stream: counter-based numbers), walls, gibd_coef,
+     hc_coef, star_coef, limits (an array of hcbd_limit).
      Choices are enums named after the parameter they set (hcbd_noise is
      params.noise, the noise's distribution; the noise_ functions take
      the stream).  _enable(x, on) switches on (1) or off (0).  A world
