@@ -1,7 +1,10 @@
 /* The 2018 world's fast paths against its general passes (the GI-BD
-   world's: test_fast_paths_stress_bits).  A step picks, per pass, a loop
-   specialised to the scene (the fluid kick without noise or stress, ...).
-   The world's core.general sends every pass through its general form,
+   world's: test_fast_paths_stress_bits).  The Euler fluid kick takes a
+   loop compiled without noise, or without stress, where the scene has
+   none; the other passes test their switches inside one loop, and the
+   options still change which passes run (the sweep or the kick, the
+   coupling's weights, the sub-steps).  The world's core.general sends
+   every pass through its general form,
    which the absolute tests hold to the equations.  For every combination
    of the options that switch a path (shear, stress, fluctuations,
    coupling weights, pair scheme, sub-steps) a world with its fast paths
