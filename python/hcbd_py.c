@@ -204,50 +204,46 @@ int hpy_def_set_seed(void *dv, uint64_t seed)
     return 0;
 }
 
+/* w if r is HCBD_OK, else NULL with the world's message, w freed: the
+   end of making a world (hpy_world_new, hpy_world_load) */
+static void *hpy_made(hpy_world *w, hcbd_result r, char *msg, int size)
+{
+    if (r == HCBD_OK) return w;
+    hpy_fail(msg, size, r, w->err.msg);
+    free(w);
+    return NULL;
+}
+
 /* The world of definition d (malloc'd; free it with hpy_world_free), or
    NULL with the library's message. */
 void *hpy_world_new(const void *d, char *msg, int size)
 {
     hpy_world *w = (hpy_world *)calloc(1, sizeof *w);
-    hcbd_result r;
     if (!w || !d) {
         free(w);
         hpy_fail(msg, size, HCBD_ERR_NULL, "out of memory");
         return NULL;
     }
 #if HCBD_MODEL == HCBD_MODEL_HCBD
-    r = hcbd_hc_world_create(w, (const hpy_def *)d);
+    return hpy_made(w, hcbd_hc_world_create(w, (const hpy_def *)d), msg, size);
 #else
-    r = hcbd_world_create(w, (const hpy_def *)d);
+    return hpy_made(w, hcbd_world_create(w, (const hpy_def *)d), msg, size);
 #endif
-    if (r != HCBD_OK) {
-        hpy_fail(msg, size, r, w->err.msg);
-        free(w);
-        return NULL;
-    }
-    return w;
 }
 
 /* A world read from a checkpoint file, or NULL with the message */
 void *hpy_world_load(const char *path, char *msg, int size)
 {
     hpy_world *w = (hpy_world *)calloc(1, sizeof *w);
-    hcbd_result r;
     if (!w) {
         hpy_fail(msg, size, HCBD_ERR_NULL, "out of memory");
         return NULL;
     }
 #if HCBD_MODEL == HCBD_MODEL_HCBD
-    r = hcbd_hc_world_load(w, path);
+    return hpy_made(w, hcbd_hc_world_load(w, path), msg, size);
 #else
-    r = hcbd_world_load(w, path);
+    return hpy_made(w, hcbd_world_load(w, path), msg, size);
 #endif
-    if (r != HCBD_OK) {
-        hpy_fail(msg, size, r, w->err.msg);
-        free(w);
-        return NULL;
-    }
-    return w;
 }
 
 void hpy_world_free(void *w)

@@ -30,3 +30,22 @@ lmp_cost() {
         echo nan # LAMMPS stopped (lost atoms): unstable at this step
     fi
 }
+
+# median_rounds RAW: the lines "k1 k2 k3 dt cost a b" of all rounds, one
+# per key and step, sorted by key and then dt: the median cost over the
+# rounds (nan if any round's is), a and b from the first (they do not
+# change between rounds: every run is deterministic)
+median_rounds() {
+    sort -k1,1 -k2,2 -k3,3 -k4,4g "$1" | awk '
+    function flush(   i, j, v, med) {
+        if (key == "") return
+        for (i = 2; i <= nk; ++i) { v = c[i]; for (j = i - 1; j >= 1 && c[j] > v; --j) c[j + 1] = c[j]; c[j + 1] = v }
+        med = (nk % 2) ? c[(nk + 1) / 2] : 0.5 * (c[nk / 2] + c[nk / 2 + 1])
+        print f1, f2, f3, dt, (bad ? "nan" : med), a, b
+        delete c; nk = 0; bad = 0
+    }
+    { k = $1 " " $2 " " $3 " " $4
+      if (k != key) { flush(); key = k; f1 = $1; f2 = $2; f3 = $3; dt = $4; a = $6; b = $7 }
+      if ($5 == "nan") bad = 1; else c[++nk] = $5 + 0 }
+    END { flush() }'
+}

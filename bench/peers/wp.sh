@@ -39,12 +39,8 @@ DTS=${DTS:-"2.5e-5 5e-5 1e-4 2e-4 4e-4 8e-4 1.2e-3 1.6e-3 2.4e-3 3.2e-3"}
 OUT=${WP_OUT:-out/wp_peers}
 case "$OUT" in /*) ;; *) OUT="$root/$OUT" ;; esac
 export OMP_NUM_THREADS=1
-
-LMP_BIN=""
-for cand in "${LMP:-}" /tmp/peer/build/lmp "$(command -v lmp 2>/dev/null)" "$root/build/lammps/lmp"; do
-    [ -n "$cand" ] && command -v "$cand" >/dev/null 2>&1 || continue
-    if "$cand" -h 2>/dev/null | grep -qw brownian; then LMP_BIN=$(command -v "$cand"); break; fi
-done
+. "$here/lib.sh"
+find_lmp brownian
 if [ -z "$LMP_BIN" ]; then
     echo "bench/peers/wp.sh: no lmp with fix brownian (make lammps, or ../shared/PEERS.md); skipped"
     exit 0
@@ -54,9 +50,7 @@ mkdir -p "$OUT"
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/hcbd_wp.XXXXXX")
 trap 'rm -rf "$tmp"' EXIT
 awk -v f=128 -v sigma=1 -v eps=1 -v n=5000 -v rlo=0.01 -v rhi=2.5 -f "$here/star_table.awk" >"$tmp/star.table"
-lmp_version=$("$LMP_BIN" -nocite -log none -in /dev/null 2>/dev/null | head -n 1 | tr -d '\r')
-cpu=$(lscpu 2>/dev/null | awk -F: '/Model name/ {gsub(/^ +/, "", $2); print $2; exit}')
-avx=$(grep -qw avx512f /proc/cpuinfo 2>/dev/null && echo "AVX-512" || echo "AVX2 or less")
+machine_names
 echo "wp.sh: $LMP_BIN ($lmp_version), $cpu ($avx), N = $N, $TIME time units per point"
 t_start=$(date +%s)
 
@@ -96,8 +90,7 @@ for dt in $DTS; do
     if (cd "$tmp" && "$LMP_BIN" -nocite -screen none -log "$tmp/log" -in "$here/in.star_wp" -var N "$N" \
             -var dt "$dt" -var eqsteps "$eqs" -var steps "$steps" -var every "$every" -var seed "$SEED" \
             -var rng gaussian -var table "$tmp/star.table" -var dump "$tmp/l.dump"); then
-        cost=$(awk -v dt="$dt" -v s="$steps" '/^Loop time of/ {t = $4} /^Output/ {o = $3}
-                   END {printf "%.6g", (t - o) / (s * dt)}' "$tmp/log")
+        cost=$(lmp_cost "$tmp/log" "$dt" "$steps")
         add lammps brownian_em "$dt" "$cost" "$(est "$tmp/l.dump" ref="$tmp/ref.g")"
     else
         echo "wp.sh: lmp failed at dt = $dt"; tail -n 5 "$tmp/log"

@@ -134,24 +134,13 @@ echo "axis,code,integrator,dt,seconds_per_time_unit,value,value_err,error,cpu" >
 # the median cost over the rounds; the values are the same every round
 # (deterministic), the temperature's error is |T/kT - 1|, the
 # viscosity's against the code's finest step
-sort -k1,1 -k2,2 -k3,3 -k4,4g "$raw" | awk -v cpu="$cpu ($avx)" '
-function flush() {
-    if (key == "") return
-    n = nk
-    for (i = 2; i <= n; ++i) { v = c[i]; for (j = i - 1; j >= 1 && c[j] > v; --j) c[j + 1] = c[j]; c[j + 1] = v }
-    med = (n % 2) ? c[(n + 1) / 2] : 0.5 * (c[n / 2] + c[n / 2 + 1])
-    if (bad) med = "nan"
-    if (key3 != lastk3) { ref = val; lastk3 = key3 }
-    if (val == "nan") err = "nan"
-    else if (f1 == "temp") err = sprintf("%.6f", val - 1)
-    else err = (ref == "nan") ? "nan" : sprintf("%.6f", val / ref - 1)
-    printf "%s,%s,%s,%s,%s,%s,%s,%s,\"%s\"\n", (f1 == "temp" ? "temperature" : "viscosity"), f2, f3, dt, med, val, verr, err, cpu
-    delete c; nk = 0; bad = 0
-}
-{ k = $1 " " $2 " " $3 " " $4
-  if (k != key) { flush(); key = k; key3 = $1 " " $2 " " $3; f1 = $1; f2 = $2; f3 = $3; dt = $4; val = $6; verr = $7 }
-  if ($5 == "nan") bad = 1; else c[++nk] = $5 + 0 }
-END { flush() }' >>"$csv"
+median_rounds "$raw" | awk -v cpu="$cpu ($avx)" '{
+    if ($1 " " $2 " " $3 != last) { ref = $6; last = $1 " " $2 " " $3 }  # the finest step
+    if ($6 == "nan") err = "nan"
+    else if ($1 == "temp") err = sprintf("%.6f", $6 - 1)
+    else err = (ref == "nan") ? "nan" : sprintf("%.6f", $6 / ref - 1)
+    printf "%s,%s,%s,%s,%s,%s,%s,%s,\"%s\"\n", ($1 == "temp" ? "temperature" : "viscosity"), $2, $3, $4, $5, $6, $7, err, cpu
+}' >>"$csv"
 
 headline "$csv" | tee "$OUT/wp_sdpd_headline.txt"
 echo "wp_sdpd.sh: wrote $csv; $(( $(date +%s) - t_start )) s"

@@ -96,23 +96,12 @@ done
 
 csv="$OUT/wp_sph.csv"
 echo "fluid,code,integrator,dt,seconds_per_time_unit,nu_fit,nu_fit_over_nuK,error_vs_finest,cpu" >"$csv"
-# median cost over the rounds; nu_fit is deterministic (the same every round)
-sort -k1,1 -k2,2 -k3,3 -k4,4g "$raw" | awk -v cpu="$cpu ($avx)" '
-function flush() {
-    if (key == "") return
-    n = nk
-    for (i = 2; i <= n; ++i) { v = c[i]; for (j = i - 1; j >= 1 && c[j] > v; --j) c[j + 1] = c[j]; c[j + 1] = v }
-    med = (n % 2) ? c[(n + 1) / 2] : 0.5 * (c[n / 2] + c[n / 2 + 1])
-    if (bad) med = "nan"
-    if (key3 != lastk3) { ref = nu; lastk3 = key3 }
-    err = (nu == "nan" || ref == "nan") ? "nan" : sprintf("%.6f", nu / ref - 1)
-    printf "%s,%s,%s,%s,%s,%s,%s,%s,\"%s\"\n", f1, f2, f3, dt, med, nu, ratio, err, cpu
-    delete c; nk = 0; bad = 0
-}
-{ k = $1 " " $2 " " $3 " " $4
-  if (k != key) { flush(); key = k; key3 = $1 " " $2 " " $3; f1 = $1; f2 = $2; f3 = $3; dt = $4; nu = $6; ratio = $7 }
-  if ($5 == "nan") bad = 1; else c[++nk] = $5 + 0 }
-END { flush() }' >>"$csv"
+# the median cost over the rounds; the error against the finest step
+median_rounds "$raw" | awk -v cpu="$cpu ($avx)" '{
+    if ($1 " " $2 " " $3 != last) { ref = $6; last = $1 " " $2 " " $3 }  # the finest step
+    err = ($6 == "nan" || ref == "nan") ? "nan" : sprintf("%.6f", $6 / ref - 1)
+    printf "%s,%s,%s,%s,%s,%s,%s,%s,\"%s\"\n", $1, $2, $3, $4, $5, $6, $7, err, cpu
+}' >>"$csv"
 
 awk -F, -v tol="$TOL" 'NR > 1 {
     k = $1 "/" $2 "/" $3; if (!(k in seen)) { seen[k] = 1; ord[++n] = k }

@@ -521,21 +521,29 @@ class HCWorld(_Base):
         return tuple(out)
 
 
-class RDF:
-    """g(r) of a World in nbins shells up to rmax, block errors with `block` samples a block."""
+class _Block:
+    """An accumulator's C block (made by an hpy_*_new, freed with the object)."""
 
-    def __init__(self, rmax, nbins, block=0):
-        self._lib = _lib("walled")
+    def _own(self, lib, new, *args):
         msg = _msgbuf()
-        self._h = self._lib.hpy_rdf_new(float(rmax), int(nbins), int(block), msg, _MSG)
+        self._lib = lib
+        self._h = new(*args, msg, _MSG)
         if not self._h:
             raise ValueError(msg.value.decode(errors="replace"))
-        self.nbins = int(nbins)
 
     def __del__(self):
         h, self._h = getattr(self, "_h", None), None
         if h:
             self._lib.hpy_free(h)
+
+
+class RDF(_Block):
+    """g(r) of a World in nbins shells up to rmax, block errors with `block` samples a block."""
+
+    def __init__(self, rmax, nbins, block=0):
+        lib = _lib("walled")
+        self._own(lib, lib.hpy_rdf_new, float(rmax), int(nbins), int(block))
+        self.nbins = int(nbins)
 
     def sample(self, world):
         world._check(self._lib.hcbd_rdf_sample(self._h, world._h), "rdf sample: ")
@@ -554,22 +562,14 @@ class RDF:
         return nc.value, err.value
 
 
-class MSD:
+class MSD(_Block):
     """Mean-squared displacement with multiple origins (order-n): feed unwrapped (n, 3) positions in
     id order every sample; lags j B^l, block errors with `block` samples a block."""
 
     def __init__(self, n, B=10, levels=4, dense=0, block=0, kind="walled"):
-        self._lib = _lib(kind)
-        msg = _msgbuf()
-        self._h = self._lib.hpy_msd_new(int(n), int(B), int(levels), int(dense), int(block), msg, _MSG)
-        if not self._h:
-            raise ValueError(msg.value.decode(errors="replace"))
+        lib = _lib(kind)
+        self._own(lib, lib.hpy_msd_new, int(n), int(B), int(levels), int(dense), int(block))
         self.n, self._max = int(n), int(levels) * (int(B) - 1)
-
-    def __del__(self):
-        h, self._h = getattr(self, "_h", None), None
-        if h:
-            self._lib.hpy_free(h)
 
     def add(self, xyz):
         a = np.ascontiguousarray(np.asarray(xyz, dtype=np.float64).reshape(-1, 3))
@@ -592,21 +592,12 @@ class MSD:
         return D.value, e.value
 
 
-class Profile:
+class Profile(_Block):
     """Slab profiles across y of a World (density, <v_x>, temperature) with block errors."""
 
     def __init__(self, world, nslab, block=10):
-        self._lib = world._lib
-        msg = _msgbuf()
-        self._h = self._lib.hpy_profile_new(world._h, int(nslab), int(block), msg, _MSG)
-        if not self._h:
-            raise ValueError(msg.value.decode(errors="replace"))
+        self._own(world._lib, world._lib.hpy_profile_new, world._h, int(nslab), int(block))
         self.nslab = int(nslab)
-
-    def __del__(self):
-        h, self._h = getattr(self, "_h", None), None
-        if h:
-            self._lib.hpy_free(h)
 
     def sample(self, world):
         self._lib.hcbd_profile_sample(self._h, world._h)
