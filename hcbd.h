@@ -1819,15 +1819,10 @@ static const hcbd__prow hcbd__params_rows[] = {
 #undef HCBD__P_D
 #undef HCBD__P_I
 
-hcbd_result hcbd_params_check(const hcbd_params *p, char *msg, size_t msg_size)
+/* The rows of hcbd__params_rows that apply to p */
+static unsigned hcbd__params_mask(const hcbd_params *p)
 {
     unsigned mask = HCBD__ALL;
-    hcbd_result r;
-    int d;
-    if (!p) {
-        if (msg && msg_size) snprintf(msg, msg_size, "params is NULL");
-        return HCBD_ERR_NULL;
-    }
     if (p->dynamics == HCBD_DYN_GIBD) mask |= HCBD__IF_GIBD;
     if (p->dynamics == HCBD_DYN_GIBD && p->density_norm == 2016) mask |= HCBD__IF_2016;
     if (p->potential == HCBD_POT_STAR) mask |= HCBD__IF_STAR;
@@ -1841,90 +1836,126 @@ hcbd_result hcbd_params_check(const hcbd_params *p, char *msg, size_t msg_size)
         if (p->dynamics == HCBD_DYN_GIBD) mask |= HCBD__IF_WALL_GIBD;
     }
 #endif
+    return mask;
+}
+
+/* A table potential's points are finite, inside the cut-off */
+static hcbd_result hcbd__check_table(const hcbd_params *p, char *msg, size_t msg_size)
+{
+    int k;
+    HCBD__CHECK(p->table_r0 < p->rcut, "table_r0", p->table_r0);
+    for (k = 0; k < p->table_n; ++k)
+        if (!isfinite(p->table_F[k]) || !isfinite(p->table_V[k])) {
+            const int F = !isfinite(p->table_F[k]);
+            if (msg && msg_size)
+                snprintf(msg, msg_size, "parameter %s[%d] = %.17g is invalid (need finite)",
+                         F ? "table_F" : "table_V", k, F ? p->table_F[k] : p->table_V[k]);
+            return HCBD_ERR_PARAM;
+        }
+    return HCBD_OK;
+}
+
+/* Lees-Edwards: a GI-BD run, an offset under a box edge per step, and the
+   three cells along x and y its sheared scan needs */
+static hcbd_result hcbd__check_shear(const hcbd_params *p, char *msg, size_t msg_size)
+{
+    int d;
+    HCBD__CHECK(p->dynamics == HCBD_DYN_GIBD, "gdot", p->gdot);
+    /* the offset may move by less than a box edge per step */
+    HCBD__CHECK(fabs(p->gdot * p->L[1] * p->dt) < p->L[0], "gdot", p->gdot);
+    /* the sheared scan needs 3 cells along x and y, counted exactly as
+       hcbd__cells does (L / rl can round just below 3) */
+    for (d = 0; d < 2; ++d)
+        if (floor(p->L[d] / (hcbd__cutmax(p) + hcbd__skin(p))) < 3.0) {
+            if (msg && msg_size)
+                snprintf(msg, msg_size,
+                         "box too small for Lees-Edwards: L[%d] = %.17g < 3 (cut-off "
+                         "%.17g + skin %.17g)", d, p->L[d], hcbd__cutmax(p), hcbd__skin(p));
+            return HCBD_ERR_BOX;
+        }
+    return HCBD_OK;
+}
+
+#if HCBD__WALLS
+/* The walls leave a channel, do not interact through the periodic y, and
+   exclude Lees-Edwards and lagged densities */
+static hcbd_result hcbd__check_walls(const hcbd_params *p, char *msg, size_t msg_size)
+{
+    const double t = p->wall.thickness, cut = hcbd__cutmax(p);
+    if (2.0 * t >= p->L[1]) {
+        if (msg && msg_size)
+            snprintf(msg, msg_size, "wall.thickness = %.17g leaves no channel: the "
+                     "two walls (2 x %.17g) fill the box height L[1] = %.17g",
+                     t, t, p->L[1]);
+        return HCBD_ERR_BOX;
+    }
+    /* y is periodic: the two walls form one slab, and nothing may
+       interact through it */
+    if (2.0 * t < cut) {
+        if (msg && msg_size)
+            snprintf(msg, msg_size, "wall.thickness = %.17g is too thin: y is "
+                     "periodic, so the two walls (2 x %.17g) must be at least the "
+                     "interaction range %.17g thick", t, t, cut);
+        return HCBD_ERR_BOX;
+    }
+    HCBD__CHECK(p->gdot == 0.0, "gdot (walls and Lees-Edwards exclude each other)",
+                p->gdot);
+    HCBD__CHECK(p->lagged_density == 0,
+                "lagged_density (not available with walls)", p->lagged_density);
+    if (p->wall.mode != HCBD_WALL_REFLECT)
+        HCBD__CHECK(p->wall.plane <= t, "wall.plane", p->wall.plane);
+    if (p->wall.mode == HCBD_WALL_NOSLIP)
+        HCBD__CHECK(p->wall.shift == HCBD_AUTO || p->wall.shift < 0.25 * (p->L[1] - 2.0 * t),
+                    "wall.shift", p->wall.shift);
+    return HCBD_OK;
+}
+#endif
+
+/* A list run needs a box of at least twice the list range per edge */
+static hcbd_result hcbd__check_box(const hcbd_params *p, char *msg, size_t msg_size)
+{
+    const double rl = hcbd__cutmax(p) + hcbd__skin(p);
+    int d;
+    for (d = 0; d < 3; ++d)
+        if (p->L[d] < 2.0 * rl) {
+            if (msg && msg_size)
+                snprintf(msg, msg_size,
+                         "box too small: L[%d] = %.17g < 2 (cut-off %.17g + "
+                         "skin %.17g); enlarge the box or reduce the skin",
+                         d, p->L[d], hcbd__cutmax(p), hcbd__skin(p));
+            return HCBD_ERR_BOX;
+        }
+    return HCBD_OK;
+}
+
+hcbd_result hcbd_params_check(const hcbd_params *p, char *msg, size_t msg_size)
+{
+    hcbd_result r;
+    if (!p) {
+        if (msg && msg_size) snprintf(msg, msg_size, "params is NULL");
+        return HCBD_ERR_NULL;
+    }
     if (p->potential == HCBD_POT_TABLE && (!p->table_F || !p->table_V)) {
         if (msg && msg_size) snprintf(msg, msg_size, "parameter table_F or table_V is NULL");
         return HCBD_ERR_NULL;
     }
     r = hcbd__check_rows(p, hcbd__params_rows, sizeof hcbd__params_rows / sizeof *hcbd__params_rows,
-                         mask, msg, msg_size);
+                         hcbd__params_mask(p), msg, msg_size);
     if (r != HCBD_OK) return r;
     /* Explicit Euler friction overshoots for tau < dt; 2014 eq. 27 asks
        tau >= 10 dt for accuracy, which stays the caller's trade-off.  The
        exact pair solution has no such limit. */
     if (p->dynamics == HCBD_DYN_GIBD && p->pair_integrator == HCBD_PAIR_EULER)
         HCBD__CHECK(p->tau >= p->dt, "tau", p->tau);
-    if (p->potential == HCBD_POT_TABLE) {
-        int k;
-        HCBD__CHECK(p->table_r0 < p->rcut, "table_r0", p->table_r0);
-        for (k = 0; k < p->table_n; ++k)
-            if (!isfinite(p->table_F[k]) || !isfinite(p->table_V[k])) {
-                const int F = !isfinite(p->table_F[k]);
-                if (msg && msg_size)
-                    snprintf(msg, msg_size, "parameter %s[%d] = %.17g is invalid (need finite)",
-                             F ? "table_F" : "table_V", k, F ? p->table_F[k] : p->table_V[k]);
-                return HCBD_ERR_PARAM;
-            }
-    }
-    if (p->gdot != 0.0) {
-        HCBD__CHECK(p->dynamics == HCBD_DYN_GIBD, "gdot", p->gdot);
-        /* the offset may move by less than a box edge per step */
-        HCBD__CHECK(fabs(p->gdot * p->L[1] * p->dt) < p->L[0], "gdot", p->gdot);
-        /* the sheared scan needs 3 cells along x and y, counted exactly as
-           hcbd__cells does (L / rl can round just below 3) */
-        for (d = 0; d < 2; ++d)
-            if (floor(p->L[d] / (hcbd__cutmax(p) + hcbd__skin(p))) < 3.0) {
-                if (msg && msg_size)
-                    snprintf(msg, msg_size,
-                             "box too small for Lees-Edwards: L[%d] = %.17g < 3 (cut-off "
-                             "%.17g + skin %.17g)", d, p->L[d], hcbd__cutmax(p), hcbd__skin(p));
-                return HCBD_ERR_BOX;
-            }
-    }
+    if (p->potential == HCBD_POT_TABLE && (r = hcbd__check_table(p, msg, msg_size)) != HCBD_OK) return r;
+    if (p->gdot != 0.0 && (r = hcbd__check_shear(p, msg, msg_size)) != HCBD_OK) return r;
     /* classical BD has no background velocity for the force to drive */
     HCBD__CHECK(!p->fext_background_only || p->dynamics == HCBD_DYN_GIBD,
                 "fext_background_only", p->fext_background_only);
 #if HCBD__WALLS
-    if (p->wall.thickness > 0) {
-        const double t = p->wall.thickness, cut = hcbd__cutmax(p);
-        if (2.0 * t >= p->L[1]) {
-            if (msg && msg_size)
-                snprintf(msg, msg_size, "wall.thickness = %.17g leaves no channel: the "
-                         "two walls (2 x %.17g) fill the box height L[1] = %.17g",
-                         t, t, p->L[1]);
-            return HCBD_ERR_BOX;
-        }
-        /* y is periodic: the two walls form one slab, and nothing may
-           interact through it */
-        if (2.0 * t < cut) {
-            if (msg && msg_size)
-                snprintf(msg, msg_size, "wall.thickness = %.17g is too thin: y is "
-                         "periodic, so the two walls (2 x %.17g) must be at least the "
-                         "interaction range %.17g thick", t, t, cut);
-            return HCBD_ERR_BOX;
-        }
-        HCBD__CHECK(p->gdot == 0.0, "gdot (walls and Lees-Edwards exclude each other)",
-                    p->gdot);
-        HCBD__CHECK(p->lagged_density == 0,
-                    "lagged_density (not available with walls)", p->lagged_density);
-        if (p->wall.mode != HCBD_WALL_REFLECT)
-            HCBD__CHECK(p->wall.plane <= t, "wall.plane", p->wall.plane);
-        if (p->wall.mode == HCBD_WALL_NOSLIP)
-            HCBD__CHECK(p->wall.shift == HCBD_AUTO || p->wall.shift < 0.25 * (p->L[1] - 2.0 * t),
-                        "wall.shift", p->wall.shift);
-    }
+    if (p->wall.thickness > 0 && (r = hcbd__check_walls(p, msg, msg_size)) != HCBD_OK) return r;
 #endif
-    if (hcbd__needs_pairs(p)) {
-        double rl = hcbd__cutmax(p) + hcbd__skin(p);
-        for (d = 0; d < 3; ++d)
-            if (p->L[d] < 2.0 * rl) {
-                if (msg && msg_size)
-                    snprintf(msg, msg_size,
-                             "box too small: L[%d] = %.17g < 2 (cut-off %.17g + "
-                             "skin %.17g); enlarge the box or reduce the skin",
-                             d, p->L[d], hcbd__cutmax(p), hcbd__skin(p));
-                return HCBD_ERR_BOX;
-            }
-    }
+    if (hcbd__needs_pairs(p)) return hcbd__check_box(p, msg, msg_size);
     return HCBD_OK;
 }
 
@@ -3168,11 +3199,10 @@ static void hcbd__src_get(const hcbd_world *w, hcbd__src *s, int i, double r[3])
     }
 }
 
-static hcbd_result hcbd__set_particles(hcbd_world *w, int n, hcbd__src *src)
+/* The count and the caller's coordinates, before anything is written. */
+static hcbd_result hcbd__check_particles(hcbd_world *w, int n, const hcbd__src *src)
 {
-    int i, d;
-    hcbd__src src0;
-    double mom[3] = {0, 0, 0};
+    int i;
     if (n > w->capacity)
         return hcbd__fail(&w->err, HCBD_ERR_CAPACITY, -1, -1,
                           "N = %d exceeds the capacity %d", n, w->capacity);
@@ -3194,20 +3224,34 @@ static hcbd_result hcbd__set_particles(hcbd_world *w, int n, hcbd__src *src)
                                   "box lengths from the box", "xyz"[i % 3], i / 3,
                                   src->xyz[i]);
         }
-    /* Positions go to the list-build copies (stale until the next build) first and are checked there,
-       so a refused configuration leaves the world as it was; the source is
-       replayed for the images at commit. */
-    src->n = n;
-    src0 = *src;
+    return HCBD_OK;
+}
+
+/* Particle i's position from the source, wrapped into the box (generated
+   positions fill the channel only), with its image counts. */
+static void hcbd__src_place(hcbd_world *w, hcbd__src *src, int i, double r[3], int32_t img[3])
+{
+    int d;
+    hcbd__src_get(w, src, i, r);
+    if (w->walls && !src->xyz)
+        r[1] = w->ws.lo + r[1] / w->p.L[1] * (w->ws.hi - w->ws.lo);
+    for (d = 0; d < 3; ++d) {
+        img[d] = 0;
+        hcbd__wrap(w->p.L[d], &r[d], &img[d]);
+    }
+}
+
+/* The positions go to the list-build copies (stale until the next build)
+   first and are checked there, so that a refused configuration leaves
+   the particles as they were. */
+static hcbd_result hcbd__stage_particles(hcbd_world *w, int n, hcbd__src *src)
+{
+    int i;
     w->nl.list_valid = 0;
     for (i = 0; i < n; ++i) {
         double r[3];
-        int32_t img[3] = {0, 0, 0};
-        hcbd__src_get(w, src, i, r);
-        /* generated positions fill the channel only */
-        if (w->walls && !src->xyz)
-            r[1] = w->ws.lo + r[1] / w->p.L[1] * (w->ws.hi - w->ws.lo);
-        for (d = 0; d < 3; ++d) hcbd__wrap(w->p.L[d], &r[d], &img[d]);
+        int32_t img[3];
+        hcbd__src_place(w, src, i, r, img);
         if (w->walls && (r[1] < w->ws.lo || r[1] > w->ws.hi))
             return hcbd__fail(&w->err, HCBD_ERR_WALL, -1, i,
                               "particle %d at y = %g is inside a wall (the channel is "
@@ -3237,31 +3281,43 @@ static hcbd_result hcbd__set_particles(hcbd_world *w, int n, hcbd__src *src)
                                       w->p.min_distance);
             }
     }
+    return HCBD_OK;
+}
+
+/* Particle i's velocity at set-up: Maxwellian from its own generator, on
+   the linear profile of a sheared run (MODEL 5); added into mom. */
+static void hcbd__start_velocity(hcbd_world *w, int i, double mom[3])
+{
+    const double s = w->has_noise ? sqrt(w->p.kT / w->m) : 0.0;
+    double v[3] = {0, 0, 0};
+    hcbd_rng g;
+    int d;
+    hcbd_rng_seed(&g, hcbd__mix64(w->p.seed ^ hcbd__mix64(HCBD__STREAM_PARTICLE)) ^
+                          hcbd__mix64((uint64_t)i + HCBD__GOLDEN));
+    if (s > 0)
+        for (d = 0; d < 3; ++d) v[d] = s * hcbd_world_rng_normal(w, &g);
+    v[0] += w->p.gdot * (w->y[i] - 0.5 * w->p.L[1]);
+    w->vx[i] = (hcbd_real)v[0]; w->vy[i] = (hcbd_real)v[1]; w->vz[i] = (hcbd_real)v[2];
+    for (d = 0; d < 3; ++d) mom[d] += v[d];
+}
+
+/* The staged positions become the particles (ids 0..n-1, velocities at
+   zero total momentum), and the run starts over at step 0. */
+static void hcbd__commit_particles(hcbd_world *w, int n, hcbd__src *src)
+{
+    double mom[3] = {0, 0, 0};
+    int i;
     w->n = n;
-    *src = src0;
     for (i = 0; i < n; ++i) {
-        hcbd_rng g;
         double r[3];
-        int32_t img[3] = {0, 0, 0};
-        hcbd__src_get(w, src, i, r);
-        if (w->walls && !src->xyz)
-            r[1] = w->ws.lo + r[1] / w->p.L[1] * (w->ws.hi - w->ws.lo);
-        for (d = 0; d < 3; ++d) hcbd__wrap(w->p.L[d], &r[d], &img[d]);
+        int32_t img[3];
+        /* the source replayed for the images */
+        hcbd__src_place(w, src, i, r, img);
         w->x[i] = w->nl.x0[i]; w->y[i] = w->nl.y0[i]; w->z[i] = w->nl.z0[i];
         w->ix[i] = img[0]; w->iy[i] = img[1]; w->iz[i] = img[2];
         w->id[i] = i;
         w->slot[i] = i;
-        hcbd_rng_seed(&g, hcbd__mix64(w->p.seed ^ hcbd__mix64(HCBD__STREAM_PARTICLE)) ^
-                              hcbd__mix64((uint64_t)i + HCBD__GOLDEN));
-        if (w->gibd) {
-            double s = w->has_noise ? sqrt(w->p.kT / w->m) : 0.0, v[3] = {0, 0, 0};
-            if (s > 0)
-                for (d = 0; d < 3; ++d) v[d] = s * hcbd_world_rng_normal(w, &g);
-            /* a sheared run starts on the linear profile (MODEL 5) */
-            v[0] += w->p.gdot * (w->y[i] - 0.5 * w->p.L[1]);
-            w->vx[i] = (hcbd_real)v[0]; w->vy[i] = (hcbd_real)v[1]; w->vz[i] = (hcbd_real)v[2];
-            for (d = 0; d < 3; ++d) mom[d] += v[d];
-        }
+        if (w->gibd) hcbd__start_velocity(w, i, mom);
     }
     for (i = 0; i < n; ++i) w->lx[i] = 0.0;
     w->core.le_offset = 0.0;
@@ -3283,6 +3339,19 @@ static hcbd_result hcbd__set_particles(hcbd_world *w, int n, hcbd__src *src)
     /* no artificial particles before the first step draws them */
     if (w->ws.n_art > 0)
         memset(w->ws.col_start, 0, (size_t)(w->ws.acol[0] * w->ws.acol[1] + 1) * sizeof(int32_t));
+}
+
+static hcbd_result hcbd__set_particles(hcbd_world *w, int n, hcbd__src *src)
+{
+    hcbd__src src0;
+    hcbd_result r = hcbd__check_particles(w, n, src);
+    if (r != HCBD_OK) return r;
+    src->n = n;
+    src0 = *src;
+    r = hcbd__stage_particles(w, n, src);
+    if (r != HCBD_OK) return r;
+    *src = src0;
+    hcbd__commit_particles(w, n, src);
     return HCBD_OK;
 }
 
@@ -5034,85 +5103,181 @@ static void hcbd__kick(hcbd_world *w)
     }
 }
 
-static hcbd_result hcbd__integrate(hcbd_world *w)
+/* The constants of one integrator step, read before its loop (guard_step
+   among them, so it may change between steps). */
+typedef struct {
+    hcbd__box box;
+    double dt, dt_xi, sdz, inv_m, dt_m, hdt, lim, lim2, s_new, vle, m, wlo, whi;
+    double iqF, iqP, iqW;
+    uint64_t bkey, bkey1, wkey;
+    int noise, lm, lag, track, walls, refl, morris, le, flux;
+} hcbd__move;
+
+/* What the loop found: the largest displacement since the list build
+   (squared), wall penetrations, and the least id of each failure. */
+typedef struct {
+    double dmax;
+    int64_t npen;
+    int pen_id, bad_step, bad_nan;
+} hcbd__moved;
+
+/* The pair scheme the step's loop is compiled for: classical BD, GI-BD
+   with Euler pairs (friction and noise of the pairs applied here), or
+   GI-BD after the exact sweep (the velocities already updated). */
+enum { HCBD__MOVE_BD, HCBD__MOVE_EULER, HCBD__MOVE_SWEPT };
+
+static hcbd__move hcbd__move_of(const hcbd_world *w)
 {
-    const int n = w->n, nt = w->p.threads;
-    const int pot = w->p.potential != HCBD_POT_IDEAL, gibd = w->gibd;
-    const int fric = gibd && !w->shardlow, swept = gibd && w->shardlow;
-    const int noise = w->has_noise, lag = gibd && w->p.lagged_density;
-    const double dt = w->p.dt, dt_xi = dt / w->p.xi, sdr = sqrt(2.0 * w->p.kT * dt / w->p.xi);
-    const double inv_m = w->inv_m, dt_m = dt * w->inv_m, hdt = 0.5 * dt;
-    const double L0 = w->p.L[0], L1 = w->p.L[1], L2 = w->p.L[2];
-    /* guard_step is read here, so it may change between steps */
-    const double lim = w->p.guard_step != HCBD_AUTO ? w->p.guard_step : w->step_limit,
-                 lim2 = lim * lim;
-    const int track = w->has_pairs; /* displacement since the list build */
-    const int walls = HCBD__WALLS && w->walls;
-    const int refl = walls && w->has_refl;
-    const int morris = walls && w->ws.n_art > 0 && fric;
-    const double wlo = w->ws.lo, whi = w->ws.hi;
-    const uint64_t wkey = morris ? hcbd__ws_pair_step_key(&w->ws, w->step, 0) : 0;
-    int64_t npen = 0;
-    int pen_id = INT_MAX;
-    const int le = w->core.le_on, flux = w->core.stress_on;
-    const double vle = w->core.le_vjump, m = w->m;
+    hcbd__move M;
+    const double dt = w->p.dt, sdr = sqrt(2.0 * w->p.kT * dt / w->p.xi);
+    const int fric = w->gibd && !w->shardlow;
+    M.box = hcbd__box_of(w);
+    M.dt = dt;
+    M.dt_xi = dt / w->p.xi;
+    M.inv_m = w->inv_m;
+    M.dt_m = dt * w->inv_m;
+    M.hdt = 0.5 * dt;
+    M.lim = w->p.guard_step != HCBD_AUTO ? w->p.guard_step : w->step_limit;
+    M.lim2 = M.lim * M.lim;
+    M.noise = w->has_noise;
+    M.lag = w->gibd && w->p.lagged_density;
+    M.track = w->has_pairs; /* displacement since the list build */
+    M.walls = HCBD__WALLS && w->walls;
+    M.refl = M.walls && w->has_refl;
+    M.morris = M.walls && w->ws.n_art > 0 && fric;
+    M.wlo = w->ws.lo;
+    M.whi = w->ws.hi;
+    M.wkey = M.morris ? hcbd__ws_pair_step_key(&w->ws, w->step, 0) : 0;
+    M.le = w->core.le_on;
+    M.flux = w->core.stress_on;
+    M.vle = w->core.le_vjump;
+    M.m = w->m;
     /* positions at t + dt are remapped with the offset of t + dt */
-    const double s_new = w->core.le_offset + w->p.gdot * L1 * dt;
-    const hcbd__box box = hcbd__box_of(w);
-    const double iqF = pot ? 1.0 / w->core.qF : 0.0, iqP = fric ? 1.0 / w->qP : 0.0;
-    const double iqW = lag ? 1.0 / w->core.qW : 0.0;
-    const uint64_t bkey = hcbd__bd_step_key(w, w->step);
+    M.s_new = w->core.le_offset + w->p.gdot * w->p.L[1] * dt;
+    M.iqF = w->p.potential != HCBD_POT_IDEAL ? 1.0 / w->core.qF : 0.0;
+    M.iqP = fric ? 1.0 / w->qP : 0.0;
+    M.iqW = M.lag ? 1.0 / w->core.qW : 0.0;
+    M.bkey = hcbd__bd_step_key(w, w->step);
     /* Leimkuhler-Matthews: this step's deviate and the next one's, each
        drawn from its counter, so a restart or a changed dt needs no
        carried state */
-    const int lm = noise && w->p.brownian == HCBD_BROWNIAN_LM && !refl;
-    const uint64_t bkey1 = lm ? hcbd__bd_step_key(w, w->step + 1) : 0;
-    const double sdz = lm ? 0.5 * sdr : sdr;
+    M.lm = M.noise && w->p.brownian == HCBD_BROWNIAN_LM && !M.refl;
+    M.bkey1 = M.lm ? hcbd__bd_step_key(w, w->step + 1) : 0;
+    M.sdz = M.lm ? 0.5 * sdr : sdr;
+    return M;
+}
+
+/* Particle i's displacement over the step (force, background velocity,
+   noise) into dr; with Euler pairs also its new velocity, with lagged
+   densities its density for the next step.  Returns v^2 (0 for BD), for
+   the finiteness check. */
+HCBD__INLINE double hcbd__move_dr(hcbd_world *w, const hcbd__move *M, int i, const int kind, double dr[3])
+{
+    const int fric = kind == HCBD__MOVE_EULER;
+    double F[3], P[3] = {0, 0, 0}, G[3], v2 = 0.0;
+    int d;
+    hcbd__force_on(w, i, M->iqF, F, G);
+    if (fric)
+        for (d = 0; d < 3; ++d) P[d] = (double)w->aP[d][i] * M->iqP;
+    if (fric && M->morris && hcbd__near_wall(w, w->y[i])) hcbd__morris(w, i, M->wkey, P, 0);
+    for (d = 0; d < 3; ++d) dr[d] = F[d] * M->dt_xi;
+    if (fric) {
+        dr[0] += w->vx[i] * M->dt; dr[1] += w->vy[i] * M->dt; dr[2] += w->vz[i] * M->dt;
+    } else if (kind == HCBD__MOVE_SWEPT) { /* half a drift with the kicked v, half with the swept one */
+        dr[0] += (w->ux[i] + w->vx[i]) * M->hdt;
+        dr[1] += (w->uy[i] + w->vy[i]) * M->hdt;
+        dr[2] += (w->uz[i] + w->vz[i]) * M->hdt;
+    }
+    if (M->noise) {
+        double z3[3];
+        hcbd__noise3(w, hcbd__particle_key(M->bkey, w->id[i]), z3);
+        if (M->lm) {
+            double z1[3];
+            hcbd__noise3(w, hcbd__particle_key(M->bkey1, w->id[i]), z1);
+            for (d = 0; d < 3; ++d) z3[d] += z1[d];
+        }
+        for (d = 0; d < 3; ++d) dr[d] += M->sdz * z3[d];
+    }
+    if (fric) {
+        double vx = w->vx[i] + (F[0] + G[0]) * M->dt_m + P[0] * M->inv_m;
+        double vy = w->vy[i] + (F[1] + G[1]) * M->dt_m + P[1] * M->inv_m;
+        double vz = w->vz[i] + (F[2] + G[2]) * M->dt_m + P[2] * M->inv_m;
+        w->vx[i] = (hcbd_real)vx; w->vy[i] = (hcbd_real)vy; w->vz[i] = (hcbd_real)vz;
+    }
+    if (kind != HCBD__MOVE_BD) {
+        v2 = (double)w->vx[i] * w->vx[i] + (double)w->vy[i] * w->vy[i] + (double)w->vz[i] * w->vz[i];
+        if (M->lag) {
+            double rho = w->m * w->rho_norm * (w->w0 + (double)w->aW[i] * M->iqW);
+            w->rho[i] = (hcbd_real)rho;
+            w->inv_rho[i] = (hcbd_real)(1.0 / rho);
+        }
+    }
+    return v2;
+}
+
+/* Stores particle i at r, its position at t + dt: decides the wraps on
+   the stored precision, reflects at the walls, crosses the sheared
+   boundary.  Returns whether it ended inside a wall. */
+HCBD__INLINE int hcbd__move_place(hcbd_world *w, const hcbd__move *M, int i, double r[3])
+{
+    const double L0 = M->box.L[0], L1 = M->box.L[1], L2 = M->box.L[2];
+    int d;
+    /* a coordinate is stored as hcbd_real: decide wraps on what will be
+       stored, so a value that rounds to L crosses (with its image and
+       Lees-Edwards bookkeeping) and a step just below 0 that would
+       round back to L stays at 0 */
+    for (d = 0; d < 3; ++d) {
+        const double Ld = M->box.L[d];
+        if (r[d] < 0.0 && (hcbd_real)(r[d] + Ld) >= (hcbd_real)Ld) r[d] = 0.0;
+        else if (r[d] < Ld && (hcbd_real)r[d] >= (hcbd_real)Ld) r[d] = Ld;
+    }
+    if (M->refl) { /* specular reflection at the interface the particle faces */
+        if (w->y[i] < 0.5 * L1) { if (r[1] < M->wlo) r[1] = 2.0 * M->wlo - r[1]; }
+        else if (r[1] > M->whi) r[1] = 2.0 * M->whi - r[1];
+    }
+    if (M->le) {
+        /* crossing the sheared boundary: x and the velocity variable
+           jump (MODEL 5); the carried momentum is the carrier flux */
+        double c = 0.0;
+        if (r[1] >= L1) {
+            c = M->m * w->vx[i];
+            r[1] -= L1; w->iy[i]++;
+            r[0] -= M->s_new; w->lx[i] += M->s_new;
+            w->vx[i] = (hcbd_real)(w->vx[i] - M->vle);
+        } else if (r[1] < 0.0) {
+            c = -M->m * (w->vx[i] + M->vle);
+            r[1] += L1; w->iy[i]--;
+            r[0] += M->s_new; w->lx[i] -= M->s_new;
+            w->vx[i] = (hcbd_real)(w->vx[i] + M->vle);
+        }
+        if (M->flux) w->fl_c[i] = (hcbd_real)c;
+    }
+    hcbd__wrap(L0, &r[0], &w->ix[i]);
+    hcbd__wrap(L1, &r[1], &w->iy[i]);
+    hcbd__wrap(L2, &r[2], &w->iz[i]);
+    w->x[i] = (hcbd_real)r[0]; w->y[i] = (hcbd_real)r[1]; w->z[i] = (hcbd_real)r[2];
+    if (w->x[i] >= (hcbd_real)L0) w->x[i] = 0;
+    if (w->y[i] >= (hcbd_real)L1) w->y[i] = 0;
+    if (w->z[i] >= (hcbd_real)L2) w->z[i] = 0;
+    return M->walls && (w->y[i] < M->wlo || w->y[i] > M->whi);
+}
+
+/* The step's loop over the particles, compiled for one pair scheme. */
+HCBD__INLINE hcbd__moved hcbd__move_run(hcbd_world *w, const hcbd__move *M, const int kind)
+{
+    const int n = w->n, nt = w->p.threads;
     double dmax = 0.0;
-    int bad_step = INT_MAX, bad_nan = INT_MAX, i;
+    int64_t npen = 0;
+    int pen_id = INT_MAX, bad_step = INT_MAX, bad_nan = INT_MAX, i;
+    /* a private copy: stores into the particle arrays cannot alias it */
+    hcbd__move Mc = *M;
+    hcbd__moved o;
     (void)nt;
-    HCBD__OMP(omp parallel for num_threads(nt) schedule(static) reduction(max:dmax) reduction(min:bad_step) reduction(min:bad_nan) reduction(+:npen) reduction(min:pen_id))
+    HCBD__OMP(omp parallel for num_threads(nt) schedule(static) firstprivate(Mc) reduction(max:dmax) reduction(min:bad_step) reduction(min:bad_nan) reduction(+:npen) reduction(min:pen_id))
     for (i = 0; i < n; ++i) {
-        double F[3], P[3] = {0, 0, 0}, G[3];
-        double r[3], dr[3], d2, v2 = 0.0;
-        int d;
-        if (flux) w->fl_c[i] = 0;
-        hcbd__force_on(w, i, iqF, F, G);
-        if (fric)
-            for (d = 0; d < 3; ++d) P[d] = (double)w->aP[d][i] * iqP;
-        if (morris && hcbd__near_wall(w, w->y[i])) hcbd__morris(w, i, wkey, P, 0);
-        for (d = 0; d < 3; ++d) dr[d] = F[d] * dt_xi;
-        if (fric) {
-            dr[0] += w->vx[i] * dt; dr[1] += w->vy[i] * dt; dr[2] += w->vz[i] * dt;
-        } else if (swept) { /* half a drift with the kicked v, half with the swept one */
-            dr[0] += (w->ux[i] + w->vx[i]) * hdt;
-            dr[1] += (w->uy[i] + w->vy[i]) * hdt;
-            dr[2] += (w->uz[i] + w->vz[i]) * hdt;
-        }
-        if (noise) {
-            double z3[3];
-            hcbd__noise3(w, hcbd__particle_key(bkey, w->id[i]), z3);
-            if (lm) {
-                double z1[3];
-                hcbd__noise3(w, hcbd__particle_key(bkey1, w->id[i]), z1);
-                for (d = 0; d < 3; ++d) z3[d] += z1[d];
-            }
-            for (d = 0; d < 3; ++d) dr[d] += sdz * z3[d];
-        }
-        if (fric) {
-            double vx = w->vx[i] + (F[0] + G[0]) * dt_m + P[0] * inv_m;
-            double vy = w->vy[i] + (F[1] + G[1]) * dt_m + P[1] * inv_m;
-            double vz = w->vz[i] + (F[2] + G[2]) * dt_m + P[2] * inv_m;
-            w->vx[i] = (hcbd_real)vx; w->vy[i] = (hcbd_real)vy; w->vz[i] = (hcbd_real)vz;
-        }
-        if (gibd) {
-            v2 = (double)w->vx[i] * w->vx[i] + (double)w->vy[i] * w->vy[i] + (double)w->vz[i] * w->vz[i];
-            if (lag) {
-                double rho = w->m * w->rho_norm * (w->w0 + (double)w->aW[i] * iqW);
-                w->rho[i] = (hcbd_real)rho;
-                w->inv_rho[i] = (hcbd_real)(1.0 / rho);
-            }
-        }
+        double r[3], dr[3], d2, v2;
+        if (Mc.flux) w->fl_c[i] = 0;
+        v2 = hcbd__move_dr(w, &Mc, i, kind, dr);
         r[0] = w->x[i] + dr[0];
         r[1] = w->y[i] + dr[1];
         r[2] = w->z[i] + dr[2];
@@ -5121,80 +5286,57 @@ static hcbd_result hcbd__integrate(hcbd_world *w)
             if (w->id[i] < bad_nan) bad_nan = w->id[i];
             continue;
         }
-        if (d2 > lim2) {
+        if (d2 > Mc.lim2) {
             if (w->id[i] < bad_step) bad_step = w->id[i];
             continue;
         }
-        /* a coordinate is stored as hcbd_real: decide wraps on what will be
-           stored, so a value that rounds to L crosses (with its image and
-           Lees-Edwards bookkeeping) and a step just below 0 that would
-           round back to L stays at 0 */
-        for (d = 0; d < 3; ++d) {
-            const double Ld = box.L[d];
-            if (r[d] < 0.0 && (hcbd_real)(r[d] + Ld) >= (hcbd_real)Ld) r[d] = 0.0;
-            else if (r[d] < Ld && (hcbd_real)r[d] >= (hcbd_real)Ld) r[d] = Ld;
-        }
-        if (refl) { /* specular reflection at the interface the particle faces */
-            if (w->y[i] < 0.5 * L1) { if (r[1] < wlo) r[1] = 2.0 * wlo - r[1]; }
-            else if (r[1] > whi) r[1] = 2.0 * whi - r[1];
-        }
-        if (le) {
-            /* crossing the sheared boundary: x and the velocity variable
-               jump (MODEL 5); the carried momentum is the carrier flux */
-            double c = 0.0;
-            if (r[1] >= L1) {
-                c = m * w->vx[i];
-                r[1] -= L1; w->iy[i]++;
-                r[0] -= s_new; w->lx[i] += s_new;
-                w->vx[i] = (hcbd_real)(w->vx[i] - vle);
-            } else if (r[1] < 0.0) {
-                c = -m * (w->vx[i] + vle);
-                r[1] += L1; w->iy[i]--;
-                r[0] += s_new; w->lx[i] -= s_new;
-                w->vx[i] = (hcbd_real)(w->vx[i] + vle);
-            }
-            if (flux) w->fl_c[i] = (hcbd_real)c;
-        }
-        hcbd__wrap(L0, &r[0], &w->ix[i]);
-        hcbd__wrap(L1, &r[1], &w->iy[i]);
-        hcbd__wrap(L2, &r[2], &w->iz[i]);
-        w->x[i] = (hcbd_real)r[0]; w->y[i] = (hcbd_real)r[1]; w->z[i] = (hcbd_real)r[2];
-        if (w->x[i] >= (hcbd_real)L0) w->x[i] = 0;
-        if (w->y[i] >= (hcbd_real)L1) w->y[i] = 0;
-        if (w->z[i] >= (hcbd_real)L2) w->z[i] = 0;
-        if (walls && (w->y[i] < wlo || w->y[i] > whi)) {
+        if (hcbd__move_place(w, &Mc, i, r)) {
             npen++;
             if (w->id[i] < pen_id) pen_id = w->id[i];
         }
-        if (track) {
+        if (Mc.track) {
             double e[3], e2;
-            hcbd__delta_box(&box, r[0] - w->nl.x0[i], r[1] - w->nl.y0[i], r[2] - w->nl.z0[i], e);
+            hcbd__delta_box(&Mc.box, r[0] - w->nl.x0[i], r[1] - w->nl.y0[i], r[2] - w->nl.z0[i], e);
             e2 = e[0] * e[0] + e[1] * e[1] + e[2] * e[2];
             if (e2 > dmax) dmax = e2;
         }
     }
-    w->nl.disp_max = sqrt(dmax);
+    o.dmax = dmax;
+    o.npen = npen;
+    o.pen_id = pen_id;
+    o.bad_step = bad_step;
+    o.bad_nan = bad_nan;
+    return o;
+}
+
+static hcbd_result hcbd__integrate(hcbd_world *w)
+{
+    const hcbd__move M = hcbd__move_of(w);
+    const hcbd__moved o = !w->gibd     ? hcbd__move_run(w, &M, HCBD__MOVE_BD)
+                          : w->shardlow ? hcbd__move_run(w, &M, HCBD__MOVE_SWEPT)
+                                        : hcbd__move_run(w, &M, HCBD__MOVE_EULER);
+    w->nl.disp_max = sqrt(o.dmax);
     w->rho_current = 0;
-    if (npen) {
-        w->wall_pen += npen;
+    if (o.npen) {
+        w->wall_pen += o.npen;
         w->wall_pen_step = w->step;
-        w->wall_pen_id = pen_id;
+        w->wall_pen_id = o.pen_id;
     }
-    if (le) {
-        w->core.le_offset = s_new - L0 * floor(s_new / L0);
-        w->nl.le_drift += fabs(w->p.gdot * L1 * dt);
+    if (M.le) {
+        w->core.le_offset = M.s_new - M.box.L[0] * floor(M.s_new / M.box.L[0]);
+        w->nl.le_drift += fabs(w->p.gdot * M.box.L[1] * M.dt);
     }
-    if (bad_nan != INT_MAX)
-        return hcbd__fail(&w->err, HCBD_ERR_NONFINITE, w->step, bad_nan,
+    if (o.bad_nan != INT_MAX)
+        return hcbd__fail(&w->err, HCBD_ERR_NONFINITE, w->step, o.bad_nan,
                           "step %lld: particle id %d got a non-finite position or "
                           "velocity (forces too strong for dt = %g?)",
-                          (long long)w->step, bad_nan, dt);
-    if (bad_step != INT_MAX)
-        return hcbd__fail(&w->err, HCBD_ERR_UNSTABLE, w->step, bad_step,
+                          (long long)w->step, o.bad_nan, M.dt);
+    if (o.bad_step != INT_MAX)
+        return hcbd__fail(&w->err, HCBD_ERR_UNSTABLE, w->step, o.bad_step,
                           "step %lld: particle id %d moved more than the per-step "
                           "limit guard_step = %g (default: half the interaction range); "
                           "reduce dt = %g",
-                          (long long)w->step, bad_step, lim, dt);
+                          (long long)w->step, o.bad_step, M.lim, M.dt);
     return HCBD_OK;
 }
 
@@ -7001,75 +7143,52 @@ static void hcbd__ck_walk(hcbd__ck *c, void *w)
     hcbd__ck_world(c, (hcbd_world *)w);
 }
 
-/* Loads into a fresh world w (its old contents are not looked at): the
-   definition first, then the world created from it and its state.  A
-   failure after the creation leaves w live, for hcbd__adopt to free. */
-static hcbd_result hcbd__ck_load(hcbd_world *w, const void *buf, size_t size)
+/* A checkpoint's world definition, read from c: counts, parameters and a
+   table potential's points (in *tab, which the caller frees).  Refuses
+   counts the rest of the file cannot hold before anything is allocated
+   for them. */
+static hcbd_result hcbd__ck_def(hcbd_world *w, hcbd__ck *c, hcbd_world_def *def, int *n, double **tab)
 {
-    hcbd__ck c;
-    hcbd_world_def def;
     int64_t cap = 0, mp = 0;
-    int n = 0, k;
-    double *tab = NULL;
-    hcbd_result r;
-    size_t bytes;
-    if (!w) return HCBD_ERR_NULL;
-    memset(w, 0, sizeof *w);
-    hcbd__clear(&w->err);
-    if ((r = hcbd__ck_open(&w->err, buf, size, HCBD__CK_WORLD, &c)) != HCBD_OK) return r;
-    memset(&def, 0, sizeof def);
-    hcbd__ck_i64(&c, &cap);
-    hcbd__ck_i64(&c, &mp);
-    hcbd__ck_int(&c, &n);
-    hcbd__ck_params(&c, &def.params);
-    if (c.bad) return hcbd__ck_bad(&w->err, &c, "ends inside the parameters");
-    if (cap < 1 || cap > INT32_MAX || n < 0 || n > cap)
+    memset(def, 0, sizeof *def);
+    hcbd__ck_i64(c, &cap);
+    hcbd__ck_i64(c, &mp);
+    hcbd__ck_int(c, n);
+    hcbd__ck_params(c, &def->params);
+    if (c->bad) return hcbd__ck_bad(&w->err, c, "ends inside the parameters");
+    if (cap < 1 || cap > INT32_MAX || *n < 0 || *n > cap)
         return hcbd__fail(&w->err, HCBD_ERR_FORMAT, -1, -1,
-                          "checkpoint holds n = %d particles for capacity %lld", n,
+                          "checkpoint holds n = %d particles for capacity %lld", *n,
                           (long long)cap);
-    def.capacity = (int)cap;
-    def.max_pairs = mp;
-    def.params.table_F = def.params.table_V = NULL;
-    if (def.params.potential == HCBD_POT_TABLE) {
-        const int tn = def.params.table_n;
-        if (tn < 2 || (size_t)tn > (c.size - c.off) / 16)
-            return hcbd__ck_bad(&w->err, &c, "table_n does not fit the rest");
-        tab = (double *)HCBD_MALLOC(2 * (size_t)tn * sizeof(double));
-        if (!tab) return hcbd__fail(&w->err, HCBD_ERR_MEMORY, -1, -1, "malloc of the table failed");
-        hcbd__ck_f64s(&c, tab, NULL, tn);
-        hcbd__ck_f64s(&c, tab + tn, NULL, tn);
-        def.params.table_F = tab;
-        def.params.table_V = tab + tn;
+    def->capacity = (int)cap;
+    def->max_pairs = mp;
+    def->params.table_F = def->params.table_V = NULL;
+    if (def->params.potential == HCBD_POT_TABLE) {
+        const int tn = def->params.table_n;
+        if (tn < 2 || (size_t)tn > (c->size - c->off) / 16)
+            return hcbd__ck_bad(&w->err, c, "table_n does not fit the rest");
+        *tab = (double *)HCBD_MALLOC(2 * (size_t)tn * sizeof(double));
+        if (!*tab) return hcbd__fail(&w->err, HCBD_ERR_MEMORY, -1, -1, "malloc of the table failed");
+        hcbd__ck_f64s(c, *tab, NULL, tn);
+        hcbd__ck_f64s(c, *tab + tn, NULL, tn);
+        def->params.table_F = *tab;
+        def->params.table_V = *tab + tn;
     }
     /* every particle takes at least 7 words (position, images, Lees-Edwards
        shift): a short file is refused before its capacity is allocated */
-    if ((size_t)n > (c.size - c.off) / (7 * 8)) {
-        HCBD_FREE(tab);
-        return hcbd__ck_bad(&w->err, &c, "is shorter than its particles");
-    }
-    bytes = hcbd_world_bytes(&def);
-    if (bytes > HCBD_LOAD_MAX_BYTES) {
-        HCBD_FREE(tab);
+    if ((size_t)*n > (c->size - c->off) / (7 * 8)) return hcbd__ck_bad(&w->err, c, "is shorter than its particles");
+    if (hcbd_world_bytes(def) > HCBD_LOAD_MAX_BYTES)
         return hcbd__fail(&w->err, HCBD_ERR_MEMORY, -1, -1,
                           "checkpoint world needs %zu bytes, more than HCBD_LOAD_MAX_BYTES",
-                          bytes);
-    }
-    r = hcbd_world_create(w, &def);
-    HCBD_FREE(tab);
-    if (r != HCBD_OK) return r; /* w->err names the parameter */
-    w->n = n;
-    hcbd__ck_state(&c, w);
-    if (c.bad || c.off != c.size)
-        return hcbd__ck_bad(&w->err, &c,
-                            c.bad ? "ends inside the particle state" : "has trailing bytes");
-    for (k = 0; k < n; ++k) {
-        w->id[k] = k;
-        w->slot[k] = k;
-    }
-    w->nl.list_valid = 0;
-    w->nl.le_drift = 0.0;
-    /* a checksum-valid file from elsewhere may still hold nonsense */
-    r = hcbd__guard(w);
+                          hcbd_world_bytes(def));
+    return HCBD_OK;
+}
+
+/* The loaded state checked as a step would check it: a checksum-valid file
+   from elsewhere may still hold nonsense. */
+static hcbd_result hcbd__ck_accept(hcbd_world *w)
+{
+    hcbd_result r = hcbd__guard(w);
     if (r == HCBD_OK && !hcbd__core_valid(&w->core, w->p.L[0]))
         r = hcbd__fail(&w->err, HCBD_ERR_FORMAT, -1, -1, "stress_on = %d, le_offset = %g",
                        w->core.stress_on, w->core.le_offset);
@@ -7086,6 +7205,38 @@ static hcbd_result hcbd__ck_load(hcbd_world *w, const void *buf, size_t size)
     }
     hcbd__clear(&w->err);
     return HCBD_OK;
+}
+
+/* Loads into a fresh world w (its old contents are not looked at): the
+   definition first, then the world created from it and its state.  A
+   failure after the creation leaves w live, for hcbd__adopt to free. */
+static hcbd_result hcbd__ck_load(hcbd_world *w, const void *buf, size_t size)
+{
+    hcbd__ck c;
+    hcbd_world_def def;
+    int n = 0, k;
+    double *tab = NULL;
+    hcbd_result r;
+    if (!w) return HCBD_ERR_NULL;
+    memset(w, 0, sizeof *w);
+    hcbd__clear(&w->err);
+    if ((r = hcbd__ck_open(&w->err, buf, size, HCBD__CK_WORLD, &c)) != HCBD_OK) return r;
+    r = hcbd__ck_def(w, &c, &def, &n, &tab);
+    if (r == HCBD_OK) r = hcbd_world_create(w, &def);
+    HCBD_FREE(tab);
+    if (r != HCBD_OK) return r; /* w->err names the parameter */
+    w->n = n;
+    hcbd__ck_state(&c, w);
+    if (c.bad || c.off != c.size)
+        return hcbd__ck_bad(&w->err, &c,
+                            c.bad ? "ends inside the particle state" : "has trailing bytes");
+    for (k = 0; k < n; ++k) {
+        w->id[k] = k;
+        w->slot[k] = k;
+    }
+    w->nl.list_valid = 0;
+    w->nl.le_drift = 0.0;
+    return hcbd__ck_accept(w);
 }
 
 /* >>world kinds: the lifecycle, the thread setting and the checkpoint
