@@ -136,21 +136,40 @@
         hcbd_hc_world_thermo_line]
      The implementation:
      >>implementation
-     >>errors [hcbd_result_name]
      >>parameters [hcbd_params_ hcbd_world_def_]
+     >>errors [hcbd_result_name]
+     >>both worlds' state alike
      >>random numbers [hcbd_splitmix64 hcbd_rng_ hcbd_world_rng_normal hcbd_world_pair_normals
         hcbd_world_particle_normals
         hcbd_noise_]
      >>kernels [hcbd_wendland]
-     >>GI-BD equations [hcbd_params_gibd_coef hcbd_gibd_]
-     >>star potential [hcbd_star_ hcbd_star_coef_]
      >>fixed-point pair sums
      >>box and minimum image
+     >>memory blocks
+     >>neighbour search
+     >>pair traversal
+     >>HCBD (2018): the fluid and polymer world
+     >>HCBD: kernels [hcbd_m4 hcbd_rapid_w hcbd_flory_]
+     >>HCBD: the fluid sweep's order and the Tait pressure [hcbd_hc_params_sweep_grid]
+     >>HCBD: lists and pair passes
+     >>HCBD: integrator [hcbd_hc_world_refresh]
+     >>HCBD: the step and its guard [hcbd_hc_world_step]
+     >>HCBD: observables [hcbd_hc_world_get_lambda hcbd_hc_world_set_lambda hcbd_hc_world_temperature
+        hcbd_hc_world_momentum hcbd_hc_world_transverse_current hcbd_hc_world_polymer_energy
+        hcbd_hc_world_density_range hcbd_hc_world_stress_ hcbd_hc_world_checksum]
+     >>HCBD: equations without a world [hcbd_hc_params_coef hcbd_hc_fluid_ hcbd_hc_polymer_
+        hcbd_hc_lambda_ hcbd_hc_noise_]
+     >>HCBD: parameters and units [hcbd_hc_si_ hcbd_hc_params_ hcbd_hc_world_def_default
+        hcbd_hc_params_theory hcbd_hc_params_stability]
+     >>HCBD: storage [hcbd_hc_world_]
+     >>HCBD: set-up [hcbd_hc_world_set_fluid hcbd_hc_world_set_polymers hcbd_hc_world_place_
+        hcbd_hc_world_get_fluid hcbd_hc_world_get_polymers]
+     >>GI-BD and BD (2014, 2016): the bulk and walled world
+     >>GI-BD equations [hcbd_params_gibd_coef hcbd_gibd_]
+     >>star potential [hcbd_star_ hcbd_star_coef_]
      >>walls [hcbd_params_wall_potential]
      >>theory and stability limits [hcbd_params_theory hcbd_params_stability hcbd_limits_]
      >>world and storage [hcbd_world_]
-     >>neighbour search
-     >>pair traversal
      >>wall pairs
      >>walls without a world [hcbd_walls_]
      >>pair passes
@@ -161,6 +180,7 @@
      >>observables [hcbd_world_get_ hcbd_world_temperature hcbd_world_momentum hcbd_world_virial_stress
         hcbd_world_friction_average hcbd_world_transverse_current hcbd_world_potential_energy
         hcbd_world_config_temperature hcbd_world_forces hcbd_world_wall_penetrations hcbd_world_checksum]
+     >>statistics and files: accumulators, fits, checkpoints, XYZ and thermo
      >>g(r) [hcbd_rdf_]
      >>multiple-tau correlator [hcbd_mtcorr_]
      >>Carreau fit [hcbd_carreau_fit hcbd_carreau_err_scale]
@@ -172,21 +192,6 @@
      >>world kinds [hcbd_world_create hcbd_world_destroy hcbd_world_set_threads hcbd_world_checkpoint_
         hcbd_world_save hcbd_world_load]
      >>extended XYZ and thermo lines [hcbd_world_write_ hcbd_thermo_header hcbd_world_thermo_line]
-     >>HCBD (2018): the fluid and polymer world
-     >>HCBD: kernels [hcbd_m4 hcbd_rapid_w hcbd_flory_]
-     >>HCBD: parameters and units [hcbd_hc_si_ hcbd_hc_params_ hcbd_hc_world_def_default
-        hcbd_hc_params_theory hcbd_hc_params_stability]
-     >>HCBD: equations without a world [hcbd_hc_params_coef hcbd_hc_fluid_ hcbd_hc_polymer_
-        hcbd_hc_lambda_ hcbd_hc_noise_ hcbd_hc_params_sweep_grid]
-     >>HCBD: storage [hcbd_hc_world_]
-     >>HCBD: set-up [hcbd_hc_world_set_fluid hcbd_hc_world_set_polymers hcbd_hc_world_place_
-        hcbd_hc_world_get_fluid hcbd_hc_world_get_polymers]
-     >>HCBD: lists and pair passes
-     >>HCBD: integrator [hcbd_hc_world_refresh]
-     >>HCBD: the step and its guard [hcbd_hc_world_step]
-     >>HCBD: observables [hcbd_hc_world_get_lambda hcbd_hc_world_set_lambda hcbd_hc_world_temperature
-        hcbd_hc_world_momentum hcbd_hc_world_transverse_current hcbd_hc_world_polymer_energy
-        hcbd_hc_world_density_range hcbd_hc_world_stress_ hcbd_hc_world_checksum]
      >>HCBD: checkpoints, lifecycle, XYZ and thermo [hcbd_hc_world_create
         hcbd_hc_world_destroy hcbd_hc_world_set_threads hcbd_hc_world_checkpoint_ hcbd_hc_world_save
         hcbd_hc_world_load
@@ -1500,55 +1505,6 @@ int hcbd_hc_world_thermo_line(const hcbd_hc_world *w, double ns_pstep, char *buf
 extern "C" {
 #endif
 
-/* >>errors */
-#define HCBD__LIVE 0x6863626421766c65ULL /* marks an initialised world */
-const char *hcbd_result_name(hcbd_result r)
-{
-    switch (r) {
-    case HCBD_OK: return "HCBD_OK";
-    case HCBD_ERR_NULL: return "HCBD_ERR_NULL";
-    case HCBD_ERR_PARAM: return "HCBD_ERR_PARAM";
-    case HCBD_ERR_CAPACITY: return "HCBD_ERR_CAPACITY";
-    case HCBD_ERR_BOX: return "HCBD_ERR_BOX";
-    case HCBD_ERR_MEMORY: return "HCBD_ERR_MEMORY";
-    case HCBD_ERR_NONFINITE: return "HCBD_ERR_NONFINITE";
-    case HCBD_ERR_UNSTABLE: return "HCBD_ERR_UNSTABLE";
-    case HCBD_ERR_STATE: return "HCBD_ERR_STATE";
-    case HCBD_ERR_IO: return "HCBD_ERR_IO";
-    case HCBD_ERR_FORMAT: return "HCBD_ERR_FORMAT";
-    case HCBD_ERR_VERSION: return "HCBD_ERR_VERSION";
-    case HCBD_ERR_MODEL: return "HCBD_ERR_MODEL";
-    case HCBD_ERR_OVERLAP: return "HCBD_ERR_OVERLAP";
-    case HCBD_ERR_OUTSIDE: return "HCBD_ERR_OUTSIDE";
-    case HCBD_ERR_WALL: return "HCBD_ERR_WALL";
-    }
-    return "HCBD_ERR_UNKNOWN";
-}
-
-#if defined(__GNUC__) || defined(__clang__)
-__attribute__((format(printf, 5, 6)))
-#endif
-static hcbd_result hcbd__fail(hcbd_error *e, hcbd_result code, int64_t step,
-                              int64_t id, const char *fmt, ...)
-{
-    va_list ap;
-    e->code = code;
-    e->step = step;
-    e->id = id;
-    va_start(ap, fmt);
-    vsnprintf(e->msg, sizeof e->msg, fmt, ap);
-    va_end(ap);
-    return code;
-}
-
-static void hcbd__clear(hcbd_error *e)
-{
-    e->code = HCBD_OK;
-    e->step = -1;
-    e->id = -1;
-    e->msg[0] = 0;
-}
-
 /* >>parameters */
 /* the walls' defaults (every build keeps them in checkpoints) */
 static hcbd_wall_params hcbd__wall_default(void)
@@ -1959,6 +1915,199 @@ hcbd_result hcbd_params_check(const hcbd_params *p, char *msg, size_t msg_size)
     return HCBD_OK;
 }
 
+static void hcbd__limit(hcbd_limit *out, int *n, const char *name, const char *guard, double value,
+                        double bound)
+{
+    hcbd_limit *l = out + (*n)++;
+    l->name = name;
+    l->guard = guard;
+    l->value = value;
+    l->bound = bound;
+    l->margin = value > 0 ? bound / value : HUGE_VAL;
+}
+
+
+/* >>errors */
+#define HCBD__LIVE 0x6863626421766c65ULL /* marks an initialised world */
+const char *hcbd_result_name(hcbd_result r)
+{
+    switch (r) {
+    case HCBD_OK: return "HCBD_OK";
+    case HCBD_ERR_NULL: return "HCBD_ERR_NULL";
+    case HCBD_ERR_PARAM: return "HCBD_ERR_PARAM";
+    case HCBD_ERR_CAPACITY: return "HCBD_ERR_CAPACITY";
+    case HCBD_ERR_BOX: return "HCBD_ERR_BOX";
+    case HCBD_ERR_MEMORY: return "HCBD_ERR_MEMORY";
+    case HCBD_ERR_NONFINITE: return "HCBD_ERR_NONFINITE";
+    case HCBD_ERR_UNSTABLE: return "HCBD_ERR_UNSTABLE";
+    case HCBD_ERR_STATE: return "HCBD_ERR_STATE";
+    case HCBD_ERR_IO: return "HCBD_ERR_IO";
+    case HCBD_ERR_FORMAT: return "HCBD_ERR_FORMAT";
+    case HCBD_ERR_VERSION: return "HCBD_ERR_VERSION";
+    case HCBD_ERR_MODEL: return "HCBD_ERR_MODEL";
+    case HCBD_ERR_OVERLAP: return "HCBD_ERR_OVERLAP";
+    case HCBD_ERR_OUTSIDE: return "HCBD_ERR_OUTSIDE";
+    case HCBD_ERR_WALL: return "HCBD_ERR_WALL";
+    }
+    return "HCBD_ERR_UNKNOWN";
+}
+
+#if defined(__GNUC__) || defined(__clang__)
+__attribute__((format(printf, 5, 6)))
+#endif
+static hcbd_result hcbd__fail(hcbd_error *e, hcbd_result code, int64_t step,
+                              int64_t id, const char *fmt, ...)
+{
+    va_list ap;
+    e->code = code;
+    e->step = step;
+    e->id = id;
+    va_start(ap, fmt);
+    vsnprintf(e->msg, sizeof e->msg, fmt, ap);
+    va_end(ap);
+    return code;
+}
+
+static void hcbd__clear(hcbd_error *e)
+{
+    e->code = HCBD_OK;
+    e->step = -1;
+    e->id = -1;
+    e->msg[0] = 0;
+}
+
+/* >>both worlds' state alike: species views, the guard's particle check,
+   the stress a run accumulates, momentum, temperature, transverse current
+   and the checksums' hash */
+/* A species of either world as the shared checks and observables read it:
+   n particles, slot[k] the storage index of id k (NULL: stored by id),
+   positions, velocities (vx NULL: none) and the mass. */
+typedef struct hcbd__vset {
+    int n;
+    const int32_t *slot;
+    const hcbd_real *x, *y, *z, *vx, *vy, *vz;
+    double m;
+} hcbd__vset;
+
+static inline int hcbd__vslot(const hcbd__vset *s, int k) { return s->slot ? s->slot[k] : k; }
+
+/* The checks every particle of every world passes: finite position and
+   velocity, inside the box.  what and id name it in the message. */
+static hcbd_result hcbd__guard_one(hcbd_error *e, int64_t step, const hcbd__vset *s, int k,
+                                   const double L[3], const char *what, int id)
+{
+    const int i = hcbd__vslot(s, k);
+    const double x = s->x[i], y = s->y[i], z = s->z[i];
+    if (!(isfinite(x) && isfinite(y) && isfinite(z)))
+        return hcbd__fail(e, HCBD_ERR_NONFINITE, step, id,
+                          "guard at step %lld: %s %d has position (%g, %g, %g)",
+                          (long long)step, what, k, x, y, z);
+    if (s->vx && !(isfinite(s->vx[i]) && isfinite(s->vy[i]) && isfinite(s->vz[i])))
+        return hcbd__fail(e, HCBD_ERR_NONFINITE, step, id,
+                          "guard at step %lld: %s %d has velocity (%g, %g, %g)",
+                          (long long)step, what, k, (double)s->vx[i], (double)s->vy[i],
+                          (double)s->vz[i]);
+    if (!(x >= 0 && x < L[0] && y >= 0 && y < L[1] && z >= 0 && z < L[2]))
+        return hcbd__fail(e, HCBD_ERR_OUTSIDE, step, id,
+                          "guard at step %lld: %s %d at (%.17g, %.17g, %.17g) is outside the "
+                          "box [0, %g) x [0, %g) x [0, %g)",
+                          (long long)step, what, k, x, y, z, L[0], L[1], L[2]);
+    return HCBD_OK;
+}
+
+/* The stress a run accumulates, in the core of either world: the mean of
+   nparts sums over the steps since it was enabled */
+static hcbd_result hcbd__stress_enable(hcbd__core *c, hcbd_error *e, int64_t step, int on)
+{
+    int k;
+    hcbd__clear(e);
+    if (on != 0 && on != 1) return hcbd__fail(e, HCBD_ERR_PARAM, step, -1, "on = %d is not 0 or 1", on);
+    c->stress_on = on;
+    c->stress_steps = 0;
+    for (k = 0; k < HCBD__NSTRESS; ++k) c->stress_sum[k] = 0.0;
+    return HCBD_OK;
+}
+
+static void hcbd__stress_read(const hcbd__core *c, double *out, int nparts, int64_t *nsteps)
+{
+    int k;
+    for (k = 0; k < nparts; ++k)
+        out[k] = c->stress_steps ? c->stress_sum[k] / (double)c->stress_steps : 0.0;
+    if (nsteps) *nsteps = c->stress_steps;
+}
+
+/* Momentum and temperature of a species, summed in id order (storage
+   order changes no bit).  The temperature takes the peculiar velocities:
+   relative to the mean and, under shear, to the imposed profile
+   gdot (y - Ly/2). */
+static void hcbd__momentum(const hcbd__vset *s, double p[3])
+{
+    int k;
+    p[0] = p[1] = p[2] = 0.0;
+    for (k = 0; s->vx && k < s->n; ++k) {
+        const int i = hcbd__vslot(s, k);
+        p[0] += s->m * s->vx[i];
+        p[1] += s->m * s->vy[i];
+        p[2] += s->m * s->vz[i];
+    }
+}
+
+static double hcbd__temperature(const hcbd__vset *s, double gdot, double Ly)
+{
+    double u[3] = {0, 0, 0}, sum = 0.0;
+    int k, d;
+    if (!s->vx || s->n < 2) return 0.0;
+    for (k = 0; k < s->n; ++k) {
+        const int i = hcbd__vslot(s, k);
+        u[0] += s->vx[i] - gdot * (s->y[i] - 0.5 * Ly);
+        u[1] += s->vy[i];
+        u[2] += s->vz[i];
+    }
+    for (d = 0; d < 3; ++d) u[d] /= s->n;
+    for (k = 0; k < s->n; ++k) {
+        const int i = hcbd__vslot(s, k);
+        double a = s->vx[i] - gdot * (s->y[i] - 0.5 * Ly) - u[0];
+        double b = s->vy[i] - u[1], c = s->vz[i] - u[2];
+        sum += a * a + b * b + c * c;
+    }
+    return s->m * sum / (3.0 * (s->n - 1));
+}
+
+/* Transverse current of n particles visited in id order (idx maps the
+   k-th id to its storage slot; NULL when storage is in id order). */
+static void hcbd__tcurrent(int n, const int32_t *idx, const hcbd_real *x, const hcbd_real *y,
+                           const hcbd_real *z, const hcbd_real *vx, const hcbd_real *vy,
+                           const hcbd_real *vz, const double L[3], int nk, double out[12])
+{
+    int k, d;
+    for (k = 0; k < 12; ++k) out[k] = 0.0;
+    for (k = 0; k < n; ++k) {
+        int q = idx ? idx[k] : k;
+        double r[3], v[3];
+        r[0] = x[q]; r[1] = y[q]; r[2] = z[q];
+        v[0] = vx[q]; v[1] = vy[q]; v[2] = vz[q];
+        for (d = 0; d < 3; ++d) {
+            double ph = 2.0 * HCBD__PI * nk * r[d] / L[d];
+            double c = cos(ph), s = -sin(ph);
+            int a1 = (d + 1) % 3, a2 = (d + 2) % 3;
+            out[4 * d + 0] += v[a1] * c;
+            out[4 * d + 1] += v[a1] * s;
+            out[4 * d + 2] += v[a2] * c;
+            out[4 * d + 3] += v[a2] * s;
+        }
+    }
+}
+
+/* FNV-1a over n bytes, for the state checksums */
+static uint64_t hcbd__hash(uint64_t h, const void *p, size_t n)
+{
+    const unsigned char *b = (const unsigned char *)p;
+    size_t k;
+    for (k = 0; k < n; ++k) h = (h ^ b[k]) * 0x100000001B3ULL;
+    return h;
+}
+
+
 /* >>random numbers */
 static uint64_t hcbd__mix64(uint64_t z)
 {
@@ -2203,228 +2352,6 @@ double hcbd_wendland_dr(double r, double Rc)
     return -210.0 / (HCBD__PI * Rc * Rc * Rc * Rc) * a * a * a * q;
 }
 
-/* >>GI-BD equations (MODEL 1-3), the only place they are written; with
-   q = r/Rc, a = 1 - q, cw = w(0) = 21/(2 pi Rc^3), cf = 15/(2 pi Rc^3):
-     w(r)          = cw a^4 (1 + 4q)                 2014 eq. 22, 2016 eq. 21
-     rho_i         = m N (w(0) + sum_j w(r_ij))      2014 eq. 12; N = 1 (2014)
-                                                     or 1/(1 + w(0)/n#) (2016 eq. 7)
-     f_ij          = cf m (1/rho_i + 1/rho_j) a^3    2014 eq. 24
-     S_ij dt/tau   = m f_ij dt/tau = cs (1/rho_i + 1/rho_j) a^3, cs = cf m^2 dt/tau
-     Euler:    dp_ij = (S dt/tau)(v_j - v_i) + sqrt(2 kT S dt/tau) zeta   2014 eq. 15, 21
-     Shardlow: u' = u e + sqrt(2 kT/m (1 - e^2)) zeta, e = exp(-2 S dt/(m tau)),
-               dp_ij = (m/2)(u' - u), u = v_i - v_j (Shardlow 2003)
-   The helpers take the coefficient first so that every caller rounds the
-   same way. */
-static inline double hcbd__one_minus_exp_series(double x);
-static inline double hcbd__weight(double cw, double q, double a)
-{
-    return cw * a * a * a * a * (4.0 * q + 1.0);
-}
-
-static inline double hcbd__sdt(double cs, double inv_rho_i, double inv_rho_j, double a)
-{
-    return cs * (inv_rho_i + inv_rho_j) * a * a * a;
-}
-
-/* the coefficients of p, unchecked: the world's and hcbd_params_gibd_coef's */
-static void hcbd__gibd_coef(const hcbd_params *p, hcbd_gibd_coef *c)
-{
-    c->Rc = p->Rc;
-    c->m = p->xip * p->tau;
-    c->cw = 21.0 / (2.0 * HCBD__PI * p->Rc * p->Rc * p->Rc);
-    c->cf = 15.0 / (2.0 * HCBD__PI * p->Rc * p->Rc * p->Rc);
-    c->cs = c->cf * c->m * c->m * p->dt / p->tau;
-    c->rho_norm = p->density_norm == 2016 ? 1.0 / (1.0 + c->cw / p->density) : 1.0;
-}
-
-hcbd_result hcbd_params_gibd_coef(const hcbd_params *p, hcbd_gibd_coef *c, char *msg, size_t msg_size)
-{
-    hcbd_result r;
-    if (!p || !c) return HCBD_ERR_NULL;
-    if ((r = hcbd_params_check(p, msg, msg_size)) != HCBD_OK) return r;
-    hcbd__gibd_coef(p, c);
-    return HCBD_OK;
-}
-
-double hcbd_gibd_weight(const hcbd_gibd_coef *c, double r)
-{
-    const double q = r / c->Rc;
-    return q < 1.0 ? hcbd__weight(c->cw, q, 1.0 - q) : 0.0;
-}
-
-double hcbd_gibd_density(const hcbd_gibd_coef *c, double wsum)
-{
-    return c->m * c->rho_norm * (c->cw + wsum);
-}
-
-double hcbd_gibd_sdt(const hcbd_gibd_coef *c, double r, double inv_rho_i, double inv_rho_j)
-{
-    const double q = r / c->Rc;
-    return q < 1.0 ? hcbd__sdt(c->cs, inv_rho_i, inv_rho_j, 1.0 - q) : 0.0;
-}
-
-/* One pair at a time, for engines of their own; the world's sweep makes
-   the same step in chunks (hcbd__sweep_pairs, its velocity-free part in
-   SIMD loops), and test_gibd_pair_exact_exported holds the two together. */
-void hcbd_gibd_pair_exact(const hcbd_gibd_coef *c, double kT, double sdt, const double z[3],
-                          double dvx, double vi[3], double vj[3])
-{
-    const double m = c->m, inv_m = 1.0 / m, x = 2.0 * sdt * inv_m;
-    const double om = x < 0.125 ? hcbd__one_minus_exp_series(x) : -expm1(-x);
-    const double b = sqrt(0.5 * kT * m * om * (2.0 - om)), h = 0.5 * m * om;
-    int d;
-    for (d = 0; d < 3; ++d) {
-        const double P = -h * (vi[d] - vj[d] - (d ? 0.0 : dvx)) + b * z[d];
-        vi[d] += P * inv_m;
-        vj[d] -= P * inv_m;
-    }
-}
-
-/* >>star potential, its force and the force table (MODEL 9) */
-double hcbd_star_potential(double r, double f, double sigma, double eps)
-{
-    double a = eps * (5.0 / 18.0) * pow(f, 1.5), b = 1.0 / (1.0 + 0.5 * sqrt(f));
-    double q = r / sigma;
-    if (q <= 1.0) return a * (-log(q) + b);
-    return a * b / q * exp(-0.5 * sqrt(f) * (q - 1.0));
-}
-
-double hcbd_star_force(double r, double f, double sigma, double eps)
-{
-    double a = eps * (5.0 / 18.0) * pow(f, 1.5), b = 1.0 / (1.0 + 0.5 * sqrt(f));
-    double s = 0.5 * sqrt(f), q = r / sigma;
-    if (q <= 1.0) return a / r;
-    return a * b * exp(-s * (q - 1.0)) * (1.0 / (q * q) + s / q) / sigma;
-}
-
-/* Table lookup with linear interpolation; r below the table is clamped. */
-static inline double hcbd__table(const hcbd_world *w, const double *t, double r)
-{
-    double u = (r - w->p.table_r0) * w->tab_inv_dr;
-    int k;
-    if (u < 0) u = 0;
-    k = (int)u;
-    if (k > w->p.table_n - 2) k = w->p.table_n - 2;
-    u -= k;
-    return t[k] + u * (t[k + 1] - t[k]);
-}
-
-/* The step's star force: F/r as a function of u = r^2 on the outer branch
-   (sigma < r < rcut), in HCBD__STAR_K cubic Hermite pieces that match F/r
-   and its u-derivative at the nodes, no sqrt and no exp; the inner branch
-   a/r^2 is exact.  The error ~ h^4 f''''/384 grows as (s h)^4, s = sqrt(f)/2,
-   so the piece count grows as sqrt(f): 1024 pieces per sqrt(f/128) keep it
-   below 1e-9 relative (test_abs_star_table).  LAMMPS' pair_style table
-   does the same with linear pieces. */
-static int hcbd__star_pieces(const hcbd_params *p)
-{
-    double k = ceil(sqrt(p->f / 128.0));
-    return 1024 * (k < 1 ? 1 : (k > 64 ? 64 : (int)k));
-}
-
-static void hcbd__star_fu(const hcbd_world *w, double u, double *f, double *df)
-{
-    /* F(r) = ab e^{-s(q-1)} (1/q^2 + s/q)/sigma, q = r/sigma; F/r and
-       d(F/r)/du = (r F'(r) - F)/(2 r^3) */
-    const double sg = w->p.sigma, s = w->star.s, r = sqrt(u), q = r / sg;
-    const double e = w->star.ab * exp(-s * (q - 1.0)) / sg;
-    const double F = e * (1.0 / (q * q) + s / q);
-    const double dF = e / sg * (-s * (1.0 / (q * q) + s / q) - 2.0 / (q * q * q) - s / (q * q));
-    *f = F / r;
-    *df = (r * dF - F) / (2.0 * r * r * r);
-}
-
-static void hcbd__star_table_build(hcbd_world *w)
-{
-    const double u0 = w->p.sigma * w->p.sigma, u1 = w->p.rcut * w->p.rcut;
-    const int K = hcbd__star_pieces(&w->p);
-    const double h = (u1 - u0) / K;
-    double f0, d0, f1, d1;
-    int k;
-    w->star_kmax = K - 1;
-    w->star_u0 = u0;
-    if (u1 <= u0) return; /* only the inner branch is in range */
-    w->star_ih = 1.0 / h;
-    hcbd__star_fu(w, u0, &f0, &d0);
-    for (k = 0; k < K; ++k) {
-        double *c = w->star_tab + 4 * k;
-        hcbd__star_fu(w, u0 + (k + 1) * h, &f1, &d1);
-        c[0] = f0;
-        c[1] = h * d0;
-        c[2] = 3.0 * (f1 - f0) - 2.0 * h * d0 - h * d1;
-        c[3] = 2.0 * (f0 - f1) + h * d0 + h * d1;
-        f0 = f1;
-        d0 = d1;
-    }
-}
-
-static inline double hcbd__star_table(const hcbd_world *w, double r2)
-{
-    double t;
-    int k;
-    const double *c;
-    if (r2 <= w->star_u0) return w->star.a / r2;
-    t = (r2 - w->star_u0) * w->star_ih;
-    k = (int)t;
-    if (k > w->star_kmax) k = w->star_kmax;
-    t -= k;
-    c = w->star_tab + 4 * k;
-    return c[0] + t * (c[1] + t * (c[2] + t * c[3]));
-}
-
-static void hcbd__star_coef(double f, double sigma, double eps, hcbd_star_coef *c)
-{
-    c->sigma = sigma;
-    c->a = eps * (5.0 / 18.0) * pow(f, 1.5);
-    c->b = 1.0 / (1.0 + 0.5 * sqrt(f));
-    c->s = 0.5 * sqrt(f);
-    c->ab = c->a * c->b;
-    c->s_sigma = c->s / sigma;
-}
-
-/* Star force over r; the outer branch a b e^{-s(q-1)} (1/q^2 + s/q) /
-   (sigma r) written with one division. */
-static inline double hcbd__star_force_over_r(const hcbd_star_coef *c, double r, double r2)
-{
-    double ir;
-    if (r <= c->sigma) return c->a / r2;
-    ir = 1.0 / r;
-    return c->ab * exp(c->s - c->s_sigma * r) * (c->sigma * ir + c->s) * ir * ir;
-}
-
-hcbd_result hcbd_star_coef_init(hcbd_star_coef *c, double f, double sigma, double eps,
-                                char *msg, size_t msg_size)
-{
-    if (!c) {
-        if (msg && msg_size) snprintf(msg, msg_size, "c is NULL");
-        return HCBD_ERR_NULL;
-    }
-    HCBD__CHECK(isfinite(f) && f > 0, "f", f);
-    HCBD__CHECK(isfinite(sigma) && sigma > 0, "sigma", sigma);
-    HCBD__CHECK(isfinite(eps) && eps > 0, "eps", eps);
-    hcbd__star_coef(f, sigma, eps, c);
-    return HCBD_OK;
-}
-
-double hcbd_star_force_over_r(const hcbd_star_coef *c, double r2)
-{
-    return hcbd__star_force_over_r(c, sqrt(r2), r2);
-}
-
-/* Pair force divided by r, for r < rcut, from the formula. */
-static inline double hcbd__force_over_r(const hcbd_world *w, double r, double r2)
-{
-    if (w->p.potential == HCBD_POT_STAR) return hcbd__star_force_over_r(&w->star, r, r2);
-    return hcbd__table(w, w->tab_F, r) / r;
-}
-
-static double hcbd__pair_energy(const hcbd_world *w, double r)
-{
-    if (w->p.potential == HCBD_POT_STAR)
-        return hcbd_star_potential(r, w->p.f, w->p.sigma, w->p.star_eps);
-    return hcbd__table(w, w->tab_V, r);
-}
-
 /* >>fixed-point pair sums
    Pair sums are accumulated in 64-bit fixed point.  Integer addition is
    associative, so a particle's sum has the same bits in any order: whatever
@@ -2559,388 +2486,12 @@ static inline int hcbd__delta(const hcbd_world *w, double dx, double dy, double 
     return hcbd__delta_box(&b, dx, dy, dz, d);
 }
 
-/* >>walls (MODEL 4): every wall piece of the engine, here: the repulsion and
-   the depletion width, then the passes of the walled build (artificial
-   particles, Morris pairs) */
-#if HCBD__WALLS
-double hcbd_params_wall_potential(const hcbd_params *p, double y, double *fy)
-{
-    double e = 0.0, f = 0.0, Ly, planes[2];
-    int k;
-    if (fy) *fy = 0.0;
-    if (!p || p->wall.thickness <= 0 || p->wall.mode == HCBD_WALL_REFLECT) return 0.0;
-    Ly = p->L[1];
-    planes[0] = p->wall.thickness - p->wall.plane;
-    planes[1] = Ly - p->wall.thickness + p->wall.plane;
-    for (k = 0; k < 2; ++k) {
-        double s = y - planes[k], x;
-        s -= Ly * floor(s / Ly + 0.5); /* every plane at its minimum image */
-        x = p->wall.a * exp(-p->wall.b * s * s);
-        e += x;
-        f += 2.0 * p->wall.b * s * x;
-    }
-    if (fy) *fy = f;
-    return e;
-}
-
-/* Excluded width per wall of ideal particles, integral over the channel half
-   of 1 - exp(-phi/kT) (Simpson, 4096 intervals: phi varies on 1/sqrt(b)). */
-static double hcbd__depletion(const hcbd_params *p)
-{
-    const int n = 4096;
-    double a = p->wall.thickness, h = 0.5 * p->L[1] - a, s = 0.0;
-    int k;
-    if (p->wall.thickness <= 0 || p->wall.mode == HCBD_WALL_REFLECT || p->kT <= 0) return 0.0;
-    for (k = 0; k <= n; ++k) {
-        double y = a + h * k / n, c = (k == 0 || k == n) ? 1.0 : (k % 2 ? 4.0 : 2.0);
-        s += c * (1.0 - exp(-hcbd_params_wall_potential(p, y, NULL) / p->kT));
-    }
-    return s * h / (3.0 * n);
-}
-
-/* Artificial particles: round(n# x wall volume), only for GI-BD (their job
-   is friction), binned into x-z columns at least Rc wide (one column along
-   an axis with fewer than 3, so no column is visited twice). */
-static int hcbd__art_count(const hcbd_params *p, int acol[2])
-{
-    double n;
-    int d;
-    acol[0] = acol[1] = 1;
-    if (p->wall.thickness <= 0 || p->dynamics != HCBD_DYN_GIBD) return 0;
-    for (d = 0; d < 2; ++d) {
-        double k = floor(p->L[2 * d] / p->Rc);
-        acol[d] = k < 3.0 ? 1 : (k > 256.0 ? 256 : (int)k);
-    }
-    n = floor(p->density * p->L[0] * 2.0 * p->wall.thickness * p->L[2] + 0.5);
-    return n > (double)(INT32_MAX / 4) ? INT32_MAX / 4 : (int)n;
-}
-
-/* The wall set's interfaces, Morris planes and keys from p; m is the
-   carriers' mass, w0 = w(0) */
-static void hcbd__ws_init(hcbd__wallset *s, const hcbd_params *p, double m, double w0)
-{
-    double h = 0.0;
-    s->lo = p->wall.thickness;
-    s->hi = p->L[1] - p->wall.thickness;
-    if (p->wall.thickness > 0 && p->wall.mode == HCBD_WALL_NOSLIP)
-        h = p->wall.shift == HCBD_AUTO ? hcbd__depletion(p) : p->wall.shift;
-    s->morris_lo = s->lo + h;
-    s->morris_hi = s->hi - h;
-    /* an artificial particle's density is that of an ideal bulk,
-       m n# (2016) or m (n# + w(0)) (2014) */
-    s->art_inv_rho = m > 0 ? 1.0 / (m * (p->density_norm == 2016 ? p->density : p->density + w0)) : 0.0;
-    s->key = hcbd__mix64(p->seed ^ hcbd__mix64(HCBD__STREAM_WALL));
-    s->pair_key = hcbd__mix64(p->seed ^ hcbd__mix64(HCBD__STREAM_WALL_PAIR));
-}
-
-/* Wall passes: artificial particles are redrawn every step from a
-   counter-based stream keyed by (seed, step), uniform in the wall slab
-   [-t, t) of the periodic y axis, and sorted into x-z columns. */
-static void hcbd__art_pos(const hcbd_params *p, uint64_t *g, double r[3])
-{
-    r[0] = hcbd__u01(hcbd_splitmix64(g)) * p->L[0];
-    r[1] = (2.0 * hcbd__u01(hcbd_splitmix64(g)) - 1.0) * p->wall.thickness;
-    if (r[1] < 0.0) r[1] += p->L[1];
-    r[2] = hcbd__u01(hcbd_splitmix64(g)) * p->L[2];
-}
-
-static int hcbd__art_col(const hcbd__wallset *s, const hcbd_params *p, double x, double z)
-{
-    int cx = (int)(x * s->acol[0] / p->L[0]), cz = (int)(z * s->acol[1] / p->L[2]);
-    if (cx >= s->acol[0]) cx = s->acol[0] - 1;
-    if (cz >= s->acol[1]) cz = s->acol[1] - 1;
-    return cx * s->acol[1] + cz;
-}
-
-/* Counting sort in two passes over the same stream, so no scratch. */
-static void hcbd__ws_draw(hcbd__wallset *s, const hcbd_params *p, int64_t step)
-{
-    const int ncol = s->acol[0] * s->acol[1];
-    const uint64_t key = hcbd__mix64(s->key ^ hcbd__mix64((uint64_t)step));
-    uint64_t g = key;
-    int k, c;
-    for (c = 0; c <= ncol; ++c) s->col_start[c] = 0;
-    for (k = 0; k < s->n_art; ++k) {
-        double r[3];
-        hcbd__art_pos(p, &g, r);
-        s->col_start[hcbd__art_col(s, p, r[0], r[2]) + 1]++;
-    }
-    for (c = 0; c < ncol; ++c) {
-        s->col_start[c + 1] += s->col_start[c];
-        s->col_of[c] = s->col_start[c];
-    }
-    g = key;
-    for (k = 0; k < s->n_art; ++k) {
-        double r[3];
-        int32_t q;
-        hcbd__art_pos(p, &g, r);
-        q = s->col_of[hcbd__art_col(s, p, r[0], r[2])]++;
-        s->ax[q] = (hcbd_real)r[0]; s->ay[q] = (hcbd_real)r[1]; s->az[q] = (hcbd_real)r[2];
-    }
-}
-
-/* The (up to 9) columns within Rc of x, z. */
-static int hcbd__art_cols(const hcbd__wallset *s, const hcbd_params *p, double x, double z, int cols[9])
-{
-    int c = hcbd__art_col(s, p, x, z), cx = c / s->acol[1], cz = c % s->acol[1];
-    int nx = s->acol[0] < 3 ? 1 : 3, nz = s->acol[1] < 3 ? 1 : 3, a, b, k = 0;
-    for (a = 0; a < nx; ++a)
-        for (b = 0; b < nz; ++b) {
-            int ux = nx == 1 ? 0 : (cx + a - 1 + s->acol[0]) % s->acol[0];
-            int uz = nz == 1 ? 0 : (cz + b - 1 + s->acol[1]) % s->acol[1];
-            cols[k++] = ux * s->acol[1] + uz;
-        }
-    return k;
-}
-
-static int hcbd__ws_near(const hcbd__wallset *s, const hcbd_params *p, double y)
-{
-    return y < s->lo + p->Rc || y > s->hi - p->Rc;
-}
-
-/* The Morris pairs' key of a step: the sweep's differs from the Euler
-   step's in its last bit */
-static uint64_t hcbd__ws_pair_step_key(const hcbd__wallset *s, int64_t step, int exact)
-{
-    const uint64_t k = hcbd__mix64(s->pair_key ^ hcbd__mix64((uint64_t)step));
-    return exact ? k | 1 : k;
-}
-
-/* The world's wall passes, on its wall set */
-static void hcbd__wall_draw(hcbd_world *w) { hcbd__ws_draw(&w->ws, &w->p, w->step); }
-
-static int hcbd__near_wall(const hcbd_world *w, double y) { return hcbd__ws_near(&w->ws, &w->p, y); }
-
-/* The world's wall state from the parameters (at init) */
-static void hcbd__walls_init(hcbd_world *w, const hcbd_params *p)
-{
-    w->walls = p->wall.thickness > 0;
-    if (w->walls) {
-        w->has_gauss = p->wall.mode != HCBD_WALL_REFLECT && p->wall.a > 0;
-        w->has_refl = p->wall.mode == HCBD_WALL_REFLECT;
-    }
-    hcbd__ws_init(&w->ws, p, w->gibd ? w->m : 0.0, w->w0);
-    w->wall_pen_step = -1;
-    w->wall_pen_id = -1;
-}
-
-/* wall.guard of the walled build's parameters */
-static int hcbd__wall_guard(const hcbd_world *w) { return w->walls && w->p.wall.guard; }
-
-/* The wall's force on a particle at height y */
-static double hcbd__wall_fy(const hcbd_world *w, double y)
-{
-    double fy;
-    hcbd_params_wall_potential(&w->p, y, &fy);
-    return fy;
-}
-
-#else
-/* Without walls: nothing to draw, no wall near, no force.  The step's calls
-   to these sit behind w->walls, w->ws.n_art and w->has_gauss, all 0. */
-static int hcbd__art_count(const hcbd_params *p, int acol[2])
-{
-    (void)p;
-    acol[0] = acol[1] = 1;
-    return 0;
-}
-static double hcbd__depletion(const hcbd_params *p)
-{
-    (void)p;
-    return 0.0;
-}
-static void hcbd__walls_init(hcbd_world *w, const hcbd_params *p)
-{
-    (void)p;
-    w->wall_pen_step = -1;
-    w->wall_pen_id = -1;
-}
-static inline void hcbd__wall_draw(hcbd_world *w) { (void)w; }
-static inline int hcbd__near_wall(const hcbd_world *w, double y) { (void)w; (void)y; return 0; }
-static inline uint64_t hcbd__ws_pair_step_key(const hcbd__wallset *s, int64_t step, int exact)
-{
-    (void)s; (void)step; (void)exact;
-    return 0;
-}
-static inline int hcbd__wall_guard(const hcbd_world *w) { (void)w; return 0; }
-static inline double hcbd__wall_fy(const hcbd_world *w, double y) { (void)w; (void)y; return 0.0; }
-#endif
-
-/* >>theory and stability limits (hcbd_params_theory, hcbd_params_stability) */
-hcbd_result hcbd_params_theory(const hcbd_params *p, hcbd_theory *t)
-{
-    char msg[8];
-    hcbd_result r;
-    if (!p || !t) return HCBD_ERR_NULL;
-    r = hcbd_params_check(p, msg, sizeof msg);
-    if (r != HCBD_OK) return r;
-    memset(t, 0, sizeof *t);
-    if (p->dynamics != HCBD_DYN_GIBD) return HCBD_ERR_PARAM;
-    t->nu = p->Rc * p->Rc / (28.0 * p->tau);
-    t->m = p->xip * p->tau;
-    t->eta_inf = t->nu * p->density * t->m;
-    t->width = p->L[1] - 2.0 * hcbd__wall_t(p);
-    t->g = p->fext[0] / t->m;
-    t->v_max = t->g * t->width * t->width / (8.0 * t->nu);
-    t->re_max = p->sigma * fabs(t->v_max) / t->nu;
-    t->depletion_width = hcbd__depletion(p);
-    return HCBD_OK;
-}
-
-/* Pair energy from the parameters alone (no world): the star formula or
-   the table, linearly interpolated. */
-static double hcbd__pair_V(const hcbd_params *p, double r)
-{
-    if (p->potential == HCBD_POT_STAR) return hcbd_star_potential(r, p->f, p->sigma, p->star_eps);
-    if (p->potential == HCBD_POT_TABLE && p->table_V && p->table_n > 1) {
-        const double dr = (p->rcut - p->table_r0) / (p->table_n - 1);
-        double x = (r - p->table_r0) / dr;
-        int i = (int)x;
-        if (x <= 0) return p->table_V[0];
-        if (i >= p->table_n - 1) return p->table_V[p->table_n - 1];
-        return p->table_V[i] + (x - i) * (p->table_V[i + 1] - p->table_V[i]);
-    }
-    return 0;
-}
-
-static void hcbd__limit(hcbd_limit *out, int *n, const char *name, const char *guard, double value,
-                        double bound)
-{
-    hcbd_limit *l = out + (*n)++;
-    l->name = name;
-    l->guard = guard;
-    l->value = value;
-    l->bound = bound;
-    l->margin = value > 0 ? bound / value : HUGE_VAL;
-}
-
-int hcbd_limits_format(const hcbd_limit *l, int n, char *buf, size_t size)
-{
-    int k, len = 0;
-    if (buf && size) buf[0] = 0;
-    for (k = 0; l && k < n; ++k) {
-        const int room = buf && (size_t)len < size;
-        const char *g = l[k].guard;
-        int c = snprintf(room ? buf + len : NULL, room ? size - (size_t)len : 0,
-                         "  %-56s %10.3g / %-10.3g margin %8.3g  %-7s (crossed: %s%s)\n", l[k].name,
-                         l[k].value, l[k].bound, l[k].margin, l[k].margin < 1 ? "CROSSED" : "ok",
-                         !strncmp(g, "HCBD_ERR", 8) ? "the run stops with " : "costs ", g);
-        if (c > 0) len += c;
-    }
-    return len;
-}
-
-/* The closest distance pairs of a liquid reach: where V(r) = 15 kT (a
-   Boltzmann factor of 3e-7), no closer than the star core sigma, whose
-   kink the difference quotient would straddle.  bench/stability finds the
-   real boundaries within 0.8-1.0 of the bound this gives for f = 64..256. */
-static double hcbd__closest(const hcbd_params *p)
-{
-    const double Vk = 15.0 * (p->kT > 0 ? p->kT : 1.0);
-    double lo = p->potential == HCBD_POT_STAR ? p->sigma : p->table_r0, hi = p->rcut;
-    int it;
-    if (hcbd__pair_V(p, lo) <= Vk) return lo;
-    for (it = 0; it < 60; ++it) {
-        double mid = 0.5 * (lo + hi);
-        if (hcbd__pair_V(p, mid) > Vk) lo = mid;
-        else hi = mid;
-    }
-    return hi;
-}
-
-/* Stiffness |dF/dr| of the pair force at r (central difference). */
-static double hcbd__stiffness(const hcbd_params *p, double r)
-{
-    const double e = 1e-4 * p->sigma;
-    if (p->potential == HCBD_POT_STAR)
-        return fabs(hcbd_star_force(r + e, p->f, p->sigma, p->star_eps) -
-                    hcbd_star_force(r - e, p->f, p->sigma, p->star_eps)) / (2 * e);
-    if (p->potential == HCBD_POT_TABLE && p->table_F && p->table_n > 1) {
-        const double dr = (p->rcut - p->table_r0) / (p->table_n - 1);
-        double k = 0;
-        int i;
-        for (i = 1; i < p->table_n; ++i)
-            if (p->table_r0 + i * dr >= r - dr) { /* closer pairs are rare */
-                double s = fabs(p->table_F[i] - p->table_F[i - 1]) / dr;
-                if (s > k) k = s;
-            }
-        return k;
-    }
-    return 0;
-}
-
-hcbd_result hcbd_params_stability(const hcbd_params *p, hcbd_limit *out, int *n)
-{
-    hcbd_theory th;
-    hcbd_result r;
-    const int gibd = p && p->dynamics == HCBD_DYN_GIBD;
-    double k, disp, m = 0;
-    if (!p || !out || !n) return HCBD_ERR_NULL;
-    *n = 0;
-    memset(&th, 0, sizeof th);
-    if ((r = hcbd_params_check(p, NULL, 0)) != HCBD_OK) return r;
-    if (gibd && (r = hcbd_params_theory(p, &th)) != HCBD_OK) return r;
-    if (gibd) m = th.m;
-    if (gibd && p->pair_integrator == HCBD_PAIR_EULER) {
-        hcbd__limit(out, n, "Euler pair friction: tau >= 10 dt (2014 eq. 27)", "accuracy", p->dt,
-                    0.1 * p->tau);
-        /* bench/stability: T/kT - 1 is 0.37 at 0.5 tau, 0.96 at 0.71 tau, and
-           the run falls apart at 0.84 tau; the parameter check stops dt > tau */
-        hcbd__limit(out, n, "Euler pair friction: dt < tau / 2 (runaway at 0.7 tau)",
-                    "none before dt > tau (HCBD_ERR_PARAM)", p->dt, 0.5 * p->tau);
-    }
-    if (p->potential != HCBD_POT_IDEAL) {
-        /* the stiffest pair of a liquid sits near the core (stars) or the
-           table's closest tenth; explicit Euler of x' = -k x / xi is stable
-           for dt < 2 xi / k */
-        k = hcbd__stiffness(p, hcbd__closest(p));
-        if (k > 0) {
-            hcbd__limit(out, n, "force: dt < 2 xi / k, k = |F'| where V = 15 kT", "HCBD_ERR_UNSTABLE",
-                        p->dt, 2.0 * p->xi / k);
-            if (gibd)
-                hcbd__limit(out, n, "force on the background: dt < 2 sqrt(m / k)", "HCBD_ERR_NONFINITE",
-                            p->dt, 2.0 * sqrt(m / k));
-        }
-    }
-    /* rms displacement per step: Brownian plus the carried velocity */
-    disp = sqrt(6.0 * p->kT * p->dt / p->xi) + (gibd ? sqrt(3.0 * p->kT / m) * p->dt : 0.0);
-    if (hcbd__needs_pairs(p)) {
-        hcbd__limit(out, n, "rms step vs skin/2 (list every step beyond)", "speed", disp,
-                    0.5 * hcbd__skin(p));
-        hcbd__limit(out, n, "rms step vs half the interaction range / 4", "HCBD_ERR_UNSTABLE", disp,
-                    0.125 * hcbd__cutmax(p));
-    }
-    if (gibd && (th.g != 0 || p->gdot != 0)) {
-        double re = th.re_max;
-        if (p->gdot != 0) re = p->sigma * fabs(p->gdot) * p->L[1] / th.nu;
-        hcbd__limit(out, n, p->gdot != 0 ? "Reynolds sigma gdot L / nu < 1"
-                                         : "Reynolds sigma g L^2/(8 nu^2) < 1 (2016 eq. 39)",
-                    "accuracy", re, 1.0);
-    }
-    return HCBD_OK;
-}
-
-/* >>world and storage: the block layout, init and particle set-up */
+/* >>memory blocks: each world's arrays laid out in one block, aligned */
 static void hcbd__take(char *base, size_t *off, size_t bytes, void **out)
 {
     size_t o = (*off + HCBD__ALIGN - 1) & ~(size_t)(HCBD__ALIGN - 1);
     if (out) *out = base ? (void *)(base + o) : NULL;
     *off = o + bytes;
-}
-
-/* A wall set's artificial particles and columns (none without walls) */
-static void hcbd__ws_take(char *base, size_t *off, hcbd__wallset *s, const hcbd_params *p)
-{
-    const size_t R = sizeof(hcbd_real), I = sizeof(int32_t);
-    size_t A, ncol;
-    s->n_art = hcbd__art_count(p, s->acol);
-    A = (size_t)s->n_art;
-    ncol = (size_t)s->acol[0] * (size_t)s->acol[1];
-    hcbd__take(base, off, A * R, (void **)&s->ax);
-    hcbd__take(base, off, A * R, (void **)&s->ay);
-    hcbd__take(base, off, A * R, (void **)&s->az);
-    hcbd__take(base, off, (ncol + 1) * I, (void **)&s->col_start);
-    hcbd__take(base, off, ncol * I, (void **)&s->col_of);
 }
 
 /* The arrays of a list of N particles (N + 1 for a cross list's starts is
@@ -2962,127 +2513,6 @@ static void hcbd__nl_take(char *base, size_t *off, hcbd__nlist *nl, size_t N, co
     nl->nc[0] = nc[0]; nl->nc[1] = nc[1]; nl->nc[2] = nc[2];
     nl->ncell = (int)ncell;
     nl->max_pairs = mp;
-}
-
-static int hcbd__cells(const hcbd_params *p, int nc[3])
-{
-    int d, total = 1;
-    double rl = hcbd__cutmax(p) + hcbd__skin(p);
-    for (d = 0; d < 3; ++d) {
-        /* clamp in double before the cast; 256 cells per edge is plenty */
-        double k = hcbd__needs_pairs(p) ? floor(p->L[d] / rl) : 1.0;
-        nc[d] = k < 1.0 ? 1 : (k > 256.0 ? 256 : (int)k);
-        total *= nc[d];
-    }
-    return total;
-}
-
-/* Rows of the exact pair sweep (hcbd__shardlow): y-z cells at least Rc
-   wide, a multiple of 3 along each axis, or a single one. */
-static int hcbd__sweep_rows(const hcbd_params *p, int ns[2])
-{
-    int d;
-    for (d = 0; d < 2; ++d) {
-        double k = floor(p->L[d + 1] / p->Rc);
-        ns[d] = k >= 3.0 ? 3 * (int)((k > 768.0 ? 768.0 : k) / 3.0) : 1;
-    }
-    return ns[0] * ns[1];
-}
-
-static int64_t hcbd__auto_pairs(const hcbd_world_def *def)
-{
-    const hcbd_params *p = &def->params;
-    double V = p->L[0] * p->L[1] * p->L[2];
-    double rl = hcbd__cutmax(p) + hcbd__skin(p);
-    double per = 0.5 * (double)def->capacity / V * (4.0 / 3.0) * HCBD__PI * rl * rl * rl;
-    if (!hcbd__needs_pairs(p)) return 0;
-    return (int64_t)(1.6 * per * def->capacity) + 8 * (int64_t)def->capacity;
-}
-
-/* One function sizes the block and (with base != NULL) assigns pointers, so
-   the two can never disagree. */
-static size_t hcbd__layout(const hcbd_world_def *def, hcbd_world *w, char *base)
-{
-    size_t off = 0, N = (size_t)def->capacity;
-    int nc[3], k;
-    int64_t mp = def->max_pairs == HCBD_AUTO ? hcbd__auto_pairs(def) : def->max_pairs;
-    size_t R = sizeof(hcbd_real), I = sizeof(int32_t);
-    hcbd_world tmp;
-    hcbd_world *t = w ? w : &tmp;
-    const hcbd_params *p = &def->params;
-    int gibd = (hcbd__cells(p, nc), p->dynamics == HCBD_DYN_GIBD), pot = p->potential != HCBD_POT_IDEAL;
-    size_t Q = sizeof(int64_t);
-    hcbd__take(base, &off, sizeof(hcbd__zig), (void **)&t->core.zig);
-#define HCBD__ARR(ptr, bytes) hcbd__take(base, &off, (bytes), (void **)&(t->ptr))
-    HCBD__ARR(x, N * R); HCBD__ARR(y, N * R); HCBD__ARR(z, N * R);
-    hcbd__nl_take(base, &off, &t->nl, N, nc, mp);
-    HCBD__ARR(ix, N * I); HCBD__ARR(iy, N * I); HCBD__ARR(iz, N * I);
-    HCBD__ARR(id, N * I); HCBD__ARR(slot, N * I);
-    HCBD__ARR(scratch, N * 8);
-    HCBD__ARR(lx, N * sizeof(double));
-    HCBD__ARR(fl_p, N * R); HCBD__ARR(fl_b, N * R); HCBD__ARR(fl_c, N * R);
-    t->sw_start = NULL;
-    t->pr2 = NULL;
-    t->sw_n[0] = t->sw_n[1] = 1;
-    if (gibd && p->pair_integrator == HCBD_PAIR_SHARDLOW && p->Rc > 0) {
-        HCBD__ARR(sw_start, ((size_t)hcbd__sweep_rows(p, t->sw_n) + 1) * I);
-        HCBD__ARR(pr2, (size_t)mp * sizeof(double));
-        HCBD__ARR(ux, N * R); HCBD__ARR(uy, N * R); HCBD__ARR(uz, N * R);
-    } else {
-        t->ux = t->uy = t->uz = NULL;
-    }
-    for (k = 0; k < 3; ++k) {
-        t->aF[k] = t->aP[k] = NULL;
-        if (pot) HCBD__ARR(aF[k], N * Q);
-        if (gibd) HCBD__ARR(aP[k], N * Q);
-    }
-    t->aW = NULL;
-    if (gibd) {
-        HCBD__ARR(aW, N * Q);
-        HCBD__ARR(vx, N * R); HCBD__ARR(vy, N * R); HCBD__ARR(vz, N * R);
-        HCBD__ARR(rho, N * R); HCBD__ARR(inv_rho, N * R);
-    } else {
-        t->vx = t->vy = t->vz = NULL;
-        t->rho = t->inv_rho = NULL;
-    }
-    hcbd__ws_take(base, &off, &t->ws, p);
-    if (p->potential == HCBD_POT_TABLE) {
-        HCBD__ARR(tab_F, (size_t)p->table_n * sizeof(double));
-        HCBD__ARR(tab_V, (size_t)p->table_n * sizeof(double));
-    } else {
-        t->tab_F = t->tab_V = NULL;
-    }
-    t->star_tab = NULL;
-    if (p->potential == HCBD_POT_STAR && p->force_table)
-        HCBD__ARR(star_tab, 4 * (size_t)hcbd__star_pieces(p) * sizeof(double));
-#undef HCBD__ARR
-    return off + HCBD__ALIGN; /* room to align the caller's block */
-}
-
-static hcbd_result hcbd__check_def(const hcbd_world_def *def, char *msg, size_t n)
-{
-    hcbd_result r;
-    if (!def) {
-        snprintf(msg, n, "world definition is NULL");
-        return HCBD_ERR_NULL;
-    }
-    if (def->capacity < 1 || def->capacity > (INT32_MAX / 4)) {
-        snprintf(msg, n, "capacity = %d is invalid (need 1 <= capacity <= %d)",
-                 def->capacity, INT32_MAX / 4);
-        return HCBD_ERR_PARAM;
-    }
-    if (def->max_pairs != HCBD_AUTO && (def->max_pairs < 0 || def->max_pairs > INT32_MAX)) {
-        snprintf(msg, n, "max_pairs = %lld is invalid (need HCBD_AUTO or 0..%d)",
-                 (long long)def->max_pairs, INT32_MAX);
-        return HCBD_ERR_PARAM;
-    }
-    r = hcbd_params_check(&def->params, msg, n);
-    if (r != HCBD_OK) return r;
-    if (def->max_pairs == HCBD_AUTO && hcbd__auto_pairs(def) > INT32_MAX) {
-        snprintf(msg, n, "capacity = %d needs more than 2^31 pairs", def->capacity);
-        return HCBD_ERR_CAPACITY;
-    }
-    return HCBD_OK;
 }
 
 /* The start both worlds' init share: the definition's verdict r (its
@@ -3109,306 +2539,6 @@ static char *hcbd__init_block(hcbd_error *e, hcbd_result r, void *mem, size_t by
     return base + ((HCBD__ALIGN - ((uintptr_t)base & (HCBD__ALIGN - 1))) & (HCBD__ALIGN - 1));
 }
 
-size_t hcbd_world_bytes(const hcbd_world_def *def)
-{
-    char msg[256];
-    if (hcbd__check_def(def, msg, sizeof msg) != HCBD_OK) return 0;
-    return hcbd__layout(def, NULL, NULL);
-}
-
-hcbd_result hcbd_world_init(hcbd_world *w, const hcbd_world_def *def, void *mem,
-                            size_t bytes)
-{
-    hcbd_result r;
-    char *base;
-    const hcbd_params *p;
-    hcbd_gibd_coef gc;
-    if (!w) return HCBD_ERR_NULL;
-    memset(w, 0, sizeof *w);
-    hcbd__clear(&w->err);
-    r = hcbd__check_def(def, w->err.msg, sizeof w->err.msg);
-    base = hcbd__init_block(&w->err, r, mem, bytes, r == HCBD_OK ? hcbd__layout(def, NULL, NULL) : 0,
-                            "hcbd_world_bytes");
-    if (!base) return w->err.code;
-    hcbd__layout(def, w, base);
-    w->p = def->params;
-    p = &w->p;
-    w->capacity = def->capacity;
-    w->gibd = p->dynamics == HCBD_DYN_GIBD;
-    hcbd__gibd_coef(p, &gc);
-    w->m = w->gibd ? gc.m : 0.0;
-    w->inv_m = w->gibd ? 1.0 / w->m : 0.0;
-    w->cw = w->w0 = gc.cw;
-    w->cf = gc.cf;
-    w->rho_norm = gc.rho_norm;
-    w->cutmax = hcbd__cutmax(p);
-    w->core.skin = hcbd__skin(p);
-    w->nl.rlist = w->cutmax + w->core.skin;
-    /* List validity is checked before every force evaluation, so a long
-       step never misses a pair; a step longer than half the interaction
-       range jumps through neighbours and means dt is unstable. */
-    w->step_limit = 0.5 * w->cutmax;
-    if (!hcbd__needs_pairs(p)) w->step_limit = HUGE_VAL;
-    hcbd__fixed_scales(w);
-    hcbd__star_coef(p->f, p->sigma, p->star_eps, &w->star);
-    w->has_pairs = hcbd__needs_pairs(p);
-    w->has_fext = p->fext[0] != 0.0 || p->fext[1] != 0.0 || p->fext[2] != 0.0;
-    w->has_noise = p->kT > 0.0;
-    w->shardlow = w->gibd && p->pair_integrator == HCBD_PAIR_SHARDLOW;
-    w->core.le_on = p->gdot != 0.0;
-    w->core.le_vjump = p->gdot * p->L[1];
-    w->fext_dr = w->has_fext && !p->fext_background_only;
-    hcbd__walls_init(w, p);
-    w->seed_key = hcbd__mix64(p->seed ^ hcbd__mix64(HCBD__STREAM_PAIR));
-    w->bd_key = hcbd__mix64(p->seed ^ hcbd__mix64(HCBD__STREAM_BROWNIAN));
-    if (p->potential == HCBD_POT_TABLE) {
-        memcpy(w->tab_F, p->table_F, (size_t)p->table_n * sizeof(double));
-        memcpy(w->tab_V, p->table_V, (size_t)p->table_n * sizeof(double));
-        w->tab_inv_dr = (double)(p->table_n - 1) / (p->rcut - p->table_r0);
-        w->p.table_F = w->tab_F; /* the caller's arrays need not outlive init */
-        w->p.table_V = w->tab_V;
-    }
-    if (w->star_tab) hcbd__star_table_build(w);
-    hcbd__zig_init(w->core.zig);
-    w->n = 0;
-    w->core.live = HCBD__LIVE;
-    return HCBD_OK;
-}
-
-/* Position source for the shared set-up path: the caller's array, a
-   lattice or uniform random points (no temporary allocation). */
-typedef struct hcbd__src {
-    const double *xyz;
-    int lattice_k, n;
-    hcbd_rng g;
-} hcbd__src;
-
-static void hcbd__src_get(const hcbd_world *w, hcbd__src *s, int i, double r[3])
-{
-    int d;
-    if (s->xyz) {
-        for (d = 0; d < 3; ++d) r[d] = s->xyz[3 * i + d];
-    } else if (s->lattice_k > 0) {
-        /* n of the k^3 sites, spread evenly so no region is left empty */
-        int k = s->lattice_k, c[3];
-        int64_t site = (int64_t)i * k * k * k / s->n;
-        c[0] = (int)(site % k); c[1] = (int)(site / k % k); c[2] = (int)(site / ((int64_t)k * k));
-        for (d = 0; d < 3; ++d) r[d] = (c[d] + 0.5) * w->p.L[d] / k;
-    } else {
-        for (d = 0; d < 3; ++d) r[d] = hcbd_rng_uniform(&s->g) * w->p.L[d];
-    }
-}
-
-/* The count and the caller's coordinates, before anything is written. */
-static hcbd_result hcbd__check_particles(hcbd_world *w, int n, const hcbd__src *src)
-{
-    int i;
-    if (n > w->capacity)
-        return hcbd__fail(&w->err, HCBD_ERR_CAPACITY, -1, -1,
-                          "N = %d exceeds the capacity %d", n, w->capacity);
-    if (n < 1)
-        return hcbd__fail(&w->err, HCBD_ERR_PARAM, -1, -1, "N = %d is invalid (need N >= 1)", n);
-    if (w->gibd && n < 2)
-        return hcbd__fail(&w->err, HCBD_ERR_PARAM, -1, -1,
-                          "N = %d: GI-BD needs at least 2 particles", n);
-    if (src->xyz)
-        for (i = 0; i < 3 * n; ++i) {
-            if (!isfinite(src->xyz[i]))
-                return hcbd__fail(&w->err, HCBD_ERR_NONFINITE, -1, i / 3,
-                                  "position %c of particle %d is %g",
-                                  "xyz"[i % 3], i / 3, src->xyz[i]);
-            /* the periodic image counters are int32 */
-            if (fabs(src->xyz[i]) > 1e9 * w->p.L[i % 3])
-                return hcbd__fail(&w->err, HCBD_ERR_PARAM, -1, i / 3,
-                                  "position %c of particle %d is %g, more than 1e9 "
-                                  "box lengths from the box", "xyz"[i % 3], i / 3,
-                                  src->xyz[i]);
-        }
-    return HCBD_OK;
-}
-
-/* Particle i's position from the source, wrapped into the box (generated
-   positions fill the channel only), with its image counts. */
-static void hcbd__src_place(hcbd_world *w, hcbd__src *src, int i, double r[3], int32_t img[3])
-{
-    int d;
-    hcbd__src_get(w, src, i, r);
-    if (w->walls && !src->xyz)
-        r[1] = w->ws.lo + r[1] / w->p.L[1] * (w->ws.hi - w->ws.lo);
-    for (d = 0; d < 3; ++d) {
-        img[d] = 0;
-        hcbd__wrap(w->p.L[d], &r[d], &img[d]);
-    }
-}
-
-/* The positions go to the list-build copies (stale until the next build)
-   first and are checked there, so that a refused configuration leaves
-   the particles as they were. */
-static hcbd_result hcbd__stage_particles(hcbd_world *w, int n, hcbd__src *src)
-{
-    int i;
-    w->nl.list_valid = 0;
-    for (i = 0; i < n; ++i) {
-        double r[3];
-        int32_t img[3];
-        hcbd__src_place(w, src, i, r, img);
-        if (w->walls && (r[1] < w->ws.lo || r[1] > w->ws.hi))
-            return hcbd__fail(&w->err, HCBD_ERR_WALL, -1, i,
-                              "particle %d at y = %g is inside a wall (the channel is "
-                              "%g <= y <= %g)", i, r[1], w->ws.lo, w->ws.hi);
-        w->nl.x0[i] = (hcbd_real)r[0]; w->nl.y0[i] = (hcbd_real)r[1]; w->nl.z0[i] = (hcbd_real)r[2];
-        /* A position that rounds to L in float storage belongs at 0. */
-        if (w->nl.x0[i] >= (hcbd_real)w->p.L[0]) w->nl.x0[i] = 0;
-        if (w->nl.y0[i] >= (hcbd_real)w->p.L[1]) w->nl.y0[i] = 0;
-        if (w->nl.z0[i] >= (hcbd_real)w->p.L[2]) w->nl.z0[i] = 0;
-    }
-    if (w->p.min_distance > 0) {
-        /* O(N^2), once at set-up; in id order, so the first pair reported
-           is the same whatever the storage */
-        const double m2 = w->p.min_distance * w->p.min_distance;
-        int j;
-        for (i = 0; i < n; ++i)
-            for (j = i + 1; j < n; ++j) {
-                double e[3];
-                e[0] = hcbd__mi((double)w->nl.x0[i] - w->nl.x0[j], w->p.L[0]);
-                e[1] = hcbd__mi((double)w->nl.y0[i] - w->nl.y0[j], w->p.L[1]);
-                e[2] = hcbd__mi((double)w->nl.z0[i] - w->nl.z0[j], w->p.L[2]);
-                if (e[0] * e[0] + e[1] * e[1] + e[2] * e[2] < m2)
-                    return hcbd__fail(&w->err, HCBD_ERR_OVERLAP, -1, i,
-                                      "particles %d and %d are %.17g apart, closer than "
-                                      "min_distance = %.17g", i, j,
-                                      sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]),
-                                      w->p.min_distance);
-            }
-    }
-    return HCBD_OK;
-}
-
-/* Particle i's velocity at set-up: Maxwellian from its own generator, on
-   the linear profile of a sheared run (MODEL 5); added into mom. */
-static void hcbd__start_velocity(hcbd_world *w, int i, double mom[3])
-{
-    const double s = w->has_noise ? sqrt(w->p.kT / w->m) : 0.0;
-    double v[3] = {0, 0, 0};
-    hcbd_rng g;
-    int d;
-    hcbd_rng_seed(&g, hcbd__mix64(w->p.seed ^ hcbd__mix64(HCBD__STREAM_PARTICLE)) ^
-                          hcbd__mix64((uint64_t)i + HCBD__GOLDEN));
-    if (s > 0)
-        for (d = 0; d < 3; ++d) v[d] = s * hcbd_world_rng_normal(w, &g);
-    v[0] += w->p.gdot * (w->y[i] - 0.5 * w->p.L[1]);
-    w->vx[i] = (hcbd_real)v[0]; w->vy[i] = (hcbd_real)v[1]; w->vz[i] = (hcbd_real)v[2];
-    for (d = 0; d < 3; ++d) mom[d] += v[d];
-}
-
-/* The staged positions become the particles (ids 0..n-1, velocities at
-   zero total momentum), and the run starts over at step 0. */
-static void hcbd__commit_particles(hcbd_world *w, int n, hcbd__src *src)
-{
-    double mom[3] = {0, 0, 0};
-    int i;
-    w->n = n;
-    for (i = 0; i < n; ++i) {
-        double r[3];
-        int32_t img[3];
-        /* the source replayed for the images */
-        hcbd__src_place(w, src, i, r, img);
-        w->x[i] = w->nl.x0[i]; w->y[i] = w->nl.y0[i]; w->z[i] = w->nl.z0[i];
-        w->ix[i] = img[0]; w->iy[i] = img[1]; w->iz[i] = img[2];
-        w->id[i] = i;
-        w->slot[i] = i;
-        if (w->gibd) hcbd__start_velocity(w, i, mom);
-    }
-    for (i = 0; i < n; ++i) w->lx[i] = 0.0;
-    w->core.le_offset = 0.0;
-    w->nl.le_drift = 0.0;
-    if (w->gibd)
-        for (i = 0; i < n; ++i) {
-            w->vx[i] -= (hcbd_real)(mom[0] / n);
-            w->vy[i] -= (hcbd_real)(mom[1] / n);
-            w->vz[i] -= (hcbd_real)(mom[2] / n);
-        }
-    w->step = 0;
-    w->wall_pen = 0;
-    w->wall_pen_step = -1;
-    w->wall_pen_id = -1;
-    w->nl.list_valid = 0;
-    w->rho_current = 0;
-    w->rho_valid = 0;
-    w->nl.n_rebuilds = 0;
-    /* no artificial particles before the first step draws them */
-    if (w->ws.n_art > 0)
-        memset(w->ws.col_start, 0, (size_t)(w->ws.acol[0] * w->ws.acol[1] + 1) * sizeof(int32_t));
-}
-
-static hcbd_result hcbd__set_particles(hcbd_world *w, int n, hcbd__src *src)
-{
-    hcbd__src src0;
-    hcbd_result r = hcbd__check_particles(w, n, src);
-    if (r != HCBD_OK) return r;
-    src->n = n;
-    src0 = *src;
-    r = hcbd__stage_particles(w, n, src);
-    if (r != HCBD_OK) return r;
-    *src = src0;
-    hcbd__commit_particles(w, n, src);
-    return HCBD_OK;
-}
-
-hcbd_result hcbd_world_set_positions(hcbd_world *w, int n, const double *xyz)
-{
-    hcbd__src s;
-    if (!w) return HCBD_ERR_NULL;
-    hcbd__clear(&w->err);
-    if (!xyz) return hcbd__fail(&w->err, HCBD_ERR_NULL, -1, -1, "positions are NULL");
-    memset(&s, 0, sizeof s);
-    s.xyz = xyz;
-    return hcbd__set_particles(w, n, &s);
-}
-
-hcbd_result hcbd_world_place_lattice(hcbd_world *w, int n)
-{
-    hcbd__src s;
-    if (!w) return HCBD_ERR_NULL;
-    hcbd__clear(&w->err);
-    memset(&s, 0, sizeof s);
-    s.lattice_k = 1;
-    while ((int64_t)s.lattice_k * s.lattice_k * s.lattice_k < n) ++s.lattice_k;
-    return hcbd__set_particles(w, n, &s);
-}
-
-hcbd_result hcbd_world_place_random(hcbd_world *w, int n)
-{
-    hcbd__src s;
-    if (!w) return HCBD_ERR_NULL;
-    hcbd__clear(&w->err);
-    memset(&s, 0, sizeof s);
-    hcbd_rng_seed(&s.g, w->p.seed ^ hcbd__mix64(HCBD__STREAM_PLACE));
-    return hcbd__set_particles(w, n, &s);
-}
-
-hcbd_result hcbd_world_set_velocities(hcbd_world *w, const double *v)
-{
-    int i;
-    if (!w) return HCBD_ERR_NULL;
-    hcbd__clear(&w->err);
-    if (!v) return hcbd__fail(&w->err, HCBD_ERR_NULL, -1, -1, "velocities are NULL");
-    if (!w->gibd)
-        return hcbd__fail(&w->err, HCBD_ERR_STATE, -1, -1,
-                          "classical BD carries no background velocity");
-    for (i = 0; i < 3 * w->n; ++i)
-        if (!isfinite(v[i]))
-            return hcbd__fail(&w->err, HCBD_ERR_NONFINITE, -1, i / 3,
-                              "velocity %c of particle %d is %g", "xyz"[i % 3],
-                              i / 3, v[i]);
-    for (i = 0; i < w->n; ++i) {
-        int s = w->slot[i];
-        w->vx[s] = (hcbd_real)v[3 * i];
-        w->vy[s] = (hcbd_real)v[3 * i + 1];
-        w->vz[s] = (hcbd_real)v[3 * i + 2];
-    }
-    return HCBD_OK;
-}
 
 /* >>neighbour search: cells, half and cross Verlet lists, their rebuild */
 /* One set of particles as the list machinery sees it: positions by slot
@@ -3939,6 +3069,29 @@ typedef struct hcbd__art_cursor {
     int32_t k, ke;
 } hcbd__art_cursor;
 
+/* The x-z column of the artificial particles that holds x, z. */
+static int hcbd__art_col(const hcbd__wallset *s, const hcbd_params *p, double x, double z)
+{
+    int cx = (int)(x * s->acol[0] / p->L[0]), cz = (int)(z * s->acol[1] / p->L[2]);
+    if (cx >= s->acol[0]) cx = s->acol[0] - 1;
+    if (cz >= s->acol[1]) cz = s->acol[1] - 1;
+    return cx * s->acol[1] + cz;
+}
+
+/* The (up to 9) columns within Rc of x, z. */
+static int hcbd__art_cols(const hcbd__wallset *s, const hcbd_params *p, double x, double z, int cols[9])
+{
+    int c = hcbd__art_col(s, p, x, z), cx = c / s->acol[1], cz = c % s->acol[1];
+    int nx = s->acol[0] < 3 ? 1 : 3, nz = s->acol[1] < 3 ? 1 : 3, a, b, k = 0;
+    for (a = 0; a < nx; ++a)
+        for (b = 0; b < nz; ++b) {
+            int ux = nx == 1 ? 0 : (cx + a - 1 + s->acol[0]) % s->acol[0];
+            int uz = nz == 1 ? 0 : (cz + b - 1 + s->acol[1]) % s->acol[1];
+            cols[k++] = ux * s->acol[1] + uz;
+        }
+    return k;
+}
+
 HCBD__INLINE int hcbd__gather_art(const hcbd__wallset *s, const double L[3], hcbd__art_cursor *a, double xi,
                                   double yi, double zi, double cut2, hcbd__near *c)
 {
@@ -4314,6 +3467,3581 @@ HCBD__INLINE int hcbd__traverse_stream(const hcbd__trav *T, const int32_t *owner
     return worst;
 }
 
+/* 1 - e^{-x} for x >= 0: the series for small x (the usual case, 2 f dt/tau
+   ~ 0.05), which is exact to a few ulp and far cheaper than expm1 */
+static inline double hcbd__one_minus_exp_series(double x)
+{
+    return x * (1 - x * (1.0 / 2) * (1 - x * (1.0 / 3) * (1 - x * (1.0 / 4) * (1 - x * (1.0 / 5) *
+           (1 - x * (1.0 / 6) * (1 - x * (1.0 / 7) * (1 - x * (1.0 / 8) * (1 - x * (1.0 / 9) *
+           (1 - x * (1.0 / 10))))))))));
+}
+
+/* begin for passes whose owner state is sums from zero */
+HCBD__INLINE void hcbd__ev_zero(void *ctx, int i, hcbd__acc *a)
+{
+    (void)ctx; (void)i;
+    memset(a, 0, sizeof *a);
+}
+
+/* end for passes whose sums are all the loop's */
+HCBD__INLINE int hcbd__ev_done(void *ctx, int i, hcbd__acc *a)
+{
+    (void)ctx; (void)i; (void)a;
+    return INT_MAX;
+}
+
+
+#if HCBD_MODEL == HCBD_MODEL_HCBD
+/* ========================================================================= */
+/* >>HCBD (2018): the fluid and polymer world, after the shared engine       */
+/* ========================================================================= */
+/* >>HCBD: kernels (MODEL 1, 8) */
+double hcbd_m4(double r, double h)
+{
+    double q = r / h, c = 1.0 / (4.0 * HCBD__PI * h * h * h), a, b;
+    if (!(q < 2.0)) return 0.0;
+    a = 2.0 - q;
+    if (q >= 1.0) return c * a * a * a;
+    b = 1.0 - q;
+    return c * (a * a * a - 4.0 * b * b * b);
+}
+
+double hcbd_m4_dr(double r, double h)
+{
+    double q = r / h, c = 1.0 / (4.0 * HCBD__PI * h * h * h * h), a, b;
+    if (!(q < 2.0)) return 0.0;
+    a = 2.0 - q;
+    if (q >= 1.0) return -3.0 * c * a * a;
+    b = 1.0 - q;
+    return c * (-3.0 * a * a + 12.0 * b * b);
+}
+
+/* int_0^a (a - q)^3 (1 - cos(kap q)) dq: its Taylor series while kap a < 2
+   (the closed form cancels there), else a^4/4 - 3 a^2/kap^2 +
+   6 (1 - cos(kap a))/kap^4, by parts. */
+static double hcbd__m4_cos3(double a, double kap)
+{
+    double x = kap * a, t, sum = 0;
+    int m;
+    if (x >= 2) {
+        double s = sin(0.5 * x);
+        return 0.25 * a * a * a * a - 3 * a * a / (kap * kap) + 12 * s * s / (kap * kap * kap * kap);
+    }
+    t = 6 * a * a * a * a / 24; /* m = 0 term 6 a^4 / 4!, never summed */
+    for (m = 1; m < 30; ++m) {
+        t *= -x * x / ((2.0 * m + 3) * (2.0 * m + 4));
+        sum -= t;
+        if (fabs(t) < 1e-18 * fabs(sum)) break;
+    }
+    return sum;
+}
+
+double hcbd_m4_shear_factor(double k, double h)
+{
+    double kap = fabs(k) * h;
+    if (!isfinite(k) || !(h > 0) || !isfinite(h)) return NAN;
+    if (kap < 1e-8) return 1.0; /* K = 1 - O((kh)^2) */
+    /* w = ((2 - q)^3 - 4 (1 - q)^3 [q < 1]) / (4 pi h^3), q = r / h */
+    return 2 / (kap * kap) * (hcbd__m4_cos3(2, kap) - 4 * hcbd__m4_cos3(1, kap));
+}
+
+static double hcbd__rapid_A(double sigma, double rc)
+{
+    return 15.0 / (2.0 * HCBD__PI * (pow(rc, 5) - pow(sigma, 5)));
+}
+
+/* W-RaPiD inside its range, with the normalisation A precomputed */
+static inline double hcbd__rapid(double r, double sg, double rc, double A)
+{
+    return r <= sg ? A * (rc - sg) * (rc + sg - 2.0 * r) : A * (r - rc) * (r - rc);
+}
+
+double hcbd_rapid_w(double r, double sigma, double rc)
+{
+    if (!(r < rc)) return 0.0;
+    return hcbd__rapid(r, sigma, rc, hcbd__rapid_A(sigma, rc));
+}
+
+/* The pair terms of the 2018 model, each from the pair's geometry and
+   its particles' state (the evaluators of the pair passes, in the form of
+   HOOMD-blue's pair evaluators); inside their ranges, r > 0. */
+/* dW/dr of W-RaPiD, with A precomputed */
+static inline double hcbd__rapid_dr(double r, double sg, double rc, double A)
+{
+    return r <= sg ? -2.0 * A * (rc - sg) : 2.0 * A * (r - rc);
+}
+
+/* Flory-Huggins pair force over r (MODEL 8): cfh = p kT / n_max, wd =
+   dW/dr, mua and mub the two blobs' mu(phi) */
+static inline double hcbd__flory_fr(double cfh, double mua, double mub, double wd, double r)
+{
+    return -cfh * (mua + mub) * wd / r;
+}
+
+/* transient spring force over r (MODEL 8): alpha (lambda - u^2) d(u^2)/dr
+   with u = 1 - r/rc */
+static inline double hcbd__spring_fr(double alpha, double lam, double r, double rc)
+{
+    const double u = 1.0 - r / rc;
+    return alpha * (lam - u * u) * (-2.0 * u / rc) / r;
+}
+
+/* Tait pressure pair force over r (MODEL 6): (P_i/n_i^2 + P_j/n_j^2) times
+   wdr = -w'(r)/r */
+static inline double hcbd__tait_fr(double Pn2i, double Pn2j, double wdr)
+{
+    return (Pn2i + Pn2j) * wdr;
+}
+
+/* Morris friction coefficient (MODEL 6): 2 eta wdr / (n_i n_j), from 1/n */
+static inline double hcbd__morris_f(double two_eta, double wdr, double ini, double inj)
+{
+    return two_eta * wdr * ini * inj;
+}
+
+/* M4 kernel over c0 = 1/(4 pi h^3) at q = r/h < 2 */
+static inline double hcbd__m4u(double q)
+{
+    const double a = 2.0 - q, b = q < 1.0 ? 1.0 - q : 0.0;
+    return a * a * a - 4.0 * b * b * b;
+}
+
+/* -w'(r)/r of the M4 kernel at q = r/h < 2, c1h = 1/(4 pi h^5): c1h (12 -
+   9 q) for q < 1 (its r -> 0 limit included), 3 c1h (2 - q)^2/q beyond;
+   one division.  The pressure force is (P_i/n_i^2 + P_j/n_j^2) times it
+   along r_ij, the Morris friction f_ij = -2 eta w'/(n_i n_j r) = 2 eta
+   times it / (n_i n_j). */
+static inline double hcbd__m4_wdr(double q, double c1h)
+{
+    const double a = 2.0 - q;
+    return q < 1.0 ? c1h * (12.0 - 9.0 * q) : 3.0 * c1h * a * a / q;
+}
+
+/* lambda_eq(r) = (1 - r/rc)^2 inside rc */
+static inline double hcbd__leq(double r, double rc)
+{
+    double u = 1.0 - r / rc;
+    return u * u;
+}
+
+double hcbd_rapid_w_dr(double r, double sigma, double rc)
+{
+    if (!(r < rc)) return 0.0;
+    return hcbd__rapid_dr(r, sigma, rc, hcbd__rapid_A(sigma, rc));
+}
+
+/* mu(phi) = -ln(1-phi)/phi^2 - 1/phi - chi = (1/2 - chi) + sum_{k>=1}
+   phi^k/(k+2).  The closed form cancels for small phi (wrong in every
+   float digit at phi ~ 5e-4, chi = 1/2); the series does not, and 1/2 - chi
+   is exact for the paper's chi.  Above 1/4 the closed form loses < 3 bits. */
+#define HCBD__FLORY_MU(T, LOG1P)                                               \
+    {                                                                          \
+        T s = 0, t = 1;                                                        \
+        int k;                                                                 \
+        if (!(phi > 0 && phi < 1)) return (T)NAN;                              \
+        if (phi >= (T)0.25) return -LOG1P(-phi) / (phi * phi) - (T)1 / phi - chi; \
+        for (k = 1; k < 80; ++k) {                                             \
+            T term;                                                            \
+            t *= phi;                                                          \
+            term = t / (T)(k + 2);                                             \
+            s += term;                                                         \
+            if (term < s * (T)1e-18) break;                                    \
+        }                                                                      \
+        return ((T)0.5 - chi) + s;                                             \
+    }
+double hcbd_flory_mu(double phi, double chi) HCBD__FLORY_MU(double, log1p)
+float hcbd_flory_muf(float phi, float chi) HCBD__FLORY_MU(float, log1pf)
+#undef HCBD__FLORY_MU
+
+static hcbd_real hcbd__mu(hcbd_real phi, hcbd_real chi)
+{
+    return sizeof(hcbd_real) == sizeof(float) ? (hcbd_real)hcbd_flory_muf((float)phi, (float)chi)
+                                              : (hcbd_real)hcbd_flory_mu((double)phi, (double)chi);
+}
+
+/* g(phi) + 1 = (1/2 - chi) phi + sum_{k>=2} phi^k / (k (k+1)) */
+double hcbd_flory_g1(double phi, double chi)
+{
+    double s = 0, t = phi;
+    int k;
+    if (!(phi > 0 && phi < 1)) return NAN;
+    if (phi >= 0.25) return (1.0 - phi) / phi * log1p(-phi) - chi * phi + 1.0;
+    for (k = 2; k < 80; ++k) {
+        double term;
+        t *= phi;
+        term = t / ((double)k * (k + 1));
+        s += term;
+        if (term < s * 1e-18) break;
+    }
+    return (0.5 - chi) * phi + s;
+}
+
+/* >>HCBD: the fluid sweep's order and the Tait pressure, for the world and
+   for engines of their own (hcbd_hc_params_sweep_grid) */
+/* Tait pressure at density n (MODEL 6), as the world's density pass
+   computes it */
+static inline double hcbd__tait_p(double P0, double inv_nbar, double n)
+{
+    const double x = n * inv_nbar;
+    double x7 = x * x * x;
+    x7 = x7 * x7 * x;
+    return P0 * (x7 - 1.0);
+}
+
+/* Blocks of the exact fluid sweep (hcbd__hc_fluid_shardlow).  Along an
+   axis either one block, or, for s = 1, 2 or 3, blocks a hair wider than
+   reach/s (so that round-off in the block of a blob cannot let a pair span
+   more than s), a multiple of 2s + 1 of them: blocks 2s + 1 apart share no
+   blob and take one colour.  Every colour is a pass over the whole fluid,
+   so the grid is the one with the fewest colours that still puts 8 blocks
+   in a colour (or, where none does, the most).  Returns the blocks along
+   each axis and their colours; with room, the most blocks any grid of any
+   tilt could have (for sizing). */
+#define HCBD__SWEEP_PER 8
+static int hcbd__hc_sweep_blocks(const hcbd_hc_params *p, double t, int nb[3], int nc[3], int *room)
+{
+    const double cut = 2.0 * p->h;
+    int k[3][4], c[3][4], d, s, o0, o1, o2, best = -1, bcol = 0, bcnt = 0, rm = 1;
+    for (d = 0; d < 3; ++d) {
+        const double reach = d == 0 ? cut * sqrt(1.0 + t * t) : cut;
+        int most = 1;
+        k[d][0] = c[d][0] = 1;
+        for (s = 1; s <= 3; ++s) {
+            double kk = floor(p->L[d] * s / (reach * (1.0 + 1e-9)));
+            c[d][s] = 2 * s + 1;
+            if (kk > 96.0) kk = 96.0;
+            k[d][s] = c[d][s] * (int)(kk / c[d][s]);
+            if (k[d][s] / c[d][s] < 2) k[d][s] = 0; /* one per colour: no use */
+            if (c[d][s] * (int)(floor(p->L[d] * s / (cut * (1.0 + 1e-9))) / c[d][s]) > most)
+                most = c[d][s] * (int)(floor(p->L[d] * s / (cut * (1.0 + 1e-9))) / c[d][s]);
+        }
+        rm *= most > 96 ? 96 : most;
+    }
+    nb[0] = nb[1] = nb[2] = nc[0] = nc[1] = nc[2] = 1;
+    for (o0 = 0; o0 < 4; ++o0)
+        for (o1 = 0; o1 < 4; ++o1)
+            for (o2 = 0; o2 < 4; ++o2) {
+                int cnt, col, key;
+                if (!k[0][o0] || !k[1][o1] || !k[2][o2]) continue;
+                cnt = k[0][o0] / c[0][o0] * (k[1][o1] / c[1][o1]) * (k[2][o2] / c[2][o2]);
+                col = c[0][o0] * c[1][o1] * c[2][o2];
+                key = cnt < HCBD__SWEEP_PER ? cnt : HCBD__SWEEP_PER;
+                if (key > best || (key == best && (col < bcol || (col == bcol && cnt > bcnt)))) {
+                    best = key; bcol = col; bcnt = cnt;
+                    nb[0] = k[0][o0]; nb[1] = k[1][o1]; nb[2] = k[2][o2];
+                    nc[0] = c[0][o0]; nc[1] = c[1][o1]; nc[2] = c[2][o2];
+                }
+            }
+    if (room) *room = rm;
+    return nb[0] * nb[1] * nb[2];
+}
+
+/* The sweep's fine cells (owners in a block go cell by cell, then by id, so
+   that consecutive owners share their partners): about h wide. */
+static int hcbd__hc_fine_cells(const hcbd_hc_params *p, int nf[3])
+{
+    int d;
+    for (d = 0; d < 3; ++d) {
+        const double k = floor(p->L[d] / p->h);
+        nf[d] = k < 1.0 ? 1 : (k > 256.0 ? 256 : (int)k);
+    }
+    return nf[0] * nf[1] * nf[2];
+}
+
+hcbd_result hcbd_hc_params_sweep_grid(const hcbd_hc_params *p, double s, int nb[3], int nc[3], int nf[3], char *msg,
+                               size_t msg_size)
+{
+    hcbd_result r;
+    if (!p || !nb || !nc || !nf) return HCBD_ERR_NULL;
+    if ((r = hcbd_hc_params_check(p, msg, msg_size)) != HCBD_OK) return r;
+    if (!isfinite(s)) {
+        if (msg && msg_size) snprintf(msg, msg_size, "Lees-Edwards offset s = %.17g is not finite", s);
+        return HCBD_ERR_PARAM;
+    }
+    s -= p->L[0] * floor(s / p->L[0] + 0.5);
+    hcbd__hc_fine_cells(p, nf);
+    hcbd__hc_sweep_blocks(p, s / p->L[1], nb, nc, NULL);
+    return HCBD_OK;
+}
+
+/* >>HCBD: lists and pair passes.  Fluid and polymer pairs run over the
+   engine's half lists, owner = the lower id, in the slabs of
+   hcbd__nl_owners, with 64-bit fixed-point sums (exactly opposite on the
+   two sides, so momentum is exact, and the same bits for any thread count
+   or list build).  The coupling passes run over the cross list and its
+   transpose, each particle summing its own partners in increasing id. */
+/* polymer pair forces (transient or Flory-Huggins): what hcbd__hc_poly_forces
+   sums, and what the kept pairs (hcbd_hc_world.pk) are for */
+static int hcbd__hc_poly_pairs(const hcbd_hc_params *p)
+{
+    return p->alpha > 0 || p->p_kuhn > 0;
+}
+
+/* The pair lists are double-buffered: a search writes the spare set and
+   swaps only when it succeeds. */
+static void hcbd__hc_swap_pairs(hcbd_hc_world *w)
+{
+    int32_t *t32;
+    hcbd_real *tr;
+    t32 = w->pair_n; w->pair_n = w->pair_n2; w->pair_n2 = t32;
+    t32 = w->pair_b; w->pair_b = w->pair_b2; w->pair_b2 = t32;
+    tr = w->pair_l; w->pair_l = w->pair_l2; w->pair_l2 = tr;
+    tr = w->pair_eq; w->pair_eq = w->pair_eq2; w->pair_eq2 = tr;
+}
+
+static inline hcbd__box hcbd__hc_box(const hcbd_hc_world *w)
+{
+    return hcbd__box_make(w->p.L, w->core.le_offset, w->core.le_on);
+}
+
+/* poly 1: the polymers (id order); 0: the fluid in id order; 2: the
+   fluid's cell-ordered copy */
+static hcbd__pset hcbd__hc_pset(const hcbd_hc_world *w, int poly)
+{
+    hcbd__pset s;
+    s.x = poly == 1 ? w->px : poly ? w->sx : w->fx;
+    s.y = poly == 1 ? w->py : poly ? w->sy : w->fy;
+    s.z = poly == 1 ? w->pz : poly ? w->sz : w->fz;
+    s.id = poly == 2 ? w->fid : NULL;
+    s.n = poly == 1 ? w->np : w->nf;
+    return s;
+}
+
+/* The cell-ordered copies of the fluid's positions and velocities. */
+static void hcbd__hc_sync(hcbd_hc_world *w)
+{
+    const int n = w->nf, nt = w->p.threads;
+    int s;
+    (void)nt;
+    HCBD__OMP(omp parallel for num_threads(nt) schedule(static))
+    for (s = 0; s < n; ++s) {
+        const int i = w->fid[s];
+        w->sx[s] = w->fx[i]; w->sy[s] = w->fy[i]; w->sz[s] = w->fz[i];
+        w->svx[s] = w->fvx[i]; w->svy[s] = w->fvy[i]; w->svz[s] = w->fvz[i];
+    }
+}
+
+static hcbd_result hcbd__hc_phi_fail(hcbd_hc_world *w, int64_t step, int a, double n)
+{
+    return hcbd__fail(&w->err, HCBD_ERR_PARAM, step, a,
+                      "polymer %d: volume fraction phi = n/n_max = %.17g >= 1 "
+                      "(Flory-Huggins needs phi < 1)", a, n / w->p.n_max);
+}
+
+/* When the polymer list overflows: the first polymer with phi >= 1, found
+   from the cells (one polymer's partners at a time in nb_tmp), or -1. */
+static int hcbd__hc_dense(hcbd_hc_world *w, const hcbd__pset *sp, const hcbd__box *box,
+                          double *n_out)
+{
+    const double rc = w->p.rc, sg = w->p.sigma, A = hcbd__rapid_A(sg, rc);
+    const int room = w->lp.max_pairs < w->np ? (int)w->lp.max_pairs : w->np;
+    int a, k;
+    for (a = 0; a < w->np; ++a) {
+        double r[3], s = A * (rc - sg) * (rc + sg);
+        int cnt;
+        r[0] = w->px[a]; r[1] = w->py[a]; r[2] = w->pz[a];
+        cnt = hcbd__nl_scan(&w->lp, sp, box, r, -1, rc, w->lp.nb_tmp, room);
+        for (k = 0; k < cnt && k < room; ++k) {
+            const int b = w->lp.nb_tmp[k];
+            double d[3];
+            if (b == a) continue;
+            hcbd__delta_box(box, r[0] - w->px[b], r[1] - w->py[b], r[2] - w->pz[b], d);
+            s += hcbd__rapid(sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]), sg, rc, A);
+        }
+        if (!(s < w->p.n_max)) {
+            *n_out = s;
+            return a;
+        }
+    }
+    return -1;
+}
+
+/* Builds the three lists at the present positions unless every blob is
+   still within skin/2 of where the last build saw it. */
+static hcbd_result hcbd__hc_lists(hcbd_hc_world *w, int64_t step)
+{
+    const hcbd__pset sf = hcbd__hc_pset(w, 0), sp = hcbd__hc_pset(w, 1), ss = hcbd__hc_pset(w, 2);
+    const hcbd__box box = hcbd__hc_box(w);
+    const double dm = w->lf.disp_max > w->lp.disp_max ? w->lf.disp_max : w->lp.disp_max;
+    const int nt = w->p.threads;
+    int bad, most = 0, i, a;
+    int32_t *cur = w->scratch;
+    if (w->lf.list_valid && w->lx.list_valid && 2.0 * dm + 3.0 * w->lf.le_drift <= w->core.skin) {
+        hcbd__hc_sync(w);
+        return HCBD_OK;
+    }
+    w->lx.list_valid = 0;
+    hcbd__nl_sort(&w->lf, w->p.L, &sf);
+    for (i = 0; i < w->nf; ++i) {
+        w->fid[i] = w->lf.perm[i];
+        w->fslot[w->fid[i]] = i;
+        w->lf.perm[i] = i;
+    }
+    hcbd__hc_sync(w);
+    if (hcbd__nl_pairs(&w->lf, &w->lf, &ss, &ss, &box, 1, nt) < 0)
+        return hcbd__fail(&w->err, HCBD_ERR_CAPACITY, step, -1,
+                          "fluid neighbour list needs more than max_pairs = %lld pairs (range "
+                          "2h + skin = %g); raise hcbd_hc_world_def.max_pairs",
+                          (long long)w->lf.max_pairs, w->lf.rlist);
+    if ((bad = hcbd__nl_degree(&w->lf, w->nf, w->scratch, &most)) >= 0)
+        return hcbd__fail(&w->err, HCBD_ERR_CAPACITY, step, w->fid[bad],
+                          "fluid blob %d has %d neighbours within %g, more than the %d its "
+                          "fixed-point sums hold", (int)w->fid[bad], most, w->lf.rlist,
+                          HCBD__FIX_DEG);
+    hcbd__nl_sort(&w->lp, w->p.L, &sp);
+    if (hcbd__nl_pairs(&w->lp, &w->lp, &sp, &sp, &box, 1, nt) < 0) {
+        double n = 0;
+        if ((bad = hcbd__hc_dense(w, &sp, &box, &n)) >= 0) return hcbd__hc_phi_fail(w, step, bad, n);
+        return hcbd__fail(&w->err, HCBD_ERR_CAPACITY, step, -1,
+                          "polymer neighbour list needs more than its %lld pairs (range rc + "
+                          "skin = %g): the polymers are far denser than polymer_capacity "
+                          "spread over the box", (long long)w->lp.max_pairs, w->lp.rlist);
+    }
+    if (hcbd__nl_pairs(&w->lx, &w->lf, &sp, &ss, &box, 0, nt) < 0)
+        return hcbd__fail(&w->err, HCBD_ERR_CAPACITY, step, -1,
+                          "polymer-fluid list needs more than its %lld pairs (range rc + skin "
+                          "= %g): the fluid is far denser than nbar", (long long)w->lx.max_pairs,
+                          w->lx.rlist);
+    /* the transposes by counting sort; owners come in increasing id */
+    hcbd__count_sort(w->lp.nb_j, (int)w->lp.npairs, NULL, w->np, w->rv_start, w->rv_p);
+    for (i = 0; i <= w->nf; ++i) w->xt_start[i] = 0;
+    for (i = 0; i < (int)w->lx.npairs; ++i) w->xt_start[w->lx.nb_j[i] + 1]++;
+    for (i = 0; i < w->nf; ++i) {
+        w->xt_start[i + 1] += w->xt_start[i];
+        cur[i] = w->xt_start[i];
+    }
+    for (a = 0; a < w->np; ++a)
+        for (i = w->lx.nb_start[a]; i < w->lx.nb_start[a + 1]; ++i) {
+            const int k = cur[w->lx.nb_j[i]]++;
+            w->xt_a[k] = a;
+            w->xt_p[k] = i;
+        }
+    hcbd__nl_done(&w->lf, &sf);
+    hcbd__nl_done(&w->lp, &sp);
+    w->lx.list_valid = 1;
+    return HCBD_OK;
+}
+
+/* Forget the lists (positions were set from outside). */
+static void hcbd__hc_lists_stale(hcbd_hc_world *w)
+{
+    w->lf.list_valid = w->lp.list_valid = w->lx.list_valid = 0;
+}
+
+
+/* Fluid density weights w(r_ij) (MODEL 6) into aW, each pair once, in
+   the traversal's lean form (its own sums: q[0] the owner's) */
+typedef struct hcbd__hc_dens_ctx {
+    hcbd_hc_world *w;
+    double ih, cq;
+} hcbd__hc_dens_ctx;
+
+HCBD__INLINE void hcbd__hc_dens_pairs(void *ctx, int i, const hcbd__near *c, int m, hcbd__acc *a,
+                                     hcbd__terms *u)
+{
+    const hcbd__hc_dens_ctx *d = (const hcbd__hc_dens_ctx *)ctx;
+    int64_t *HCBD__RESTRICT aW = d->w->aW, v[HCBD__CHUNK];
+    int t;
+    (void)i; (void)u;
+    HCBD__OMP(omp simd)
+    for (t = 0; t < m; ++t) v[t] = hcbd__fix(d->cq * hcbd__m4u(sqrt(c->r2[t]) * d->ih));
+    for (t = 0; t < m; ++t) {
+        a->q[0] += v[t];
+        aW[c->j[t]] += v[t];
+    }
+}
+
+HCBD__INLINE int hcbd__hc_dens_end(void *ctx, int i, hcbd__acc *a)
+{
+    ((hcbd__hc_dens_ctx *)ctx)->w->aW[i] += a->q[0];
+    return INT_MAX;
+}
+
+/* the fluid's half list over its cell-ordered copy, within range */
+static inline hcbd__trav hcbd__hc_trav_f(const hcbd_hc_world *w, double range)
+{
+    return hcbd__trav_make(&w->lf, w->sx, w->sy, w->sz, w->sx, w->sy, w->sz, hcbd__hc_box(w), range);
+}
+
+static int hcbd__hc_dens_owners(void *ctx, int q0, int q1)
+{
+    hcbd_hc_world *w = (hcbd_hc_world *)ctx;
+    const double h = w->p.h;
+    hcbd__trav T = hcbd__hc_trav_f(w, 2.0 * h);
+    hcbd__hc_dens_ctx d;
+    d.w = w;
+    d.ih = 1.0 / h;
+    d.cq = w->core.qW / (4.0 * HCBD__PI * h * h * h);
+    return hcbd__traverse(&T, w->lf.perm, q0, q1, &d, hcbd__ev_zero, hcbd__hc_dens_pairs, hcbd__hc_dens_end);
+}
+
+/* Fluid densities and Tait pressures (MODEL 6). */
+static void hcbd__hc_fluid_density(hcbd_hc_world *w)
+{
+    const int n = w->nf, nt = w->p.threads;
+    const double h = w->p.h, w0 = 1.0 / (HCBD__PI * h * h * h), inv_q = 1.0 / w->core.qW;
+    const double inv_nbar = 1.0 / w->p.nbar, P0 = w->p.P0;
+    int i, bad = INT_MAX;
+    (void)nt;
+    hcbd__zero64(w->aW, n);
+    hcbd__nl_owners(&w->lf, n, nt, w, hcbd__hc_dens_owners);
+    HCBD__OMP(omp parallel for num_threads(nt) schedule(static) reduction(min:bad))
+    for (i = 0; i < n; ++i) { /* i: slot */
+        const double s = w0 + (double)w->aW[i] * inv_q, x = s * inv_nbar, P = hcbd__tait_p(P0, inv_nbar, s);
+        const int id = w->fid[i];
+        if (!(x > 1.0 / 3.0 && x < 3.0) && id < bad) bad = id;
+        w->fn[id] = w->sn[i] = (hcbd_real)s;
+        w->sIn[i] = (hcbd_real)(1.0 / s);
+        w->fP[id] = (hcbd_real)P;
+        w->fPn2[id] = w->sP[i] = (hcbd_real)(P / (s * s));
+    }
+    w->dens_bad = bad == INT_MAX ? -1 : bad;
+}
+
+/* Polymer pairs run over the half list (owner a < partner b) in two
+   steps: the owner evaluates each pair within rc once, and the traversal
+   keeps its weight (pw) or force (pf) per list entry, zero for the skin's;
+   then each polymer sums its own pairs and, through the reverse list (its
+   pairs as a partner, owners in increasing id; hcbd__rev_add), the
+   others.  Double
+   precision, a fixed order set by the ids alone, any thread count: each
+   owner writes only its own entries, so the owners are shared out in
+   contiguous ranges, and counters are summed per thread. */
+typedef struct hcbd__hc_poly_ctx {
+    hcbd_hc_world *w;
+    double rc, sg, A, cfh, alpha;
+    size_t cap;
+    int tr, fc, stress;
+    int64_t created, total, coinc; /* per thread */
+    int most;
+} hcbd__hc_poly_ctx;
+
+static hcbd__hc_poly_ctx hcbd__hc_poly_ctx_of(hcbd_hc_world *w)
+{
+    hcbd__hc_poly_ctx c;
+    memset(&c, 0, sizeof c);
+    c.w = w;
+    c.rc = w->p.rc;
+    c.sg = w->p.sigma;
+    c.A = hcbd__rapid_A(c.sg, c.rc);
+    c.cfh = w->p.p_kuhn * w->p.kT / w->p.n_max;
+    c.alpha = w->p.alpha;
+    c.cap = (size_t)w->pair_cap;
+    c.tr = w->transient;
+    c.fc = w->has_fc;
+    c.stress = w->core.stress_on;
+    return c;
+}
+
+/* the polymers' half list within rc, keeping ne values per entry in ent */
+static inline hcbd__trav hcbd__hc_trav_p(const hcbd_hc_world *w, double *ent, int ne)
+{
+    hcbd__trav T = hcbd__trav_make(&w->lp, w->px, w->py, w->pz, w->px, w->py, w->pz, hcbd__hc_box(w), w->p.rc);
+    T.ent = ent;
+    T.ne = ne;
+    return T;
+}
+
+/* entries: 0 the weight; acc: r[0] the owner's sum */
+HCBD__INLINE void hcbd__hc_pdens_pairs(void *ctx, int a, const hcbd__near *c, int m, hcbd__acc *acc,
+                                      hcbd__terms *u)
+{
+    const hcbd__hc_poly_ctx *s = (const hcbd__hc_poly_ctx *)ctx;
+    double *HCBD__RESTRICT wt = u->e[0];
+    int t;
+    (void)a;
+    HCBD__OMP(omp simd)
+    for (t = 0; t < m; ++t) wt[t] = hcbd__rapid(sqrt(c->r2[t]), s->sg, s->rc, s->A);
+    for (t = 0; t < m; ++t) acc->r[0] += wt[t];
+}
+
+HCBD__INLINE int hcbd__hc_pdens_end(void *ctx, int a, hcbd__acc *acc)
+{
+    ((hcbd__hc_poly_ctx *)ctx)->w->pown[a] = acc->r[0];
+    return INT_MAX;
+}
+
+/* RaPiD densities and mu(phi) (MODEL 8), keeping the pairs within rc for
+   hcbd__hc_poly_forces (w->pk).  Returns the first id with phi >= 1, or
+   -1. */
+static int hcbd__hc_poly_density(hcbd_hc_world *w)
+{
+    const int n = w->np, nt = w->p.threads, fc = w->has_fc;
+    const double rc = w->p.rc, sg = w->p.sigma, A = hcbd__rapid_A(sg, rc);
+    const double w0 = A * (rc - sg) * (rc + sg), inv_nmax = 1.0 / w->p.n_max;
+    hcbd__trav T = hcbd__hc_trav_p(w, w->pw, 1);
+    const hcbd__hc_poly_ctx base = hcbd__hc_poly_ctx_of(w);
+    int q, bad = INT_MAX;
+    (void)nt;
+    if (hcbd__hc_poly_pairs(&w->p)) T.kout = &w->pk; /* else none allocated, none read */
+    HCBD__OMP(omp parallel num_threads(nt))
+    {
+        hcbd__hc_poly_ctx s = base;
+        int64_t lo, hi;
+        hcbd__share(n, &lo, &hi);
+        hcbd__traverse(&T, w->lp.perm, (int)lo, (int)hi, &s, hcbd__ev_zero, hcbd__hc_pdens_pairs,
+                       hcbd__hc_pdens_end);
+    }
+    HCBD__OMP(omp parallel for num_threads(nt) schedule(static) reduction(min:bad))
+    for (q = 0; q < n; ++q) {
+        const int i = w->lp.perm[q];
+        double s = w0 + w->pown[i], phi;
+        hcbd__rev_add(w->rv_start, w->rv_p, w->pw, 1, i, 1.0, &s);
+        phi = s * inv_nmax;
+        w->pn[i] = (hcbd_real)s;
+        if (!(phi < 1.0)) {
+            if (i < bad) bad = i;
+            w->pmu[i] = 0;
+        } else {
+            w->pmu[i] = fc ? hcbd__mu((hcbd_real)phi, (hcbd_real)w->p.chi) : (hcbd_real)0;
+        }
+    }
+    return bad == INT_MAX ? -1 : bad;
+}
+
+
+static int hcbd__hc_find(const hcbd_hc_world *w, int a, int b)
+{
+    const int32_t *l = w->pair_b + (size_t)a * w->pair_cap;
+    int lo = 0, hi = w->pair_n[a];
+    while (lo < hi) {
+        int mid = (lo + hi) / 2;
+        if (l[mid] < b) lo = mid + 1;
+        else hi = mid;
+    }
+    return lo < w->pair_n[a] && l[lo] == b ? lo : -1;
+}
+
+/* Polymer forces, Flory-Huggins and transient (MODEL 8), each pair once,
+   fused with the search for the transient pairs: the partners b > a within
+   rc come in increasing id and are merged with the old list, so a
+   persisting pair keeps its lambda, a new one starts at lambda_eq and a
+   departed one is dropped; the new list goes to the spare buffers.
+   acc: q[0] the pairs found, q[1] the old list's cursor; r[0..2] the
+   force, r[3] r[4] the conservative and transient stress. */
+HCBD__INLINE void hcbd__hc_pforce_pairs(void *ctx, int a, const hcbd__near *c, int m, hcbd__acc *acc,
+                                       hcbd__terms *u)
+{
+    hcbd__hc_poly_ctx *s = (hcbd__hc_poly_ctx *)ctx;
+    hcbd_hc_world *w = s->w;
+    const double rc = s->rc, sg = s->sg, A = s->A, mua = w->pmu[a], cfh = s->cfh, al = s->alpha;
+    const double r0 = 1e-12 * sg; /* below: no direction, counted, no force */
+    const size_t cap = s->cap, o0 = (size_t)a * cap;
+    const int fc = s->fc, tr = s->tr, on = tr && !w->fresh_pairs ? w->pair_n[a] : 0;
+    const int32_t *ob = w->pair_b + o0;
+    const hcbd_real *ol = w->pair_l + o0, *HCBD__RESTRICT mu = w->pmu;
+    int32_t *nb = w->pair_b2 + o0;
+    hcbd_real *nl = w->pair_l2 + o0, *ne = w->pair_eq2 + o0;
+    /* the merge with the old list goes pair by pair; the forces, apart
+       from it, in SIMD loops (the same operations on each pair, so the
+       same bits), and their sums again in order */
+    double r[HCBD__CHUNK], leq[HCBD__CHUNK], lam[HCBD__CHUNK], fr[HCBD__CHUNK], ft[HCBD__CHUNK];
+    double *HCBD__RESTRICT fx = u->e[0], *HCBD__RESTRICT fy = u->e[1], *HCBD__RESTRICT fz = u->e[2];
+    int t;
+    HCBD__OMP(omp simd)
+    for (t = 0; t < m; ++t) {
+        r[t] = sqrt(c->r2[t]);
+        leq[t] = hcbd__leq(r[t], rc);
+        lam[t] = 0;
+    }
+    if (tr)
+        for (t = 0; t < m; ++t) {
+            const int b = c->j[t];
+            int o = (int)acc->q[1];
+            while (o < on && ob[o] < b) ++o;
+            acc->q[1] = o;
+            if (o < on && ob[o] == b) {
+                lam[t] = ol[o];
+            } else {
+                lam[t] = (hcbd_real)leq[t];
+                ++s->created;
+            }
+            if (acc->q[0] < (int64_t)cap) {
+                nb[acc->q[0]] = b;
+                ne[acc->q[0]] = (hcbd_real)leq[t];
+                nl[acc->q[0]] = (hcbd_real)lam[t];
+            }
+            acc->q[0]++;
+        }
+    HCBD__OMP(omp simd)
+    for (t = 0; t < m; ++t) {
+        const double rt = r[t];
+        const int live = !(rt < r0);
+        const double a1 = fc ? hcbd__flory_fr(cfh, mua, mu[c->j[t]], hcbd__rapid_dr(rt, sg, rc, A), rt) : 0.0;
+        const double a2 = tr ? hcbd__spring_fr(al, lam[t], rt, rc) : 0.0;
+        fr[t] = a1;
+        ft[t] = a2;
+        fx[t] = live ? (a1 + a2) * c->x[t] : 0.0;
+        fy[t] = live ? (a1 + a2) * c->y[t] : 0.0;
+        fz[t] = live ? (a1 + a2) * c->z[t] : 0.0;
+    }
+    for (t = 0; t < m; ++t) {
+        if (r[t] < r0) {
+            ++s->coinc;
+            continue;
+        }
+        acc->r[0] += fx[t];
+        acc->r[1] += fy[t];
+        acc->r[2] += fz[t];
+        if (s->stress) {
+            acc->r[3] += c->y[t] * fr[t] * c->x[t];
+            acc->r[4] += c->y[t] * ft[t] * c->x[t];
+        }
+    }
+}
+
+HCBD__INLINE int hcbd__hc_pforce_end(void *ctx, int a, hcbd__acc *acc)
+{
+    hcbd__hc_poly_ctx *s = (hcbd__hc_poly_ctx *)ctx;
+    hcbd_hc_world *w = s->w;
+    const int cnt = (int)acc->q[0];
+    w->pFx[a] = (hcbd_real)acc->r[0];
+    w->pFy[a] = (hcbd_real)acc->r[1];
+    w->pFz[a] = (hcbd_real)acc->r[2];
+    if (s->stress) {
+        w->ps[3 * a] = acc->r[3];
+        w->ps[3 * a + 1] = acc->r[4];
+    }
+    if (!s->tr) return INT_MAX;
+    if (cnt > s->most) s->most = cnt;
+    s->total += cnt;
+    w->pair_n2[a] = cnt;
+    return cnt > (int)s->cap ? a : INT_MAX;
+}
+
+/* Over the pairs hcbd__hc_poly_density kept, so only right after it, at
+   the same positions: the gather and its minimum image are done once.
+   Returns the first polymer whose transient pairs overflow pair_cap (with
+   the largest count in *need), or -1; on success the new pair list
+   replaces the old. */
+static int hcbd__hc_poly_forces(hcbd_hc_world *w, int *need)
+{
+    const int n = w->np, nt = w->p.threads;
+    hcbd__trav T = hcbd__hc_trav_p(w, w->pf, 3);
+    const hcbd__hc_poly_ctx base = hcbd__hc_poly_ctx_of(w);
+    int q, bad = INT_MAX, most = 0;
+    int64_t created = 0, total = 0, coinc = 0;
+    (void)nt;
+    T.kin = &w->pk;
+    if (!hcbd__hc_poly_pairs(&w->p)) { /* no polymer pair forces: nothing to sum */
+        memset(w->pFx, 0, (size_t)n * sizeof(hcbd_real));
+        memset(w->pFy, 0, (size_t)n * sizeof(hcbd_real));
+        memset(w->pFz, 0, (size_t)n * sizeof(hcbd_real));
+        if (base.stress)
+            for (q = 0; q < n; ++q) w->ps[3 * q] = w->ps[3 * q + 1] = 0;
+        *need = 0;
+        return -1;
+    }
+    HCBD__OMP(omp parallel num_threads(nt) reduction(min:bad) reduction(max:most) reduction(+:created) reduction(+:total) reduction(+:coinc))
+    {
+        hcbd__hc_poly_ctx s = base;
+        int64_t lo, hi;
+        int b;
+        hcbd__share(n, &lo, &hi);
+        b = hcbd__traverse(&T, w->lp.perm, (int)lo, (int)hi, &s, hcbd__ev_zero, hcbd__hc_pforce_pairs,
+                           hcbd__hc_pforce_end);
+        if (b < bad) bad = b;
+        if (s.most > most) most = s.most;
+        created += s.created;
+        total += s.total;
+        coinc += s.coinc;
+    }
+    *need = most;
+    if (bad != INT_MAX) return bad;
+    HCBD__OMP(omp parallel for num_threads(nt) schedule(static))
+    for (q = 0; q < n; ++q) {
+        const int a = w->lp.perm[q];
+        double F[3];
+        F[0] = w->pFx[a]; F[1] = w->pFy[a]; F[2] = w->pFz[a];
+        hcbd__rev_add(w->rv_start, w->rv_p, w->pf, 3, a, -1.0, F);
+        w->pFx[a] = (hcbd_real)F[0];
+        w->pFy[a] = (hcbd_real)F[1];
+        w->pFz[a] = (hcbd_real)F[2];
+    }
+    w->n_coincident += coinc;
+    if (base.tr) {
+        hcbd__hc_swap_pairs(w);
+        w->npairs = total;
+        w->n_created += created;
+    }
+    return -1;
+}
+
+/* Interpolated fluid velocity and drift velocity of every polymer (MODEL 7),
+   over the cross list: each polymer's fluid blobs within rc, whose RaPiD
+   weights it keeps (xw, zero for the skin's entries) for the
+   redistribution.  Relative to the first neighbour's velocity, so a
+   uniform flow is reproduced bit for bit.  acc: q[0] no neighbour yet;
+   r[0] the psi normaliser S, r[1..3] the weighted velocity differences,
+   r[4..6] the reference velocity, r[7] the stress lever. */
+typedef struct hcbd__hc_interp_ctx {
+    hcbd_hc_world *w;
+    double rc, sg, A, inv_xi, vj;
+    int shep, stress;
+} hcbd__hc_interp_ctx;
+
+HCBD__INLINE void hcbd__hc_interp_begin(void *ctx, int a, hcbd__acc *acc)
+{
+    (void)ctx; (void)a;
+    memset(acc, 0, sizeof *acc);
+    acc->q[0] = 1;
+}
+
+HCBD__INLINE void hcbd__hc_interp_pairs(void *ctx, int a, const hcbd__near *c, int m, hcbd__acc *acc,
+                                       hcbd__terms *u)
+{
+    const hcbd__hc_interp_ctx *s = (const hcbd__hc_interp_ctx *)ctx;
+    const hcbd_hc_world *w = s->w;
+    const hcbd_real *HCBD__RESTRICT sn = w->sn;
+    double *HCBD__RESTRICT wr = u->e[0], wn[HCBD__CHUNK];
+    int t;
+    (void)a;
+    HCBD__OMP(omp simd)
+    for (t = 0; t < m; ++t) {
+        wr[t] = hcbd__rapid(sqrt(c->r2[t]), s->sg, s->rc, s->A);
+        wn[t] = wr[t] / sn[c->j[t]];
+    }
+    for (t = 0; t < m; ++t) {
+        const int i = c->j[t]; /* a fluid slot */
+        const double wt = wn[t];
+        double v[3];
+        /* the image of blob i moves with the velocity of its layer */
+        v[0] = w->svx[i] + c->k[t] * s->vj;
+        v[1] = w->svy[i];
+        v[2] = w->svz[i];
+        if (acc->q[0]) {
+            acc->r[4] = v[0]; acc->r[5] = v[1]; acc->r[6] = v[2];
+            acc->q[0] = 0;
+        }
+        acc->r[0] += wt;
+        acc->r[1] += wt * (v[0] - acc->r[4]);
+        acc->r[2] += wt * (v[1] - acc->r[5]);
+        acc->r[3] += wt * (v[2] - acc->r[6]);
+        acc->r[7] -= wt * c->y[t];
+    }
+}
+
+HCBD__INLINE int hcbd__hc_interp_end(void *ctx, int a, hcbd__acc *acc)
+{
+    const hcbd__hc_interp_ctx *s = (const hcbd__hc_interp_ctx *)ctx;
+    hcbd_hc_world *w = s->w;
+    double S = acc->r[0], v[3];
+    const double *dv = acc->r + 1, *vref = acc->r + 4;
+    const int none = !(S > 0);
+    if (none) S = 1;
+    if (s->shep) {
+        v[0] = vref[0] + dv[0] / S; v[1] = vref[1] + dv[1] / S; v[2] = vref[2] + dv[2] / S;
+    } else {
+        v[0] = S * vref[0] + dv[0]; v[1] = S * vref[1] + dv[1]; v[2] = S * vref[2] + dv[2];
+    }
+    w->pS[a] = (hcbd_real)(s->shep ? S : 1.0);
+    w->pux[a] = (hcbd_real)(v[0] + w->pFx[a] * s->inv_xi);
+    w->puy[a] = (hcbd_real)(v[1] + w->pFy[a] * s->inv_xi);
+    w->puz[a] = (hcbd_real)(v[2] + w->pFz[a] * s->inv_xi);
+    if (s->stress) w->ps[3 * a + 2] = acc->r[7] / (s->shep ? S : 1.0) * w->pFx[a];
+    return none ? a : INT_MAX;
+}
+
+/* Returns the first polymer with no fluid blob within rc, or -1. */
+static int hcbd__hc_interp(hcbd_hc_world *w)
+{
+    const int n = w->np, nt = w->p.threads;
+    hcbd__trav T = hcbd__trav_make(&w->lx, w->px, w->py, w->pz, w->sx, w->sy, w->sz, hcbd__hc_box(w),
+                                   w->p.rc);
+    hcbd__hc_interp_ctx s;
+    int bad = INT_MAX;
+    (void)nt;
+    s.w = w;
+    s.rc = w->p.rc;
+    s.sg = w->p.sigma;
+    s.A = hcbd__rapid_A(s.sg, s.rc);
+    s.inv_xi = 1.0 / w->p.xi;
+    s.vj = w->core.le_vjump;
+    s.shep = w->p.coupling == HCBD_COUPLE_SHEPARD;
+    s.stress = w->core.stress_on;
+    T.ent = w->xw; /* the weights, for the redistribution */
+    T.ne = 1;
+    HCBD__OMP(omp parallel num_threads(nt) reduction(min:bad))
+    {
+        int64_t lo, hi;
+        hcbd__share(n, &lo, &hi);
+        bad = hcbd__traverse(&T, w->lp.perm, (int)lo, (int)hi, &s, hcbd__hc_interp_begin, hcbd__hc_interp_pairs,
+                             hcbd__hc_interp_end);
+    }
+    return bad == INT_MAX ? -1 : bad;
+}
+
+/* Polymer forces redistributed onto the fluid blobs with the same psi,
+   each blob over its polymers in increasing id (the transpose of the
+   cross list, the traversal's third source), with the weights the
+   interpolation kept.  acc: r[0..2] the blob's force. */
+HCBD__INLINE void hcbd__hc_redist_pairs(void *ctx, int i, const hcbd__near *c, int m, hcbd__acc *acc,
+                                       hcbd__terms *u)
+{
+    const hcbd_hc_world *w = (const hcbd_hc_world *)ctx;
+    int t;
+    (void)u;
+    for (t = 0; t < m; ++t) {
+        const int a = c->j[t];
+        const double wt = w->xw[c->e[t]], psi = wt / w->sn[i] / w->pS[a];
+        if (wt == 0) continue; /* beyond rc */
+        acc->r[0] += psi * w->pFx[a];
+        acc->r[1] += psi * w->pFy[a];
+        acc->r[2] += psi * w->pFz[a];
+    }
+}
+
+HCBD__INLINE int hcbd__hc_redist_end(void *ctx, int i, hcbd__acc *acc)
+{
+    hcbd_hc_world *w = (hcbd_hc_world *)ctx;
+    const int id = w->fid[i];
+    w->fax[id] = (hcbd_real)acc->r[0];
+    w->fay[id] = (hcbd_real)acc->r[1];
+    w->faz[id] = (hcbd_real)acc->r[2];
+    return INT_MAX;
+}
+
+static void hcbd__hc_redistribute(hcbd_hc_world *w)
+{
+    const int nt = w->p.threads;
+    hcbd__trav T;
+    (void)nt;
+    memset(&T, 0, sizeof T);
+    T.start = w->xt_start;
+    T.nb = w->xt_a;
+    T.emap = w->xt_p;
+    T.ox = T.oy = T.oz = w->sx; /* not read: no geometry */
+    HCBD__OMP(omp parallel num_threads(nt))
+    {
+        int64_t lo, hi;
+        hcbd__share(w->nf, &lo, &hi);
+        hcbd__traverse(&T, w->lf.perm, (int)lo, (int)hi, w, hcbd__ev_zero, hcbd__hc_redist_pairs,
+                       hcbd__hc_redist_end);
+    }
+}
+
+
+/* HCBD_PAIR_SHARDLOW for the fluid: each pair's Morris friction and noise
+   solved exactly in turn (the pair's relative velocity is an Ornstein-
+   Uhlenbeck process with rate 2 f/m and variance 2 kT/m, as in
+   hcbd__shardlow).  The viscous and noise stresses go together into the
+   viscous column.
+
+   The order of the sweep: each blob, by its present position relative to
+   blob 0, lies in a block of a grid (hcbd__hc_sweep_axis: along each axis
+   blocks at least 2h/s wide, a multiple of 2s + 1 of them, or a single
+   one), and a pair belongs to the block of its owner (the lower id).  A
+   pair reaches at most s blocks along the axis, so blocks of one colour
+   (each index mod 2s + 1) never touch the same blob: the colours run in
+   turn, the blocks of a colour side by side; inside a block, owners by
+   increasing id, partners by increasing id.  Under Lees-Edwards the
+   blocks are cut along u = x - t y, t = s/Ly with the offset s taken in
+   [-Lx/2, Lx/2): an image across the sheared boundary has the same u, so
+   the grid is periodic there too, and a pair within 2h spans at most
+   2h sqrt(1 + t^2) in u, which the blocks along x are made wide enough
+   for (their count may change as the offset moves).  The order is set by
+   positions and ids alone: the bits depend neither on the thread count,
+   nor on the storage, nor on when the lists were built.  A box too small
+   for two blocks of one colour along any axis sweeps in the same order on
+   one thread. */
+/* The sweep's pairs, fused with their pressure forces (which need no
+   velocity, so they join the fixed-point sums in any order).  Per chunk of
+   partners the velocity-free part (kernel, rate, 1 - e, pressure) comes
+   first, in a loop without dependences; the chain of velocity updates
+   follows. */
+typedef struct hcbd__hc_sweep_ctx {
+    hcbd_hc_world *w;
+    double dt, ih, c1h, m, inv_m, kT, vj, rate0, qF, lim;
+    uint64_t skey;
+    int noise, stress;
+} hcbd__hc_sweep_ctx;
+
+/* the traversal's lean form: acc q[0..2] the owner's pressure force
+   (fixed point), r[0..2] its velocity (in registers: no partner is the
+   owner itself), r[3] r[4] its viscous and pressure stress */
+HCBD__INLINE void hcbd__hc_sweep_begin(void *ctx, int i, hcbd__acc *a)
+{
+    const hcbd_hc_world *w = ((const hcbd__hc_sweep_ctx *)ctx)->w;
+    memset(a, 0, sizeof *a);
+    a->r[0] = w->svx[i]; a->r[1] = w->svy[i]; a->r[2] = w->svz[i];
+}
+
+HCBD__INLINE void hcbd__hc_sweep_pairs(void *ctx, int i, const hcbd__near *c, int mm, hcbd__acc *a,
+                                      hcbd__terms *u)
+{
+    const hcbd__hc_sweep_ctx *s = (const hcbd__hc_sweep_ctx *)ctx;
+    hcbd_hc_world *w = s->w;
+    const double m = s->m, inv_m = s->inv_m, vj = s->vj, qF = s->qF, lim = s->lim;
+    const double rate = s->rate0 * w->sIn[i], Pi = w->sP[i]; /* 2 f dt/m over wdr/n_j */
+    hcbd_real *HCBD__RESTRICT vx = w->svx, *HCBD__RESTRICT vy = w->svy, *HCBD__RESTRICT vz = w->svz;
+    const hcbd_real *HCBD__RESTRICT In = w->sIn, *HCBD__RESTRICT Pn2 = w->sP;
+    const int32_t *HCBD__RESTRICT fid = w->fid;
+    const int32_t idi = fid[i];
+    double vxi = a->r[0], vyi = a->r[1], vzi = a->r[2], x[HCBD__CHUNK], om[HCBD__CHUNK], f0[HCBD__CHUNK];
+    int64_t u0[HCBD__CHUNK], u1[HCBD__CHUNK], u2[HCBD__CHUNK];
+    int64_t *HCBD__RESTRICT aFx = w->aF[0], *HCBD__RESTRICT aFy = w->aF[1], *HCBD__RESTRICT aFz = w->aF[2];
+    int t, bad = 0;
+    (void)u;
+    HCBD__OMP(omp simd reduction(|:bad))
+    for (t = 0; t < mm; ++t) {
+        const int j = c->j[t];
+        const double wdr = hcbd__m4_wdr(sqrt(c->r2[t]) * s->ih, s->c1h);
+        const double fp = hcbd__tait_fr(Pi, Pn2[j], wdr);
+        const double F0 = fp * c->x[t], F1 = fp * c->y[t], F2 = fp * c->z[t];
+        x[t] = rate * wdr * In[j];
+        om[t] = hcbd__one_minus_exp_series(x[t]);
+        bad |= !((fabs(F0) <= lim) & (fabs(F1) <= lim) & (fabs(F2) <= lim));
+        f0[t] = F0;
+        u0[t] = hcbd__fix(F0 * qF); u1[t] = hcbd__fix(F1 * qF); u2[t] = hcbd__fix(F2 * qF);
+    }
+    a->bad |= bad;
+    for (t = 0; t < mm; ++t)
+        if (!(x[t] < 0.125)) om[t] = -expm1(-x[t]);
+    for (t = 0; t < mm; ++t) {
+        const int j = c->j[t];
+        const double cc = 0.5 * m * om[t];
+        double P[3];
+        P[0] = -cc * (vxi - vx[j] - c->k[t] * vj);
+        P[1] = -cc * (vyi - vy[j]);
+        P[2] = -cc * (vzi - vz[j]);
+        if (s->noise) {
+            const double b = sqrt(0.5 * s->kT * m * om[t] * (2.0 - om[t]));
+            double z3[3];
+            hcbd__deviates3(w->core.zig, HCBD_NOISE_GAUSS, hcbd__pair_key(s->skey, idi, fid[j]), z3);
+            P[0] += b * z3[0];
+            P[1] += b * z3[1];
+            P[2] += b * z3[2];
+        }
+        vxi = (hcbd_real)(vxi + P[0] * inv_m); vx[j] = (hcbd_real)(vx[j] - P[0] * inv_m);
+        vyi = (hcbd_real)(vyi + P[1] * inv_m); vy[j] = (hcbd_real)(vy[j] - P[1] * inv_m);
+        vzi = (hcbd_real)(vzi + P[2] * inv_m); vz[j] = (hcbd_real)(vz[j] - P[2] * inv_m);
+        a->q[0] += u0[t]; aFx[j] -= u0[t];
+        a->q[1] += u1[t]; aFy[j] -= u1[t];
+        a->q[2] += u2[t]; aFz[j] -= u2[t];
+        a->r[3] += c->y[t] * P[0];
+        a->r[4] += c->y[t] * f0[t];
+    }
+    a->r[0] = vxi; a->r[1] = vyi; a->r[2] = vzi;
+}
+
+HCBD__INLINE int hcbd__hc_sweep_end(void *ctx, int i, hcbd__acc *a)
+{
+    const hcbd__hc_sweep_ctx *s = (const hcbd__hc_sweep_ctx *)ctx;
+    hcbd_hc_world *w = s->w;
+    const int32_t idi = w->fid[i];
+    w->svx[i] = (hcbd_real)a->r[0]; w->svy[i] = (hcbd_real)a->r[1]; w->svz[i] = (hcbd_real)a->r[2];
+    w->aF[0][i] += a->q[0]; w->aF[1][i] += a->q[1]; w->aF[2][i] += a->q[2];
+    if (s->stress) {
+        w->fs[3 * idi] = a->r[4];
+        w->fs[3 * idi + 1] = a->r[3] / s->dt;
+        w->fs[3 * idi + 2] = 0;
+    }
+    return a->bad ? idi : INT_MAX;
+}
+
+/* one block of the sweep, for hcbd__colours */
+HCBD__NO_SLP static int hcbd__hc_sweep_block(void *ctx, int b)
+{
+    const hcbd__block_job *j = (const hcbd__block_job *)ctx;
+    return hcbd__traverse(j->T, j->list, j->start[b], j->start[b + 1], j->pass, hcbd__hc_sweep_begin,
+                          hcbd__hc_sweep_pairs, hcbd__hc_sweep_end);
+}
+
+static int hcbd__hc_fluid_shardlow(hcbd_hc_world *w, double dt, uint64_t skey)
+{
+    const int n = w->nf, nt = w->p.threads;
+    const double *L = w->p.L;
+    const double s = w->core.le_on ? w->core.le_offset - L[0] * floor(w->core.le_offset / L[0] + 0.5) : 0.0;
+    const double t = s / L[1];
+    const double h = w->p.h;
+    const hcbd__trav T = hcbd__hc_trav_f(w, 2.0 * h);
+    hcbd__hc_sweep_ctx sc;
+    /* blocks move with blob 0, so that a boosted copy of the world sweeps
+       in the same order (Galilean invariance of the trajectory) */
+    const int o = w->fslot[0];
+    const double x0 = w->sx[o], y0 = w->sy[o], z0 = w->sz[o];
+    int32_t *HCBD__RESTRICT blk = w->sw_blk, *HCBD__RESTRICT start = w->sw_start;
+    int32_t *HCBD__RESTRICT list = w->sw_list, *HCBD__RESTRICT fine = w->sw_fine;
+    int32_t *HCBD__RESTRICT tmp = w->sw_tmp, *HCBD__RESTRICT fstart = w->sw_fstart;
+    int nb[3], nc[3], nfc[3], nblk, nfine, q, worst = INT_MAX;
+    double f[3], g[3];
+    (void)nt;
+    sc.w = w;
+    sc.dt = dt;
+    sc.ih = 1.0 / h;
+    sc.c1h = 1.0 / (4.0 * HCBD__PI * h * h * h * h * h);
+    sc.m = w->m; sc.inv_m = w->inv_m; sc.kT = w->p.kT; sc.vj = w->core.le_vjump;
+    sc.rate0 = 2.0 * dt * w->inv_m * 2.0 * w->p.eta;
+    sc.qF = w->core.qF; sc.lim = w->core.limF;
+    sc.skey = skey;
+    sc.noise = w->noise_f;
+    sc.stress = w->core.stress_on;
+    nblk = hcbd__hc_sweep_blocks(&w->p, t, nb, nc, NULL);
+    nfine = hcbd__hc_fine_cells(&w->p, nfc);
+    f[0] = nb[0] / L[0]; f[1] = nb[1] / L[1]; f[2] = nb[2] / L[2];
+    g[0] = nfc[0] / L[0]; g[1] = nfc[1] / L[1]; g[2] = nfc[2] / L[2];
+    HCBD__OMP(omp parallel for num_threads(nt) schedule(static))
+    for (q = 0; q < n; ++q) {
+        double r[3];
+        int c[3], e[3], d;
+        r[1] = w->sy[q] - y0;
+        r[0] = w->sx[q] - x0 - t * r[1];
+        r[2] = w->sz[q] - z0;
+        for (d = 0; d < 3; ++d) {
+            r[d] -= L[d] * floor(r[d] / L[d]);
+            c[d] = (int)(r[d] * f[d]);
+            if (c[d] > nb[d] - 1) c[d] = nb[d] - 1;
+            if (c[d] < 0) c[d] = 0;
+            e[d] = (int)(r[d] * g[d]);
+            if (e[d] > nfc[d] - 1) e[d] = nfc[d] - 1;
+            if (e[d] < 0) e[d] = 0;
+        }
+        blk[q] = (c[2] * nb[1] + c[1]) * nb[0] + c[0];
+        fine[q] = (e[2] * nfc[1] + e[1]) * nfc[0] + e[0];
+    }
+    /* two stable counting sorts: by fine cell (filled in id order), then
+       by block, so that a block's owners go fine cell by fine cell */
+    hcbd__count_sort(fine, n, w->fslot, nfine, fstart, tmp);
+    hcbd__count_sort(blk, n, tmp, nblk, start, list);
+    {
+        hcbd__block_job job;
+        job.T = &T; job.list = list; job.start = start; job.pass = &sc;
+        worst = hcbd__colours(nb, nc, nt, &job, hcbd__hc_sweep_block);
+    }
+    HCBD__OMP(omp parallel for num_threads(nt) schedule(static))
+    for (q = 0; q < n; ++q) {
+        const int i = w->fid[q];
+        w->fvx[i] = w->svx[q]; w->fvy[i] = w->svy[q]; w->fvz[i] = w->svz[q];
+    }
+    return worst;
+}
+
+/* HCBD_PAIR_EULER: the fluid pair forces, pressure, Morris friction and
+   the pair noise, dp = sqrt(2 kT f_ij dt) zeta_ij on the owner i (the
+   lower id) and minus on j (2018 eq. 18-19). */
+typedef struct hcbd__hc_kick_ctx {
+    hcbd_hc_world *w;
+    double ih, c1h, two_eta, sn, vj, qF, lim;
+    uint64_t skey;
+    int noise, stress;
+} hcbd__hc_kick_ctx;
+
+/* the traversal's lean form: acc q[0..2] the owner's force (fixed point),
+   r[0..2] its velocity, r[3] its P/n^2, r[4] its 1/n, r[5..7] its
+   pressure, viscous and noise stress */
+HCBD__INLINE void hcbd__hc_kick_begin(void *ctx, int i, hcbd__acc *a)
+{
+    const hcbd_hc_world *w = ((const hcbd__hc_kick_ctx *)ctx)->w;
+    memset(a, 0, sizeof *a);
+    a->r[0] = w->svx[i]; a->r[1] = w->svy[i]; a->r[2] = w->svz[i];
+    a->r[3] = w->sP[i]; a->r[4] = w->sIn[i];
+}
+
+HCBD__INLINE void hcbd__hc_kick_pairs(void *ctx, int i, const hcbd__near *c, int m, hcbd__acc *a,
+                                     hcbd__terms *u)
+{
+    const hcbd__hc_kick_ctx *s = (const hcbd__hc_kick_ctx *)ctx;
+    const hcbd_hc_world *w = s->w;
+    const hcbd_real *HCBD__RESTRICT vx = w->svx, *HCBD__RESTRICT vy = w->svy;
+    const hcbd_real *HCBD__RESTRICT vz = w->svz, *HCBD__RESTRICT Pn2 = w->sP, *HCBD__RESTRICT In = w->sIn;
+    const int32_t *HCBD__RESTRICT fid = w->fid;
+    const double vxi = a->r[0], vyi = a->r[1], vzi = a->r[2], Pi = a->r[3], ini = a->r[4];
+    const double qF = s->qF, lim = s->lim, ih = s->ih, c1h = s->c1h, two_eta = s->two_eta, vj = s->vj;
+    /* the deterministic forces in a SIMD loop, the noise (one draw per
+       pair) and the stress sums (in pair order) apart: the same operations
+       on each pair, so the same bits */
+    double fp[HCBD__CHUNK], fv0[HCBD__CHUNK], fm[HCBD__CHUNK], Fx[HCBD__CHUNK], Fy[HCBD__CHUNK], Fz[HCBD__CHUNK];
+    int64_t U0[HCBD__CHUNK], U1[HCBD__CHUNK], U2[HCBD__CHUNK];
+    int64_t *HCBD__RESTRICT aFx = w->aF[0], *HCBD__RESTRICT aFy = w->aF[1], *HCBD__RESTRICT aFz = w->aF[2];
+    int t, bad = 0;
+    (void)u;
+    HCBD__OMP(omp simd)
+    for (t = 0; t < m; ++t) {
+        const int j = c->j[t];
+        const double wdr = hcbd__m4_wdr(sqrt(c->r2[t]) * ih, c1h);
+        const double f = hcbd__morris_f(two_eta, wdr, ini, In[j]);
+        const double p = hcbd__tait_fr(Pi, Pn2[j], wdr);
+        const double v0 = -f * (vxi - (vx[j] + c->k[t] * vj));
+        fp[t] = p;
+        fv0[t] = v0;
+        fm[t] = f;
+        Fx[t] = p * c->x[t] + v0;
+        Fy[t] = p * c->y[t] + -f * (vyi - vy[j]);
+        Fz[t] = p * c->z[t] + -f * (vzi - vz[j]);
+    }
+    if (s->stress)
+        for (t = 0; t < m; ++t) {
+            a->r[5] += c->y[t] * (fp[t] * c->x[t]);
+            a->r[6] += c->y[t] * fv0[t];
+        }
+    if (s->noise)
+        for (t = 0; t < m; ++t) {
+            double zz[3];
+            const double sf = s->sn * sqrt(fm[t]);
+            hcbd__deviates3(w->core.zig, HCBD_NOISE_GAUSS, hcbd__pair_key(s->skey, fid[i], fid[c->j[t]]), zz);
+            Fx[t] += sf * zz[0];
+            Fy[t] += sf * zz[1];
+            Fz[t] += sf * zz[2];
+            if (s->stress) a->r[7] += c->y[t] * sf * zz[0];
+        }
+    HCBD__OMP(omp simd reduction(|:bad))
+    for (t = 0; t < m; ++t) {
+        bad |= !(fabs(Fx[t]) <= lim && fabs(Fy[t]) <= lim && fabs(Fz[t]) <= lim);
+        U0[t] = hcbd__fix(Fx[t] * qF);
+        U1[t] = hcbd__fix(Fy[t] * qF);
+        U2[t] = hcbd__fix(Fz[t] * qF);
+    }
+    for (t = 0; t < m; ++t) {
+        const int j = c->j[t];
+        a->q[0] += U0[t]; aFx[j] -= U0[t];
+        a->q[1] += U1[t]; aFy[j] -= U1[t];
+        a->q[2] += U2[t]; aFz[j] -= U2[t];
+    }
+    a->bad |= bad;
+}
+
+HCBD__INLINE int hcbd__hc_kick_end(void *ctx, int i, hcbd__acc *a)
+{
+    const hcbd__hc_kick_ctx *s = (const hcbd__hc_kick_ctx *)ctx;
+    hcbd_hc_world *w = s->w;
+    const int32_t idi = w->fid[i];
+    w->aF[0][i] += a->q[0]; w->aF[1][i] += a->q[1]; w->aF[2][i] += a->q[2];
+    if (s->stress) { /* by id: the sum over blobs in a fixed order */
+        w->fs[3 * idi] = a->r[5];
+        w->fs[3 * idi + 1] = a->r[6];
+        w->fs[3 * idi + 2] = a->r[7];
+    }
+    return a->bad ? idi : INT_MAX;
+}
+
+HCBD__INLINE int hcbd__hc_kick_run(hcbd_hc_world *w, int q0, int q1, const int noise,
+                                   const int stress)
+{
+    const double h = w->p.h, dt = w->p.dt / w->p.substeps;
+    const hcbd__trav T = hcbd__hc_trav_f(w, 2.0 * h);
+    hcbd__hc_kick_ctx s;
+    s.w = w;
+    s.ih = 1.0 / h;
+    s.c1h = 1.0 / (4.0 * HCBD__PI * h * h * h * h * h);
+    s.two_eta = 2.0 * w->p.eta;
+    s.sn = noise ? sqrt(2.0 * w->p.kT / dt) : 0.0;
+    s.vj = w->core.le_vjump;
+    s.qF = w->core.qF; s.lim = w->core.limF;
+    s.skey = w->kick_key;
+    s.noise = noise; s.stress = stress;
+    return hcbd__traverse(&T, w->lf.perm, q0, q1, &s, hcbd__hc_kick_begin, hcbd__hc_kick_pairs,
+                          hcbd__hc_kick_end);
+}
+
+static int hcbd__hc_kick_v(void *c, int q0, int q1)
+{
+    return hcbd__hc_kick_run((hcbd_hc_world *)c, q0, q1, 0, 0);
+}
+
+static int hcbd__hc_kick_vn(void *c, int q0, int q1)
+{
+    return hcbd__hc_kick_run((hcbd_hc_world *)c, q0, q1, 1, 0);
+}
+
+static int hcbd__hc_kick_any(void *c, int q0, int q1)
+{
+    hcbd_hc_world *w = (hcbd_hc_world *)c;
+    return hcbd__hc_kick_run(w, q0, q1, w->noise_f, w->core.stress_on);
+}
+
+/* Fluid velocities of t + dt (MODEL 6) into the scratch velocities: the
+   pair forces (Euler pairs, or the exact sweep with the pressure fused
+   into it), then body and polymer forces.  Returns the first blob with a
+   pair force beyond the fixed-point range, or -1. */
+static int hcbd__hc_fluid_kick(hcbd_hc_world *w, double dt, uint64_t skey)
+{
+    const int n = w->nf, nt = w->p.threads, rp = w->p.reverse_poiseuille;
+    const int exact = w->p.pair_integrator == HCBD_PAIR_SHARDLOW;
+    const double dt_m = dt * w->inv_m, inv_q = 1.0 / w->core.qF;
+    const double gx = w->p.g[0], gy = w->p.g[1], gz = w->p.g[2], half = 0.5 * w->p.L[1];
+    double gmean = 0;
+    int i, d, bad;
+    (void)nt;
+    if (rp) {
+        /* halves holding different numbers of blobs would get a net force
+           and the whole fluid would drift: remove the mean */
+        for (i = 0; i < n; ++i) gmean += w->fy[i] >= half ? 1.0 : -1.0;
+        gmean /= n;
+    }
+    for (d = 0; d < 3; ++d) hcbd__zero64(w->aF[d], n);
+    w->kick_key = skey;
+    bad = exact ? hcbd__hc_fluid_shardlow(w, dt, skey)
+                : hcbd__nl_owners(&w->lf, n, nt, w,
+                                  w->core.stress_on || w->core.general ? hcbd__hc_kick_any
+                                  : w->noise_f ? hcbd__hc_kick_vn
+                                               : hcbd__hc_kick_v);
+    HCBD__OMP(omp parallel for num_threads(nt) schedule(static))
+    for (i = 0; i < n; ++i) {
+        const double sgn = rp ? (w->fy[i] >= half ? 1.0 : -1.0) - gmean : 1.0;
+        const int s = w->fslot[i];
+        w->nvx[i] = (hcbd_real)(w->fvx[i] + dt_m * ((double)w->aF[0][s] * inv_q + w->fax[i]) + sgn * gx * dt);
+        w->nvy[i] = (hcbd_real)(w->fvy[i] + dt_m * ((double)w->aF[1][s] * inv_q + w->fay[i]) + sgn * gy * dt);
+        w->nvz[i] = (hcbd_real)(w->fvz[i] + dt_m * ((double)w->aF[2][s] * inv_q + w->faz[i]) + sgn * gz * dt);
+    }
+    return bad == INT_MAX ? -1 : bad;
+}
+
+/* >>HCBD: integrator (pair variables, moves, the state at the present
+   positions) */
+/* Exact Ornstein-Uhlenbeck update of the pair variables over dt with
+   lambda_eq held at its value of t: the equilibrium variance is kT/alpha
+   for any dt/tau_lambda (Euler-Maruyama, the paper's, agrees to first
+   order and is biased when a quick run shortens tau_lambda). */
+static void hcbd__hc_lambda_update(hcbd_hc_world *w)
+{
+    const int n = w->np, nt = w->p.threads, noise = w->noise_p;
+    const double e = exp(-w->p.dt / w->p.tau_lambda);
+    const double s = noise ? sqrt(w->p.kT / w->p.alpha * -expm1(-2.0 * w->p.dt / w->p.tau_lambda)) : 0.0;
+    const uint64_t skey = hcbd__mix64(w->key_lambda ^ hcbd__mix64((uint64_t)w->step));
+    const size_t cap = (size_t)w->pair_cap;
+    int a;
+    (void)nt;
+    HCBD__OMP(omp parallel for num_threads(nt) schedule(static))
+    for (a = 0; a < n; ++a) {
+        hcbd_real *l = w->pair_l + a * cap;
+        const hcbd_real *eq = w->pair_eq + a * cap;
+        const int32_t *b = w->pair_b + a * cap;
+        int k;
+        for (k = 0; k < w->pair_n[a]; ++k) {
+            double x = eq[k] + (l[k] - eq[k]) * e;
+            if (noise) x += s * hcbd__normal_at(w->core.zig, hcbd__pair_key(skey, a, b[k]));
+            l[k] = (hcbd_real)x;
+        }
+    }
+}
+
+/* Moves a particle by dr with periodic and Lees-Edwards wrapping; returns
+   the image crossing in y (+1 up, -1 down, 0). */
+static inline int hcbd__hc_move(const hcbd_hc_world *w, double s_new, double *x, double *y,
+                                double *z)
+{
+    const double *L = w->p.L;
+    int k = 0;
+    if (*y >= L[1]) { *y -= L[1]; k = 1; }
+    else if (*y < 0) { *y += L[1]; k = -1; }
+    if (*y >= L[1] || *y < 0) *y = 0; /* round-off of y - L */
+    if (k && w->core.le_on) *x -= k * s_new;
+    *x -= L[0] * floor(*x / L[0]);
+    if (*x >= L[0]) *x = 0;
+    *z -= L[2] * floor(*z / L[2]);
+    if (*z >= L[2]) *z = 0;
+    return k;
+}
+
+/* Kick-drift: the velocities of t + dt move the blobs (symplectic Euler).
+   For the reversible pressure forces it keeps phase-space volume, so sound
+   waves neither grow nor decay from the integrator; drifting with the old
+   velocities (explicit Euler) amplifies them every step. */
+/* Moves the fluid over dt_f (advancing the Lees-Edwards offset) and/or
+   the polymers over dt (with the offset as it then stands). */
+static int hcbd__hc_drift(hcbd_hc_world *w, double dt_f, int fluid, int poly, int *why)
+{
+    const int nf = fluid ? w->nf : 0, np = poly ? w->np : 0, nt = w->p.threads, noise = w->noise_p;
+    const double dt = w->p.dt, lim_f = 0.5 * w->p.h, lim_p = 0.25 * w->p.rc, vj = w->core.le_vjump;
+    const double sdr = sqrt(2.0 * w->p.kT * dt / w->p.xi);
+    const double s_new = fluid ? fmod(w->core.le_offset + w->p.gdot * w->p.L[1] * dt_f, w->p.L[0])
+                               : w->core.le_offset;
+    const uint64_t skey = hcbd__mix64(w->key_poly ^ hcbd__mix64((uint64_t)w->step));
+    hcbd__box box = hcbd__hc_box(w);
+    double dm_f = 0, dm_p = 0;
+    int i, bad_f = INT_MAX, bad_p = INT_MAX, nan_f = INT_MAX, nan_p = INT_MAX;
+    (void)nt;
+    box.offset = s_new;
+    HCBD__OMP(omp parallel for num_threads(nt) schedule(static) reduction(min:bad_f) reduction(min:nan_f) reduction(max:dm_f))
+    for (i = 0; i < nf; ++i) {
+        double v[3], x, y, z, e[3];
+        int k;
+        v[0] = w->nvx[i]; v[1] = w->nvy[i]; v[2] = w->nvz[i];
+        if (!(isfinite(v[0]) && isfinite(v[1]) && isfinite(v[2]))) {
+            if (i < nan_f) nan_f = i;
+            continue;
+        }
+        if ((v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) * dt_f * dt_f > lim_f * lim_f && i < bad_f)
+            bad_f = i;
+        x = w->fx[i] + v[0] * dt_f;
+        y = w->fy[i] + v[1] * dt_f;
+        z = w->fz[i] + v[2] * dt_f;
+        k = hcbd__hc_move(w, s_new, &x, &y, &z);
+        w->fx[i] = (hcbd_real)x;
+        w->fy[i] = (hcbd_real)y;
+        w->fz[i] = (hcbd_real)z;
+        hcbd__delta_box(&box, x - w->lf.x0[i], y - w->lf.y0[i], z - w->lf.z0[i], e);
+        if (e[0] * e[0] + e[1] * e[1] + e[2] * e[2] > dm_f) dm_f = e[0] * e[0] + e[1] * e[1] + e[2] * e[2];
+        w->fvx[i] = (hcbd_real)(v[0] - k * vj);
+        w->fvy[i] = (hcbd_real)v[1];
+        w->fvz[i] = (hcbd_real)v[2];
+    }
+    HCBD__OMP(omp parallel for num_threads(nt) schedule(static) reduction(min:bad_p) reduction(min:nan_p) reduction(max:dm_p))
+    for (i = 0; i < np; ++i) {
+        double dr[3], x, y, z, e[3];
+        dr[0] = w->pux[i] * dt;
+        dr[1] = w->puy[i] * dt;
+        dr[2] = w->puz[i] * dt;
+        if (noise) {
+            double z3[3];
+            hcbd__deviates3(w->core.zig, HCBD_NOISE_GAUSS, hcbd__mix64(skey ^ (uint64_t)(uint32_t)i), z3);
+            dr[0] += sdr * z3[0];
+            dr[1] += sdr * z3[1];
+            dr[2] += sdr * z3[2];
+        }
+        if (!(isfinite(dr[0]) && isfinite(dr[1]) && isfinite(dr[2]))) {
+            if (i < nan_p) nan_p = i;
+            continue;
+        }
+        if (dr[0] * dr[0] + dr[1] * dr[1] + dr[2] * dr[2] > lim_p * lim_p && i < bad_p) bad_p = i;
+        x = w->px[i] + dr[0];
+        y = w->py[i] + dr[1];
+        z = w->pz[i] + dr[2];
+        hcbd__hc_move(w, s_new, &x, &y, &z);
+        w->px[i] = (hcbd_real)x;
+        w->py[i] = (hcbd_real)y;
+        w->pz[i] = (hcbd_real)z;
+        hcbd__delta_box(&box, x - w->lp.x0[i], y - w->lp.y0[i], z - w->lp.z0[i], e);
+        if (e[0] * e[0] + e[1] * e[1] + e[2] * e[2] > dm_p) dm_p = e[0] * e[0] + e[1] * e[1] + e[2] * e[2];
+    }
+    /* a blob that crossed the sheared boundary since the build is measured
+       with today's offset: the drift term of the rebuild test covers it */
+    if (fluid) w->lf.le_drift += fabs(w->p.gdot * w->p.L[1] * dt_f);
+    if (sqrt(dm_f) > w->lf.disp_max) w->lf.disp_max = sqrt(dm_f);
+    if (sqrt(dm_p) > w->lp.disp_max) w->lp.disp_max = sqrt(dm_p);
+    w->core.le_offset = s_new;
+    if (nan_f != INT_MAX) { *why = 0; return nan_f; }
+    if (nan_p != INT_MAX) { *why = 1; return nan_p; }
+    if (bad_f != INT_MAX) { *why = 2; return bad_f; }
+    if (bad_p != INT_MAX) { *why = 3; return bad_p; }
+    return -1;
+}
+
+/* Densities, pairs, forces and the coupling at the present positions. */
+static hcbd_result hcbd__hc_prepare(hcbd_hc_world *w, int64_t step)
+{
+    int bad, need = 0;
+    hcbd_result r = hcbd__hc_lists(w, step);
+    if (r != HCBD_OK) return r;
+    hcbd__hc_fluid_density(w);
+    if (w->np > 0) {
+        bad = hcbd__hc_poly_density(w);
+        if (bad >= 0) return hcbd__hc_phi_fail(w, step, bad, w->pn[bad]);
+        bad = hcbd__hc_poly_forces(w, &need);
+        if (bad >= 0)
+            return hcbd__fail(&w->err, HCBD_ERR_CAPACITY, step, bad,
+                              "polymer %d has %d transient partners of higher id, more "
+                              "than pair_capacity %d", bad, need, w->pair_cap);
+        bad = hcbd__hc_interp(w);
+        if (bad >= 0)
+            return hcbd__fail(&w->err, HCBD_ERR_PARAM, step, bad,
+                              "polymer %d at (%g, %g, %g) has no fluid blob within rc = %g",
+                              bad, (double)w->px[bad], (double)w->py[bad], (double)w->pz[bad],
+                              w->p.rc);
+        hcbd__hc_redistribute(w);
+    } else {
+        memset(w->fax, 0, (size_t)w->nf * sizeof(hcbd_real));
+        memset(w->fay, 0, (size_t)w->nf * sizeof(hcbd_real));
+        memset(w->faz, 0, (size_t)w->nf * sizeof(hcbd_real));
+    }
+    w->ready = 1;
+    return HCBD_OK;
+}
+
+hcbd_result hcbd_hc_world_refresh(hcbd_hc_world *w)
+{
+    if (!w) return HCBD_ERR_NULL;
+    if (w->nf < 2) return hcbd__fail(&w->err, HCBD_ERR_STATE, -1, -1, "no fluid blobs set");
+    hcbd__hc_lists_stale(w); /* positions may have been written directly */
+    return hcbd__hc_prepare(w, -1);
+}
+
+static void hcbd__hc_stress_add(hcbd_hc_world *w)
+{
+    double s[HCBD_HC_NSTRESS] = {0}, inv_V = 1.0 / (w->p.L[0] * w->p.L[1] * w->p.L[2]);
+    int i, k;
+    for (i = 0; i < w->nf; ++i) {
+        double ux = w->fvx[i] - w->p.gdot * (w->fy[i] - 0.5 * w->p.L[1]);
+        s[HCBD_HC_S_KINETIC] += w->m * ux * w->fvy[i];
+        s[HCBD_HC_S_PRESSURE] += w->fs[3 * i];
+        s[HCBD_HC_S_VISCOUS] += w->fs[3 * i + 1];
+        s[HCBD_HC_S_NOISE] += w->fs[3 * i + 2];
+    }
+    for (i = 0; i < w->np; ++i) {
+        s[HCBD_HC_S_CONSERVATIVE] += w->ps[3 * i];
+        s[HCBD_HC_S_TRANSIENT] += w->ps[3 * i + 1];
+        s[HCBD_HC_S_INTERACTION] += w->ps[3 * i + 2];
+    }
+    s[HCBD_HC_S_FLUID] = s[0] + s[1] + s[2] + s[3];
+    s[HCBD_HC_S_POLYMER] = s[5] + s[6];
+    s[HCBD_HC_S_TOTAL] = s[HCBD_HC_S_FLUID] + s[HCBD_HC_S_POLYMER] + s[HCBD_HC_S_INTERACTION];
+    for (k = 0; k < HCBD_HC_NSTRESS; ++k) w->core.stress_sum[k] -= s[k] * inv_V;
+    w->core.stress_steps++;
+}
+
+/* >>HCBD: the step and its guard */
+/* The fluid (poly 0) or the polymers (1, no velocities of their own) as a
+   species view */
+static hcbd__vset hcbd__hc_vset(const hcbd_hc_world *w, int poly)
+{
+    hcbd__vset s;
+    s.n = poly ? w->np : w->nf;
+    s.slot = NULL;
+    s.x = poly ? w->px : w->fx; s.y = poly ? w->py : w->fy; s.z = poly ? w->pz : w->fz;
+    s.vx = poly ? NULL : w->fvx; s.vy = w->fvy; s.vz = w->fvz;
+    s.m = w->m;
+    return s;
+}
+
+
+/* The run-time guard (guard_every): positions inside the box, finite
+   velocities and pair variables. */
+static hcbd_result hcbd__hc_guard(hcbd_hc_world *w)
+{
+    const double *L = w->p.L;
+    const int nt = w->p.threads;
+    const hcbd__vset fs = hcbd__hc_vset(w, 0), ps = hcbd__hc_vset(w, 1);
+    hcbd_result r;
+    int i, k, f0 = INT_MAX, p0 = INT_MAX;
+    (void)nt;
+    /* the first offending blob and polymer, found on all threads; the
+       loops below then name the cause from there on */
+    HCBD__OMP(omp parallel for num_threads(nt) schedule(static) reduction(min:f0))
+    for (i = 0; i < w->nf; ++i) {
+        const double x = w->fx[i], y = w->fy[i], z = w->fz[i];
+        if (!(isfinite(w->fvx[i]) && isfinite(w->fvy[i]) && isfinite(w->fvz[i])) ||
+            !(x >= 0 && x < L[0] && y >= 0 && y < L[1] && z >= 0 && z < L[2]))
+            if (i < f0) f0 = i;
+    }
+    HCBD__OMP(omp parallel for num_threads(nt) schedule(static) reduction(min:p0))
+    for (i = 0; i < w->np; ++i) {
+        const double x = w->px[i], y = w->py[i], z = w->pz[i];
+        int bad = !(x >= 0 && x < L[0] && y >= 0 && y < L[1] && z >= 0 && z < L[2]), kk;
+        for (kk = 0; w->transient && kk < w->pair_n[i]; ++kk)
+            bad |= !isfinite(w->pair_l[(size_t)i * w->pair_cap + kk]);
+        if (bad && i < p0) p0 = i;
+    }
+    for (i = f0; i < w->nf; ++i)
+        if ((r = hcbd__guard_one(&w->err, w->step, &fs, i, L, "fluid blob", i)) != HCBD_OK)
+            return r;
+    for (i = p0; i < w->np; ++i) {
+        if ((r = hcbd__guard_one(&w->err, w->step, &ps, i, L, "polymer", w->nf + i)) != HCBD_OK)
+            return r;
+        for (k = 0; w->transient && k < w->pair_n[i]; ++k)
+            if (!isfinite(w->pair_l[(size_t)i * w->pair_cap + k]))
+                return hcbd__fail(&w->err, HCBD_ERR_NONFINITE, w->step, w->nf + i,
+                                  "guard at step %lld: polymer %d's pair variable with %d "
+                                  "is not finite", (long long)w->step, i,
+                                  (int)w->pair_b[(size_t)i * w->pair_cap + k]);
+    }
+    return HCBD_OK;
+}
+
+hcbd_result hcbd_hc_world_step(hcbd_hc_world *w, int nsteps)
+{
+    static const char *why_s[4] = {"fluid velocity is not finite",
+                                   "polymer displacement is not finite",
+                                   "fluid blob moved more than h/2 in one step",
+                                   "polymer moved more than rc/4 in one step"};
+    int s;
+    if (!w) return HCBD_ERR_NULL;
+    hcbd__clear(&w->err);
+    if (w->nf < 2) return hcbd__fail(&w->err, HCBD_ERR_STATE, -1, -1, "no fluid blobs set");
+    if (nsteps < 0)
+        return hcbd__fail(&w->err, HCBD_ERR_PARAM, -1, -1, "nsteps = %d is negative", nsteps);
+    for (s = 0; s < nsteps; ++s) {
+        const int nsub = w->p.substeps;
+        const double dt_f = w->p.dt / nsub;
+        hcbd_result r;
+        int bad = -1, why = 0, i, k;
+        if (!w->ready && (r = hcbd__hc_prepare(w, w->step)) != HCBD_OK) return r;
+        for (k = 0; k < nsub && bad < 0; ++k) {
+            const uint64_t skey = hcbd__mix64(w->key_fpair ^ hcbd__mix64((uint64_t)(w->step * nsub + k)));
+            if (k > 0) { /* the fluid alone moved: its lists and densities */
+                if ((r = hcbd__hc_lists(w, w->step)) != HCBD_OK) return r;
+                hcbd__hc_fluid_density(w);
+            }
+            if ((i = w->dens_bad) >= 0)
+                return hcbd__fail(&w->err, HCBD_ERR_UNSTABLE, w->step, i,
+                                  "fluid blob %d: density n/nbar = %g is outside (1/3, 3): "
+                                  "dt too long for the sound speed or the flow", i,
+                                  (double)w->fn[i] / w->p.nbar);
+            hcbd__hc_sync(w); /* velocities may have been set between steps */
+            if ((bad = hcbd__hc_fluid_kick(w, dt_f, skey)) >= 0)
+                return hcbd__fail(&w->err, HCBD_ERR_UNSTABLE, w->step, bad,
+                                  "fluid blob %d has a pair force beyond %g (the fixed-point "
+                                  "range: a move of 16 h in one step); dt = %g is too long",
+                                  bad, w->core.limF, dt_f);
+            if (k == nsub - 1) {
+                if (w->core.stress_on) hcbd__hc_stress_add(w);
+                if (w->transient && w->np > 0) hcbd__hc_lambda_update(w);
+            }
+            bad = hcbd__hc_drift(w, dt_f, 1, nsub == 1, &why);
+        }
+        if (bad < 0 && nsub > 1) bad = hcbd__hc_drift(w, dt_f, 0, 1, &why);
+        w->step++;
+        w->ready = 0;
+        if (bad >= 0)
+            return hcbd__fail(&w->err, why < 2 ? HCBD_ERR_NONFINITE : HCBD_ERR_UNSTABLE,
+                              w->step, bad, "%s (id %d, dt = %g, substeps %d)", why_s[why], bad,
+                              w->p.dt, nsub);
+        if (w->p.guard_every > 0 && w->step % w->p.guard_every == 0 &&
+            (r = hcbd__hc_guard(w)) != HCBD_OK)
+            return r;
+    }
+    if (!w->ready) return hcbd__hc_prepare(w, w->step);
+    return HCBD_OK;
+}
+
+/* >>HCBD: observables */
+static int hcbd__hc_pair_slot(const hcbd_hc_world *w, int a, int b, int *lo)
+{
+    if (!w->transient || a < 0 || b < 0 || a >= w->np || b >= w->np || a == b) return -1;
+    *lo = a < b ? a : b;
+    return hcbd__hc_find(w, *lo, a < b ? b : a);
+}
+
+hcbd_result hcbd_hc_world_get_lambda(const hcbd_hc_world *w, int a, int b, double *lambda)
+{
+    int lo, k;
+    if (!w || !lambda) return HCBD_ERR_NULL;
+    if (a < 0 || b < 0 || a >= w->np || b >= w->np || a == b) return HCBD_ERR_PARAM;
+    k = hcbd__hc_pair_slot(w, a, b, &lo);
+    if (k < 0) return HCBD_ERR_STATE;
+    *lambda = w->pair_l[(size_t)lo * w->pair_cap + k];
+    return HCBD_OK;
+}
+
+hcbd_result hcbd_hc_world_set_lambda(hcbd_hc_world *w, int a, int b, double lambda)
+{
+    int lo, k;
+    if (!w) return HCBD_ERR_NULL;
+    hcbd__clear(&w->err);
+    if (a < 0 || a >= w->np || b < 0 || b >= w->np || a == b)
+        return hcbd__fail(&w->err, HCBD_ERR_PARAM, -1, a,
+                          "a = %d, b = %d are not two polymer ids (need 0 <= a != b < %d)", a, b,
+                          w->np);
+    if (!isfinite(lambda))
+        return hcbd__fail(&w->err, HCBD_ERR_NONFINITE, -1, a, "lambda = %g is not finite", lambda);
+    k = hcbd__hc_pair_slot(w, a, b, &lo);
+    if (k < 0)
+        return hcbd__fail(&w->err, HCBD_ERR_STATE, -1, a,
+                          "polymers %d and %d have no pair variable", a, b);
+    w->pair_l[(size_t)lo * w->pair_cap + k] = (hcbd_real)lambda;
+    w->ready = 0;
+    return hcbd_hc_world_refresh(w);
+}
+
+double hcbd_hc_world_temperature(const hcbd_hc_world *w)
+{
+    hcbd__vset s;
+    if (!w) return 0.0;
+    s = hcbd__hc_vset(w, 0);
+    return hcbd__temperature(&s, w->p.gdot, w->p.L[1]);
+}
+
+void hcbd_hc_world_momentum(const hcbd_hc_world *w, double p[3])
+{
+    hcbd__vset s;
+    if (!p) return;
+    p[0] = p[1] = p[2] = 0.0;
+    if (!w) return;
+    s = hcbd__hc_vset(w, 0);
+    hcbd__momentum(&s, p);
+}
+
+hcbd_result hcbd_hc_world_transverse_current(const hcbd_hc_world *w, int nk, double out[12])
+{
+    if (!w || !out) return HCBD_ERR_NULL;
+    if (nk < 1) return HCBD_ERR_PARAM;
+    hcbd__tcurrent(w->nf, NULL, w->fx, w->fy, w->fz, w->fvx, w->fvy, w->fvz, w->p.L, nk, out);
+    return HCBD_OK;
+}
+
+double hcbd_hc_world_polymer_energy(const hcbd_hc_world *w)
+{
+    double e = 0.0, et = 0.0;
+    int a, k;
+    if (!w || !w->ready) return NAN;
+    if (w->has_fc)
+        for (a = 0; a < w->np; ++a) e += hcbd_flory_g1(w->pn[a] / w->p.n_max, w->p.chi);
+    e *= w->p.p_kuhn * w->p.kT;
+    for (a = 0; a < w->np && w->transient; ++a)
+        for (k = 0; k < w->pair_n[a]; ++k) {
+            double u = w->pair_l[(size_t)a * w->pair_cap + k] - w->pair_eq[(size_t)a * w->pair_cap + k];
+            et += u * u;
+        }
+    return e + 0.5 * w->p.alpha * et;
+}
+
+hcbd_result hcbd_hc_world_density_range(const hcbd_hc_world *w, double out[3])
+{
+    int i;
+    if (!w || !out) return HCBD_ERR_NULL;
+    if (!w->ready || w->nf < 1) return HCBD_ERR_STATE;
+    out[0] = out[1] = w->fn[0] / w->p.nbar;
+    out[2] = w->fP[0];
+    for (i = 1; i < w->nf; ++i) {
+        double x = w->fn[i] / w->p.nbar;
+        if (x < out[0]) out[0] = x;
+        if (x > out[1]) out[1] = x;
+        if (w->fP[i] < out[2]) out[2] = w->fP[i];
+    }
+    return HCBD_OK;
+}
+
+hcbd_result hcbd_hc_world_stress_enable(hcbd_hc_world *w, int on)
+{
+    hcbd_result r;
+    if (!w) return HCBD_ERR_NULL;
+    r = hcbd__stress_enable(&w->core, &w->err, w->step, on);
+    if (r == HCBD_OK) w->ready = 0; /* the next step's passes must fill the accumulators */
+    return r;
+}
+
+hcbd_result hcbd_hc_world_stress_read(const hcbd_hc_world *w, double out[HCBD_HC_NSTRESS],
+                                int64_t *nsteps)
+{
+    if (!w || !out) return HCBD_ERR_NULL;
+    hcbd__stress_read(&w->core, out, HCBD_HC_NSTRESS, nsteps);
+    return HCBD_OK;
+}
+
+uint64_t hcbd_hc_world_checksum(const hcbd_hc_world *w)
+{
+    uint64_t h = 0xCBF29CE484222325ULL;
+    size_t R = sizeof(hcbd_real), nf, np;
+    int a;
+    if (!w) return 0;
+    nf = (size_t)w->nf;
+    np = (size_t)w->np;
+    h = hcbd__hash(h, &w->step, sizeof w->step);
+    h = hcbd__hash(h, &w->core.le_offset, sizeof w->core.le_offset);
+    h = hcbd__hash(h, w->fx, nf * R); h = hcbd__hash(h, w->fy, nf * R); h = hcbd__hash(h, w->fz, nf * R);
+    h = hcbd__hash(h, w->fvx, nf * R); h = hcbd__hash(h, w->fvy, nf * R); h = hcbd__hash(h, w->fvz, nf * R);
+    h = hcbd__hash(h, w->px, np * R); h = hcbd__hash(h, w->py, np * R); h = hcbd__hash(h, w->pz, np * R);
+    for (a = 0; a < w->np && w->transient; ++a) {
+        size_t o = (size_t)a * w->pair_cap, k = (size_t)w->pair_n[a];
+        h = hcbd__hash(h, &w->pair_n[a], sizeof(int32_t));
+        h = hcbd__hash(h, w->pair_b + o, k * sizeof(int32_t));
+        h = hcbd__hash(h, w->pair_l + o, k * R);
+    }
+    return h;
+}
+/* >>HCBD: equations without a world (hcbd_hc_params_coef, the pair terms
+   for engines of their own) */
+hcbd_result hcbd_hc_params_coef(const hcbd_hc_params *p, hcbd_hc_coef *c, char *msg, size_t msg_size)
+{
+    hcbd_result r;
+    const double h = p ? p->h : 0.0;
+    if (!p || !c) return HCBD_ERR_NULL;
+    if ((r = hcbd_hc_params_check(p, msg, msg_size)) != HCBD_OK) return r;
+    memset(c, 0, sizeof *c);
+    c->m = p->rho / p->nbar;
+    c->h = h;
+    c->kT = p->kT;
+    c->dt = p->dt / p->substeps;
+    c->w0 = 1.0 / (HCBD__PI * h * h * h);
+    c->c0 = 1.0 / (4.0 * HCBD__PI * h * h * h);
+    c->c1h = 1.0 / (4.0 * HCBD__PI * h * h * h * h * h);
+    c->two_eta = 2.0 * p->eta;
+    c->P0 = p->P0;
+    c->inv_nbar = 1.0 / p->nbar;
+    c->sn = p->fluctuations && p->kT > 0 ? sqrt(2.0 * p->kT / c->dt) : 0.0;
+    c->sigma = p->sigma;
+    c->rc = p->rc;
+    c->A = hcbd__rapid_A(p->sigma, p->rc);
+    c->W0 = c->A * (p->rc - p->sigma) * (p->rc + p->sigma);
+    c->cfh = p->p_kuhn * p->kT / p->n_max;
+    c->n_max = p->n_max;
+    c->chi = p->chi;
+    c->p_kuhn = p->p_kuhn;
+    c->alpha = p->alpha;
+    if (p->alpha > 0) {
+        c->e_lambda = exp(-p->dt / p->tau_lambda);
+        c->s_lambda = p->kT > 0 ? sqrt(p->kT / p->alpha * -expm1(-2.0 * p->dt / p->tau_lambda)) : 0.0;
+    }
+    return HCBD_OK;
+}
+
+/* the pair terms: NAN (or nothing added) without coefficients */
+double hcbd_hc_fluid_weight(const hcbd_hc_coef *c, double r)
+{
+    double q;
+    if (!c) return NAN;
+    q = r * (1.0 / c->h);
+    return q < 2.0 ? c->c0 * hcbd__m4u(q) : 0.0;
+}
+
+double hcbd_hc_fluid_density(const hcbd_hc_coef *c, double wsum) { return c ? c->w0 + wsum : NAN; }
+
+double hcbd_hc_fluid_pressure(const hcbd_hc_coef *c, double n)
+{
+    return c ? hcbd__tait_p(c->P0, c->inv_nbar, n) : NAN;
+}
+
+void hcbd_hc_fluid_pair(const hcbd_hc_coef *c, const double d[3], double r, double n_i, double n_j,
+                        double P_i, double P_j, const double dv[3], const double z[3], double F[3])
+{
+    double q, wdr, f, fp, sf;
+    int k;
+    if (!c || !d || !dv || !F) return;
+    q = r * (1.0 / c->h);
+    if (!(q < 2.0) || !(r > 0.0)) return;
+    wdr = hcbd__m4_wdr(q, c->c1h);
+    f = hcbd__morris_f(c->two_eta, wdr, 1.0 / n_i, 1.0 / n_j);
+    fp = hcbd__tait_fr(P_i / (n_i * n_i), P_j / (n_j * n_j), wdr);
+    sf = z ? c->sn * sqrt(f) : 0.0;
+    for (k = 0; k < 3; ++k) F[k] += fp * d[k] - f * dv[k] + (z ? sf * z[k] : 0.0);
+}
+
+double hcbd_hc_polymer_weight(const hcbd_hc_coef *c, double r)
+{
+    if (!c) return NAN;
+    return r < c->rc ? hcbd__rapid(r, c->sigma, c->rc, c->A) : 0.0;
+}
+
+double hcbd_hc_polymer_density(const hcbd_hc_coef *c, double wsum) { return c ? c->W0 + wsum : NAN; }
+
+double hcbd_hc_polymer_mu(const hcbd_hc_coef *c, double n)
+{
+    if (!c) return NAN;
+    return c->p_kuhn > 0 ? (double)hcbd__mu((hcbd_real)(n / c->n_max), (hcbd_real)c->chi) : 0.0;
+}
+
+double hcbd_hc_polymer_pair(const hcbd_hc_coef *c, double r, double mu_a, double mu_b, double lambda)
+{
+    double fr = 0.0, ft = 0.0;
+    if (!c) return NAN;
+    if (!(r < c->rc) || !(r > 0.0)) return 0.0;
+    if (c->p_kuhn > 0) fr = hcbd__flory_fr(c->cfh, mu_a, mu_b, hcbd__rapid_dr(r, c->sigma, c->rc, c->A), r);
+    if (c->alpha > 0) ft = hcbd__spring_fr(c->alpha, lambda, r, c->rc);
+    return fr + ft;
+}
+
+double hcbd_hc_lambda_eq(const hcbd_hc_coef *c, double r)
+{
+    if (!c) return NAN;
+    return r < c->rc ? hcbd__leq(r, c->rc) : 0.0;
+}
+
+double hcbd_hc_lambda_step(const hcbd_hc_coef *c, double lambda, double lambda_eq, double z)
+{
+    return c ? lambda_eq + (lambda - lambda_eq) * c->e_lambda + c->s_lambda * z : NAN;
+}
+
+void hcbd_hc_noise_stream_init(hcbd_hc_noise_stream *ns, uint64_t seed)
+{
+    if (!ns) return;
+    ns->fpair_key = hcbd__mix64(seed ^ hcbd__mix64(HCBD__STREAM_FPAIR));
+    ns->lambda_key = hcbd__mix64(seed ^ hcbd__mix64(HCBD__STREAM_LAMBDA));
+    ns->poly_key = hcbd__mix64(seed ^ hcbd__mix64(HCBD__STREAM_POLY));
+    hcbd__zig_init(&ns->zig);
+}
+
+void hcbd_hc_noise_fluid_pair(const hcbd_hc_noise_stream *ns, int64_t k, int32_t i, int32_t j, double out[3])
+{
+    if (!ns || !out) return;
+    hcbd__deviates3(&ns->zig, HCBD_NOISE_GAUSS,
+                    hcbd__pair_key(hcbd__mix64(ns->fpair_key ^ hcbd__mix64((uint64_t)k)), i, j), out);
+}
+
+double hcbd_hc_noise_lambda(const hcbd_hc_noise_stream *ns, int64_t step, int32_t a, int32_t b)
+{
+    if (!ns) return NAN;
+    return hcbd__normal_at(&ns->zig, hcbd__pair_key(hcbd__mix64(ns->lambda_key ^ hcbd__mix64((uint64_t)step)), a, b));
+}
+
+void hcbd_hc_noise_polymer(const hcbd_hc_noise_stream *ns, int64_t step, int32_t a, double out[3])
+{
+    if (!ns || !out) return;
+    hcbd__deviates3(&ns->zig, HCBD_NOISE_GAUSS,
+                    hcbd__mix64(hcbd__mix64(ns->poly_key ^ hcbd__mix64((uint64_t)step)) ^ (uint64_t)(uint32_t)a),
+                    out);
+}
+
+/* the exact sweep's pair and order for engines of their own (see the
+   declarations; hcbd__hc_sweep_pairs is the world's pair, held to this
+   one by test_hc_exact_sweep_exported) */
+void hcbd_hc_fluid_pair_exact(const hcbd_hc_coef *c, double r, double inv_n_i, double inv_n_j, double du,
+                              const double z[3], double v_i[3], double v_j[3], double P[3])
+{
+    double q, x, om, cc, inv_m;
+    int k;
+    if (!c || !v_i || !v_j || !P) return;
+    P[0] = P[1] = P[2] = 0.0;
+    q = r * (1.0 / c->h);
+    if (!(q < 2.0) || !(r >= 0.0)) return;
+    inv_m = 1.0 / c->m;
+    x = 2.0 * c->dt * inv_m * c->two_eta * inv_n_i * hcbd__m4_wdr(q, c->c1h) * inv_n_j;
+    om = x < 0.125 ? hcbd__one_minus_exp_series(x) : -expm1(-x);
+    cc = 0.5 * c->m * om;
+    P[0] = -cc * (v_i[0] - v_j[0] - du);
+    P[1] = -cc * (v_i[1] - v_j[1]);
+    P[2] = -cc * (v_i[2] - v_j[2]);
+    if (z && c->sn > 0.0) {
+        const double b = sqrt(0.5 * c->kT * c->m * om * (2.0 - om));
+        for (k = 0; k < 3; ++k) P[k] += b * z[k];
+    }
+    for (k = 0; k < 3; ++k) {
+        v_i[k] += P[k] * inv_m;
+        v_j[k] -= P[k] * inv_m;
+    }
+}
+
+/* >>HCBD: parameters and units */
+hcbd_hc_si hcbd_hc_si_default(void)
+{
+    hcbd_hc_si s;
+    s.sigma = 5e-6;
+    s.dt = 1e-6;
+    s.T = 300.0;
+    s.rho = 1000.0;
+    s.eta = 1e-3;
+    s.nbar = 1.9099e15;
+    s.P0 = 0.13;
+    s.xi = 1e-7;
+    s.alpha_kT = 500.0;
+    s.tau_lambda = 1.0;
+    s.p_kuhn = 3e5;
+    s.n_max_cstar = 1e4;
+    s.chi = 0.5;
+    s.h_sigma = 2.0;
+    s.rc_sigma = 2.5;
+    return s;
+}
+
+hcbd_result hcbd_hc_si_params(const hcbd_hc_si *si, double time_unit,
+                              hcbd_hc_params *p, char *msg, size_t msg_size)
+{
+    const double kB = 1.380649e-23;
+    double kT, M, len, cstar;
+    if (!si || !p) {
+        if (msg && msg_size) snprintf(msg, msg_size, "%s is NULL", si ? "p" : "si");
+        return HCBD_ERR_NULL;
+    }
+    if (!(time_unit > 0) || !isfinite(time_unit))
+        return hcbd__param_fail(msg, msg_size, "time_unit", time_unit, "time_unit > 0");
+    if (!(si->sigma > 0) || !isfinite(si->sigma))
+        return hcbd__param_fail(msg, msg_size, "si.sigma", si->sigma, "sigma > 0");
+    if (!(si->T > 0) || !isfinite(si->T)) return hcbd__param_fail(msg, msg_size, "si.T", si->T, "T > 0");
+    memset(p, 0, sizeof *p);
+    kT = kB * si->T;
+    len = si->sigma;
+    M = kT * time_unit * time_unit / (len * len); /* mass unit */
+    cstar = 3.0 / (4.0 * HCBD__PI);              /* one blob per sphere of radius sigma */
+    p->L[0] = 33.75;
+    p->L[1] = p->L[2] = 10.0;
+    p->dt = si->dt / time_unit;
+    p->kT = 1.0;
+    p->rho = si->rho * len * len * len / M;
+    p->nbar = si->nbar * len * len * len;
+    p->eta = si->eta * len * time_unit / M;
+    p->P0 = si->P0 * len * time_unit * time_unit / M;
+    p->h = si->h_sigma;
+    p->fluctuations = 1;
+    p->pair_integrator = HCBD_PAIR_SHARDLOW;
+    p->substeps = 1;
+    p->xi = si->xi * time_unit / M;
+    p->sigma = 1.0;
+    p->rc = si->rc_sigma;
+    p->alpha = si->alpha_kT;
+    p->tau_lambda = si->tau_lambda / time_unit;
+    p->p_kuhn = si->p_kuhn;
+    p->n_max = si->n_max_cstar * cstar;
+    p->chi = si->chi;
+    p->coupling = HCBD_COUPLE_SHEPARD;
+    p->seed = 1;
+    p->threads = 1;
+    p->guard_every = 1;
+    return hcbd_hc_params_check(p, msg, msg_size);
+}
+
+hcbd_hc_params hcbd_hc_params_default(void)
+{
+    hcbd_hc_params p;
+    hcbd_hc_si si = hcbd_hc_si_default();
+    hcbd_hc_si_params(&si, 1e-6, &p, NULL, 0);
+    return p;
+}
+
+hcbd_hc_world_def hcbd_hc_world_def_default(void)
+{
+    hcbd_hc_world_def d;
+    memset(&d, 0, sizeof d);
+    d.fluid_capacity = 1024;
+    d.polymer_capacity = 0;
+    d.pair_capacity = HCBD_AUTO;
+    d.max_pairs = HCBD_AUTO;
+    d.params = hcbd_hc_params_default();
+    return d;
+}
+
+#define HCBD__H_D(f, flags, lo, hi, what) HCBD__ROWD(hcbd_hc_params, f, HCBD__ALL, flags, lo, hi, what)
+#define HCBD__H_I(f, flags, lo, hi, what) HCBD__ROWI(hcbd_hc_params, f, HCBD__ALL, flags, lo, hi, what)
+static const hcbd__prow hcbd__hc_params_rows[] = {
+    HCBD__H_D(L[0], HCBD__GT, 0, HCBD__INF, "box edge"),
+    HCBD__H_D(L[1], HCBD__GT, 0, HCBD__INF, "box edge"),
+    HCBD__H_D(L[2], HCBD__GT, 0, HCBD__INF, "box edge"),
+    HCBD__H_D(dt, HCBD__GT, 0, HCBD__INF, "time step"),
+    HCBD__H_D(kT, 0, 0, HCBD__INF, "thermal energy"),
+    HCBD__H_D(rho, HCBD__GT, 0, HCBD__INF, "fluid mass density"),
+    HCBD__H_D(nbar, HCBD__GT, 0, HCBD__INF, "fluid blob number density"),
+    HCBD__H_D(eta, 0, 0, HCBD__INF, "shear viscosity"),
+    HCBD__H_D(P0, 0, 0, HCBD__INF, "Tait pressure coefficient"),
+    HCBD__H_D(h, HCBD__GT, 0, HCBD__INF, "M4 support"),
+    HCBD__H_I(fluctuations, 0, 0, 1, "thermal fluctuations switch"),
+    HCBD__H_D(g[0], 0, -HCBD__INF, HCBD__INF, "body force"),
+    HCBD__H_D(g[1], 0, -HCBD__INF, HCBD__INF, "body force"),
+    HCBD__H_D(g[2], 0, -HCBD__INF, HCBD__INF, "body force"),
+    HCBD__H_I(reverse_poiseuille, 0, 0, 1, "reverse Poiseuille switch"),
+    HCBD__H_D(gdot, 0, -HCBD__INF, HCBD__INF, "shear rate"),
+    HCBD__H_D(xi, HCBD__GT, 0, HCBD__INF, "polymer friction"),
+    HCBD__H_D(rc, HCBD__GT, 0, HCBD__INF, "RaPiD kernel range"),
+    HCBD__H_D(sigma, HCBD__GT, 0, HCBD__INF, "RaPiD kernel core"),
+    HCBD__H_D(alpha, 0, 0, HCBD__INF, "transient strength"),
+    HCBD__H_D(tau_lambda, HCBD__GT, 0, HCBD__INF, "pair variable relaxation time"),
+    HCBD__H_D(p_kuhn, 0, 0, HCBD__INF, "Kuhn segments per blob"),
+    HCBD__H_D(n_max, HCBD__GT, 0, HCBD__INF, "melt number density"),
+    HCBD__H_D(chi, 0, -HCBD__INF, HCBD__INF, "Flory-Huggins chi"),
+    HCBD__H_I(coupling, 0, HCBD_COUPLE_SHEPARD, HCBD_COUPLE_RAW, "hcbd_coupling"),
+    HCBD__H_I(pair_integrator, 0, HCBD_PAIR_EULER, HCBD_PAIR_SHARDLOW, "hcbd_pair_integrator"),
+    HCBD__H_I(substeps, 0, 1, 1000, "fluid steps per polymer step"),
+    HCBD__H_I(threads, 0, 1, 1024, "OpenMP threads"),
+    HCBD__H_I(guard_every, 0, 0, INT_MAX, "guard interval"),
+};
+#undef HCBD__H_D
+#undef HCBD__H_I
+
+hcbd_result hcbd_hc_params_check(const hcbd_hc_params *p, char *msg, size_t msg_size)
+{
+    int d;
+    double reach;
+    hcbd_result r;
+    if (!p) {
+        if (msg && msg_size) snprintf(msg, msg_size, "params is NULL");
+        return HCBD_ERR_NULL;
+    }
+    r = hcbd__check_rows(p, hcbd__hc_params_rows,
+                         sizeof hcbd__hc_params_rows / sizeof *hcbd__hc_params_rows, HCBD__ALL,
+                         msg, msg_size);
+    if (r != HCBD_OK) return r;
+    HCBD__CHECK(!(p->gdot != 0 && p->reverse_poiseuille), "gdot", p->gdot);
+    /* the offset may move by less than a box edge per step */
+    HCBD__CHECK(fabs(p->gdot * p->L[1] * p->dt) < p->L[0], "gdot", p->gdot);
+    HCBD__CHECK(p->sigma < p->rc, "sigma", p->sigma);
+    reach = 2.0 * p->h > p->rc ? 2.0 * p->h : p->rc;
+    for (d = 0; d < 3; ++d)
+        if (p->L[d] < 2.0 * reach) {
+            if (msg && msg_size)
+                snprintf(msg, msg_size,
+                         "box L[%d] = %g is shorter than twice the interaction range "
+                         "(2h = %g, rc = %g): a pair would see two images",
+                         d, p->L[d], 2.0 * p->h, p->rc);
+            return HCBD_ERR_BOX;
+        }
+    return HCBD_OK;
+}
+
+hcbd_result hcbd_hc_params_theory(const hcbd_hc_params *p, hcbd_hc_theory *t)
+{
+    hcbd_result r;
+    if (!p || !t) return HCBD_ERR_NULL;
+    if ((r = hcbd_hc_params_check(p, NULL, 0)) != HCBD_OK) return r;
+    t->nu = p->eta / p->rho;
+    t->cs = sqrt(7.0 * p->P0 / p->rho);
+    t->m = p->rho / p->nbar;
+    /* each half of width L/2 is a channel: v_max = g (L/2)^2 / (8 nu) */
+    t->v_max_rp = t->nu > 0 ? p->g[0] * p->L[1] * p->L[1] / (32.0 * t->nu) : HUGE_VAL;
+    t->dt_visc = t->nu > 0 ? 0.125 * p->h * p->h / t->nu : HUGE_VAL;
+    t->dt_sound = t->cs > 0 ? 0.25 * p->h / t->cs : HUGE_VAL;
+    return HCBD_OK;
+}
+
+hcbd_result hcbd_hc_params_stability(const hcbd_hc_params *p, hcbd_limit *out, int *n)
+{
+    hcbd_hc_theory th;
+    hcbd_result r;
+    double dtf, g, disp;
+    char msg[8];
+    if (!p || !out || !n) return HCBD_ERR_NULL;
+    *n = 0;
+    if ((r = hcbd_hc_params_check(p, msg, sizeof msg)) != HCBD_OK) return r;
+    hcbd_hc_params_theory(p, &th);
+    dtf = p->dt / p->substeps;
+    g = sqrt(p->g[0] * p->g[0] + p->g[1] * p->g[1] + p->g[2] * p->g[2]);
+    /* Morris et al. 1997 eq. 9-11.  bench/stability: explicit viscous
+       pairs blow up at 2.8 times this bound; the Shardlow sweep is stable
+       at any dt (measured to 32 times, T within 2 % to 16 times). */
+    hcbd__limit(out, n, "viscous: dt_f < 0.125 h^2 / nu",
+                p->pair_integrator == HCBD_PAIR_EULER ? "HCBD_ERR_UNSTABLE (density)" : "accuracy",
+                dtf, th.dt_visc);
+    /* the kernel smooths the shortest sound waves: runs blow up at
+       1.2-1.7 h/c_s, four to seven times Morris's accuracy bound */
+    hcbd__limit(out, n, "acoustic: dt_f < 0.25 h / c_s (Morris)", "accuracy", dtf, th.dt_sound);
+    hcbd__limit(out, n, "acoustic: dt_f < h / c_s", "HCBD_ERR_UNSTABLE (density)", dtf,
+                4.0 * th.dt_sound);
+    if (g > 0)
+        hcbd__limit(out, n, "body force: dt_f < 0.25 sqrt(h / g)", "HCBD_ERR_UNSTABLE (density)", dtf,
+                    0.25 * sqrt(p->h / g));
+    if (p->fluctuations && p->pair_integrator == HCBD_PAIR_EULER)
+        /* measured: T/kT - 1 = 0.33 dt_f / dt_visc (tests, hcbd_fluid) */
+        hcbd__limit(out, n, "Euler viscous noise: T excess 0.33 dt_f/dt_visc < 1 %",
+                    "accuracy", dtf, 0.03 * th.dt_visc);
+    /* polymers: Brownian step plus the fastest flow against the rc/4 guard */
+    disp = sqrt(6.0 * p->kT * p->dt / p->xi) +
+           (fabs(th.v_max_rp) < HUGE_VAL && p->reverse_poiseuille ? fabs(th.v_max_rp) : 0.0) * p->dt +
+           fabs(p->gdot) * 0.5 * p->L[1] * p->dt;
+    hcbd__limit(out, n, "polymer step vs rc/4", "HCBD_ERR_UNSTABLE", disp, 0.25 * p->rc);
+    if (p->alpha > 0)
+        /* one transient spring is as stiff as alpha lambda_eq'^2 <= 4 alpha / rc^2 */
+        hcbd__limit(out, n, "transient spring: dt < xi rc^2 / (2 alpha) per partner",
+                    "HCBD_ERR_UNSTABLE", p->dt, p->xi * p->rc * p->rc / (2.0 * p->alpha));
+    return HCBD_OK;
+}
+
+/* >>HCBD: storage */
+
+static double hcbd__hc_reach(const hcbd_hc_params *p)
+{
+    return 2.0 * p->h > p->rc ? 2.0 * p->h : p->rc;
+}
+
+/* The Verlet skin of all three lists: a tenth of the longest range (blobs
+   move about 1e-4 h per step at Table I, so the lists last for hundreds of
+   steps), and the cells of a list of range cut. */
+static double hcbd__hc_skin(const hcbd_hc_params *p)
+{
+    return 0.1 * hcbd__hc_reach(p);
+}
+
+static void hcbd__hc_dims(const hcbd_hc_params *p, double cut, int nc[3])
+{
+    int d;
+    for (d = 0; d < 3; ++d) {
+        double k = floor(p->L[d] / cut);
+        nc[d] = k < 1 ? 1 : (k > 1024 ? 1024 : (int)k);
+    }
+}
+
+/* Fixed-point bounds of the fluid sums (see hcbd__fixed_scales): a weight
+   w(0) = 1/(pi h^3) (exact), and a pair force that alone moves a blob 16 h
+   in one fluid step, 16 h m/dt_f^2 (at Table I the resolution is then 1e-7
+   in force, 5e-9 of a typical pressure term; beyond it the step stops with
+   HCBD_ERR_UNSTABLE). */
+static void hcbd__hc_fixed_scales(hcbd_hc_world *w)
+{
+    const hcbd_hc_params *p = &w->p;
+    const double dt_f = p->dt / p->substeps;
+    w->core.qW = hcbd__fix_scale(1.0 / (HCBD__PI * p->h * p->h * p->h));
+    w->core.limF = 16.0 * p->h * w->m / (dt_f * dt_f);
+    w->core.qF = hcbd__fix_scale(w->core.limF);
+}
+
+/* Room of the three lists, from the densest mean the capacities or nbar
+   allow: the fluid's half list (def->max_pairs, or 1.5 times the mean plus
+   16 per blob), the polymers' half list (twice the mean plus 32 each, at
+   most all pairs) and the cross list (twice the fluid blobs within rc +
+   skin of a polymer, plus 32). */
+static void hcbd__hc_rooms(const hcbd_hc_world_def *def, int64_t mp[3])
+{
+    const hcbd_hc_params *p = &def->params;
+    const double V = p->L[0] * p->L[1] * p->L[2], s = hcbd__hc_skin(p), c = 4.0 / 3.0 * HCBD__PI;
+    const double rf = 2.0 * p->h + s, rp = p->rc + s;
+    const double nf = def->fluid_capacity, np = def->polymer_capacity;
+    const double nfl = nf / V > p->nbar ? nf / V : p->nbar;
+    double per_f = 0.5 * nfl * c * rf * rf * rf, per_p = np / V * c * rp * rp * rp + 32.0;
+    double per_x = 2.0 * nfl * c * rp * rp * rp + 32.0;
+    if (per_p > np) per_p = np;
+    if (per_x > nf) per_x = nf;
+    mp[0] = def->max_pairs != HCBD_AUTO ? def->max_pairs : (int64_t)(nf * (1.5 * per_f + 16.0));
+    mp[1] = (int64_t)(np * per_p);
+    mp[2] = (int64_t)(np * per_x);
+}
+
+static int hcbd__hc_pair_cap(const hcbd_hc_world_def *def)
+{
+    const hcbd_hc_params *p = &def->params;
+    double V = p->L[0] * p->L[1] * p->L[2], nexp;
+    if (def->pair_capacity != HCBD_AUTO) return def->pair_capacity;
+    if (def->polymer_capacity < 2 || p->alpha <= 0) return 0;
+    nexp = def->polymer_capacity / V * 4.0 / 3.0 * HCBD__PI * p->rc * p->rc * p->rc;
+    if (nexp > def->polymer_capacity) nexp = def->polymer_capacity;
+    return (int)ceil(nexp + 5.0 * sqrt(nexp) + 16.0);
+}
+
+static size_t hcbd__hc_layout(const hcbd_hc_world_def *def, hcbd_hc_world *t, char *base)
+{
+    size_t off = 0, R = sizeof(hcbd_real), I = sizeof(int32_t), D = sizeof(double);
+    size_t nf = (size_t)def->fluid_capacity, np = (size_t)def->polymer_capacity;
+    size_t npc = np * (size_t)hcbd__hc_pair_cap(def), Q = sizeof(int64_t);
+    const hcbd_hc_params *p = &def->params;
+    const double s = hcbd__hc_skin(p);
+    int ncf[3], ncp[3], one[3] = {1, 1, 1}, d;
+    int64_t mp[3];
+    hcbd_hc_world dummy;
+    if (!t) t = &dummy;
+#define HCBD__HA(ptr, bytes) hcbd__take(base, &off, (bytes), (void **)&(t->ptr))
+    HCBD__HA(fx, nf * R); HCBD__HA(fy, nf * R); HCBD__HA(fz, nf * R);
+    HCBD__HA(fvx, nf * R); HCBD__HA(fvy, nf * R); HCBD__HA(fvz, nf * R);
+    HCBD__HA(fn, nf * R); HCBD__HA(fP, nf * R); HCBD__HA(fPn2, nf * R);
+    HCBD__HA(fax, nf * R); HCBD__HA(fay, nf * R); HCBD__HA(faz, nf * R);
+    HCBD__HA(nvx, nf * R); HCBD__HA(nvy, nf * R); HCBD__HA(nvz, nf * R);
+    HCBD__HA(fs, 3 * nf * D);
+    HCBD__HA(px, np * R); HCBD__HA(py, np * R); HCBD__HA(pz, np * R);
+    HCBD__HA(pn, np * R); HCBD__HA(pmu, np * R);
+    HCBD__HA(pFx, np * R); HCBD__HA(pFy, np * R); HCBD__HA(pFz, np * R);
+    HCBD__HA(pux, np * R); HCBD__HA(puy, np * R); HCBD__HA(puz, np * R);
+    HCBD__HA(pbx, np * R); HCBD__HA(pby, np * R); HCBD__HA(pbz, np * R);
+    HCBD__HA(pS, np * R); HCBD__HA(ps, 3 * np * D);
+    HCBD__HA(pair_n, np * I); HCBD__HA(pair_n2, np * I);
+    HCBD__HA(pair_b, npc * I); HCBD__HA(pair_b2, npc * I);
+    HCBD__HA(pair_l, npc * R); HCBD__HA(pair_l2, npc * R);
+    HCBD__HA(pair_eq, npc * R); HCBD__HA(pair_eq2, npc * R);
+    HCBD__HA(core.zig, sizeof(hcbd__zig));
+    HCBD__HA(aW, nf * Q);
+    for (d = 0; d < 3; ++d) HCBD__HA(aF[d], nf * Q);
+    hcbd__hc_rooms(def, mp);
+    hcbd__hc_dims(p, hcbd__hc_reach(p) + s, ncf);
+    hcbd__hc_dims(p, p->rc + s, ncp);
+    hcbd__nl_take(base, &off, &t->lf, nf, ncf, mp[0]);
+    hcbd__nl_take(base, &off, &t->lp, np, ncp, mp[1]);
+    hcbd__nl_take(base, &off, &t->lx, np, one, mp[2]);
+    HCBD__HA(xt_start, (nf + 1) * I); HCBD__HA(xt_a, (size_t)mp[2] * I);
+    HCBD__HA(pw, (size_t)mp[1] * D);
+    HCBD__HA(pf, 3 * (size_t)mp[1] * D); HCBD__HA(pown, np * D);
+    HCBD__HA(rv_start, (np + 1) * I); HCBD__HA(rv_p, (size_t)mp[1] * I);
+    if (hcbd__hc_poly_pairs(p)) {
+        HCBD__HA(pk.n, np * I); HCBD__HA(pk.q, (size_t)mp[1] * sizeof(hcbd__kpair));
+    }
+    HCBD__HA(xw, (size_t)mp[2] * D); HCBD__HA(xt_p, (size_t)mp[2] * I);
+    HCBD__HA(scratch, ((nf > np ? nf : np) + 1) * I);
+    HCBD__HA(fid, nf * I); HCBD__HA(fslot, nf * I);
+    HCBD__HA(sx, nf * R); HCBD__HA(sy, nf * R); HCBD__HA(sz, nf * R);
+    HCBD__HA(svx, nf * R); HCBD__HA(svy, nf * R); HCBD__HA(svz, nf * R);
+    HCBD__HA(sn, nf * R); HCBD__HA(sP, nf * R); HCBD__HA(sIn, nf * R);
+    HCBD__HA(sw_blk, nf * I); HCBD__HA(sw_list, nf * I);
+    HCBD__HA(sw_fine, nf * I); HCBD__HA(sw_tmp, nf * I);
+    {
+        int nb[3], nc[3], room;
+        hcbd__hc_sweep_blocks(p, 0.0, nb, nc, &room);
+        HCBD__HA(sw_start, ((size_t)room + 1) * I);
+        HCBD__HA(sw_fstart, ((size_t)hcbd__hc_fine_cells(p, nb) + 1) * I);
+    }
+#undef HCBD__HA
+    return off + HCBD__ALIGN;
+}
+
+static hcbd_result hcbd__hc_check_def(const hcbd_hc_world_def *def, char *msg, size_t msg_size)
+{
+    hcbd_result r;
+    if (!def) {
+        if (msg && msg_size) snprintf(msg, msg_size, "world definition is NULL");
+        return HCBD_ERR_NULL;
+    }
+    r = hcbd_hc_params_check(&def->params, msg, msg_size);
+    if (r != HCBD_OK) return r;
+    HCBD__CHECK(def->fluid_capacity >= 2 && def->fluid_capacity <= (1 << 28), "fluid_capacity",
+                def->fluid_capacity);
+    HCBD__CHECK(def->polymer_capacity >= 0 && def->polymer_capacity <= (1 << 28),
+                "polymer_capacity", def->polymer_capacity);
+    HCBD__CHECK(def->pair_capacity == HCBD_AUTO ||
+                    (def->pair_capacity >= 0 && def->pair_capacity <= (1 << 20)),
+                "pair_capacity", def->pair_capacity);
+    HCBD__CHECK(def->max_pairs == HCBD_AUTO ||
+                    (def->max_pairs >= 1 && def->max_pairs <= ((int64_t)1 << 40)),
+                "max_pairs", def->max_pairs);
+    return HCBD_OK;
+}
+
+size_t hcbd_hc_world_bytes(const hcbd_hc_world_def *def)
+{
+    if (hcbd__hc_check_def(def, NULL, 0) != HCBD_OK) return 0;
+    return hcbd__hc_layout(def, NULL, NULL);
+}
+
+hcbd_result hcbd_hc_world_init(hcbd_hc_world *w, const hcbd_hc_world_def *def, void *mem,
+                               size_t bytes)
+{
+    hcbd_result r;
+    char *base;
+    const hcbd_hc_params *p;
+    if (!w) return HCBD_ERR_NULL;
+    memset(w, 0, sizeof *w);
+    hcbd__clear(&w->err);
+    r = hcbd__hc_check_def(def, w->err.msg, sizeof w->err.msg);
+    base = hcbd__init_block(&w->err, r, mem, bytes,
+                            r == HCBD_OK ? hcbd__hc_layout(def, NULL, NULL) : 0,
+                            "hcbd_hc_world_bytes");
+    if (!base) return w->err.code;
+    hcbd__hc_layout(def, w, base);
+    w->p = def->params;
+    p = &w->p;
+    w->fcap = def->fluid_capacity;
+    w->pcap = def->polymer_capacity;
+    w->pair_cap = hcbd__hc_pair_cap(def);
+    w->m = p->rho / p->nbar;
+    w->inv_m = 1.0 / w->m;
+    w->cs = sqrt(7.0 * p->P0 / p->rho);
+    w->core.le_on = p->gdot != 0;
+    w->core.le_vjump = p->gdot * p->L[1];
+    w->transient = p->alpha > 0;
+    w->has_fc = p->p_kuhn > 0;
+    w->noise_f = p->fluctuations && p->kT > 0;
+    w->noise_p = p->kT > 0;
+    w->key_fpair = hcbd__mix64(p->seed ^ hcbd__mix64(HCBD__STREAM_FPAIR));
+    w->key_lambda = hcbd__mix64(p->seed ^ hcbd__mix64(HCBD__STREAM_LAMBDA));
+    w->key_poly = hcbd__mix64(p->seed ^ hcbd__mix64(HCBD__STREAM_POLY));
+    w->core.skin = hcbd__hc_skin(p);
+    w->lf.rlist = 2.0 * p->h + w->core.skin;
+    w->lp.rlist = w->lx.rlist = p->rc + w->core.skin;
+    hcbd__hc_fixed_scales(w);
+    hcbd__zig_init(w->core.zig);
+    w->core.live = HCBD__LIVE;
+    return HCBD_OK;
+}
+
+/* >>HCBD: set-up */
+static hcbd_result hcbd__hc_check_xyz(hcbd_hc_world *w, int n, const double *xyz,
+                                      const char *what)
+{
+    int i, d;
+    for (i = 0; i < n; ++i)
+        for (d = 0; d < 3; ++d) {
+            double x = xyz[3 * i + d];
+            if (!isfinite(x))
+                return hcbd__fail(&w->err, HCBD_ERR_NONFINITE, -1, i,
+                                  "%s %d: coordinate %d = %g is not finite", what, i, d, x);
+            if (x < 0 || x >= w->p.L[d])
+                return hcbd__fail(&w->err, HCBD_ERR_PARAM, -1, i,
+                                  "%s %d: coordinate %d = %.17g is outside the box [0, %g)",
+                                  what, i, d, x, w->p.L[d]);
+        }
+    return HCBD_OK;
+}
+
+/* Velocities of the fluid blobs just placed (ids 0..n-1), then the state
+   every set-up ends in: step 0, no pairs, densities and forces current. */
+static hcbd_result hcbd__hc_fluid_finish(hcbd_hc_world *w, int n, const double *v)
+{
+    int i, d;
+    w->nf = n;
+    w->np = 0;
+    w->step = 0;
+    w->core.le_offset = 0;
+    w->npairs = 0;
+    w->ready = 0;
+    if (v) {
+        for (i = 0; i < n; ++i) {
+            w->fvx[i] = (hcbd_real)v[3 * i];
+            w->fvy[i] = (hcbd_real)v[3 * i + 1];
+            w->fvz[i] = (hcbd_real)v[3 * i + 2];
+        }
+    } else {
+        double mom[3] = {0, 0, 0}, s = w->noise_f ? sqrt(w->p.kT / w->m) : 0.0;
+        hcbd_rng g;
+        hcbd__gen gen;
+        hcbd_rng_seed(&g, hcbd__mix64(w->p.seed ^ hcbd__mix64(HCBD__STREAM_FLUID_INIT)));
+        gen.xo = &g;
+        gen.sm = 0;
+        for (i = 0; i < n; ++i) {
+            double u[3];
+            for (d = 0; d < 3; ++d) {
+                u[d] = s > 0 ? s * hcbd__normal(w->core.zig, &gen) : 0.0;
+                mom[d] += u[d];
+            }
+            w->fvx[i] = (hcbd_real)u[0];
+            w->fvy[i] = (hcbd_real)u[1];
+            w->fvz[i] = (hcbd_real)u[2];
+        }
+        for (i = 0; i < n; ++i) {
+            w->fvx[i] = (hcbd_real)(w->fvx[i] - mom[0] / n +
+                                    w->p.gdot * (w->fy[i] - 0.5 * w->p.L[1]));
+            w->fvy[i] = (hcbd_real)(w->fvy[i] - mom[1] / n);
+            w->fvz[i] = (hcbd_real)(w->fvz[i] - mom[2] / n);
+        }
+    }
+    return hcbd_hc_world_refresh(w);
+}
+
+static hcbd_result hcbd__hc_fluid_n(hcbd_hc_world *w, int n)
+{
+    hcbd__clear(&w->err);
+    if (!w->fx) return hcbd__fail(&w->err, HCBD_ERR_STATE, -1, -1, "world is not initialised");
+    if (n > w->fcap)
+        return hcbd__fail(&w->err, HCBD_ERR_CAPACITY, -1, -1,
+                          "fluid N = %d exceeds fluid_capacity %d", n, w->fcap);
+    if (n < 2)
+        return hcbd__fail(&w->err, HCBD_ERR_PARAM, -1, -1,
+                          "fluid N = %d is invalid (need N >= 2)", n);
+    return HCBD_OK;
+}
+
+hcbd_result hcbd_hc_world_set_fluid(hcbd_hc_world *w, int n, const double *xyz, const double *v)
+{
+    int i;
+    hcbd_result r;
+    if (!w) return HCBD_ERR_NULL;
+    hcbd__clear(&w->err);
+    if (!xyz) return hcbd__fail(&w->err, HCBD_ERR_NULL, -1, -1, "xyz is NULL");
+    if ((r = hcbd__hc_fluid_n(w, n)) != HCBD_OK) return r;
+    if ((r = hcbd__hc_check_xyz(w, n, xyz, "fluid blob")) != HCBD_OK) return r;
+    if (v)
+        for (i = 0; i < 3 * n; ++i)
+            if (!isfinite(v[i]))
+                return hcbd__fail(&w->err, HCBD_ERR_NONFINITE, -1, i / 3,
+                                  "fluid blob %d: velocity %d = %g is not finite", i / 3, i % 3, v[i]);
+    for (i = 0; i < n; ++i) {
+        w->fx[i] = (hcbd_real)xyz[3 * i];
+        w->fy[i] = (hcbd_real)xyz[3 * i + 1];
+        w->fz[i] = (hcbd_real)xyz[3 * i + 2];
+    }
+    return hcbd__hc_fluid_finish(w, n, v);
+}
+
+hcbd_result hcbd_hc_world_place_fluid_lattice(hcbd_hc_world *w, int n)
+{
+    int k[3], i, d;
+    double a;
+    hcbd_result r;
+    if (!w) return HCBD_ERR_NULL;
+    if ((r = hcbd__hc_fluid_n(w, n)) != HCBD_OK) return r;
+    /* spacing as even as the box allows, then more sites along the axis
+       with the widest spacing until n fit; rows in y sit a quarter spacing
+       off centre so none lies on y = L/2, where reverse Poiseuille flips */
+    a = cbrt(w->p.L[0] * w->p.L[1] * w->p.L[2] / n);
+    for (d = 0; d < 3; ++d) {
+        k[d] = (int)floor(w->p.L[d] / a + 0.5);
+        if (k[d] < 1) k[d] = 1;
+    }
+    while ((int64_t)k[0] * k[1] * k[2] < n) {
+        int m = 0;
+        for (d = 1; d < 3; ++d)
+            if (w->p.L[d] / k[d] > w->p.L[m] / k[m]) m = d;
+        k[m]++;
+    }
+    for (i = 0; i < n; ++i) {
+        /* n of the sites, spread evenly */
+        int64_t site = (int64_t)i * k[0] * k[1] * k[2] / n;
+        w->fx[i] = (hcbd_real)(((double)(site % k[0]) + 0.5) * w->p.L[0] / k[0]);
+        w->fy[i] = (hcbd_real)(((double)(site / k[0] % k[1]) + 0.75) * w->p.L[1] / k[1]);
+        w->fz[i] = (hcbd_real)(((double)(site / ((int64_t)k[0] * k[1])) + 0.5) * w->p.L[2] / k[2]);
+    }
+    return hcbd__hc_fluid_finish(w, n, NULL);
+}
+
+static hcbd_result hcbd__hc_poly_n(hcbd_hc_world *w, int n)
+{
+    hcbd__clear(&w->err);
+    if (w->nf < 2) return hcbd__fail(&w->err, HCBD_ERR_STATE, -1, -1, "set the fluid blobs first");
+    if (n > w->pcap)
+        return hcbd__fail(&w->err, HCBD_ERR_CAPACITY, -1, -1,
+                          "polymer N = %d exceeds polymer_capacity %d", n, w->pcap);
+    if (n < 0)
+        return hcbd__fail(&w->err, HCBD_ERR_PARAM, -1, -1, "polymer N = %d is negative", n);
+    return HCBD_OK;
+}
+
+/* The present polymers, kept before a new set is written. */
+static void hcbd__hc_poly_keep(hcbd_hc_world *w)
+{
+    const size_t b = (size_t)w->np * sizeof(hcbd_real);
+    if (!b) return;
+    memcpy(w->pbx, w->px, b);
+    memcpy(w->pby, w->py, b);
+    memcpy(w->pbz, w->pz, b);
+}
+
+/* A new set starts with no pair variables; a refused set is undone: the
+   kept positions and the old pair lists (still in the spare buffers, or
+   never swapped out) come back, and their densities and forces are
+   recomputed, so the world is as it was. */
+static hcbd_result hcbd__hc_poly_finish(hcbd_hc_world *w, int n)
+{
+    const int np0 = w->np;
+    const int64_t npairs0 = w->npairs, created0 = w->n_created;
+    const int32_t *pn0 = w->pair_n;
+    hcbd_result r;
+    hcbd_error e;
+    w->np = n;
+    w->fresh_pairs = 1;
+    r = hcbd_hc_world_refresh(w);
+    w->fresh_pairs = 0;
+    if (r == HCBD_OK) return r;
+    e = w->err;
+    if (w->pair_n != pn0) hcbd__hc_swap_pairs(w);
+    w->np = np0;
+    memcpy(w->px, w->pbx, (size_t)np0 * sizeof(hcbd_real));
+    memcpy(w->py, w->pby, (size_t)np0 * sizeof(hcbd_real));
+    memcpy(w->pz, w->pbz, (size_t)np0 * sizeof(hcbd_real));
+    w->npairs = npairs0;
+    hcbd_hc_world_refresh(w);
+    w->n_created = created0;
+    w->err = e;
+    return r;
+}
+
+hcbd_result hcbd_hc_world_set_polymers(hcbd_hc_world *w, int n, const double *xyz)
+{
+    int i;
+    hcbd_result r;
+    if (!w) return HCBD_ERR_NULL;
+    hcbd__clear(&w->err);
+    if (n > 0 && !xyz) return hcbd__fail(&w->err, HCBD_ERR_NULL, -1, -1, "xyz is NULL");
+    if ((r = hcbd__hc_poly_n(w, n)) != HCBD_OK) return r;
+    if ((r = hcbd__hc_check_xyz(w, n, xyz, "polymer blob")) != HCBD_OK) return r;
+    hcbd__hc_poly_keep(w);
+    for (i = 0; i < n; ++i) {
+        w->px[i] = (hcbd_real)xyz[3 * i];
+        w->py[i] = (hcbd_real)xyz[3 * i + 1];
+        w->pz[i] = (hcbd_real)xyz[3 * i + 2];
+    }
+    return hcbd__hc_poly_finish(w, n);
+}
+
+hcbd_result hcbd_hc_world_place_polymers_random(hcbd_hc_world *w, int n)
+{
+    int i;
+    hcbd_result r;
+    hcbd_rng g;
+    if (!w) return HCBD_ERR_NULL;
+    if ((r = hcbd__hc_poly_n(w, n)) != HCBD_OK) return r;
+    hcbd_rng_seed(&g, hcbd__mix64(w->p.seed ^ hcbd__mix64(HCBD__STREAM_POLY_PLACE)));
+    hcbd__hc_poly_keep(w);
+    for (i = 0; i < n; ++i) {
+        double r3[3];
+        int d;
+        for (d = 0; d < 3; ++d) {
+            r3[d] = hcbd_rng_uniform(&g) * w->p.L[d];
+            if (r3[d] >= w->p.L[d]) r3[d] = 0; /* float rounding up to L */
+        }
+        w->px[i] = (hcbd_real)r3[0];
+        w->py[i] = (hcbd_real)r3[1];
+        w->pz[i] = (hcbd_real)r3[2];
+    }
+    return hcbd__hc_poly_finish(w, n);
+}
+
+hcbd_result hcbd_hc_world_get_fluid(const hcbd_hc_world *w, double *xyz, double *v)
+{
+    int i;
+    if (!w || !xyz) return HCBD_ERR_NULL;
+    for (i = 0; i < w->nf; ++i) {
+        xyz[3 * i] = w->fx[i];
+        xyz[3 * i + 1] = w->fy[i];
+        xyz[3 * i + 2] = w->fz[i];
+        if (!v) continue;
+        v[3 * i] = w->fvx[i];
+        v[3 * i + 1] = w->fvy[i];
+        v[3 * i + 2] = w->fvz[i];
+    }
+    return HCBD_OK;
+}
+
+hcbd_result hcbd_hc_world_get_polymers(const hcbd_hc_world *w, double *xyz)
+{
+    int i;
+    if (!w || !xyz) return HCBD_ERR_NULL;
+    for (i = 0; i < w->np; ++i) {
+        xyz[3 * i] = w->px[i];
+        xyz[3 * i + 1] = w->py[i];
+        xyz[3 * i + 2] = w->pz[i];
+    }
+    return HCBD_OK;
+}
+#endif /* HCBD_MODEL_HCBD */
+
+/* ========================================================================= */
+/* >>GI-BD and BD (2014, 2016): the bulk and walled world                    */
+/* ========================================================================= */
+/* >>GI-BD equations (MODEL 1-3), the only place they are written; with
+   q = r/Rc, a = 1 - q, cw = w(0) = 21/(2 pi Rc^3), cf = 15/(2 pi Rc^3):
+     w(r)          = cw a^4 (1 + 4q)                 2014 eq. 22, 2016 eq. 21
+     rho_i         = m N (w(0) + sum_j w(r_ij))      2014 eq. 12; N = 1 (2014)
+                                                     or 1/(1 + w(0)/n#) (2016 eq. 7)
+     f_ij          = cf m (1/rho_i + 1/rho_j) a^3    2014 eq. 24
+     S_ij dt/tau   = m f_ij dt/tau = cs (1/rho_i + 1/rho_j) a^3, cs = cf m^2 dt/tau
+     Euler:    dp_ij = (S dt/tau)(v_j - v_i) + sqrt(2 kT S dt/tau) zeta   2014 eq. 15, 21
+     Shardlow: u' = u e + sqrt(2 kT/m (1 - e^2)) zeta, e = exp(-2 S dt/(m tau)),
+               dp_ij = (m/2)(u' - u), u = v_i - v_j (Shardlow 2003)
+   The helpers take the coefficient first so that every caller rounds the
+   same way. */
+static inline double hcbd__one_minus_exp_series(double x);
+static inline double hcbd__weight(double cw, double q, double a)
+{
+    return cw * a * a * a * a * (4.0 * q + 1.0);
+}
+
+static inline double hcbd__sdt(double cs, double inv_rho_i, double inv_rho_j, double a)
+{
+    return cs * (inv_rho_i + inv_rho_j) * a * a * a;
+}
+
+/* the coefficients of p, unchecked: the world's and hcbd_params_gibd_coef's */
+static void hcbd__gibd_coef(const hcbd_params *p, hcbd_gibd_coef *c)
+{
+    c->Rc = p->Rc;
+    c->m = p->xip * p->tau;
+    c->cw = 21.0 / (2.0 * HCBD__PI * p->Rc * p->Rc * p->Rc);
+    c->cf = 15.0 / (2.0 * HCBD__PI * p->Rc * p->Rc * p->Rc);
+    c->cs = c->cf * c->m * c->m * p->dt / p->tau;
+    c->rho_norm = p->density_norm == 2016 ? 1.0 / (1.0 + c->cw / p->density) : 1.0;
+}
+
+hcbd_result hcbd_params_gibd_coef(const hcbd_params *p, hcbd_gibd_coef *c, char *msg, size_t msg_size)
+{
+    hcbd_result r;
+    if (!p || !c) return HCBD_ERR_NULL;
+    if ((r = hcbd_params_check(p, msg, msg_size)) != HCBD_OK) return r;
+    hcbd__gibd_coef(p, c);
+    return HCBD_OK;
+}
+
+double hcbd_gibd_weight(const hcbd_gibd_coef *c, double r)
+{
+    const double q = r / c->Rc;
+    return q < 1.0 ? hcbd__weight(c->cw, q, 1.0 - q) : 0.0;
+}
+
+double hcbd_gibd_density(const hcbd_gibd_coef *c, double wsum)
+{
+    return c->m * c->rho_norm * (c->cw + wsum);
+}
+
+double hcbd_gibd_sdt(const hcbd_gibd_coef *c, double r, double inv_rho_i, double inv_rho_j)
+{
+    const double q = r / c->Rc;
+    return q < 1.0 ? hcbd__sdt(c->cs, inv_rho_i, inv_rho_j, 1.0 - q) : 0.0;
+}
+
+/* One pair at a time, for engines of their own; the world's sweep makes
+   the same step in chunks (hcbd__sweep_pairs, its velocity-free part in
+   SIMD loops), and test_gibd_pair_exact_exported holds the two together. */
+void hcbd_gibd_pair_exact(const hcbd_gibd_coef *c, double kT, double sdt, const double z[3],
+                          double dvx, double vi[3], double vj[3])
+{
+    const double m = c->m, inv_m = 1.0 / m, x = 2.0 * sdt * inv_m;
+    const double om = x < 0.125 ? hcbd__one_minus_exp_series(x) : -expm1(-x);
+    const double b = sqrt(0.5 * kT * m * om * (2.0 - om)), h = 0.5 * m * om;
+    int d;
+    for (d = 0; d < 3; ++d) {
+        const double P = -h * (vi[d] - vj[d] - (d ? 0.0 : dvx)) + b * z[d];
+        vi[d] += P * inv_m;
+        vj[d] -= P * inv_m;
+    }
+}
+
+/* >>star potential, its force and the force table (MODEL 9) */
+double hcbd_star_potential(double r, double f, double sigma, double eps)
+{
+    double a = eps * (5.0 / 18.0) * pow(f, 1.5), b = 1.0 / (1.0 + 0.5 * sqrt(f));
+    double q = r / sigma;
+    if (q <= 1.0) return a * (-log(q) + b);
+    return a * b / q * exp(-0.5 * sqrt(f) * (q - 1.0));
+}
+
+double hcbd_star_force(double r, double f, double sigma, double eps)
+{
+    double a = eps * (5.0 / 18.0) * pow(f, 1.5), b = 1.0 / (1.0 + 0.5 * sqrt(f));
+    double s = 0.5 * sqrt(f), q = r / sigma;
+    if (q <= 1.0) return a / r;
+    return a * b * exp(-s * (q - 1.0)) * (1.0 / (q * q) + s / q) / sigma;
+}
+
+/* Table lookup with linear interpolation; r below the table is clamped. */
+static inline double hcbd__table(const hcbd_world *w, const double *t, double r)
+{
+    double u = (r - w->p.table_r0) * w->tab_inv_dr;
+    int k;
+    if (u < 0) u = 0;
+    k = (int)u;
+    if (k > w->p.table_n - 2) k = w->p.table_n - 2;
+    u -= k;
+    return t[k] + u * (t[k + 1] - t[k]);
+}
+
+/* The step's star force: F/r as a function of u = r^2 on the outer branch
+   (sigma < r < rcut), in HCBD__STAR_K cubic Hermite pieces that match F/r
+   and its u-derivative at the nodes, no sqrt and no exp; the inner branch
+   a/r^2 is exact.  The error ~ h^4 f''''/384 grows as (s h)^4, s = sqrt(f)/2,
+   so the piece count grows as sqrt(f): 1024 pieces per sqrt(f/128) keep it
+   below 1e-9 relative (test_abs_star_table).  LAMMPS' pair_style table
+   does the same with linear pieces. */
+static int hcbd__star_pieces(const hcbd_params *p)
+{
+    double k = ceil(sqrt(p->f / 128.0));
+    return 1024 * (k < 1 ? 1 : (k > 64 ? 64 : (int)k));
+}
+
+static void hcbd__star_fu(const hcbd_world *w, double u, double *f, double *df)
+{
+    /* F(r) = ab e^{-s(q-1)} (1/q^2 + s/q)/sigma, q = r/sigma; F/r and
+       d(F/r)/du = (r F'(r) - F)/(2 r^3) */
+    const double sg = w->p.sigma, s = w->star.s, r = sqrt(u), q = r / sg;
+    const double e = w->star.ab * exp(-s * (q - 1.0)) / sg;
+    const double F = e * (1.0 / (q * q) + s / q);
+    const double dF = e / sg * (-s * (1.0 / (q * q) + s / q) - 2.0 / (q * q * q) - s / (q * q));
+    *f = F / r;
+    *df = (r * dF - F) / (2.0 * r * r * r);
+}
+
+static void hcbd__star_table_build(hcbd_world *w)
+{
+    const double u0 = w->p.sigma * w->p.sigma, u1 = w->p.rcut * w->p.rcut;
+    const int K = hcbd__star_pieces(&w->p);
+    const double h = (u1 - u0) / K;
+    double f0, d0, f1, d1;
+    int k;
+    w->star_kmax = K - 1;
+    w->star_u0 = u0;
+    if (u1 <= u0) return; /* only the inner branch is in range */
+    w->star_ih = 1.0 / h;
+    hcbd__star_fu(w, u0, &f0, &d0);
+    for (k = 0; k < K; ++k) {
+        double *c = w->star_tab + 4 * k;
+        hcbd__star_fu(w, u0 + (k + 1) * h, &f1, &d1);
+        c[0] = f0;
+        c[1] = h * d0;
+        c[2] = 3.0 * (f1 - f0) - 2.0 * h * d0 - h * d1;
+        c[3] = 2.0 * (f0 - f1) + h * d0 + h * d1;
+        f0 = f1;
+        d0 = d1;
+    }
+}
+
+static inline double hcbd__star_table(const hcbd_world *w, double r2)
+{
+    double t;
+    int k;
+    const double *c;
+    if (r2 <= w->star_u0) return w->star.a / r2;
+    t = (r2 - w->star_u0) * w->star_ih;
+    k = (int)t;
+    if (k > w->star_kmax) k = w->star_kmax;
+    t -= k;
+    c = w->star_tab + 4 * k;
+    return c[0] + t * (c[1] + t * (c[2] + t * c[3]));
+}
+
+static void hcbd__star_coef(double f, double sigma, double eps, hcbd_star_coef *c)
+{
+    c->sigma = sigma;
+    c->a = eps * (5.0 / 18.0) * pow(f, 1.5);
+    c->b = 1.0 / (1.0 + 0.5 * sqrt(f));
+    c->s = 0.5 * sqrt(f);
+    c->ab = c->a * c->b;
+    c->s_sigma = c->s / sigma;
+}
+
+/* Star force over r; the outer branch a b e^{-s(q-1)} (1/q^2 + s/q) /
+   (sigma r) written with one division. */
+static inline double hcbd__star_force_over_r(const hcbd_star_coef *c, double r, double r2)
+{
+    double ir;
+    if (r <= c->sigma) return c->a / r2;
+    ir = 1.0 / r;
+    return c->ab * exp(c->s - c->s_sigma * r) * (c->sigma * ir + c->s) * ir * ir;
+}
+
+hcbd_result hcbd_star_coef_init(hcbd_star_coef *c, double f, double sigma, double eps,
+                                char *msg, size_t msg_size)
+{
+    if (!c) {
+        if (msg && msg_size) snprintf(msg, msg_size, "c is NULL");
+        return HCBD_ERR_NULL;
+    }
+    HCBD__CHECK(isfinite(f) && f > 0, "f", f);
+    HCBD__CHECK(isfinite(sigma) && sigma > 0, "sigma", sigma);
+    HCBD__CHECK(isfinite(eps) && eps > 0, "eps", eps);
+    hcbd__star_coef(f, sigma, eps, c);
+    return HCBD_OK;
+}
+
+double hcbd_star_force_over_r(const hcbd_star_coef *c, double r2)
+{
+    return hcbd__star_force_over_r(c, sqrt(r2), r2);
+}
+
+/* Pair force divided by r, for r < rcut, from the formula. */
+static inline double hcbd__force_over_r(const hcbd_world *w, double r, double r2)
+{
+    if (w->p.potential == HCBD_POT_STAR) return hcbd__star_force_over_r(&w->star, r, r2);
+    return hcbd__table(w, w->tab_F, r) / r;
+}
+
+static double hcbd__pair_energy(const hcbd_world *w, double r)
+{
+    if (w->p.potential == HCBD_POT_STAR)
+        return hcbd_star_potential(r, w->p.f, w->p.sigma, w->p.star_eps);
+    return hcbd__table(w, w->tab_V, r);
+}
+
+/* >>walls (MODEL 4): every wall piece of the engine, here: the repulsion and
+   the depletion width, then the passes of the walled build (artificial
+   particles, Morris pairs) */
+#if HCBD__WALLS
+double hcbd_params_wall_potential(const hcbd_params *p, double y, double *fy)
+{
+    double e = 0.0, f = 0.0, Ly, planes[2];
+    int k;
+    if (fy) *fy = 0.0;
+    if (!p || p->wall.thickness <= 0 || p->wall.mode == HCBD_WALL_REFLECT) return 0.0;
+    Ly = p->L[1];
+    planes[0] = p->wall.thickness - p->wall.plane;
+    planes[1] = Ly - p->wall.thickness + p->wall.plane;
+    for (k = 0; k < 2; ++k) {
+        double s = y - planes[k], x;
+        s -= Ly * floor(s / Ly + 0.5); /* every plane at its minimum image */
+        x = p->wall.a * exp(-p->wall.b * s * s);
+        e += x;
+        f += 2.0 * p->wall.b * s * x;
+    }
+    if (fy) *fy = f;
+    return e;
+}
+
+/* Excluded width per wall of ideal particles, integral over the channel half
+   of 1 - exp(-phi/kT) (Simpson, 4096 intervals: phi varies on 1/sqrt(b)). */
+static double hcbd__depletion(const hcbd_params *p)
+{
+    const int n = 4096;
+    double a = p->wall.thickness, h = 0.5 * p->L[1] - a, s = 0.0;
+    int k;
+    if (p->wall.thickness <= 0 || p->wall.mode == HCBD_WALL_REFLECT || p->kT <= 0) return 0.0;
+    for (k = 0; k <= n; ++k) {
+        double y = a + h * k / n, c = (k == 0 || k == n) ? 1.0 : (k % 2 ? 4.0 : 2.0);
+        s += c * (1.0 - exp(-hcbd_params_wall_potential(p, y, NULL) / p->kT));
+    }
+    return s * h / (3.0 * n);
+}
+
+/* Artificial particles: round(n# x wall volume), only for GI-BD (their job
+   is friction), binned into x-z columns at least Rc wide (one column along
+   an axis with fewer than 3, so no column is visited twice). */
+static int hcbd__art_count(const hcbd_params *p, int acol[2])
+{
+    double n;
+    int d;
+    acol[0] = acol[1] = 1;
+    if (p->wall.thickness <= 0 || p->dynamics != HCBD_DYN_GIBD) return 0;
+    for (d = 0; d < 2; ++d) {
+        double k = floor(p->L[2 * d] / p->Rc);
+        acol[d] = k < 3.0 ? 1 : (k > 256.0 ? 256 : (int)k);
+    }
+    n = floor(p->density * p->L[0] * 2.0 * p->wall.thickness * p->L[2] + 0.5);
+    return n > (double)(INT32_MAX / 4) ? INT32_MAX / 4 : (int)n;
+}
+
+/* The wall set's interfaces, Morris planes and keys from p; m is the
+   carriers' mass, w0 = w(0) */
+static void hcbd__ws_init(hcbd__wallset *s, const hcbd_params *p, double m, double w0)
+{
+    double h = 0.0;
+    s->lo = p->wall.thickness;
+    s->hi = p->L[1] - p->wall.thickness;
+    if (p->wall.thickness > 0 && p->wall.mode == HCBD_WALL_NOSLIP)
+        h = p->wall.shift == HCBD_AUTO ? hcbd__depletion(p) : p->wall.shift;
+    s->morris_lo = s->lo + h;
+    s->morris_hi = s->hi - h;
+    /* an artificial particle's density is that of an ideal bulk,
+       m n# (2016) or m (n# + w(0)) (2014) */
+    s->art_inv_rho = m > 0 ? 1.0 / (m * (p->density_norm == 2016 ? p->density : p->density + w0)) : 0.0;
+    s->key = hcbd__mix64(p->seed ^ hcbd__mix64(HCBD__STREAM_WALL));
+    s->pair_key = hcbd__mix64(p->seed ^ hcbd__mix64(HCBD__STREAM_WALL_PAIR));
+}
+
+/* Wall passes: artificial particles are redrawn every step from a
+   counter-based stream keyed by (seed, step), uniform in the wall slab
+   [-t, t) of the periodic y axis, and sorted into x-z columns. */
+static void hcbd__art_pos(const hcbd_params *p, uint64_t *g, double r[3])
+{
+    r[0] = hcbd__u01(hcbd_splitmix64(g)) * p->L[0];
+    r[1] = (2.0 * hcbd__u01(hcbd_splitmix64(g)) - 1.0) * p->wall.thickness;
+    if (r[1] < 0.0) r[1] += p->L[1];
+    r[2] = hcbd__u01(hcbd_splitmix64(g)) * p->L[2];
+}
+
+/* Counting sort in two passes over the same stream, so no scratch. */
+static void hcbd__ws_draw(hcbd__wallset *s, const hcbd_params *p, int64_t step)
+{
+    const int ncol = s->acol[0] * s->acol[1];
+    const uint64_t key = hcbd__mix64(s->key ^ hcbd__mix64((uint64_t)step));
+    uint64_t g = key;
+    int k, c;
+    for (c = 0; c <= ncol; ++c) s->col_start[c] = 0;
+    for (k = 0; k < s->n_art; ++k) {
+        double r[3];
+        hcbd__art_pos(p, &g, r);
+        s->col_start[hcbd__art_col(s, p, r[0], r[2]) + 1]++;
+    }
+    for (c = 0; c < ncol; ++c) {
+        s->col_start[c + 1] += s->col_start[c];
+        s->col_of[c] = s->col_start[c];
+    }
+    g = key;
+    for (k = 0; k < s->n_art; ++k) {
+        double r[3];
+        int32_t q;
+        hcbd__art_pos(p, &g, r);
+        q = s->col_of[hcbd__art_col(s, p, r[0], r[2])]++;
+        s->ax[q] = (hcbd_real)r[0]; s->ay[q] = (hcbd_real)r[1]; s->az[q] = (hcbd_real)r[2];
+    }
+}
+
+static int hcbd__ws_near(const hcbd__wallset *s, const hcbd_params *p, double y)
+{
+    return y < s->lo + p->Rc || y > s->hi - p->Rc;
+}
+
+/* The Morris pairs' key of a step: the sweep's differs from the Euler
+   step's in its last bit */
+static uint64_t hcbd__ws_pair_step_key(const hcbd__wallset *s, int64_t step, int exact)
+{
+    const uint64_t k = hcbd__mix64(s->pair_key ^ hcbd__mix64((uint64_t)step));
+    return exact ? k | 1 : k;
+}
+
+/* The world's wall passes, on its wall set */
+static void hcbd__wall_draw(hcbd_world *w) { hcbd__ws_draw(&w->ws, &w->p, w->step); }
+
+static int hcbd__near_wall(const hcbd_world *w, double y) { return hcbd__ws_near(&w->ws, &w->p, y); }
+
+/* The world's wall state from the parameters (at init) */
+static void hcbd__walls_init(hcbd_world *w, const hcbd_params *p)
+{
+    w->walls = p->wall.thickness > 0;
+    if (w->walls) {
+        w->has_gauss = p->wall.mode != HCBD_WALL_REFLECT && p->wall.a > 0;
+        w->has_refl = p->wall.mode == HCBD_WALL_REFLECT;
+    }
+    hcbd__ws_init(&w->ws, p, w->gibd ? w->m : 0.0, w->w0);
+    w->wall_pen_step = -1;
+    w->wall_pen_id = -1;
+}
+
+/* wall.guard of the walled build's parameters */
+static int hcbd__wall_guard(const hcbd_world *w) { return w->walls && w->p.wall.guard; }
+
+/* The wall's force on a particle at height y */
+static double hcbd__wall_fy(const hcbd_world *w, double y)
+{
+    double fy;
+    hcbd_params_wall_potential(&w->p, y, &fy);
+    return fy;
+}
+
+#else
+/* Without walls: nothing to draw, no wall near, no force.  The step's calls
+   to these sit behind w->walls, w->ws.n_art and w->has_gauss, all 0. */
+static int hcbd__art_count(const hcbd_params *p, int acol[2])
+{
+    (void)p;
+    acol[0] = acol[1] = 1;
+    return 0;
+}
+static double hcbd__depletion(const hcbd_params *p)
+{
+    (void)p;
+    return 0.0;
+}
+static void hcbd__walls_init(hcbd_world *w, const hcbd_params *p)
+{
+    (void)p;
+    w->wall_pen_step = -1;
+    w->wall_pen_id = -1;
+}
+static inline void hcbd__wall_draw(hcbd_world *w) { (void)w; }
+static inline int hcbd__near_wall(const hcbd_world *w, double y) { (void)w; (void)y; return 0; }
+static inline uint64_t hcbd__ws_pair_step_key(const hcbd__wallset *s, int64_t step, int exact)
+{
+    (void)s; (void)step; (void)exact;
+    return 0;
+}
+static inline int hcbd__wall_guard(const hcbd_world *w) { (void)w; return 0; }
+static inline double hcbd__wall_fy(const hcbd_world *w, double y) { (void)w; (void)y; return 0.0; }
+#endif
+
+/* >>theory and stability limits (hcbd_params_theory, hcbd_params_stability) */
+hcbd_result hcbd_params_theory(const hcbd_params *p, hcbd_theory *t)
+{
+    char msg[8];
+    hcbd_result r;
+    if (!p || !t) return HCBD_ERR_NULL;
+    r = hcbd_params_check(p, msg, sizeof msg);
+    if (r != HCBD_OK) return r;
+    memset(t, 0, sizeof *t);
+    if (p->dynamics != HCBD_DYN_GIBD) return HCBD_ERR_PARAM;
+    t->nu = p->Rc * p->Rc / (28.0 * p->tau);
+    t->m = p->xip * p->tau;
+    t->eta_inf = t->nu * p->density * t->m;
+    t->width = p->L[1] - 2.0 * hcbd__wall_t(p);
+    t->g = p->fext[0] / t->m;
+    t->v_max = t->g * t->width * t->width / (8.0 * t->nu);
+    t->re_max = p->sigma * fabs(t->v_max) / t->nu;
+    t->depletion_width = hcbd__depletion(p);
+    return HCBD_OK;
+}
+
+/* Pair energy from the parameters alone (no world): the star formula or
+   the table, linearly interpolated. */
+static double hcbd__pair_V(const hcbd_params *p, double r)
+{
+    if (p->potential == HCBD_POT_STAR) return hcbd_star_potential(r, p->f, p->sigma, p->star_eps);
+    if (p->potential == HCBD_POT_TABLE && p->table_V && p->table_n > 1) {
+        const double dr = (p->rcut - p->table_r0) / (p->table_n - 1);
+        double x = (r - p->table_r0) / dr;
+        int i = (int)x;
+        if (x <= 0) return p->table_V[0];
+        if (i >= p->table_n - 1) return p->table_V[p->table_n - 1];
+        return p->table_V[i] + (x - i) * (p->table_V[i + 1] - p->table_V[i]);
+    }
+    return 0;
+}
+
+int hcbd_limits_format(const hcbd_limit *l, int n, char *buf, size_t size)
+{
+    int k, len = 0;
+    if (buf && size) buf[0] = 0;
+    for (k = 0; l && k < n; ++k) {
+        const int room = buf && (size_t)len < size;
+        const char *g = l[k].guard;
+        int c = snprintf(room ? buf + len : NULL, room ? size - (size_t)len : 0,
+                         "  %-56s %10.3g / %-10.3g margin %8.3g  %-7s (crossed: %s%s)\n", l[k].name,
+                         l[k].value, l[k].bound, l[k].margin, l[k].margin < 1 ? "CROSSED" : "ok",
+                         !strncmp(g, "HCBD_ERR", 8) ? "the run stops with " : "costs ", g);
+        if (c > 0) len += c;
+    }
+    return len;
+}
+
+/* The closest distance pairs of a liquid reach: where V(r) = 15 kT (a
+   Boltzmann factor of 3e-7), no closer than the star core sigma, whose
+   kink the difference quotient would straddle.  bench/stability finds the
+   real boundaries within 0.8-1.0 of the bound this gives for f = 64..256. */
+static double hcbd__closest(const hcbd_params *p)
+{
+    const double Vk = 15.0 * (p->kT > 0 ? p->kT : 1.0);
+    double lo = p->potential == HCBD_POT_STAR ? p->sigma : p->table_r0, hi = p->rcut;
+    int it;
+    if (hcbd__pair_V(p, lo) <= Vk) return lo;
+    for (it = 0; it < 60; ++it) {
+        double mid = 0.5 * (lo + hi);
+        if (hcbd__pair_V(p, mid) > Vk) lo = mid;
+        else hi = mid;
+    }
+    return hi;
+}
+
+/* Stiffness |dF/dr| of the pair force at r (central difference). */
+static double hcbd__stiffness(const hcbd_params *p, double r)
+{
+    const double e = 1e-4 * p->sigma;
+    if (p->potential == HCBD_POT_STAR)
+        return fabs(hcbd_star_force(r + e, p->f, p->sigma, p->star_eps) -
+                    hcbd_star_force(r - e, p->f, p->sigma, p->star_eps)) / (2 * e);
+    if (p->potential == HCBD_POT_TABLE && p->table_F && p->table_n > 1) {
+        const double dr = (p->rcut - p->table_r0) / (p->table_n - 1);
+        double k = 0;
+        int i;
+        for (i = 1; i < p->table_n; ++i)
+            if (p->table_r0 + i * dr >= r - dr) { /* closer pairs are rare */
+                double s = fabs(p->table_F[i] - p->table_F[i - 1]) / dr;
+                if (s > k) k = s;
+            }
+        return k;
+    }
+    return 0;
+}
+
+hcbd_result hcbd_params_stability(const hcbd_params *p, hcbd_limit *out, int *n)
+{
+    hcbd_theory th;
+    hcbd_result r;
+    const int gibd = p && p->dynamics == HCBD_DYN_GIBD;
+    double k, disp, m = 0;
+    if (!p || !out || !n) return HCBD_ERR_NULL;
+    *n = 0;
+    memset(&th, 0, sizeof th);
+    if ((r = hcbd_params_check(p, NULL, 0)) != HCBD_OK) return r;
+    if (gibd && (r = hcbd_params_theory(p, &th)) != HCBD_OK) return r;
+    if (gibd) m = th.m;
+    if (gibd && p->pair_integrator == HCBD_PAIR_EULER) {
+        hcbd__limit(out, n, "Euler pair friction: tau >= 10 dt (2014 eq. 27)", "accuracy", p->dt,
+                    0.1 * p->tau);
+        /* bench/stability: T/kT - 1 is 0.37 at 0.5 tau, 0.96 at 0.71 tau, and
+           the run falls apart at 0.84 tau; the parameter check stops dt > tau */
+        hcbd__limit(out, n, "Euler pair friction: dt < tau / 2 (runaway at 0.7 tau)",
+                    "none before dt > tau (HCBD_ERR_PARAM)", p->dt, 0.5 * p->tau);
+    }
+    if (p->potential != HCBD_POT_IDEAL) {
+        /* the stiffest pair of a liquid sits near the core (stars) or the
+           table's closest tenth; explicit Euler of x' = -k x / xi is stable
+           for dt < 2 xi / k */
+        k = hcbd__stiffness(p, hcbd__closest(p));
+        if (k > 0) {
+            hcbd__limit(out, n, "force: dt < 2 xi / k, k = |F'| where V = 15 kT", "HCBD_ERR_UNSTABLE",
+                        p->dt, 2.0 * p->xi / k);
+            if (gibd)
+                hcbd__limit(out, n, "force on the background: dt < 2 sqrt(m / k)", "HCBD_ERR_NONFINITE",
+                            p->dt, 2.0 * sqrt(m / k));
+        }
+    }
+    /* rms displacement per step: Brownian plus the carried velocity */
+    disp = sqrt(6.0 * p->kT * p->dt / p->xi) + (gibd ? sqrt(3.0 * p->kT / m) * p->dt : 0.0);
+    if (hcbd__needs_pairs(p)) {
+        hcbd__limit(out, n, "rms step vs skin/2 (list every step beyond)", "speed", disp,
+                    0.5 * hcbd__skin(p));
+        hcbd__limit(out, n, "rms step vs half the interaction range / 4", "HCBD_ERR_UNSTABLE", disp,
+                    0.125 * hcbd__cutmax(p));
+    }
+    if (gibd && (th.g != 0 || p->gdot != 0)) {
+        double re = th.re_max;
+        if (p->gdot != 0) re = p->sigma * fabs(p->gdot) * p->L[1] / th.nu;
+        hcbd__limit(out, n, p->gdot != 0 ? "Reynolds sigma gdot L / nu < 1"
+                                         : "Reynolds sigma g L^2/(8 nu^2) < 1 (2016 eq. 39)",
+                    "accuracy", re, 1.0);
+    }
+    return HCBD_OK;
+}
+
+/* >>world and storage: the block layout, init and particle set-up */
+/* A wall set's artificial particles and columns (none without walls) */
+static void hcbd__ws_take(char *base, size_t *off, hcbd__wallset *s, const hcbd_params *p)
+{
+    const size_t R = sizeof(hcbd_real), I = sizeof(int32_t);
+    size_t A, ncol;
+    s->n_art = hcbd__art_count(p, s->acol);
+    A = (size_t)s->n_art;
+    ncol = (size_t)s->acol[0] * (size_t)s->acol[1];
+    hcbd__take(base, off, A * R, (void **)&s->ax);
+    hcbd__take(base, off, A * R, (void **)&s->ay);
+    hcbd__take(base, off, A * R, (void **)&s->az);
+    hcbd__take(base, off, (ncol + 1) * I, (void **)&s->col_start);
+    hcbd__take(base, off, ncol * I, (void **)&s->col_of);
+}
+
+static int hcbd__cells(const hcbd_params *p, int nc[3])
+{
+    int d, total = 1;
+    double rl = hcbd__cutmax(p) + hcbd__skin(p);
+    for (d = 0; d < 3; ++d) {
+        /* clamp in double before the cast; 256 cells per edge is plenty */
+        double k = hcbd__needs_pairs(p) ? floor(p->L[d] / rl) : 1.0;
+        nc[d] = k < 1.0 ? 1 : (k > 256.0 ? 256 : (int)k);
+        total *= nc[d];
+    }
+    return total;
+}
+
+/* Rows of the exact pair sweep (hcbd__shardlow): y-z cells at least Rc
+   wide, a multiple of 3 along each axis, or a single one. */
+static int hcbd__sweep_rows(const hcbd_params *p, int ns[2])
+{
+    int d;
+    for (d = 0; d < 2; ++d) {
+        double k = floor(p->L[d + 1] / p->Rc);
+        ns[d] = k >= 3.0 ? 3 * (int)((k > 768.0 ? 768.0 : k) / 3.0) : 1;
+    }
+    return ns[0] * ns[1];
+}
+
+static int64_t hcbd__auto_pairs(const hcbd_world_def *def)
+{
+    const hcbd_params *p = &def->params;
+    double V = p->L[0] * p->L[1] * p->L[2];
+    double rl = hcbd__cutmax(p) + hcbd__skin(p);
+    double per = 0.5 * (double)def->capacity / V * (4.0 / 3.0) * HCBD__PI * rl * rl * rl;
+    if (!hcbd__needs_pairs(p)) return 0;
+    return (int64_t)(1.6 * per * def->capacity) + 8 * (int64_t)def->capacity;
+}
+
+/* One function sizes the block and (with base != NULL) assigns pointers, so
+   the two can never disagree. */
+static size_t hcbd__layout(const hcbd_world_def *def, hcbd_world *w, char *base)
+{
+    size_t off = 0, N = (size_t)def->capacity;
+    int nc[3], k;
+    int64_t mp = def->max_pairs == HCBD_AUTO ? hcbd__auto_pairs(def) : def->max_pairs;
+    size_t R = sizeof(hcbd_real), I = sizeof(int32_t);
+    hcbd_world tmp;
+    hcbd_world *t = w ? w : &tmp;
+    const hcbd_params *p = &def->params;
+    int gibd = (hcbd__cells(p, nc), p->dynamics == HCBD_DYN_GIBD), pot = p->potential != HCBD_POT_IDEAL;
+    size_t Q = sizeof(int64_t);
+    hcbd__take(base, &off, sizeof(hcbd__zig), (void **)&t->core.zig);
+#define HCBD__ARR(ptr, bytes) hcbd__take(base, &off, (bytes), (void **)&(t->ptr))
+    HCBD__ARR(x, N * R); HCBD__ARR(y, N * R); HCBD__ARR(z, N * R);
+    hcbd__nl_take(base, &off, &t->nl, N, nc, mp);
+    HCBD__ARR(ix, N * I); HCBD__ARR(iy, N * I); HCBD__ARR(iz, N * I);
+    HCBD__ARR(id, N * I); HCBD__ARR(slot, N * I);
+    HCBD__ARR(scratch, N * 8);
+    HCBD__ARR(lx, N * sizeof(double));
+    HCBD__ARR(fl_p, N * R); HCBD__ARR(fl_b, N * R); HCBD__ARR(fl_c, N * R);
+    t->sw_start = NULL;
+    t->pr2 = NULL;
+    t->sw_n[0] = t->sw_n[1] = 1;
+    if (gibd && p->pair_integrator == HCBD_PAIR_SHARDLOW && p->Rc > 0) {
+        HCBD__ARR(sw_start, ((size_t)hcbd__sweep_rows(p, t->sw_n) + 1) * I);
+        HCBD__ARR(pr2, (size_t)mp * sizeof(double));
+        HCBD__ARR(ux, N * R); HCBD__ARR(uy, N * R); HCBD__ARR(uz, N * R);
+    } else {
+        t->ux = t->uy = t->uz = NULL;
+    }
+    for (k = 0; k < 3; ++k) {
+        t->aF[k] = t->aP[k] = NULL;
+        if (pot) HCBD__ARR(aF[k], N * Q);
+        if (gibd) HCBD__ARR(aP[k], N * Q);
+    }
+    t->aW = NULL;
+    if (gibd) {
+        HCBD__ARR(aW, N * Q);
+        HCBD__ARR(vx, N * R); HCBD__ARR(vy, N * R); HCBD__ARR(vz, N * R);
+        HCBD__ARR(rho, N * R); HCBD__ARR(inv_rho, N * R);
+    } else {
+        t->vx = t->vy = t->vz = NULL;
+        t->rho = t->inv_rho = NULL;
+    }
+    hcbd__ws_take(base, &off, &t->ws, p);
+    if (p->potential == HCBD_POT_TABLE) {
+        HCBD__ARR(tab_F, (size_t)p->table_n * sizeof(double));
+        HCBD__ARR(tab_V, (size_t)p->table_n * sizeof(double));
+    } else {
+        t->tab_F = t->tab_V = NULL;
+    }
+    t->star_tab = NULL;
+    if (p->potential == HCBD_POT_STAR && p->force_table)
+        HCBD__ARR(star_tab, 4 * (size_t)hcbd__star_pieces(p) * sizeof(double));
+#undef HCBD__ARR
+    return off + HCBD__ALIGN; /* room to align the caller's block */
+}
+
+static hcbd_result hcbd__check_def(const hcbd_world_def *def, char *msg, size_t n)
+{
+    hcbd_result r;
+    if (!def) {
+        snprintf(msg, n, "world definition is NULL");
+        return HCBD_ERR_NULL;
+    }
+    if (def->capacity < 1 || def->capacity > (INT32_MAX / 4)) {
+        snprintf(msg, n, "capacity = %d is invalid (need 1 <= capacity <= %d)",
+                 def->capacity, INT32_MAX / 4);
+        return HCBD_ERR_PARAM;
+    }
+    if (def->max_pairs != HCBD_AUTO && (def->max_pairs < 0 || def->max_pairs > INT32_MAX)) {
+        snprintf(msg, n, "max_pairs = %lld is invalid (need HCBD_AUTO or 0..%d)",
+                 (long long)def->max_pairs, INT32_MAX);
+        return HCBD_ERR_PARAM;
+    }
+    r = hcbd_params_check(&def->params, msg, n);
+    if (r != HCBD_OK) return r;
+    if (def->max_pairs == HCBD_AUTO && hcbd__auto_pairs(def) > INT32_MAX) {
+        snprintf(msg, n, "capacity = %d needs more than 2^31 pairs", def->capacity);
+        return HCBD_ERR_CAPACITY;
+    }
+    return HCBD_OK;
+}
+
+size_t hcbd_world_bytes(const hcbd_world_def *def)
+{
+    char msg[256];
+    if (hcbd__check_def(def, msg, sizeof msg) != HCBD_OK) return 0;
+    return hcbd__layout(def, NULL, NULL);
+}
+
+hcbd_result hcbd_world_init(hcbd_world *w, const hcbd_world_def *def, void *mem,
+                            size_t bytes)
+{
+    hcbd_result r;
+    char *base;
+    const hcbd_params *p;
+    hcbd_gibd_coef gc;
+    if (!w) return HCBD_ERR_NULL;
+    memset(w, 0, sizeof *w);
+    hcbd__clear(&w->err);
+    r = hcbd__check_def(def, w->err.msg, sizeof w->err.msg);
+    base = hcbd__init_block(&w->err, r, mem, bytes, r == HCBD_OK ? hcbd__layout(def, NULL, NULL) : 0,
+                            "hcbd_world_bytes");
+    if (!base) return w->err.code;
+    hcbd__layout(def, w, base);
+    w->p = def->params;
+    p = &w->p;
+    w->capacity = def->capacity;
+    w->gibd = p->dynamics == HCBD_DYN_GIBD;
+    hcbd__gibd_coef(p, &gc);
+    w->m = w->gibd ? gc.m : 0.0;
+    w->inv_m = w->gibd ? 1.0 / w->m : 0.0;
+    w->cw = w->w0 = gc.cw;
+    w->cf = gc.cf;
+    w->rho_norm = gc.rho_norm;
+    w->cutmax = hcbd__cutmax(p);
+    w->core.skin = hcbd__skin(p);
+    w->nl.rlist = w->cutmax + w->core.skin;
+    /* List validity is checked before every force evaluation, so a long
+       step never misses a pair; a step longer than half the interaction
+       range jumps through neighbours and means dt is unstable. */
+    w->step_limit = 0.5 * w->cutmax;
+    if (!hcbd__needs_pairs(p)) w->step_limit = HUGE_VAL;
+    hcbd__fixed_scales(w);
+    hcbd__star_coef(p->f, p->sigma, p->star_eps, &w->star);
+    w->has_pairs = hcbd__needs_pairs(p);
+    w->has_fext = p->fext[0] != 0.0 || p->fext[1] != 0.0 || p->fext[2] != 0.0;
+    w->has_noise = p->kT > 0.0;
+    w->shardlow = w->gibd && p->pair_integrator == HCBD_PAIR_SHARDLOW;
+    w->core.le_on = p->gdot != 0.0;
+    w->core.le_vjump = p->gdot * p->L[1];
+    w->fext_dr = w->has_fext && !p->fext_background_only;
+    hcbd__walls_init(w, p);
+    w->seed_key = hcbd__mix64(p->seed ^ hcbd__mix64(HCBD__STREAM_PAIR));
+    w->bd_key = hcbd__mix64(p->seed ^ hcbd__mix64(HCBD__STREAM_BROWNIAN));
+    if (p->potential == HCBD_POT_TABLE) {
+        memcpy(w->tab_F, p->table_F, (size_t)p->table_n * sizeof(double));
+        memcpy(w->tab_V, p->table_V, (size_t)p->table_n * sizeof(double));
+        w->tab_inv_dr = (double)(p->table_n - 1) / (p->rcut - p->table_r0);
+        w->p.table_F = w->tab_F; /* the caller's arrays need not outlive init */
+        w->p.table_V = w->tab_V;
+    }
+    if (w->star_tab) hcbd__star_table_build(w);
+    hcbd__zig_init(w->core.zig);
+    w->n = 0;
+    w->core.live = HCBD__LIVE;
+    return HCBD_OK;
+}
+
+/* Position source for the shared set-up path: the caller's array, a
+   lattice or uniform random points (no temporary allocation). */
+typedef struct hcbd__src {
+    const double *xyz;
+    int lattice_k, n;
+    hcbd_rng g;
+} hcbd__src;
+
+static void hcbd__src_get(const hcbd_world *w, hcbd__src *s, int i, double r[3])
+{
+    int d;
+    if (s->xyz) {
+        for (d = 0; d < 3; ++d) r[d] = s->xyz[3 * i + d];
+    } else if (s->lattice_k > 0) {
+        /* n of the k^3 sites, spread evenly so no region is left empty */
+        int k = s->lattice_k, c[3];
+        int64_t site = (int64_t)i * k * k * k / s->n;
+        c[0] = (int)(site % k); c[1] = (int)(site / k % k); c[2] = (int)(site / ((int64_t)k * k));
+        for (d = 0; d < 3; ++d) r[d] = (c[d] + 0.5) * w->p.L[d] / k;
+    } else {
+        for (d = 0; d < 3; ++d) r[d] = hcbd_rng_uniform(&s->g) * w->p.L[d];
+    }
+}
+
+/* The count and the caller's coordinates, before anything is written. */
+static hcbd_result hcbd__check_particles(hcbd_world *w, int n, const hcbd__src *src)
+{
+    int i;
+    if (n > w->capacity)
+        return hcbd__fail(&w->err, HCBD_ERR_CAPACITY, -1, -1,
+                          "N = %d exceeds the capacity %d", n, w->capacity);
+    if (n < 1)
+        return hcbd__fail(&w->err, HCBD_ERR_PARAM, -1, -1, "N = %d is invalid (need N >= 1)", n);
+    if (w->gibd && n < 2)
+        return hcbd__fail(&w->err, HCBD_ERR_PARAM, -1, -1,
+                          "N = %d: GI-BD needs at least 2 particles", n);
+    if (src->xyz)
+        for (i = 0; i < 3 * n; ++i) {
+            if (!isfinite(src->xyz[i]))
+                return hcbd__fail(&w->err, HCBD_ERR_NONFINITE, -1, i / 3,
+                                  "position %c of particle %d is %g",
+                                  "xyz"[i % 3], i / 3, src->xyz[i]);
+            /* the periodic image counters are int32 */
+            if (fabs(src->xyz[i]) > 1e9 * w->p.L[i % 3])
+                return hcbd__fail(&w->err, HCBD_ERR_PARAM, -1, i / 3,
+                                  "position %c of particle %d is %g, more than 1e9 "
+                                  "box lengths from the box", "xyz"[i % 3], i / 3,
+                                  src->xyz[i]);
+        }
+    return HCBD_OK;
+}
+
+/* Particle i's position from the source, wrapped into the box (generated
+   positions fill the channel only), with its image counts. */
+static void hcbd__src_place(hcbd_world *w, hcbd__src *src, int i, double r[3], int32_t img[3])
+{
+    int d;
+    hcbd__src_get(w, src, i, r);
+    if (w->walls && !src->xyz)
+        r[1] = w->ws.lo + r[1] / w->p.L[1] * (w->ws.hi - w->ws.lo);
+    for (d = 0; d < 3; ++d) {
+        img[d] = 0;
+        hcbd__wrap(w->p.L[d], &r[d], &img[d]);
+    }
+}
+
+/* The positions go to the list-build copies (stale until the next build)
+   first and are checked there, so that a refused configuration leaves
+   the particles as they were. */
+static hcbd_result hcbd__stage_particles(hcbd_world *w, int n, hcbd__src *src)
+{
+    int i;
+    w->nl.list_valid = 0;
+    for (i = 0; i < n; ++i) {
+        double r[3];
+        int32_t img[3];
+        hcbd__src_place(w, src, i, r, img);
+        if (w->walls && (r[1] < w->ws.lo || r[1] > w->ws.hi))
+            return hcbd__fail(&w->err, HCBD_ERR_WALL, -1, i,
+                              "particle %d at y = %g is inside a wall (the channel is "
+                              "%g <= y <= %g)", i, r[1], w->ws.lo, w->ws.hi);
+        w->nl.x0[i] = (hcbd_real)r[0]; w->nl.y0[i] = (hcbd_real)r[1]; w->nl.z0[i] = (hcbd_real)r[2];
+        /* A position that rounds to L in float storage belongs at 0. */
+        if (w->nl.x0[i] >= (hcbd_real)w->p.L[0]) w->nl.x0[i] = 0;
+        if (w->nl.y0[i] >= (hcbd_real)w->p.L[1]) w->nl.y0[i] = 0;
+        if (w->nl.z0[i] >= (hcbd_real)w->p.L[2]) w->nl.z0[i] = 0;
+    }
+    if (w->p.min_distance > 0) {
+        /* O(N^2), once at set-up; in id order, so the first pair reported
+           is the same whatever the storage */
+        const double m2 = w->p.min_distance * w->p.min_distance;
+        int j;
+        for (i = 0; i < n; ++i)
+            for (j = i + 1; j < n; ++j) {
+                double e[3];
+                e[0] = hcbd__mi((double)w->nl.x0[i] - w->nl.x0[j], w->p.L[0]);
+                e[1] = hcbd__mi((double)w->nl.y0[i] - w->nl.y0[j], w->p.L[1]);
+                e[2] = hcbd__mi((double)w->nl.z0[i] - w->nl.z0[j], w->p.L[2]);
+                if (e[0] * e[0] + e[1] * e[1] + e[2] * e[2] < m2)
+                    return hcbd__fail(&w->err, HCBD_ERR_OVERLAP, -1, i,
+                                      "particles %d and %d are %.17g apart, closer than "
+                                      "min_distance = %.17g", i, j,
+                                      sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]),
+                                      w->p.min_distance);
+            }
+    }
+    return HCBD_OK;
+}
+
+/* Particle i's velocity at set-up: Maxwellian from its own generator, on
+   the linear profile of a sheared run (MODEL 5); added into mom. */
+static void hcbd__start_velocity(hcbd_world *w, int i, double mom[3])
+{
+    const double s = w->has_noise ? sqrt(w->p.kT / w->m) : 0.0;
+    double v[3] = {0, 0, 0};
+    hcbd_rng g;
+    int d;
+    hcbd_rng_seed(&g, hcbd__mix64(w->p.seed ^ hcbd__mix64(HCBD__STREAM_PARTICLE)) ^
+                          hcbd__mix64((uint64_t)i + HCBD__GOLDEN));
+    if (s > 0)
+        for (d = 0; d < 3; ++d) v[d] = s * hcbd_world_rng_normal(w, &g);
+    v[0] += w->p.gdot * (w->y[i] - 0.5 * w->p.L[1]);
+    w->vx[i] = (hcbd_real)v[0]; w->vy[i] = (hcbd_real)v[1]; w->vz[i] = (hcbd_real)v[2];
+    for (d = 0; d < 3; ++d) mom[d] += v[d];
+}
+
+/* The staged positions become the particles (ids 0..n-1, velocities at
+   zero total momentum), and the run starts over at step 0. */
+static void hcbd__commit_particles(hcbd_world *w, int n, hcbd__src *src)
+{
+    double mom[3] = {0, 0, 0};
+    int i;
+    w->n = n;
+    for (i = 0; i < n; ++i) {
+        double r[3];
+        int32_t img[3];
+        /* the source replayed for the images */
+        hcbd__src_place(w, src, i, r, img);
+        w->x[i] = w->nl.x0[i]; w->y[i] = w->nl.y0[i]; w->z[i] = w->nl.z0[i];
+        w->ix[i] = img[0]; w->iy[i] = img[1]; w->iz[i] = img[2];
+        w->id[i] = i;
+        w->slot[i] = i;
+        if (w->gibd) hcbd__start_velocity(w, i, mom);
+    }
+    for (i = 0; i < n; ++i) w->lx[i] = 0.0;
+    w->core.le_offset = 0.0;
+    w->nl.le_drift = 0.0;
+    if (w->gibd)
+        for (i = 0; i < n; ++i) {
+            w->vx[i] -= (hcbd_real)(mom[0] / n);
+            w->vy[i] -= (hcbd_real)(mom[1] / n);
+            w->vz[i] -= (hcbd_real)(mom[2] / n);
+        }
+    w->step = 0;
+    w->wall_pen = 0;
+    w->wall_pen_step = -1;
+    w->wall_pen_id = -1;
+    w->nl.list_valid = 0;
+    w->rho_current = 0;
+    w->rho_valid = 0;
+    w->nl.n_rebuilds = 0;
+    /* no artificial particles before the first step draws them */
+    if (w->ws.n_art > 0)
+        memset(w->ws.col_start, 0, (size_t)(w->ws.acol[0] * w->ws.acol[1] + 1) * sizeof(int32_t));
+}
+
+static hcbd_result hcbd__set_particles(hcbd_world *w, int n, hcbd__src *src)
+{
+    hcbd__src src0;
+    hcbd_result r = hcbd__check_particles(w, n, src);
+    if (r != HCBD_OK) return r;
+    src->n = n;
+    src0 = *src;
+    r = hcbd__stage_particles(w, n, src);
+    if (r != HCBD_OK) return r;
+    *src = src0;
+    hcbd__commit_particles(w, n, src);
+    return HCBD_OK;
+}
+
+hcbd_result hcbd_world_set_positions(hcbd_world *w, int n, const double *xyz)
+{
+    hcbd__src s;
+    if (!w) return HCBD_ERR_NULL;
+    hcbd__clear(&w->err);
+    if (!xyz) return hcbd__fail(&w->err, HCBD_ERR_NULL, -1, -1, "positions are NULL");
+    memset(&s, 0, sizeof s);
+    s.xyz = xyz;
+    return hcbd__set_particles(w, n, &s);
+}
+
+hcbd_result hcbd_world_place_lattice(hcbd_world *w, int n)
+{
+    hcbd__src s;
+    if (!w) return HCBD_ERR_NULL;
+    hcbd__clear(&w->err);
+    memset(&s, 0, sizeof s);
+    s.lattice_k = 1;
+    while ((int64_t)s.lattice_k * s.lattice_k * s.lattice_k < n) ++s.lattice_k;
+    return hcbd__set_particles(w, n, &s);
+}
+
+hcbd_result hcbd_world_place_random(hcbd_world *w, int n)
+{
+    hcbd__src s;
+    if (!w) return HCBD_ERR_NULL;
+    hcbd__clear(&w->err);
+    memset(&s, 0, sizeof s);
+    hcbd_rng_seed(&s.g, w->p.seed ^ hcbd__mix64(HCBD__STREAM_PLACE));
+    return hcbd__set_particles(w, n, &s);
+}
+
+hcbd_result hcbd_world_set_velocities(hcbd_world *w, const double *v)
+{
+    int i;
+    if (!w) return HCBD_ERR_NULL;
+    hcbd__clear(&w->err);
+    if (!v) return hcbd__fail(&w->err, HCBD_ERR_NULL, -1, -1, "velocities are NULL");
+    if (!w->gibd)
+        return hcbd__fail(&w->err, HCBD_ERR_STATE, -1, -1,
+                          "classical BD carries no background velocity");
+    for (i = 0; i < 3 * w->n; ++i)
+        if (!isfinite(v[i]))
+            return hcbd__fail(&w->err, HCBD_ERR_NONFINITE, -1, i / 3,
+                              "velocity %c of particle %d is %g", "xyz"[i % 3],
+                              i / 3, v[i]);
+    for (i = 0; i < w->n; ++i) {
+        int s = w->slot[i];
+        w->vx[s] = (hcbd_real)v[3 * i];
+        w->vy[s] = (hcbd_real)v[3 * i + 1];
+        w->vz[s] = (hcbd_real)v[3 * i + 2];
+    }
+    return HCBD_OK;
+}
+
 /* >>wall pairs (MODEL 4): the artificial particles' weights and Morris
    pairs, evaluators of the traversal over its second source */
 #if HCBD__WALLS
@@ -4530,20 +7258,6 @@ void hcbd_walls_morris(const hcbd_walls *wl, int exact, int32_t id, const double
 
 /* >>pair passes (sums in fixed point, see hcbd__fix): densities, forces and
    the exact sweep, each an evaluator of the traversal */
-/* begin for passes whose owner state is sums from zero */
-HCBD__INLINE void hcbd__ev_zero(void *ctx, int i, hcbd__acc *a)
-{
-    (void)ctx; (void)i;
-    memset(a, 0, sizeof *a);
-}
-
-/* end for passes whose sums are all the loop's */
-HCBD__INLINE int hcbd__ev_done(void *ctx, int i, hcbd__acc *a)
-{
-    (void)ctx; (void)i; (void)a;
-    return INT_MAX;
-}
-
 /* GI-BD density weights (MODEL 1-3) into aW, each pair once */
 typedef struct hcbd__dens_ctx {
     hcbd_world *w;
@@ -4898,15 +7612,6 @@ static hcbd_result hcbd__forces(hcbd_world *w, int dens)
    increasing id and partners by increasing id.  The order is set by the
    positions and ids alone, so the bits depend on neither the thread count,
    nor the storage, nor when the list was built. */
-
-/* 1 - e^{-x} for x >= 0: the series for small x (the usual case, 2 f dt/tau
-   ~ 0.05), which is exact to a few ulp and far cheaper than expm1 */
-static inline double hcbd__one_minus_exp_series(double x)
-{
-    return x * (1 - x * (1.0 / 2) * (1 - x * (1.0 / 3) * (1 - x * (1.0 / 4) * (1 - x * (1.0 / 5) *
-           (1 - x * (1.0 / 6) * (1 - x * (1.0 / 7) * (1 - x * (1.0 / 8) * (1 - x * (1.0 / 9) *
-           (1 - x * (1.0 / 10))))))))));
-}
 
 typedef struct hcbd__sweep_ctx {
     hcbd_world *w;
@@ -5364,27 +8069,6 @@ static void hcbd__flux_add(hcbd_world *w)
     w->core.stress_steps++;
 }
 
-/* The stress a run accumulates, in the core of either world: the mean of
-   nparts sums over the steps since it was enabled */
-static hcbd_result hcbd__stress_enable(hcbd__core *c, hcbd_error *e, int64_t step, int on)
-{
-    int k;
-    hcbd__clear(e);
-    if (on != 0 && on != 1) return hcbd__fail(e, HCBD_ERR_PARAM, step, -1, "on = %d is not 0 or 1", on);
-    c->stress_on = on;
-    c->stress_steps = 0;
-    for (k = 0; k < HCBD__NSTRESS; ++k) c->stress_sum[k] = 0.0;
-    return HCBD_OK;
-}
-
-static void hcbd__stress_read(const hcbd__core *c, double *out, int nparts, int64_t *nsteps)
-{
-    int k;
-    for (k = 0; k < nparts; ++k)
-        out[k] = c->stress_steps ? c->stress_sum[k] / (double)c->stress_steps : 0.0;
-    if (nsteps) *nsteps = c->stress_steps;
-}
-
 hcbd_result hcbd_world_stress_enable(hcbd_world *w, int on)
 {
     if (!w) return HCBD_ERR_NULL;
@@ -5401,42 +8085,6 @@ hcbd_result hcbd_world_stress_read(const hcbd_world *w, double out[4], int64_t *
 
 /* >>run-time guard: the whole state, in id order so the particle reported
    is the lowest offending id whatever the storage. */
-/* A species of either world as the shared checks and observables read it:
-   n particles, slot[k] the storage index of id k (NULL: stored by id),
-   positions, velocities (vx NULL: none) and the mass. */
-typedef struct hcbd__vset {
-    int n;
-    const int32_t *slot;
-    const hcbd_real *x, *y, *z, *vx, *vy, *vz;
-    double m;
-} hcbd__vset;
-
-static inline int hcbd__vslot(const hcbd__vset *s, int k) { return s->slot ? s->slot[k] : k; }
-
-/* The checks every particle of every world passes: finite position and
-   velocity, inside the box.  what and id name it in the message. */
-static hcbd_result hcbd__guard_one(hcbd_error *e, int64_t step, const hcbd__vset *s, int k,
-                                   const double L[3], const char *what, int id)
-{
-    const int i = hcbd__vslot(s, k);
-    const double x = s->x[i], y = s->y[i], z = s->z[i];
-    if (!(isfinite(x) && isfinite(y) && isfinite(z)))
-        return hcbd__fail(e, HCBD_ERR_NONFINITE, step, id,
-                          "guard at step %lld: %s %d has position (%g, %g, %g)",
-                          (long long)step, what, k, x, y, z);
-    if (s->vx && !(isfinite(s->vx[i]) && isfinite(s->vy[i]) && isfinite(s->vz[i])))
-        return hcbd__fail(e, HCBD_ERR_NONFINITE, step, id,
-                          "guard at step %lld: %s %d has velocity (%g, %g, %g)",
-                          (long long)step, what, k, (double)s->vx[i], (double)s->vy[i],
-                          (double)s->vz[i]);
-    if (!(x >= 0 && x < L[0] && y >= 0 && y < L[1] && z >= 0 && z < L[2]))
-        return hcbd__fail(e, HCBD_ERR_OUTSIDE, step, id,
-                          "guard at step %lld: %s %d at (%.17g, %.17g, %.17g) is outside the "
-                          "box [0, %g) x [0, %g) x [0, %g)",
-                          (long long)step, what, k, x, y, z, L[0], L[1], L[2]);
-    return HCBD_OK;
-}
-
 static hcbd__vset hcbd__vset_of(const hcbd_world *w)
 {
     hcbd__vset s;
@@ -5560,43 +8208,6 @@ hcbd_result hcbd_world_get_velocities(const hcbd_world *w, double *v)
         v[3 * i + 2] = w->gibd ? w->vz[s] : 0.0;
     }
     return HCBD_OK;
-}
-
-/* Momentum and temperature of a species, summed in id order (storage
-   order changes no bit).  The temperature takes the peculiar velocities:
-   relative to the mean and, under shear, to the imposed profile
-   gdot (y - Ly/2). */
-static void hcbd__momentum(const hcbd__vset *s, double p[3])
-{
-    int k;
-    p[0] = p[1] = p[2] = 0.0;
-    for (k = 0; s->vx && k < s->n; ++k) {
-        const int i = hcbd__vslot(s, k);
-        p[0] += s->m * s->vx[i];
-        p[1] += s->m * s->vy[i];
-        p[2] += s->m * s->vz[i];
-    }
-}
-
-static double hcbd__temperature(const hcbd__vset *s, double gdot, double Ly)
-{
-    double u[3] = {0, 0, 0}, sum = 0.0;
-    int k, d;
-    if (!s->vx || s->n < 2) return 0.0;
-    for (k = 0; k < s->n; ++k) {
-        const int i = hcbd__vslot(s, k);
-        u[0] += s->vx[i] - gdot * (s->y[i] - 0.5 * Ly);
-        u[1] += s->vy[i];
-        u[2] += s->vz[i];
-    }
-    for (d = 0; d < 3; ++d) u[d] /= s->n;
-    for (k = 0; k < s->n; ++k) {
-        const int i = hcbd__vslot(s, k);
-        double a = s->vx[i] - gdot * (s->y[i] - 0.5 * Ly) - u[0];
-        double b = s->vy[i] - u[1], c = s->vz[i] - u[2];
-        sum += a * a + b * b + c * c;
-    }
-    return s->m * sum / (3.0 * (s->n - 1));
 }
 
 void hcbd_world_momentum(const hcbd_world *w, double p[3])
@@ -5860,31 +8471,6 @@ hcbd_result hcbd_world_friction_average(hcbd_world *w, int nk, double out[3])
     return HCBD_OK;
 }
 
-/* Transverse current of n particles visited in id order (idx maps the
-   k-th id to its storage slot; NULL when storage is in id order). */
-static void hcbd__tcurrent(int n, const int32_t *idx, const hcbd_real *x, const hcbd_real *y,
-                           const hcbd_real *z, const hcbd_real *vx, const hcbd_real *vy,
-                           const hcbd_real *vz, const double L[3], int nk, double out[12])
-{
-    int k, d;
-    for (k = 0; k < 12; ++k) out[k] = 0.0;
-    for (k = 0; k < n; ++k) {
-        int q = idx ? idx[k] : k;
-        double r[3], v[3];
-        r[0] = x[q]; r[1] = y[q]; r[2] = z[q];
-        v[0] = vx[q]; v[1] = vy[q]; v[2] = vz[q];
-        for (d = 0; d < 3; ++d) {
-            double ph = 2.0 * HCBD__PI * nk * r[d] / L[d];
-            double c = cos(ph), s = -sin(ph);
-            int a1 = (d + 1) % 3, a2 = (d + 2) % 3;
-            out[4 * d + 0] += v[a1] * c;
-            out[4 * d + 1] += v[a1] * s;
-            out[4 * d + 2] += v[a2] * c;
-            out[4 * d + 3] += v[a2] * s;
-        }
-    }
-}
-
 hcbd_result hcbd_world_transverse_current(const hcbd_world *w, int nk, double out[12])
 {
     int i;
@@ -5894,14 +8480,6 @@ hcbd_result hcbd_world_transverse_current(const hcbd_world *w, int nk, double ou
     if (!w->gibd) return HCBD_OK;
     hcbd__tcurrent(w->n, w->slot, w->x, w->y, w->z, w->vx, w->vy, w->vz, w->p.L, nk, out);
     return HCBD_OK;
-}
-
-static uint64_t hcbd__hash(uint64_t h, const void *p, size_t n)
-{
-    const unsigned char *b = (const unsigned char *)p;
-    size_t k;
-    for (k = 0; k < n; ++k) h = (h ^ b[k]) * 0x100000001B3ULL;
-    return h;
 }
 
 uint64_t hcbd_world_checksum(const hcbd_world *w)
@@ -5929,6 +8507,9 @@ uint64_t hcbd_world_checksum(const hcbd_world *w)
     return h;
 }
 
+/* ========================================================================= */
+/* >>statistics and files: accumulators, fits, checkpoints, XYZ and thermo  */
+/* ========================================================================= */
 /* >>g(r) */
 size_t hcbd_rdf_bytes(int nbins, int block)
 {
@@ -7581,2562 +10162,6 @@ int hcbd_world_thermo_line(const hcbd_world *w, double ns_pstep, char *buf, size
 }
 
 #if HCBD_MODEL == HCBD_MODEL_HCBD
-/* ========================================================================= */
-/* >>HCBD (2018): the fluid and polymer world, after the shared engine       */
-/* ========================================================================= */
-/* >>HCBD: kernels (MODEL 1, 8) */
-double hcbd_m4(double r, double h)
-{
-    double q = r / h, c = 1.0 / (4.0 * HCBD__PI * h * h * h), a, b;
-    if (!(q < 2.0)) return 0.0;
-    a = 2.0 - q;
-    if (q >= 1.0) return c * a * a * a;
-    b = 1.0 - q;
-    return c * (a * a * a - 4.0 * b * b * b);
-}
-
-double hcbd_m4_dr(double r, double h)
-{
-    double q = r / h, c = 1.0 / (4.0 * HCBD__PI * h * h * h * h), a, b;
-    if (!(q < 2.0)) return 0.0;
-    a = 2.0 - q;
-    if (q >= 1.0) return -3.0 * c * a * a;
-    b = 1.0 - q;
-    return c * (-3.0 * a * a + 12.0 * b * b);
-}
-
-/* int_0^a (a - q)^3 (1 - cos(kap q)) dq: its Taylor series while kap a < 2
-   (the closed form cancels there), else a^4/4 - 3 a^2/kap^2 +
-   6 (1 - cos(kap a))/kap^4, by parts. */
-static double hcbd__m4_cos3(double a, double kap)
-{
-    double x = kap * a, t, sum = 0;
-    int m;
-    if (x >= 2) {
-        double s = sin(0.5 * x);
-        return 0.25 * a * a * a * a - 3 * a * a / (kap * kap) + 12 * s * s / (kap * kap * kap * kap);
-    }
-    t = 6 * a * a * a * a / 24; /* m = 0 term 6 a^4 / 4!, never summed */
-    for (m = 1; m < 30; ++m) {
-        t *= -x * x / ((2.0 * m + 3) * (2.0 * m + 4));
-        sum -= t;
-        if (fabs(t) < 1e-18 * fabs(sum)) break;
-    }
-    return sum;
-}
-
-double hcbd_m4_shear_factor(double k, double h)
-{
-    double kap = fabs(k) * h;
-    if (!isfinite(k) || !(h > 0) || !isfinite(h)) return NAN;
-    if (kap < 1e-8) return 1.0; /* K = 1 - O((kh)^2) */
-    /* w = ((2 - q)^3 - 4 (1 - q)^3 [q < 1]) / (4 pi h^3), q = r / h */
-    return 2 / (kap * kap) * (hcbd__m4_cos3(2, kap) - 4 * hcbd__m4_cos3(1, kap));
-}
-
-static double hcbd__rapid_A(double sigma, double rc)
-{
-    return 15.0 / (2.0 * HCBD__PI * (pow(rc, 5) - pow(sigma, 5)));
-}
-
-/* W-RaPiD inside its range, with the normalisation A precomputed */
-static inline double hcbd__rapid(double r, double sg, double rc, double A)
-{
-    return r <= sg ? A * (rc - sg) * (rc + sg - 2.0 * r) : A * (r - rc) * (r - rc);
-}
-
-double hcbd_rapid_w(double r, double sigma, double rc)
-{
-    if (!(r < rc)) return 0.0;
-    return hcbd__rapid(r, sigma, rc, hcbd__rapid_A(sigma, rc));
-}
-
-/* The pair terms of the 2018 model, each from the pair's geometry and
-   its particles' state (the evaluators of the pair passes, in the form of
-   HOOMD-blue's pair evaluators); inside their ranges, r > 0. */
-/* dW/dr of W-RaPiD, with A precomputed */
-static inline double hcbd__rapid_dr(double r, double sg, double rc, double A)
-{
-    return r <= sg ? -2.0 * A * (rc - sg) : 2.0 * A * (r - rc);
-}
-
-/* Flory-Huggins pair force over r (MODEL 8): cfh = p kT / n_max, wd =
-   dW/dr, mua and mub the two blobs' mu(phi) */
-static inline double hcbd__flory_fr(double cfh, double mua, double mub, double wd, double r)
-{
-    return -cfh * (mua + mub) * wd / r;
-}
-
-/* transient spring force over r (MODEL 8): alpha (lambda - u^2) d(u^2)/dr
-   with u = 1 - r/rc */
-static inline double hcbd__spring_fr(double alpha, double lam, double r, double rc)
-{
-    const double u = 1.0 - r / rc;
-    return alpha * (lam - u * u) * (-2.0 * u / rc) / r;
-}
-
-/* Tait pressure pair force over r (MODEL 6): (P_i/n_i^2 + P_j/n_j^2) times
-   wdr = -w'(r)/r */
-static inline double hcbd__tait_fr(double Pn2i, double Pn2j, double wdr)
-{
-    return (Pn2i + Pn2j) * wdr;
-}
-
-/* Morris friction coefficient (MODEL 6): 2 eta wdr / (n_i n_j), from 1/n */
-static inline double hcbd__morris_f(double two_eta, double wdr, double ini, double inj)
-{
-    return two_eta * wdr * ini * inj;
-}
-
-/* M4 kernel over c0 = 1/(4 pi h^3) at q = r/h < 2 */
-static inline double hcbd__m4u(double q)
-{
-    const double a = 2.0 - q, b = q < 1.0 ? 1.0 - q : 0.0;
-    return a * a * a - 4.0 * b * b * b;
-}
-
-/* -w'(r)/r of the M4 kernel at q = r/h < 2, c1h = 1/(4 pi h^5): c1h (12 -
-   9 q) for q < 1 (its r -> 0 limit included), 3 c1h (2 - q)^2/q beyond;
-   one division.  The pressure force is (P_i/n_i^2 + P_j/n_j^2) times it
-   along r_ij, the Morris friction f_ij = -2 eta w'/(n_i n_j r) = 2 eta
-   times it / (n_i n_j). */
-static inline double hcbd__m4_wdr(double q, double c1h)
-{
-    const double a = 2.0 - q;
-    return q < 1.0 ? c1h * (12.0 - 9.0 * q) : 3.0 * c1h * a * a / q;
-}
-
-/* lambda_eq(r) = (1 - r/rc)^2 inside rc */
-static inline double hcbd__leq(double r, double rc)
-{
-    double u = 1.0 - r / rc;
-    return u * u;
-}
-
-double hcbd_rapid_w_dr(double r, double sigma, double rc)
-{
-    if (!(r < rc)) return 0.0;
-    return hcbd__rapid_dr(r, sigma, rc, hcbd__rapid_A(sigma, rc));
-}
-
-/* mu(phi) = -ln(1-phi)/phi^2 - 1/phi - chi = (1/2 - chi) + sum_{k>=1}
-   phi^k/(k+2).  The closed form cancels for small phi (wrong in every
-   float digit at phi ~ 5e-4, chi = 1/2); the series does not, and 1/2 - chi
-   is exact for the paper's chi.  Above 1/4 the closed form loses < 3 bits. */
-#define HCBD__FLORY_MU(T, LOG1P)                                               \
-    {                                                                          \
-        T s = 0, t = 1;                                                        \
-        int k;                                                                 \
-        if (!(phi > 0 && phi < 1)) return (T)NAN;                              \
-        if (phi >= (T)0.25) return -LOG1P(-phi) / (phi * phi) - (T)1 / phi - chi; \
-        for (k = 1; k < 80; ++k) {                                             \
-            T term;                                                            \
-            t *= phi;                                                          \
-            term = t / (T)(k + 2);                                             \
-            s += term;                                                         \
-            if (term < s * (T)1e-18) break;                                    \
-        }                                                                      \
-        return ((T)0.5 - chi) + s;                                             \
-    }
-double hcbd_flory_mu(double phi, double chi) HCBD__FLORY_MU(double, log1p)
-float hcbd_flory_muf(float phi, float chi) HCBD__FLORY_MU(float, log1pf)
-#undef HCBD__FLORY_MU
-
-static hcbd_real hcbd__mu(hcbd_real phi, hcbd_real chi)
-{
-    return sizeof(hcbd_real) == sizeof(float) ? (hcbd_real)hcbd_flory_muf((float)phi, (float)chi)
-                                              : (hcbd_real)hcbd_flory_mu((double)phi, (double)chi);
-}
-
-/* g(phi) + 1 = (1/2 - chi) phi + sum_{k>=2} phi^k / (k (k+1)) */
-double hcbd_flory_g1(double phi, double chi)
-{
-    double s = 0, t = phi;
-    int k;
-    if (!(phi > 0 && phi < 1)) return NAN;
-    if (phi >= 0.25) return (1.0 - phi) / phi * log1p(-phi) - chi * phi + 1.0;
-    for (k = 2; k < 80; ++k) {
-        double term;
-        t *= phi;
-        term = t / ((double)k * (k + 1));
-        s += term;
-        if (term < s * 1e-18) break;
-    }
-    return (0.5 - chi) * phi + s;
-}
-
-/* >>HCBD: parameters and units */
-hcbd_hc_si hcbd_hc_si_default(void)
-{
-    hcbd_hc_si s;
-    s.sigma = 5e-6;
-    s.dt = 1e-6;
-    s.T = 300.0;
-    s.rho = 1000.0;
-    s.eta = 1e-3;
-    s.nbar = 1.9099e15;
-    s.P0 = 0.13;
-    s.xi = 1e-7;
-    s.alpha_kT = 500.0;
-    s.tau_lambda = 1.0;
-    s.p_kuhn = 3e5;
-    s.n_max_cstar = 1e4;
-    s.chi = 0.5;
-    s.h_sigma = 2.0;
-    s.rc_sigma = 2.5;
-    return s;
-}
-
-hcbd_result hcbd_hc_si_params(const hcbd_hc_si *si, double time_unit,
-                              hcbd_hc_params *p, char *msg, size_t msg_size)
-{
-    const double kB = 1.380649e-23;
-    double kT, M, len, cstar;
-    if (!si || !p) {
-        if (msg && msg_size) snprintf(msg, msg_size, "%s is NULL", si ? "p" : "si");
-        return HCBD_ERR_NULL;
-    }
-    if (!(time_unit > 0) || !isfinite(time_unit))
-        return hcbd__param_fail(msg, msg_size, "time_unit", time_unit, "time_unit > 0");
-    if (!(si->sigma > 0) || !isfinite(si->sigma))
-        return hcbd__param_fail(msg, msg_size, "si.sigma", si->sigma, "sigma > 0");
-    if (!(si->T > 0) || !isfinite(si->T)) return hcbd__param_fail(msg, msg_size, "si.T", si->T, "T > 0");
-    memset(p, 0, sizeof *p);
-    kT = kB * si->T;
-    len = si->sigma;
-    M = kT * time_unit * time_unit / (len * len); /* mass unit */
-    cstar = 3.0 / (4.0 * HCBD__PI);              /* one blob per sphere of radius sigma */
-    p->L[0] = 33.75;
-    p->L[1] = p->L[2] = 10.0;
-    p->dt = si->dt / time_unit;
-    p->kT = 1.0;
-    p->rho = si->rho * len * len * len / M;
-    p->nbar = si->nbar * len * len * len;
-    p->eta = si->eta * len * time_unit / M;
-    p->P0 = si->P0 * len * time_unit * time_unit / M;
-    p->h = si->h_sigma;
-    p->fluctuations = 1;
-    p->pair_integrator = HCBD_PAIR_SHARDLOW;
-    p->substeps = 1;
-    p->xi = si->xi * time_unit / M;
-    p->sigma = 1.0;
-    p->rc = si->rc_sigma;
-    p->alpha = si->alpha_kT;
-    p->tau_lambda = si->tau_lambda / time_unit;
-    p->p_kuhn = si->p_kuhn;
-    p->n_max = si->n_max_cstar * cstar;
-    p->chi = si->chi;
-    p->coupling = HCBD_COUPLE_SHEPARD;
-    p->seed = 1;
-    p->threads = 1;
-    p->guard_every = 1;
-    return hcbd_hc_params_check(p, msg, msg_size);
-}
-
-hcbd_hc_params hcbd_hc_params_default(void)
-{
-    hcbd_hc_params p;
-    hcbd_hc_si si = hcbd_hc_si_default();
-    hcbd_hc_si_params(&si, 1e-6, &p, NULL, 0);
-    return p;
-}
-
-hcbd_hc_world_def hcbd_hc_world_def_default(void)
-{
-    hcbd_hc_world_def d;
-    memset(&d, 0, sizeof d);
-    d.fluid_capacity = 1024;
-    d.polymer_capacity = 0;
-    d.pair_capacity = HCBD_AUTO;
-    d.max_pairs = HCBD_AUTO;
-    d.params = hcbd_hc_params_default();
-    return d;
-}
-
-#define HCBD__H_D(f, flags, lo, hi, what) HCBD__ROWD(hcbd_hc_params, f, HCBD__ALL, flags, lo, hi, what)
-#define HCBD__H_I(f, flags, lo, hi, what) HCBD__ROWI(hcbd_hc_params, f, HCBD__ALL, flags, lo, hi, what)
-static const hcbd__prow hcbd__hc_params_rows[] = {
-    HCBD__H_D(L[0], HCBD__GT, 0, HCBD__INF, "box edge"),
-    HCBD__H_D(L[1], HCBD__GT, 0, HCBD__INF, "box edge"),
-    HCBD__H_D(L[2], HCBD__GT, 0, HCBD__INF, "box edge"),
-    HCBD__H_D(dt, HCBD__GT, 0, HCBD__INF, "time step"),
-    HCBD__H_D(kT, 0, 0, HCBD__INF, "thermal energy"),
-    HCBD__H_D(rho, HCBD__GT, 0, HCBD__INF, "fluid mass density"),
-    HCBD__H_D(nbar, HCBD__GT, 0, HCBD__INF, "fluid blob number density"),
-    HCBD__H_D(eta, 0, 0, HCBD__INF, "shear viscosity"),
-    HCBD__H_D(P0, 0, 0, HCBD__INF, "Tait pressure coefficient"),
-    HCBD__H_D(h, HCBD__GT, 0, HCBD__INF, "M4 support"),
-    HCBD__H_I(fluctuations, 0, 0, 1, "thermal fluctuations switch"),
-    HCBD__H_D(g[0], 0, -HCBD__INF, HCBD__INF, "body force"),
-    HCBD__H_D(g[1], 0, -HCBD__INF, HCBD__INF, "body force"),
-    HCBD__H_D(g[2], 0, -HCBD__INF, HCBD__INF, "body force"),
-    HCBD__H_I(reverse_poiseuille, 0, 0, 1, "reverse Poiseuille switch"),
-    HCBD__H_D(gdot, 0, -HCBD__INF, HCBD__INF, "shear rate"),
-    HCBD__H_D(xi, HCBD__GT, 0, HCBD__INF, "polymer friction"),
-    HCBD__H_D(rc, HCBD__GT, 0, HCBD__INF, "RaPiD kernel range"),
-    HCBD__H_D(sigma, HCBD__GT, 0, HCBD__INF, "RaPiD kernel core"),
-    HCBD__H_D(alpha, 0, 0, HCBD__INF, "transient strength"),
-    HCBD__H_D(tau_lambda, HCBD__GT, 0, HCBD__INF, "pair variable relaxation time"),
-    HCBD__H_D(p_kuhn, 0, 0, HCBD__INF, "Kuhn segments per blob"),
-    HCBD__H_D(n_max, HCBD__GT, 0, HCBD__INF, "melt number density"),
-    HCBD__H_D(chi, 0, -HCBD__INF, HCBD__INF, "Flory-Huggins chi"),
-    HCBD__H_I(coupling, 0, HCBD_COUPLE_SHEPARD, HCBD_COUPLE_RAW, "hcbd_coupling"),
-    HCBD__H_I(pair_integrator, 0, HCBD_PAIR_EULER, HCBD_PAIR_SHARDLOW, "hcbd_pair_integrator"),
-    HCBD__H_I(substeps, 0, 1, 1000, "fluid steps per polymer step"),
-    HCBD__H_I(threads, 0, 1, 1024, "OpenMP threads"),
-    HCBD__H_I(guard_every, 0, 0, INT_MAX, "guard interval"),
-};
-#undef HCBD__H_D
-#undef HCBD__H_I
-
-hcbd_result hcbd_hc_params_check(const hcbd_hc_params *p, char *msg, size_t msg_size)
-{
-    int d;
-    double reach;
-    hcbd_result r;
-    if (!p) {
-        if (msg && msg_size) snprintf(msg, msg_size, "params is NULL");
-        return HCBD_ERR_NULL;
-    }
-    r = hcbd__check_rows(p, hcbd__hc_params_rows,
-                         sizeof hcbd__hc_params_rows / sizeof *hcbd__hc_params_rows, HCBD__ALL,
-                         msg, msg_size);
-    if (r != HCBD_OK) return r;
-    HCBD__CHECK(!(p->gdot != 0 && p->reverse_poiseuille), "gdot", p->gdot);
-    /* the offset may move by less than a box edge per step */
-    HCBD__CHECK(fabs(p->gdot * p->L[1] * p->dt) < p->L[0], "gdot", p->gdot);
-    HCBD__CHECK(p->sigma < p->rc, "sigma", p->sigma);
-    reach = 2.0 * p->h > p->rc ? 2.0 * p->h : p->rc;
-    for (d = 0; d < 3; ++d)
-        if (p->L[d] < 2.0 * reach) {
-            if (msg && msg_size)
-                snprintf(msg, msg_size,
-                         "box L[%d] = %g is shorter than twice the interaction range "
-                         "(2h = %g, rc = %g): a pair would see two images",
-                         d, p->L[d], 2.0 * p->h, p->rc);
-            return HCBD_ERR_BOX;
-        }
-    return HCBD_OK;
-}
-
-hcbd_result hcbd_hc_params_theory(const hcbd_hc_params *p, hcbd_hc_theory *t)
-{
-    hcbd_result r;
-    if (!p || !t) return HCBD_ERR_NULL;
-    if ((r = hcbd_hc_params_check(p, NULL, 0)) != HCBD_OK) return r;
-    t->nu = p->eta / p->rho;
-    t->cs = sqrt(7.0 * p->P0 / p->rho);
-    t->m = p->rho / p->nbar;
-    /* each half of width L/2 is a channel: v_max = g (L/2)^2 / (8 nu) */
-    t->v_max_rp = t->nu > 0 ? p->g[0] * p->L[1] * p->L[1] / (32.0 * t->nu) : HUGE_VAL;
-    t->dt_visc = t->nu > 0 ? 0.125 * p->h * p->h / t->nu : HUGE_VAL;
-    t->dt_sound = t->cs > 0 ? 0.25 * p->h / t->cs : HUGE_VAL;
-    return HCBD_OK;
-}
-
-hcbd_result hcbd_hc_params_stability(const hcbd_hc_params *p, hcbd_limit *out, int *n)
-{
-    hcbd_hc_theory th;
-    hcbd_result r;
-    double dtf, g, disp;
-    char msg[8];
-    if (!p || !out || !n) return HCBD_ERR_NULL;
-    *n = 0;
-    if ((r = hcbd_hc_params_check(p, msg, sizeof msg)) != HCBD_OK) return r;
-    hcbd_hc_params_theory(p, &th);
-    dtf = p->dt / p->substeps;
-    g = sqrt(p->g[0] * p->g[0] + p->g[1] * p->g[1] + p->g[2] * p->g[2]);
-    /* Morris et al. 1997 eq. 9-11.  bench/stability: explicit viscous
-       pairs blow up at 2.8 times this bound; the Shardlow sweep is stable
-       at any dt (measured to 32 times, T within 2 % to 16 times). */
-    hcbd__limit(out, n, "viscous: dt_f < 0.125 h^2 / nu",
-                p->pair_integrator == HCBD_PAIR_EULER ? "HCBD_ERR_UNSTABLE (density)" : "accuracy",
-                dtf, th.dt_visc);
-    /* the kernel smooths the shortest sound waves: runs blow up at
-       1.2-1.7 h/c_s, four to seven times Morris's accuracy bound */
-    hcbd__limit(out, n, "acoustic: dt_f < 0.25 h / c_s (Morris)", "accuracy", dtf, th.dt_sound);
-    hcbd__limit(out, n, "acoustic: dt_f < h / c_s", "HCBD_ERR_UNSTABLE (density)", dtf,
-                4.0 * th.dt_sound);
-    if (g > 0)
-        hcbd__limit(out, n, "body force: dt_f < 0.25 sqrt(h / g)", "HCBD_ERR_UNSTABLE (density)", dtf,
-                    0.25 * sqrt(p->h / g));
-    if (p->fluctuations && p->pair_integrator == HCBD_PAIR_EULER)
-        /* measured: T/kT - 1 = 0.33 dt_f / dt_visc (tests, hcbd_fluid) */
-        hcbd__limit(out, n, "Euler viscous noise: T excess 0.33 dt_f/dt_visc < 1 %",
-                    "accuracy", dtf, 0.03 * th.dt_visc);
-    /* polymers: Brownian step plus the fastest flow against the rc/4 guard */
-    disp = sqrt(6.0 * p->kT * p->dt / p->xi) +
-           (fabs(th.v_max_rp) < HUGE_VAL && p->reverse_poiseuille ? fabs(th.v_max_rp) : 0.0) * p->dt +
-           fabs(p->gdot) * 0.5 * p->L[1] * p->dt;
-    hcbd__limit(out, n, "polymer step vs rc/4", "HCBD_ERR_UNSTABLE", disp, 0.25 * p->rc);
-    if (p->alpha > 0)
-        /* one transient spring is as stiff as alpha lambda_eq'^2 <= 4 alpha / rc^2 */
-        hcbd__limit(out, n, "transient spring: dt < xi rc^2 / (2 alpha) per partner",
-                    "HCBD_ERR_UNSTABLE", p->dt, p->xi * p->rc * p->rc / (2.0 * p->alpha));
-    return HCBD_OK;
-}
-
-/* >>HCBD: equations without a world (hcbd_hc_params_coef, the pair terms
-   for engines of their own) */
-/* Tait pressure at density n (MODEL 6), as the world's density pass
-   computes it */
-static inline double hcbd__tait_p(double P0, double inv_nbar, double n)
-{
-    const double x = n * inv_nbar;
-    double x7 = x * x * x;
-    x7 = x7 * x7 * x;
-    return P0 * (x7 - 1.0);
-}
-
-hcbd_result hcbd_hc_params_coef(const hcbd_hc_params *p, hcbd_hc_coef *c, char *msg, size_t msg_size)
-{
-    hcbd_result r;
-    const double h = p ? p->h : 0.0;
-    if (!p || !c) return HCBD_ERR_NULL;
-    if ((r = hcbd_hc_params_check(p, msg, msg_size)) != HCBD_OK) return r;
-    memset(c, 0, sizeof *c);
-    c->m = p->rho / p->nbar;
-    c->h = h;
-    c->kT = p->kT;
-    c->dt = p->dt / p->substeps;
-    c->w0 = 1.0 / (HCBD__PI * h * h * h);
-    c->c0 = 1.0 / (4.0 * HCBD__PI * h * h * h);
-    c->c1h = 1.0 / (4.0 * HCBD__PI * h * h * h * h * h);
-    c->two_eta = 2.0 * p->eta;
-    c->P0 = p->P0;
-    c->inv_nbar = 1.0 / p->nbar;
-    c->sn = p->fluctuations && p->kT > 0 ? sqrt(2.0 * p->kT / c->dt) : 0.0;
-    c->sigma = p->sigma;
-    c->rc = p->rc;
-    c->A = hcbd__rapid_A(p->sigma, p->rc);
-    c->W0 = c->A * (p->rc - p->sigma) * (p->rc + p->sigma);
-    c->cfh = p->p_kuhn * p->kT / p->n_max;
-    c->n_max = p->n_max;
-    c->chi = p->chi;
-    c->p_kuhn = p->p_kuhn;
-    c->alpha = p->alpha;
-    if (p->alpha > 0) {
-        c->e_lambda = exp(-p->dt / p->tau_lambda);
-        c->s_lambda = p->kT > 0 ? sqrt(p->kT / p->alpha * -expm1(-2.0 * p->dt / p->tau_lambda)) : 0.0;
-    }
-    return HCBD_OK;
-}
-
-/* the pair terms: NAN (or nothing added) without coefficients */
-double hcbd_hc_fluid_weight(const hcbd_hc_coef *c, double r)
-{
-    double q;
-    if (!c) return NAN;
-    q = r * (1.0 / c->h);
-    return q < 2.0 ? c->c0 * hcbd__m4u(q) : 0.0;
-}
-
-double hcbd_hc_fluid_density(const hcbd_hc_coef *c, double wsum) { return c ? c->w0 + wsum : NAN; }
-
-double hcbd_hc_fluid_pressure(const hcbd_hc_coef *c, double n)
-{
-    return c ? hcbd__tait_p(c->P0, c->inv_nbar, n) : NAN;
-}
-
-void hcbd_hc_fluid_pair(const hcbd_hc_coef *c, const double d[3], double r, double n_i, double n_j,
-                        double P_i, double P_j, const double dv[3], const double z[3], double F[3])
-{
-    double q, wdr, f, fp, sf;
-    int k;
-    if (!c || !d || !dv || !F) return;
-    q = r * (1.0 / c->h);
-    if (!(q < 2.0) || !(r > 0.0)) return;
-    wdr = hcbd__m4_wdr(q, c->c1h);
-    f = hcbd__morris_f(c->two_eta, wdr, 1.0 / n_i, 1.0 / n_j);
-    fp = hcbd__tait_fr(P_i / (n_i * n_i), P_j / (n_j * n_j), wdr);
-    sf = z ? c->sn * sqrt(f) : 0.0;
-    for (k = 0; k < 3; ++k) F[k] += fp * d[k] - f * dv[k] + (z ? sf * z[k] : 0.0);
-}
-
-double hcbd_hc_polymer_weight(const hcbd_hc_coef *c, double r)
-{
-    if (!c) return NAN;
-    return r < c->rc ? hcbd__rapid(r, c->sigma, c->rc, c->A) : 0.0;
-}
-
-double hcbd_hc_polymer_density(const hcbd_hc_coef *c, double wsum) { return c ? c->W0 + wsum : NAN; }
-
-double hcbd_hc_polymer_mu(const hcbd_hc_coef *c, double n)
-{
-    if (!c) return NAN;
-    return c->p_kuhn > 0 ? (double)hcbd__mu((hcbd_real)(n / c->n_max), (hcbd_real)c->chi) : 0.0;
-}
-
-double hcbd_hc_polymer_pair(const hcbd_hc_coef *c, double r, double mu_a, double mu_b, double lambda)
-{
-    double fr = 0.0, ft = 0.0;
-    if (!c) return NAN;
-    if (!(r < c->rc) || !(r > 0.0)) return 0.0;
-    if (c->p_kuhn > 0) fr = hcbd__flory_fr(c->cfh, mu_a, mu_b, hcbd__rapid_dr(r, c->sigma, c->rc, c->A), r);
-    if (c->alpha > 0) ft = hcbd__spring_fr(c->alpha, lambda, r, c->rc);
-    return fr + ft;
-}
-
-double hcbd_hc_lambda_eq(const hcbd_hc_coef *c, double r)
-{
-    if (!c) return NAN;
-    return r < c->rc ? hcbd__leq(r, c->rc) : 0.0;
-}
-
-double hcbd_hc_lambda_step(const hcbd_hc_coef *c, double lambda, double lambda_eq, double z)
-{
-    return c ? lambda_eq + (lambda - lambda_eq) * c->e_lambda + c->s_lambda * z : NAN;
-}
-
-void hcbd_hc_noise_stream_init(hcbd_hc_noise_stream *ns, uint64_t seed)
-{
-    if (!ns) return;
-    ns->fpair_key = hcbd__mix64(seed ^ hcbd__mix64(HCBD__STREAM_FPAIR));
-    ns->lambda_key = hcbd__mix64(seed ^ hcbd__mix64(HCBD__STREAM_LAMBDA));
-    ns->poly_key = hcbd__mix64(seed ^ hcbd__mix64(HCBD__STREAM_POLY));
-    hcbd__zig_init(&ns->zig);
-}
-
-void hcbd_hc_noise_fluid_pair(const hcbd_hc_noise_stream *ns, int64_t k, int32_t i, int32_t j, double out[3])
-{
-    if (!ns || !out) return;
-    hcbd__deviates3(&ns->zig, HCBD_NOISE_GAUSS,
-                    hcbd__pair_key(hcbd__mix64(ns->fpair_key ^ hcbd__mix64((uint64_t)k)), i, j), out);
-}
-
-double hcbd_hc_noise_lambda(const hcbd_hc_noise_stream *ns, int64_t step, int32_t a, int32_t b)
-{
-    if (!ns) return NAN;
-    return hcbd__normal_at(&ns->zig, hcbd__pair_key(hcbd__mix64(ns->lambda_key ^ hcbd__mix64((uint64_t)step)), a, b));
-}
-
-void hcbd_hc_noise_polymer(const hcbd_hc_noise_stream *ns, int64_t step, int32_t a, double out[3])
-{
-    if (!ns || !out) return;
-    hcbd__deviates3(&ns->zig, HCBD_NOISE_GAUSS,
-                    hcbd__mix64(hcbd__mix64(ns->poly_key ^ hcbd__mix64((uint64_t)step)) ^ (uint64_t)(uint32_t)a),
-                    out);
-}
-
-/* Blocks of the exact fluid sweep (hcbd__hc_fluid_shardlow).  Along an
-   axis either one block, or, for s = 1, 2 or 3, blocks a hair wider than
-   reach/s (so that round-off in the block of a blob cannot let a pair span
-   more than s), a multiple of 2s + 1 of them: blocks 2s + 1 apart share no
-   blob and take one colour.  Every colour is a pass over the whole fluid,
-   so the grid is the one with the fewest colours that still puts 8 blocks
-   in a colour (or, where none does, the most).  Returns the blocks along
-   each axis and their colours; with room, the most blocks any grid of any
-   tilt could have (for sizing). */
-#define HCBD__SWEEP_PER 8
-static int hcbd__hc_sweep_blocks(const hcbd_hc_params *p, double t, int nb[3], int nc[3], int *room)
-{
-    const double cut = 2.0 * p->h;
-    int k[3][4], c[3][4], d, s, o0, o1, o2, best = -1, bcol = 0, bcnt = 0, rm = 1;
-    for (d = 0; d < 3; ++d) {
-        const double reach = d == 0 ? cut * sqrt(1.0 + t * t) : cut;
-        int most = 1;
-        k[d][0] = c[d][0] = 1;
-        for (s = 1; s <= 3; ++s) {
-            double kk = floor(p->L[d] * s / (reach * (1.0 + 1e-9)));
-            c[d][s] = 2 * s + 1;
-            if (kk > 96.0) kk = 96.0;
-            k[d][s] = c[d][s] * (int)(kk / c[d][s]);
-            if (k[d][s] / c[d][s] < 2) k[d][s] = 0; /* one per colour: no use */
-            if (c[d][s] * (int)(floor(p->L[d] * s / (cut * (1.0 + 1e-9))) / c[d][s]) > most)
-                most = c[d][s] * (int)(floor(p->L[d] * s / (cut * (1.0 + 1e-9))) / c[d][s]);
-        }
-        rm *= most > 96 ? 96 : most;
-    }
-    nb[0] = nb[1] = nb[2] = nc[0] = nc[1] = nc[2] = 1;
-    for (o0 = 0; o0 < 4; ++o0)
-        for (o1 = 0; o1 < 4; ++o1)
-            for (o2 = 0; o2 < 4; ++o2) {
-                int cnt, col, key;
-                if (!k[0][o0] || !k[1][o1] || !k[2][o2]) continue;
-                cnt = k[0][o0] / c[0][o0] * (k[1][o1] / c[1][o1]) * (k[2][o2] / c[2][o2]);
-                col = c[0][o0] * c[1][o1] * c[2][o2];
-                key = cnt < HCBD__SWEEP_PER ? cnt : HCBD__SWEEP_PER;
-                if (key > best || (key == best && (col < bcol || (col == bcol && cnt > bcnt)))) {
-                    best = key; bcol = col; bcnt = cnt;
-                    nb[0] = k[0][o0]; nb[1] = k[1][o1]; nb[2] = k[2][o2];
-                    nc[0] = c[0][o0]; nc[1] = c[1][o1]; nc[2] = c[2][o2];
-                }
-            }
-    if (room) *room = rm;
-    return nb[0] * nb[1] * nb[2];
-}
-
-/* The sweep's fine cells (owners in a block go cell by cell, then by id, so
-   that consecutive owners share their partners): about h wide. */
-static int hcbd__hc_fine_cells(const hcbd_hc_params *p, int nf[3])
-{
-    int d;
-    for (d = 0; d < 3; ++d) {
-        const double k = floor(p->L[d] / p->h);
-        nf[d] = k < 1.0 ? 1 : (k > 256.0 ? 256 : (int)k);
-    }
-    return nf[0] * nf[1] * nf[2];
-}
-
-/* the exact sweep's pair and order for engines of their own (see the
-   declarations; hcbd__hc_sweep_pairs is the world's pair, held to this
-   one by test_hc_exact_sweep_exported) */
-void hcbd_hc_fluid_pair_exact(const hcbd_hc_coef *c, double r, double inv_n_i, double inv_n_j, double du,
-                              const double z[3], double v_i[3], double v_j[3], double P[3])
-{
-    double q, x, om, cc, inv_m;
-    int k;
-    if (!c || !v_i || !v_j || !P) return;
-    P[0] = P[1] = P[2] = 0.0;
-    q = r * (1.0 / c->h);
-    if (!(q < 2.0) || !(r >= 0.0)) return;
-    inv_m = 1.0 / c->m;
-    x = 2.0 * c->dt * inv_m * c->two_eta * inv_n_i * hcbd__m4_wdr(q, c->c1h) * inv_n_j;
-    om = x < 0.125 ? hcbd__one_minus_exp_series(x) : -expm1(-x);
-    cc = 0.5 * c->m * om;
-    P[0] = -cc * (v_i[0] - v_j[0] - du);
-    P[1] = -cc * (v_i[1] - v_j[1]);
-    P[2] = -cc * (v_i[2] - v_j[2]);
-    if (z && c->sn > 0.0) {
-        const double b = sqrt(0.5 * c->kT * c->m * om * (2.0 - om));
-        for (k = 0; k < 3; ++k) P[k] += b * z[k];
-    }
-    for (k = 0; k < 3; ++k) {
-        v_i[k] += P[k] * inv_m;
-        v_j[k] -= P[k] * inv_m;
-    }
-}
-
-hcbd_result hcbd_hc_params_sweep_grid(const hcbd_hc_params *p, double s, int nb[3], int nc[3], int nf[3], char *msg,
-                               size_t msg_size)
-{
-    hcbd_result r;
-    if (!p || !nb || !nc || !nf) return HCBD_ERR_NULL;
-    if ((r = hcbd_hc_params_check(p, msg, msg_size)) != HCBD_OK) return r;
-    if (!isfinite(s)) {
-        if (msg && msg_size) snprintf(msg, msg_size, "Lees-Edwards offset s = %.17g is not finite", s);
-        return HCBD_ERR_PARAM;
-    }
-    s -= p->L[0] * floor(s / p->L[0] + 0.5);
-    hcbd__hc_fine_cells(p, nf);
-    hcbd__hc_sweep_blocks(p, s / p->L[1], nb, nc, NULL);
-    return HCBD_OK;
-}
-
-/* >>HCBD: storage */
-
-static double hcbd__hc_reach(const hcbd_hc_params *p)
-{
-    return 2.0 * p->h > p->rc ? 2.0 * p->h : p->rc;
-}
-
-/* The Verlet skin of all three lists: a tenth of the longest range (blobs
-   move about 1e-4 h per step at Table I, so the lists last for hundreds of
-   steps), and the cells of a list of range cut. */
-static double hcbd__hc_skin(const hcbd_hc_params *p)
-{
-    return 0.1 * hcbd__hc_reach(p);
-}
-
-static void hcbd__hc_dims(const hcbd_hc_params *p, double cut, int nc[3])
-{
-    int d;
-    for (d = 0; d < 3; ++d) {
-        double k = floor(p->L[d] / cut);
-        nc[d] = k < 1 ? 1 : (k > 1024 ? 1024 : (int)k);
-    }
-}
-
-/* Fixed-point bounds of the fluid sums (see hcbd__fixed_scales): a weight
-   w(0) = 1/(pi h^3) (exact), and a pair force that alone moves a blob 16 h
-   in one fluid step, 16 h m/dt_f^2 (at Table I the resolution is then 1e-7
-   in force, 5e-9 of a typical pressure term; beyond it the step stops with
-   HCBD_ERR_UNSTABLE). */
-static void hcbd__hc_fixed_scales(hcbd_hc_world *w)
-{
-    const hcbd_hc_params *p = &w->p;
-    const double dt_f = p->dt / p->substeps;
-    w->core.qW = hcbd__fix_scale(1.0 / (HCBD__PI * p->h * p->h * p->h));
-    w->core.limF = 16.0 * p->h * w->m / (dt_f * dt_f);
-    w->core.qF = hcbd__fix_scale(w->core.limF);
-}
-
-/* Room of the three lists, from the densest mean the capacities or nbar
-   allow: the fluid's half list (def->max_pairs, or 1.5 times the mean plus
-   16 per blob), the polymers' half list (twice the mean plus 32 each, at
-   most all pairs) and the cross list (twice the fluid blobs within rc +
-   skin of a polymer, plus 32). */
-static void hcbd__hc_rooms(const hcbd_hc_world_def *def, int64_t mp[3])
-{
-    const hcbd_hc_params *p = &def->params;
-    const double V = p->L[0] * p->L[1] * p->L[2], s = hcbd__hc_skin(p), c = 4.0 / 3.0 * HCBD__PI;
-    const double rf = 2.0 * p->h + s, rp = p->rc + s;
-    const double nf = def->fluid_capacity, np = def->polymer_capacity;
-    const double nfl = nf / V > p->nbar ? nf / V : p->nbar;
-    double per_f = 0.5 * nfl * c * rf * rf * rf, per_p = np / V * c * rp * rp * rp + 32.0;
-    double per_x = 2.0 * nfl * c * rp * rp * rp + 32.0;
-    if (per_p > np) per_p = np;
-    if (per_x > nf) per_x = nf;
-    mp[0] = def->max_pairs != HCBD_AUTO ? def->max_pairs : (int64_t)(nf * (1.5 * per_f + 16.0));
-    mp[1] = (int64_t)(np * per_p);
-    mp[2] = (int64_t)(np * per_x);
-}
-
-static int hcbd__hc_pair_cap(const hcbd_hc_world_def *def)
-{
-    const hcbd_hc_params *p = &def->params;
-    double V = p->L[0] * p->L[1] * p->L[2], nexp;
-    if (def->pair_capacity != HCBD_AUTO) return def->pair_capacity;
-    if (def->polymer_capacity < 2 || p->alpha <= 0) return 0;
-    nexp = def->polymer_capacity / V * 4.0 / 3.0 * HCBD__PI * p->rc * p->rc * p->rc;
-    if (nexp > def->polymer_capacity) nexp = def->polymer_capacity;
-    return (int)ceil(nexp + 5.0 * sqrt(nexp) + 16.0);
-}
-
-/* polymer pair forces (transient or Flory-Huggins): what hcbd__hc_poly_forces
-   sums, and what the kept pairs (hcbd_hc_world.pk) are for */
-static int hcbd__hc_poly_pairs(const hcbd_hc_params *p)
-{
-    return p->alpha > 0 || p->p_kuhn > 0;
-}
-
-static size_t hcbd__hc_layout(const hcbd_hc_world_def *def, hcbd_hc_world *t, char *base)
-{
-    size_t off = 0, R = sizeof(hcbd_real), I = sizeof(int32_t), D = sizeof(double);
-    size_t nf = (size_t)def->fluid_capacity, np = (size_t)def->polymer_capacity;
-    size_t npc = np * (size_t)hcbd__hc_pair_cap(def), Q = sizeof(int64_t);
-    const hcbd_hc_params *p = &def->params;
-    const double s = hcbd__hc_skin(p);
-    int ncf[3], ncp[3], one[3] = {1, 1, 1}, d;
-    int64_t mp[3];
-    hcbd_hc_world dummy;
-    if (!t) t = &dummy;
-#define HCBD__HA(ptr, bytes) hcbd__take(base, &off, (bytes), (void **)&(t->ptr))
-    HCBD__HA(fx, nf * R); HCBD__HA(fy, nf * R); HCBD__HA(fz, nf * R);
-    HCBD__HA(fvx, nf * R); HCBD__HA(fvy, nf * R); HCBD__HA(fvz, nf * R);
-    HCBD__HA(fn, nf * R); HCBD__HA(fP, nf * R); HCBD__HA(fPn2, nf * R);
-    HCBD__HA(fax, nf * R); HCBD__HA(fay, nf * R); HCBD__HA(faz, nf * R);
-    HCBD__HA(nvx, nf * R); HCBD__HA(nvy, nf * R); HCBD__HA(nvz, nf * R);
-    HCBD__HA(fs, 3 * nf * D);
-    HCBD__HA(px, np * R); HCBD__HA(py, np * R); HCBD__HA(pz, np * R);
-    HCBD__HA(pn, np * R); HCBD__HA(pmu, np * R);
-    HCBD__HA(pFx, np * R); HCBD__HA(pFy, np * R); HCBD__HA(pFz, np * R);
-    HCBD__HA(pux, np * R); HCBD__HA(puy, np * R); HCBD__HA(puz, np * R);
-    HCBD__HA(pbx, np * R); HCBD__HA(pby, np * R); HCBD__HA(pbz, np * R);
-    HCBD__HA(pS, np * R); HCBD__HA(ps, 3 * np * D);
-    HCBD__HA(pair_n, np * I); HCBD__HA(pair_n2, np * I);
-    HCBD__HA(pair_b, npc * I); HCBD__HA(pair_b2, npc * I);
-    HCBD__HA(pair_l, npc * R); HCBD__HA(pair_l2, npc * R);
-    HCBD__HA(pair_eq, npc * R); HCBD__HA(pair_eq2, npc * R);
-    HCBD__HA(core.zig, sizeof(hcbd__zig));
-    HCBD__HA(aW, nf * Q);
-    for (d = 0; d < 3; ++d) HCBD__HA(aF[d], nf * Q);
-    hcbd__hc_rooms(def, mp);
-    hcbd__hc_dims(p, hcbd__hc_reach(p) + s, ncf);
-    hcbd__hc_dims(p, p->rc + s, ncp);
-    hcbd__nl_take(base, &off, &t->lf, nf, ncf, mp[0]);
-    hcbd__nl_take(base, &off, &t->lp, np, ncp, mp[1]);
-    hcbd__nl_take(base, &off, &t->lx, np, one, mp[2]);
-    HCBD__HA(xt_start, (nf + 1) * I); HCBD__HA(xt_a, (size_t)mp[2] * I);
-    HCBD__HA(pw, (size_t)mp[1] * D);
-    HCBD__HA(pf, 3 * (size_t)mp[1] * D); HCBD__HA(pown, np * D);
-    HCBD__HA(rv_start, (np + 1) * I); HCBD__HA(rv_p, (size_t)mp[1] * I);
-    if (hcbd__hc_poly_pairs(p)) {
-        HCBD__HA(pk.n, np * I); HCBD__HA(pk.q, (size_t)mp[1] * sizeof(hcbd__kpair));
-    }
-    HCBD__HA(xw, (size_t)mp[2] * D); HCBD__HA(xt_p, (size_t)mp[2] * I);
-    HCBD__HA(scratch, ((nf > np ? nf : np) + 1) * I);
-    HCBD__HA(fid, nf * I); HCBD__HA(fslot, nf * I);
-    HCBD__HA(sx, nf * R); HCBD__HA(sy, nf * R); HCBD__HA(sz, nf * R);
-    HCBD__HA(svx, nf * R); HCBD__HA(svy, nf * R); HCBD__HA(svz, nf * R);
-    HCBD__HA(sn, nf * R); HCBD__HA(sP, nf * R); HCBD__HA(sIn, nf * R);
-    HCBD__HA(sw_blk, nf * I); HCBD__HA(sw_list, nf * I);
-    HCBD__HA(sw_fine, nf * I); HCBD__HA(sw_tmp, nf * I);
-    {
-        int nb[3], nc[3], room;
-        hcbd__hc_sweep_blocks(p, 0.0, nb, nc, &room);
-        HCBD__HA(sw_start, ((size_t)room + 1) * I);
-        HCBD__HA(sw_fstart, ((size_t)hcbd__hc_fine_cells(p, nb) + 1) * I);
-    }
-#undef HCBD__HA
-    return off + HCBD__ALIGN;
-}
-
-static hcbd_result hcbd__hc_check_def(const hcbd_hc_world_def *def, char *msg, size_t msg_size)
-{
-    hcbd_result r;
-    if (!def) {
-        if (msg && msg_size) snprintf(msg, msg_size, "world definition is NULL");
-        return HCBD_ERR_NULL;
-    }
-    r = hcbd_hc_params_check(&def->params, msg, msg_size);
-    if (r != HCBD_OK) return r;
-    HCBD__CHECK(def->fluid_capacity >= 2 && def->fluid_capacity <= (1 << 28), "fluid_capacity",
-                def->fluid_capacity);
-    HCBD__CHECK(def->polymer_capacity >= 0 && def->polymer_capacity <= (1 << 28),
-                "polymer_capacity", def->polymer_capacity);
-    HCBD__CHECK(def->pair_capacity == HCBD_AUTO ||
-                    (def->pair_capacity >= 0 && def->pair_capacity <= (1 << 20)),
-                "pair_capacity", def->pair_capacity);
-    HCBD__CHECK(def->max_pairs == HCBD_AUTO ||
-                    (def->max_pairs >= 1 && def->max_pairs <= ((int64_t)1 << 40)),
-                "max_pairs", def->max_pairs);
-    return HCBD_OK;
-}
-
-size_t hcbd_hc_world_bytes(const hcbd_hc_world_def *def)
-{
-    if (hcbd__hc_check_def(def, NULL, 0) != HCBD_OK) return 0;
-    return hcbd__hc_layout(def, NULL, NULL);
-}
-
-hcbd_result hcbd_hc_world_init(hcbd_hc_world *w, const hcbd_hc_world_def *def, void *mem,
-                               size_t bytes)
-{
-    hcbd_result r;
-    char *base;
-    const hcbd_hc_params *p;
-    if (!w) return HCBD_ERR_NULL;
-    memset(w, 0, sizeof *w);
-    hcbd__clear(&w->err);
-    r = hcbd__hc_check_def(def, w->err.msg, sizeof w->err.msg);
-    base = hcbd__init_block(&w->err, r, mem, bytes,
-                            r == HCBD_OK ? hcbd__hc_layout(def, NULL, NULL) : 0,
-                            "hcbd_hc_world_bytes");
-    if (!base) return w->err.code;
-    hcbd__hc_layout(def, w, base);
-    w->p = def->params;
-    p = &w->p;
-    w->fcap = def->fluid_capacity;
-    w->pcap = def->polymer_capacity;
-    w->pair_cap = hcbd__hc_pair_cap(def);
-    w->m = p->rho / p->nbar;
-    w->inv_m = 1.0 / w->m;
-    w->cs = sqrt(7.0 * p->P0 / p->rho);
-    w->core.le_on = p->gdot != 0;
-    w->core.le_vjump = p->gdot * p->L[1];
-    w->transient = p->alpha > 0;
-    w->has_fc = p->p_kuhn > 0;
-    w->noise_f = p->fluctuations && p->kT > 0;
-    w->noise_p = p->kT > 0;
-    w->key_fpair = hcbd__mix64(p->seed ^ hcbd__mix64(HCBD__STREAM_FPAIR));
-    w->key_lambda = hcbd__mix64(p->seed ^ hcbd__mix64(HCBD__STREAM_LAMBDA));
-    w->key_poly = hcbd__mix64(p->seed ^ hcbd__mix64(HCBD__STREAM_POLY));
-    w->core.skin = hcbd__hc_skin(p);
-    w->lf.rlist = 2.0 * p->h + w->core.skin;
-    w->lp.rlist = w->lx.rlist = p->rc + w->core.skin;
-    hcbd__hc_fixed_scales(w);
-    hcbd__zig_init(w->core.zig);
-    w->core.live = HCBD__LIVE;
-    return HCBD_OK;
-}
-
-/* >>HCBD: set-up */
-static hcbd_result hcbd__hc_check_xyz(hcbd_hc_world *w, int n, const double *xyz,
-                                      const char *what)
-{
-    int i, d;
-    for (i = 0; i < n; ++i)
-        for (d = 0; d < 3; ++d) {
-            double x = xyz[3 * i + d];
-            if (!isfinite(x))
-                return hcbd__fail(&w->err, HCBD_ERR_NONFINITE, -1, i,
-                                  "%s %d: coordinate %d = %g is not finite", what, i, d, x);
-            if (x < 0 || x >= w->p.L[d])
-                return hcbd__fail(&w->err, HCBD_ERR_PARAM, -1, i,
-                                  "%s %d: coordinate %d = %.17g is outside the box [0, %g)",
-                                  what, i, d, x, w->p.L[d]);
-        }
-    return HCBD_OK;
-}
-
-/* Velocities of the fluid blobs just placed (ids 0..n-1), then the state
-   every set-up ends in: step 0, no pairs, densities and forces current. */
-static hcbd_result hcbd__hc_fluid_finish(hcbd_hc_world *w, int n, const double *v)
-{
-    int i, d;
-    w->nf = n;
-    w->np = 0;
-    w->step = 0;
-    w->core.le_offset = 0;
-    w->npairs = 0;
-    w->ready = 0;
-    if (v) {
-        for (i = 0; i < n; ++i) {
-            w->fvx[i] = (hcbd_real)v[3 * i];
-            w->fvy[i] = (hcbd_real)v[3 * i + 1];
-            w->fvz[i] = (hcbd_real)v[3 * i + 2];
-        }
-    } else {
-        double mom[3] = {0, 0, 0}, s = w->noise_f ? sqrt(w->p.kT / w->m) : 0.0;
-        hcbd_rng g;
-        hcbd__gen gen;
-        hcbd_rng_seed(&g, hcbd__mix64(w->p.seed ^ hcbd__mix64(HCBD__STREAM_FLUID_INIT)));
-        gen.xo = &g;
-        gen.sm = 0;
-        for (i = 0; i < n; ++i) {
-            double u[3];
-            for (d = 0; d < 3; ++d) {
-                u[d] = s > 0 ? s * hcbd__normal(w->core.zig, &gen) : 0.0;
-                mom[d] += u[d];
-            }
-            w->fvx[i] = (hcbd_real)u[0];
-            w->fvy[i] = (hcbd_real)u[1];
-            w->fvz[i] = (hcbd_real)u[2];
-        }
-        for (i = 0; i < n; ++i) {
-            w->fvx[i] = (hcbd_real)(w->fvx[i] - mom[0] / n +
-                                    w->p.gdot * (w->fy[i] - 0.5 * w->p.L[1]));
-            w->fvy[i] = (hcbd_real)(w->fvy[i] - mom[1] / n);
-            w->fvz[i] = (hcbd_real)(w->fvz[i] - mom[2] / n);
-        }
-    }
-    return hcbd_hc_world_refresh(w);
-}
-
-static hcbd_result hcbd__hc_fluid_n(hcbd_hc_world *w, int n)
-{
-    hcbd__clear(&w->err);
-    if (!w->fx) return hcbd__fail(&w->err, HCBD_ERR_STATE, -1, -1, "world is not initialised");
-    if (n > w->fcap)
-        return hcbd__fail(&w->err, HCBD_ERR_CAPACITY, -1, -1,
-                          "fluid N = %d exceeds fluid_capacity %d", n, w->fcap);
-    if (n < 2)
-        return hcbd__fail(&w->err, HCBD_ERR_PARAM, -1, -1,
-                          "fluid N = %d is invalid (need N >= 2)", n);
-    return HCBD_OK;
-}
-
-hcbd_result hcbd_hc_world_set_fluid(hcbd_hc_world *w, int n, const double *xyz, const double *v)
-{
-    int i;
-    hcbd_result r;
-    if (!w) return HCBD_ERR_NULL;
-    hcbd__clear(&w->err);
-    if (!xyz) return hcbd__fail(&w->err, HCBD_ERR_NULL, -1, -1, "xyz is NULL");
-    if ((r = hcbd__hc_fluid_n(w, n)) != HCBD_OK) return r;
-    if ((r = hcbd__hc_check_xyz(w, n, xyz, "fluid blob")) != HCBD_OK) return r;
-    if (v)
-        for (i = 0; i < 3 * n; ++i)
-            if (!isfinite(v[i]))
-                return hcbd__fail(&w->err, HCBD_ERR_NONFINITE, -1, i / 3,
-                                  "fluid blob %d: velocity %d = %g is not finite", i / 3, i % 3, v[i]);
-    for (i = 0; i < n; ++i) {
-        w->fx[i] = (hcbd_real)xyz[3 * i];
-        w->fy[i] = (hcbd_real)xyz[3 * i + 1];
-        w->fz[i] = (hcbd_real)xyz[3 * i + 2];
-    }
-    return hcbd__hc_fluid_finish(w, n, v);
-}
-
-hcbd_result hcbd_hc_world_place_fluid_lattice(hcbd_hc_world *w, int n)
-{
-    int k[3], i, d;
-    double a;
-    hcbd_result r;
-    if (!w) return HCBD_ERR_NULL;
-    if ((r = hcbd__hc_fluid_n(w, n)) != HCBD_OK) return r;
-    /* spacing as even as the box allows, then more sites along the axis
-       with the widest spacing until n fit; rows in y sit a quarter spacing
-       off centre so none lies on y = L/2, where reverse Poiseuille flips */
-    a = cbrt(w->p.L[0] * w->p.L[1] * w->p.L[2] / n);
-    for (d = 0; d < 3; ++d) {
-        k[d] = (int)floor(w->p.L[d] / a + 0.5);
-        if (k[d] < 1) k[d] = 1;
-    }
-    while ((int64_t)k[0] * k[1] * k[2] < n) {
-        int m = 0;
-        for (d = 1; d < 3; ++d)
-            if (w->p.L[d] / k[d] > w->p.L[m] / k[m]) m = d;
-        k[m]++;
-    }
-    for (i = 0; i < n; ++i) {
-        /* n of the sites, spread evenly */
-        int64_t site = (int64_t)i * k[0] * k[1] * k[2] / n;
-        w->fx[i] = (hcbd_real)(((double)(site % k[0]) + 0.5) * w->p.L[0] / k[0]);
-        w->fy[i] = (hcbd_real)(((double)(site / k[0] % k[1]) + 0.75) * w->p.L[1] / k[1]);
-        w->fz[i] = (hcbd_real)(((double)(site / ((int64_t)k[0] * k[1])) + 0.5) * w->p.L[2] / k[2]);
-    }
-    return hcbd__hc_fluid_finish(w, n, NULL);
-}
-
-static hcbd_result hcbd__hc_poly_n(hcbd_hc_world *w, int n)
-{
-    hcbd__clear(&w->err);
-    if (w->nf < 2) return hcbd__fail(&w->err, HCBD_ERR_STATE, -1, -1, "set the fluid blobs first");
-    if (n > w->pcap)
-        return hcbd__fail(&w->err, HCBD_ERR_CAPACITY, -1, -1,
-                          "polymer N = %d exceeds polymer_capacity %d", n, w->pcap);
-    if (n < 0)
-        return hcbd__fail(&w->err, HCBD_ERR_PARAM, -1, -1, "polymer N = %d is negative", n);
-    return HCBD_OK;
-}
-
-/* The pair lists are double-buffered: a search writes the spare set and
-   swaps only when it succeeds. */
-static void hcbd__hc_swap_pairs(hcbd_hc_world *w)
-{
-    int32_t *t32;
-    hcbd_real *tr;
-    t32 = w->pair_n; w->pair_n = w->pair_n2; w->pair_n2 = t32;
-    t32 = w->pair_b; w->pair_b = w->pair_b2; w->pair_b2 = t32;
-    tr = w->pair_l; w->pair_l = w->pair_l2; w->pair_l2 = tr;
-    tr = w->pair_eq; w->pair_eq = w->pair_eq2; w->pair_eq2 = tr;
-}
-
-/* The present polymers, kept before a new set is written. */
-static void hcbd__hc_poly_keep(hcbd_hc_world *w)
-{
-    const size_t b = (size_t)w->np * sizeof(hcbd_real);
-    if (!b) return;
-    memcpy(w->pbx, w->px, b);
-    memcpy(w->pby, w->py, b);
-    memcpy(w->pbz, w->pz, b);
-}
-
-/* A new set starts with no pair variables; a refused set is undone: the
-   kept positions and the old pair lists (still in the spare buffers, or
-   never swapped out) come back, and their densities and forces are
-   recomputed, so the world is as it was. */
-static hcbd_result hcbd__hc_poly_finish(hcbd_hc_world *w, int n)
-{
-    const int np0 = w->np;
-    const int64_t npairs0 = w->npairs, created0 = w->n_created;
-    const int32_t *pn0 = w->pair_n;
-    hcbd_result r;
-    hcbd_error e;
-    w->np = n;
-    w->fresh_pairs = 1;
-    r = hcbd_hc_world_refresh(w);
-    w->fresh_pairs = 0;
-    if (r == HCBD_OK) return r;
-    e = w->err;
-    if (w->pair_n != pn0) hcbd__hc_swap_pairs(w);
-    w->np = np0;
-    memcpy(w->px, w->pbx, (size_t)np0 * sizeof(hcbd_real));
-    memcpy(w->py, w->pby, (size_t)np0 * sizeof(hcbd_real));
-    memcpy(w->pz, w->pbz, (size_t)np0 * sizeof(hcbd_real));
-    w->npairs = npairs0;
-    hcbd_hc_world_refresh(w);
-    w->n_created = created0;
-    w->err = e;
-    return r;
-}
-
-hcbd_result hcbd_hc_world_set_polymers(hcbd_hc_world *w, int n, const double *xyz)
-{
-    int i;
-    hcbd_result r;
-    if (!w) return HCBD_ERR_NULL;
-    hcbd__clear(&w->err);
-    if (n > 0 && !xyz) return hcbd__fail(&w->err, HCBD_ERR_NULL, -1, -1, "xyz is NULL");
-    if ((r = hcbd__hc_poly_n(w, n)) != HCBD_OK) return r;
-    if ((r = hcbd__hc_check_xyz(w, n, xyz, "polymer blob")) != HCBD_OK) return r;
-    hcbd__hc_poly_keep(w);
-    for (i = 0; i < n; ++i) {
-        w->px[i] = (hcbd_real)xyz[3 * i];
-        w->py[i] = (hcbd_real)xyz[3 * i + 1];
-        w->pz[i] = (hcbd_real)xyz[3 * i + 2];
-    }
-    return hcbd__hc_poly_finish(w, n);
-}
-
-hcbd_result hcbd_hc_world_place_polymers_random(hcbd_hc_world *w, int n)
-{
-    int i;
-    hcbd_result r;
-    hcbd_rng g;
-    if (!w) return HCBD_ERR_NULL;
-    if ((r = hcbd__hc_poly_n(w, n)) != HCBD_OK) return r;
-    hcbd_rng_seed(&g, hcbd__mix64(w->p.seed ^ hcbd__mix64(HCBD__STREAM_POLY_PLACE)));
-    hcbd__hc_poly_keep(w);
-    for (i = 0; i < n; ++i) {
-        double r3[3];
-        int d;
-        for (d = 0; d < 3; ++d) {
-            r3[d] = hcbd_rng_uniform(&g) * w->p.L[d];
-            if (r3[d] >= w->p.L[d]) r3[d] = 0; /* float rounding up to L */
-        }
-        w->px[i] = (hcbd_real)r3[0];
-        w->py[i] = (hcbd_real)r3[1];
-        w->pz[i] = (hcbd_real)r3[2];
-    }
-    return hcbd__hc_poly_finish(w, n);
-}
-
-hcbd_result hcbd_hc_world_get_fluid(const hcbd_hc_world *w, double *xyz, double *v)
-{
-    int i;
-    if (!w || !xyz) return HCBD_ERR_NULL;
-    for (i = 0; i < w->nf; ++i) {
-        xyz[3 * i] = w->fx[i];
-        xyz[3 * i + 1] = w->fy[i];
-        xyz[3 * i + 2] = w->fz[i];
-        if (!v) continue;
-        v[3 * i] = w->fvx[i];
-        v[3 * i + 1] = w->fvy[i];
-        v[3 * i + 2] = w->fvz[i];
-    }
-    return HCBD_OK;
-}
-
-hcbd_result hcbd_hc_world_get_polymers(const hcbd_hc_world *w, double *xyz)
-{
-    int i;
-    if (!w || !xyz) return HCBD_ERR_NULL;
-    for (i = 0; i < w->np; ++i) {
-        xyz[3 * i] = w->px[i];
-        xyz[3 * i + 1] = w->py[i];
-        xyz[3 * i + 2] = w->pz[i];
-    }
-    return HCBD_OK;
-}
-
-/* >>HCBD: lists and pair passes.  Fluid and polymer pairs run over the
-   engine's half lists, owner = the lower id, in the slabs of
-   hcbd__nl_owners, with 64-bit fixed-point sums (exactly opposite on the
-   two sides, so momentum is exact, and the same bits for any thread count
-   or list build).  The coupling passes run over the cross list and its
-   transpose, each particle summing its own partners in increasing id. */
-static inline hcbd__box hcbd__hc_box(const hcbd_hc_world *w)
-{
-    return hcbd__box_make(w->p.L, w->core.le_offset, w->core.le_on);
-}
-
-/* poly 1: the polymers (id order); 0: the fluid in id order; 2: the
-   fluid's cell-ordered copy */
-static hcbd__pset hcbd__hc_pset(const hcbd_hc_world *w, int poly)
-{
-    hcbd__pset s;
-    s.x = poly == 1 ? w->px : poly ? w->sx : w->fx;
-    s.y = poly == 1 ? w->py : poly ? w->sy : w->fy;
-    s.z = poly == 1 ? w->pz : poly ? w->sz : w->fz;
-    s.id = poly == 2 ? w->fid : NULL;
-    s.n = poly == 1 ? w->np : w->nf;
-    return s;
-}
-
-/* The cell-ordered copies of the fluid's positions and velocities. */
-static void hcbd__hc_sync(hcbd_hc_world *w)
-{
-    const int n = w->nf, nt = w->p.threads;
-    int s;
-    (void)nt;
-    HCBD__OMP(omp parallel for num_threads(nt) schedule(static))
-    for (s = 0; s < n; ++s) {
-        const int i = w->fid[s];
-        w->sx[s] = w->fx[i]; w->sy[s] = w->fy[i]; w->sz[s] = w->fz[i];
-        w->svx[s] = w->fvx[i]; w->svy[s] = w->fvy[i]; w->svz[s] = w->fvz[i];
-    }
-}
-
-static hcbd_result hcbd__hc_phi_fail(hcbd_hc_world *w, int64_t step, int a, double n)
-{
-    return hcbd__fail(&w->err, HCBD_ERR_PARAM, step, a,
-                      "polymer %d: volume fraction phi = n/n_max = %.17g >= 1 "
-                      "(Flory-Huggins needs phi < 1)", a, n / w->p.n_max);
-}
-
-/* When the polymer list overflows: the first polymer with phi >= 1, found
-   from the cells (one polymer's partners at a time in nb_tmp), or -1. */
-static int hcbd__hc_dense(hcbd_hc_world *w, const hcbd__pset *sp, const hcbd__box *box,
-                          double *n_out)
-{
-    const double rc = w->p.rc, sg = w->p.sigma, A = hcbd__rapid_A(sg, rc);
-    const int room = w->lp.max_pairs < w->np ? (int)w->lp.max_pairs : w->np;
-    int a, k;
-    for (a = 0; a < w->np; ++a) {
-        double r[3], s = A * (rc - sg) * (rc + sg);
-        int cnt;
-        r[0] = w->px[a]; r[1] = w->py[a]; r[2] = w->pz[a];
-        cnt = hcbd__nl_scan(&w->lp, sp, box, r, -1, rc, w->lp.nb_tmp, room);
-        for (k = 0; k < cnt && k < room; ++k) {
-            const int b = w->lp.nb_tmp[k];
-            double d[3];
-            if (b == a) continue;
-            hcbd__delta_box(box, r[0] - w->px[b], r[1] - w->py[b], r[2] - w->pz[b], d);
-            s += hcbd__rapid(sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]), sg, rc, A);
-        }
-        if (!(s < w->p.n_max)) {
-            *n_out = s;
-            return a;
-        }
-    }
-    return -1;
-}
-
-/* Builds the three lists at the present positions unless every blob is
-   still within skin/2 of where the last build saw it. */
-static hcbd_result hcbd__hc_lists(hcbd_hc_world *w, int64_t step)
-{
-    const hcbd__pset sf = hcbd__hc_pset(w, 0), sp = hcbd__hc_pset(w, 1), ss = hcbd__hc_pset(w, 2);
-    const hcbd__box box = hcbd__hc_box(w);
-    const double dm = w->lf.disp_max > w->lp.disp_max ? w->lf.disp_max : w->lp.disp_max;
-    const int nt = w->p.threads;
-    int bad, most = 0, i, a;
-    int32_t *cur = w->scratch;
-    if (w->lf.list_valid && w->lx.list_valid && 2.0 * dm + 3.0 * w->lf.le_drift <= w->core.skin) {
-        hcbd__hc_sync(w);
-        return HCBD_OK;
-    }
-    w->lx.list_valid = 0;
-    hcbd__nl_sort(&w->lf, w->p.L, &sf);
-    for (i = 0; i < w->nf; ++i) {
-        w->fid[i] = w->lf.perm[i];
-        w->fslot[w->fid[i]] = i;
-        w->lf.perm[i] = i;
-    }
-    hcbd__hc_sync(w);
-    if (hcbd__nl_pairs(&w->lf, &w->lf, &ss, &ss, &box, 1, nt) < 0)
-        return hcbd__fail(&w->err, HCBD_ERR_CAPACITY, step, -1,
-                          "fluid neighbour list needs more than max_pairs = %lld pairs (range "
-                          "2h + skin = %g); raise hcbd_hc_world_def.max_pairs",
-                          (long long)w->lf.max_pairs, w->lf.rlist);
-    if ((bad = hcbd__nl_degree(&w->lf, w->nf, w->scratch, &most)) >= 0)
-        return hcbd__fail(&w->err, HCBD_ERR_CAPACITY, step, w->fid[bad],
-                          "fluid blob %d has %d neighbours within %g, more than the %d its "
-                          "fixed-point sums hold", (int)w->fid[bad], most, w->lf.rlist,
-                          HCBD__FIX_DEG);
-    hcbd__nl_sort(&w->lp, w->p.L, &sp);
-    if (hcbd__nl_pairs(&w->lp, &w->lp, &sp, &sp, &box, 1, nt) < 0) {
-        double n = 0;
-        if ((bad = hcbd__hc_dense(w, &sp, &box, &n)) >= 0) return hcbd__hc_phi_fail(w, step, bad, n);
-        return hcbd__fail(&w->err, HCBD_ERR_CAPACITY, step, -1,
-                          "polymer neighbour list needs more than its %lld pairs (range rc + "
-                          "skin = %g): the polymers are far denser than polymer_capacity "
-                          "spread over the box", (long long)w->lp.max_pairs, w->lp.rlist);
-    }
-    if (hcbd__nl_pairs(&w->lx, &w->lf, &sp, &ss, &box, 0, nt) < 0)
-        return hcbd__fail(&w->err, HCBD_ERR_CAPACITY, step, -1,
-                          "polymer-fluid list needs more than its %lld pairs (range rc + skin "
-                          "= %g): the fluid is far denser than nbar", (long long)w->lx.max_pairs,
-                          w->lx.rlist);
-    /* the transposes by counting sort; owners come in increasing id */
-    hcbd__count_sort(w->lp.nb_j, (int)w->lp.npairs, NULL, w->np, w->rv_start, w->rv_p);
-    for (i = 0; i <= w->nf; ++i) w->xt_start[i] = 0;
-    for (i = 0; i < (int)w->lx.npairs; ++i) w->xt_start[w->lx.nb_j[i] + 1]++;
-    for (i = 0; i < w->nf; ++i) {
-        w->xt_start[i + 1] += w->xt_start[i];
-        cur[i] = w->xt_start[i];
-    }
-    for (a = 0; a < w->np; ++a)
-        for (i = w->lx.nb_start[a]; i < w->lx.nb_start[a + 1]; ++i) {
-            const int k = cur[w->lx.nb_j[i]]++;
-            w->xt_a[k] = a;
-            w->xt_p[k] = i;
-        }
-    hcbd__nl_done(&w->lf, &sf);
-    hcbd__nl_done(&w->lp, &sp);
-    w->lx.list_valid = 1;
-    return HCBD_OK;
-}
-
-/* Forget the lists (positions were set from outside). */
-static void hcbd__hc_lists_stale(hcbd_hc_world *w)
-{
-    w->lf.list_valid = w->lp.list_valid = w->lx.list_valid = 0;
-}
-
-
-/* Fluid density weights w(r_ij) (MODEL 6) into aW, each pair once, in
-   the traversal's lean form (its own sums: q[0] the owner's) */
-typedef struct hcbd__hc_dens_ctx {
-    hcbd_hc_world *w;
-    double ih, cq;
-} hcbd__hc_dens_ctx;
-
-HCBD__INLINE void hcbd__hc_dens_pairs(void *ctx, int i, const hcbd__near *c, int m, hcbd__acc *a,
-                                     hcbd__terms *u)
-{
-    const hcbd__hc_dens_ctx *d = (const hcbd__hc_dens_ctx *)ctx;
-    int64_t *HCBD__RESTRICT aW = d->w->aW, v[HCBD__CHUNK];
-    int t;
-    (void)i; (void)u;
-    HCBD__OMP(omp simd)
-    for (t = 0; t < m; ++t) v[t] = hcbd__fix(d->cq * hcbd__m4u(sqrt(c->r2[t]) * d->ih));
-    for (t = 0; t < m; ++t) {
-        a->q[0] += v[t];
-        aW[c->j[t]] += v[t];
-    }
-}
-
-HCBD__INLINE int hcbd__hc_dens_end(void *ctx, int i, hcbd__acc *a)
-{
-    ((hcbd__hc_dens_ctx *)ctx)->w->aW[i] += a->q[0];
-    return INT_MAX;
-}
-
-/* the fluid's half list over its cell-ordered copy, within range */
-static inline hcbd__trav hcbd__hc_trav_f(const hcbd_hc_world *w, double range)
-{
-    return hcbd__trav_make(&w->lf, w->sx, w->sy, w->sz, w->sx, w->sy, w->sz, hcbd__hc_box(w), range);
-}
-
-static int hcbd__hc_dens_owners(void *ctx, int q0, int q1)
-{
-    hcbd_hc_world *w = (hcbd_hc_world *)ctx;
-    const double h = w->p.h;
-    hcbd__trav T = hcbd__hc_trav_f(w, 2.0 * h);
-    hcbd__hc_dens_ctx d;
-    d.w = w;
-    d.ih = 1.0 / h;
-    d.cq = w->core.qW / (4.0 * HCBD__PI * h * h * h);
-    return hcbd__traverse(&T, w->lf.perm, q0, q1, &d, hcbd__ev_zero, hcbd__hc_dens_pairs, hcbd__hc_dens_end);
-}
-
-/* Fluid densities and Tait pressures (MODEL 6). */
-static void hcbd__hc_fluid_density(hcbd_hc_world *w)
-{
-    const int n = w->nf, nt = w->p.threads;
-    const double h = w->p.h, w0 = 1.0 / (HCBD__PI * h * h * h), inv_q = 1.0 / w->core.qW;
-    const double inv_nbar = 1.0 / w->p.nbar, P0 = w->p.P0;
-    int i, bad = INT_MAX;
-    (void)nt;
-    hcbd__zero64(w->aW, n);
-    hcbd__nl_owners(&w->lf, n, nt, w, hcbd__hc_dens_owners);
-    HCBD__OMP(omp parallel for num_threads(nt) schedule(static) reduction(min:bad))
-    for (i = 0; i < n; ++i) { /* i: slot */
-        const double s = w0 + (double)w->aW[i] * inv_q, x = s * inv_nbar, P = hcbd__tait_p(P0, inv_nbar, s);
-        const int id = w->fid[i];
-        if (!(x > 1.0 / 3.0 && x < 3.0) && id < bad) bad = id;
-        w->fn[id] = w->sn[i] = (hcbd_real)s;
-        w->sIn[i] = (hcbd_real)(1.0 / s);
-        w->fP[id] = (hcbd_real)P;
-        w->fPn2[id] = w->sP[i] = (hcbd_real)(P / (s * s));
-    }
-    w->dens_bad = bad == INT_MAX ? -1 : bad;
-}
-
-/* Polymer pairs run over the half list (owner a < partner b) in two
-   steps: the owner evaluates each pair within rc once, and the traversal
-   keeps its weight (pw) or force (pf) per list entry, zero for the skin's;
-   then each polymer sums its own pairs and, through the reverse list (its
-   pairs as a partner, owners in increasing id; hcbd__rev_add), the
-   others.  Double
-   precision, a fixed order set by the ids alone, any thread count: each
-   owner writes only its own entries, so the owners are shared out in
-   contiguous ranges, and counters are summed per thread. */
-typedef struct hcbd__hc_poly_ctx {
-    hcbd_hc_world *w;
-    double rc, sg, A, cfh, alpha;
-    size_t cap;
-    int tr, fc, stress;
-    int64_t created, total, coinc; /* per thread */
-    int most;
-} hcbd__hc_poly_ctx;
-
-static hcbd__hc_poly_ctx hcbd__hc_poly_ctx_of(hcbd_hc_world *w)
-{
-    hcbd__hc_poly_ctx c;
-    memset(&c, 0, sizeof c);
-    c.w = w;
-    c.rc = w->p.rc;
-    c.sg = w->p.sigma;
-    c.A = hcbd__rapid_A(c.sg, c.rc);
-    c.cfh = w->p.p_kuhn * w->p.kT / w->p.n_max;
-    c.alpha = w->p.alpha;
-    c.cap = (size_t)w->pair_cap;
-    c.tr = w->transient;
-    c.fc = w->has_fc;
-    c.stress = w->core.stress_on;
-    return c;
-}
-
-/* the polymers' half list within rc, keeping ne values per entry in ent */
-static inline hcbd__trav hcbd__hc_trav_p(const hcbd_hc_world *w, double *ent, int ne)
-{
-    hcbd__trav T = hcbd__trav_make(&w->lp, w->px, w->py, w->pz, w->px, w->py, w->pz, hcbd__hc_box(w), w->p.rc);
-    T.ent = ent;
-    T.ne = ne;
-    return T;
-}
-
-/* entries: 0 the weight; acc: r[0] the owner's sum */
-HCBD__INLINE void hcbd__hc_pdens_pairs(void *ctx, int a, const hcbd__near *c, int m, hcbd__acc *acc,
-                                      hcbd__terms *u)
-{
-    const hcbd__hc_poly_ctx *s = (const hcbd__hc_poly_ctx *)ctx;
-    double *HCBD__RESTRICT wt = u->e[0];
-    int t;
-    (void)a;
-    HCBD__OMP(omp simd)
-    for (t = 0; t < m; ++t) wt[t] = hcbd__rapid(sqrt(c->r2[t]), s->sg, s->rc, s->A);
-    for (t = 0; t < m; ++t) acc->r[0] += wt[t];
-}
-
-HCBD__INLINE int hcbd__hc_pdens_end(void *ctx, int a, hcbd__acc *acc)
-{
-    ((hcbd__hc_poly_ctx *)ctx)->w->pown[a] = acc->r[0];
-    return INT_MAX;
-}
-
-/* RaPiD densities and mu(phi) (MODEL 8), keeping the pairs within rc for
-   hcbd__hc_poly_forces (w->pk).  Returns the first id with phi >= 1, or
-   -1. */
-static int hcbd__hc_poly_density(hcbd_hc_world *w)
-{
-    const int n = w->np, nt = w->p.threads, fc = w->has_fc;
-    const double rc = w->p.rc, sg = w->p.sigma, A = hcbd__rapid_A(sg, rc);
-    const double w0 = A * (rc - sg) * (rc + sg), inv_nmax = 1.0 / w->p.n_max;
-    hcbd__trav T = hcbd__hc_trav_p(w, w->pw, 1);
-    const hcbd__hc_poly_ctx base = hcbd__hc_poly_ctx_of(w);
-    int q, bad = INT_MAX;
-    (void)nt;
-    if (hcbd__hc_poly_pairs(&w->p)) T.kout = &w->pk; /* else none allocated, none read */
-    HCBD__OMP(omp parallel num_threads(nt))
-    {
-        hcbd__hc_poly_ctx s = base;
-        int64_t lo, hi;
-        hcbd__share(n, &lo, &hi);
-        hcbd__traverse(&T, w->lp.perm, (int)lo, (int)hi, &s, hcbd__ev_zero, hcbd__hc_pdens_pairs,
-                       hcbd__hc_pdens_end);
-    }
-    HCBD__OMP(omp parallel for num_threads(nt) schedule(static) reduction(min:bad))
-    for (q = 0; q < n; ++q) {
-        const int i = w->lp.perm[q];
-        double s = w0 + w->pown[i], phi;
-        hcbd__rev_add(w->rv_start, w->rv_p, w->pw, 1, i, 1.0, &s);
-        phi = s * inv_nmax;
-        w->pn[i] = (hcbd_real)s;
-        if (!(phi < 1.0)) {
-            if (i < bad) bad = i;
-            w->pmu[i] = 0;
-        } else {
-            w->pmu[i] = fc ? hcbd__mu((hcbd_real)phi, (hcbd_real)w->p.chi) : (hcbd_real)0;
-        }
-    }
-    return bad == INT_MAX ? -1 : bad;
-}
-
-
-static int hcbd__hc_find(const hcbd_hc_world *w, int a, int b)
-{
-    const int32_t *l = w->pair_b + (size_t)a * w->pair_cap;
-    int lo = 0, hi = w->pair_n[a];
-    while (lo < hi) {
-        int mid = (lo + hi) / 2;
-        if (l[mid] < b) lo = mid + 1;
-        else hi = mid;
-    }
-    return lo < w->pair_n[a] && l[lo] == b ? lo : -1;
-}
-
-/* Polymer forces, Flory-Huggins and transient (MODEL 8), each pair once,
-   fused with the search for the transient pairs: the partners b > a within
-   rc come in increasing id and are merged with the old list, so a
-   persisting pair keeps its lambda, a new one starts at lambda_eq and a
-   departed one is dropped; the new list goes to the spare buffers.
-   acc: q[0] the pairs found, q[1] the old list's cursor; r[0..2] the
-   force, r[3] r[4] the conservative and transient stress. */
-HCBD__INLINE void hcbd__hc_pforce_pairs(void *ctx, int a, const hcbd__near *c, int m, hcbd__acc *acc,
-                                       hcbd__terms *u)
-{
-    hcbd__hc_poly_ctx *s = (hcbd__hc_poly_ctx *)ctx;
-    hcbd_hc_world *w = s->w;
-    const double rc = s->rc, sg = s->sg, A = s->A, mua = w->pmu[a], cfh = s->cfh, al = s->alpha;
-    const double r0 = 1e-12 * sg; /* below: no direction, counted, no force */
-    const size_t cap = s->cap, o0 = (size_t)a * cap;
-    const int fc = s->fc, tr = s->tr, on = tr && !w->fresh_pairs ? w->pair_n[a] : 0;
-    const int32_t *ob = w->pair_b + o0;
-    const hcbd_real *ol = w->pair_l + o0, *HCBD__RESTRICT mu = w->pmu;
-    int32_t *nb = w->pair_b2 + o0;
-    hcbd_real *nl = w->pair_l2 + o0, *ne = w->pair_eq2 + o0;
-    /* the merge with the old list goes pair by pair; the forces, apart
-       from it, in SIMD loops (the same operations on each pair, so the
-       same bits), and their sums again in order */
-    double r[HCBD__CHUNK], leq[HCBD__CHUNK], lam[HCBD__CHUNK], fr[HCBD__CHUNK], ft[HCBD__CHUNK];
-    double *HCBD__RESTRICT fx = u->e[0], *HCBD__RESTRICT fy = u->e[1], *HCBD__RESTRICT fz = u->e[2];
-    int t;
-    HCBD__OMP(omp simd)
-    for (t = 0; t < m; ++t) {
-        r[t] = sqrt(c->r2[t]);
-        leq[t] = hcbd__leq(r[t], rc);
-        lam[t] = 0;
-    }
-    if (tr)
-        for (t = 0; t < m; ++t) {
-            const int b = c->j[t];
-            int o = (int)acc->q[1];
-            while (o < on && ob[o] < b) ++o;
-            acc->q[1] = o;
-            if (o < on && ob[o] == b) {
-                lam[t] = ol[o];
-            } else {
-                lam[t] = (hcbd_real)leq[t];
-                ++s->created;
-            }
-            if (acc->q[0] < (int64_t)cap) {
-                nb[acc->q[0]] = b;
-                ne[acc->q[0]] = (hcbd_real)leq[t];
-                nl[acc->q[0]] = (hcbd_real)lam[t];
-            }
-            acc->q[0]++;
-        }
-    HCBD__OMP(omp simd)
-    for (t = 0; t < m; ++t) {
-        const double rt = r[t];
-        const int live = !(rt < r0);
-        const double a1 = fc ? hcbd__flory_fr(cfh, mua, mu[c->j[t]], hcbd__rapid_dr(rt, sg, rc, A), rt) : 0.0;
-        const double a2 = tr ? hcbd__spring_fr(al, lam[t], rt, rc) : 0.0;
-        fr[t] = a1;
-        ft[t] = a2;
-        fx[t] = live ? (a1 + a2) * c->x[t] : 0.0;
-        fy[t] = live ? (a1 + a2) * c->y[t] : 0.0;
-        fz[t] = live ? (a1 + a2) * c->z[t] : 0.0;
-    }
-    for (t = 0; t < m; ++t) {
-        if (r[t] < r0) {
-            ++s->coinc;
-            continue;
-        }
-        acc->r[0] += fx[t];
-        acc->r[1] += fy[t];
-        acc->r[2] += fz[t];
-        if (s->stress) {
-            acc->r[3] += c->y[t] * fr[t] * c->x[t];
-            acc->r[4] += c->y[t] * ft[t] * c->x[t];
-        }
-    }
-}
-
-HCBD__INLINE int hcbd__hc_pforce_end(void *ctx, int a, hcbd__acc *acc)
-{
-    hcbd__hc_poly_ctx *s = (hcbd__hc_poly_ctx *)ctx;
-    hcbd_hc_world *w = s->w;
-    const int cnt = (int)acc->q[0];
-    w->pFx[a] = (hcbd_real)acc->r[0];
-    w->pFy[a] = (hcbd_real)acc->r[1];
-    w->pFz[a] = (hcbd_real)acc->r[2];
-    if (s->stress) {
-        w->ps[3 * a] = acc->r[3];
-        w->ps[3 * a + 1] = acc->r[4];
-    }
-    if (!s->tr) return INT_MAX;
-    if (cnt > s->most) s->most = cnt;
-    s->total += cnt;
-    w->pair_n2[a] = cnt;
-    return cnt > (int)s->cap ? a : INT_MAX;
-}
-
-/* Over the pairs hcbd__hc_poly_density kept, so only right after it, at
-   the same positions: the gather and its minimum image are done once.
-   Returns the first polymer whose transient pairs overflow pair_cap (with
-   the largest count in *need), or -1; on success the new pair list
-   replaces the old. */
-static int hcbd__hc_poly_forces(hcbd_hc_world *w, int *need)
-{
-    const int n = w->np, nt = w->p.threads;
-    hcbd__trav T = hcbd__hc_trav_p(w, w->pf, 3);
-    const hcbd__hc_poly_ctx base = hcbd__hc_poly_ctx_of(w);
-    int q, bad = INT_MAX, most = 0;
-    int64_t created = 0, total = 0, coinc = 0;
-    (void)nt;
-    T.kin = &w->pk;
-    if (!hcbd__hc_poly_pairs(&w->p)) { /* no polymer pair forces: nothing to sum */
-        memset(w->pFx, 0, (size_t)n * sizeof(hcbd_real));
-        memset(w->pFy, 0, (size_t)n * sizeof(hcbd_real));
-        memset(w->pFz, 0, (size_t)n * sizeof(hcbd_real));
-        if (base.stress)
-            for (q = 0; q < n; ++q) w->ps[3 * q] = w->ps[3 * q + 1] = 0;
-        *need = 0;
-        return -1;
-    }
-    HCBD__OMP(omp parallel num_threads(nt) reduction(min:bad) reduction(max:most) reduction(+:created) reduction(+:total) reduction(+:coinc))
-    {
-        hcbd__hc_poly_ctx s = base;
-        int64_t lo, hi;
-        int b;
-        hcbd__share(n, &lo, &hi);
-        b = hcbd__traverse(&T, w->lp.perm, (int)lo, (int)hi, &s, hcbd__ev_zero, hcbd__hc_pforce_pairs,
-                           hcbd__hc_pforce_end);
-        if (b < bad) bad = b;
-        if (s.most > most) most = s.most;
-        created += s.created;
-        total += s.total;
-        coinc += s.coinc;
-    }
-    *need = most;
-    if (bad != INT_MAX) return bad;
-    HCBD__OMP(omp parallel for num_threads(nt) schedule(static))
-    for (q = 0; q < n; ++q) {
-        const int a = w->lp.perm[q];
-        double F[3];
-        F[0] = w->pFx[a]; F[1] = w->pFy[a]; F[2] = w->pFz[a];
-        hcbd__rev_add(w->rv_start, w->rv_p, w->pf, 3, a, -1.0, F);
-        w->pFx[a] = (hcbd_real)F[0];
-        w->pFy[a] = (hcbd_real)F[1];
-        w->pFz[a] = (hcbd_real)F[2];
-    }
-    w->n_coincident += coinc;
-    if (base.tr) {
-        hcbd__hc_swap_pairs(w);
-        w->npairs = total;
-        w->n_created += created;
-    }
-    return -1;
-}
-
-/* Interpolated fluid velocity and drift velocity of every polymer (MODEL 7),
-   over the cross list: each polymer's fluid blobs within rc, whose RaPiD
-   weights it keeps (xw, zero for the skin's entries) for the
-   redistribution.  Relative to the first neighbour's velocity, so a
-   uniform flow is reproduced bit for bit.  acc: q[0] no neighbour yet;
-   r[0] the psi normaliser S, r[1..3] the weighted velocity differences,
-   r[4..6] the reference velocity, r[7] the stress lever. */
-typedef struct hcbd__hc_interp_ctx {
-    hcbd_hc_world *w;
-    double rc, sg, A, inv_xi, vj;
-    int shep, stress;
-} hcbd__hc_interp_ctx;
-
-HCBD__INLINE void hcbd__hc_interp_begin(void *ctx, int a, hcbd__acc *acc)
-{
-    (void)ctx; (void)a;
-    memset(acc, 0, sizeof *acc);
-    acc->q[0] = 1;
-}
-
-HCBD__INLINE void hcbd__hc_interp_pairs(void *ctx, int a, const hcbd__near *c, int m, hcbd__acc *acc,
-                                       hcbd__terms *u)
-{
-    const hcbd__hc_interp_ctx *s = (const hcbd__hc_interp_ctx *)ctx;
-    const hcbd_hc_world *w = s->w;
-    const hcbd_real *HCBD__RESTRICT sn = w->sn;
-    double *HCBD__RESTRICT wr = u->e[0], wn[HCBD__CHUNK];
-    int t;
-    (void)a;
-    HCBD__OMP(omp simd)
-    for (t = 0; t < m; ++t) {
-        wr[t] = hcbd__rapid(sqrt(c->r2[t]), s->sg, s->rc, s->A);
-        wn[t] = wr[t] / sn[c->j[t]];
-    }
-    for (t = 0; t < m; ++t) {
-        const int i = c->j[t]; /* a fluid slot */
-        const double wt = wn[t];
-        double v[3];
-        /* the image of blob i moves with the velocity of its layer */
-        v[0] = w->svx[i] + c->k[t] * s->vj;
-        v[1] = w->svy[i];
-        v[2] = w->svz[i];
-        if (acc->q[0]) {
-            acc->r[4] = v[0]; acc->r[5] = v[1]; acc->r[6] = v[2];
-            acc->q[0] = 0;
-        }
-        acc->r[0] += wt;
-        acc->r[1] += wt * (v[0] - acc->r[4]);
-        acc->r[2] += wt * (v[1] - acc->r[5]);
-        acc->r[3] += wt * (v[2] - acc->r[6]);
-        acc->r[7] -= wt * c->y[t];
-    }
-}
-
-HCBD__INLINE int hcbd__hc_interp_end(void *ctx, int a, hcbd__acc *acc)
-{
-    const hcbd__hc_interp_ctx *s = (const hcbd__hc_interp_ctx *)ctx;
-    hcbd_hc_world *w = s->w;
-    double S = acc->r[0], v[3];
-    const double *dv = acc->r + 1, *vref = acc->r + 4;
-    const int none = !(S > 0);
-    if (none) S = 1;
-    if (s->shep) {
-        v[0] = vref[0] + dv[0] / S; v[1] = vref[1] + dv[1] / S; v[2] = vref[2] + dv[2] / S;
-    } else {
-        v[0] = S * vref[0] + dv[0]; v[1] = S * vref[1] + dv[1]; v[2] = S * vref[2] + dv[2];
-    }
-    w->pS[a] = (hcbd_real)(s->shep ? S : 1.0);
-    w->pux[a] = (hcbd_real)(v[0] + w->pFx[a] * s->inv_xi);
-    w->puy[a] = (hcbd_real)(v[1] + w->pFy[a] * s->inv_xi);
-    w->puz[a] = (hcbd_real)(v[2] + w->pFz[a] * s->inv_xi);
-    if (s->stress) w->ps[3 * a + 2] = acc->r[7] / (s->shep ? S : 1.0) * w->pFx[a];
-    return none ? a : INT_MAX;
-}
-
-/* Returns the first polymer with no fluid blob within rc, or -1. */
-static int hcbd__hc_interp(hcbd_hc_world *w)
-{
-    const int n = w->np, nt = w->p.threads;
-    hcbd__trav T = hcbd__trav_make(&w->lx, w->px, w->py, w->pz, w->sx, w->sy, w->sz, hcbd__hc_box(w),
-                                   w->p.rc);
-    hcbd__hc_interp_ctx s;
-    int bad = INT_MAX;
-    (void)nt;
-    s.w = w;
-    s.rc = w->p.rc;
-    s.sg = w->p.sigma;
-    s.A = hcbd__rapid_A(s.sg, s.rc);
-    s.inv_xi = 1.0 / w->p.xi;
-    s.vj = w->core.le_vjump;
-    s.shep = w->p.coupling == HCBD_COUPLE_SHEPARD;
-    s.stress = w->core.stress_on;
-    T.ent = w->xw; /* the weights, for the redistribution */
-    T.ne = 1;
-    HCBD__OMP(omp parallel num_threads(nt) reduction(min:bad))
-    {
-        int64_t lo, hi;
-        hcbd__share(n, &lo, &hi);
-        bad = hcbd__traverse(&T, w->lp.perm, (int)lo, (int)hi, &s, hcbd__hc_interp_begin, hcbd__hc_interp_pairs,
-                             hcbd__hc_interp_end);
-    }
-    return bad == INT_MAX ? -1 : bad;
-}
-
-/* Polymer forces redistributed onto the fluid blobs with the same psi,
-   each blob over its polymers in increasing id (the transpose of the
-   cross list, the traversal's third source), with the weights the
-   interpolation kept.  acc: r[0..2] the blob's force. */
-HCBD__INLINE void hcbd__hc_redist_pairs(void *ctx, int i, const hcbd__near *c, int m, hcbd__acc *acc,
-                                       hcbd__terms *u)
-{
-    const hcbd_hc_world *w = (const hcbd_hc_world *)ctx;
-    int t;
-    (void)u;
-    for (t = 0; t < m; ++t) {
-        const int a = c->j[t];
-        const double wt = w->xw[c->e[t]], psi = wt / w->sn[i] / w->pS[a];
-        if (wt == 0) continue; /* beyond rc */
-        acc->r[0] += psi * w->pFx[a];
-        acc->r[1] += psi * w->pFy[a];
-        acc->r[2] += psi * w->pFz[a];
-    }
-}
-
-HCBD__INLINE int hcbd__hc_redist_end(void *ctx, int i, hcbd__acc *acc)
-{
-    hcbd_hc_world *w = (hcbd_hc_world *)ctx;
-    const int id = w->fid[i];
-    w->fax[id] = (hcbd_real)acc->r[0];
-    w->fay[id] = (hcbd_real)acc->r[1];
-    w->faz[id] = (hcbd_real)acc->r[2];
-    return INT_MAX;
-}
-
-static void hcbd__hc_redistribute(hcbd_hc_world *w)
-{
-    const int nt = w->p.threads;
-    hcbd__trav T;
-    (void)nt;
-    memset(&T, 0, sizeof T);
-    T.start = w->xt_start;
-    T.nb = w->xt_a;
-    T.emap = w->xt_p;
-    T.ox = T.oy = T.oz = w->sx; /* not read: no geometry */
-    HCBD__OMP(omp parallel num_threads(nt))
-    {
-        int64_t lo, hi;
-        hcbd__share(w->nf, &lo, &hi);
-        hcbd__traverse(&T, w->lf.perm, (int)lo, (int)hi, w, hcbd__ev_zero, hcbd__hc_redist_pairs,
-                       hcbd__hc_redist_end);
-    }
-}
-
-
-/* HCBD_PAIR_SHARDLOW for the fluid: each pair's Morris friction and noise
-   solved exactly in turn (the pair's relative velocity is an Ornstein-
-   Uhlenbeck process with rate 2 f/m and variance 2 kT/m, as in
-   hcbd__shardlow).  The viscous and noise stresses go together into the
-   viscous column.
-
-   The order of the sweep: each blob, by its present position relative to
-   blob 0, lies in a block of a grid (hcbd__hc_sweep_axis: along each axis
-   blocks at least 2h/s wide, a multiple of 2s + 1 of them, or a single
-   one), and a pair belongs to the block of its owner (the lower id).  A
-   pair reaches at most s blocks along the axis, so blocks of one colour
-   (each index mod 2s + 1) never touch the same blob: the colours run in
-   turn, the blocks of a colour side by side; inside a block, owners by
-   increasing id, partners by increasing id.  Under Lees-Edwards the
-   blocks are cut along u = x - t y, t = s/Ly with the offset s taken in
-   [-Lx/2, Lx/2): an image across the sheared boundary has the same u, so
-   the grid is periodic there too, and a pair within 2h spans at most
-   2h sqrt(1 + t^2) in u, which the blocks along x are made wide enough
-   for (their count may change as the offset moves).  The order is set by
-   positions and ids alone: the bits depend neither on the thread count,
-   nor on the storage, nor on when the lists were built.  A box too small
-   for two blocks of one colour along any axis sweeps in the same order on
-   one thread. */
-/* The sweep's pairs, fused with their pressure forces (which need no
-   velocity, so they join the fixed-point sums in any order).  Per chunk of
-   partners the velocity-free part (kernel, rate, 1 - e, pressure) comes
-   first, in a loop without dependences; the chain of velocity updates
-   follows. */
-typedef struct hcbd__hc_sweep_ctx {
-    hcbd_hc_world *w;
-    double dt, ih, c1h, m, inv_m, kT, vj, rate0, qF, lim;
-    uint64_t skey;
-    int noise, stress;
-} hcbd__hc_sweep_ctx;
-
-/* the traversal's lean form: acc q[0..2] the owner's pressure force
-   (fixed point), r[0..2] its velocity (in registers: no partner is the
-   owner itself), r[3] r[4] its viscous and pressure stress */
-HCBD__INLINE void hcbd__hc_sweep_begin(void *ctx, int i, hcbd__acc *a)
-{
-    const hcbd_hc_world *w = ((const hcbd__hc_sweep_ctx *)ctx)->w;
-    memset(a, 0, sizeof *a);
-    a->r[0] = w->svx[i]; a->r[1] = w->svy[i]; a->r[2] = w->svz[i];
-}
-
-HCBD__INLINE void hcbd__hc_sweep_pairs(void *ctx, int i, const hcbd__near *c, int mm, hcbd__acc *a,
-                                      hcbd__terms *u)
-{
-    const hcbd__hc_sweep_ctx *s = (const hcbd__hc_sweep_ctx *)ctx;
-    hcbd_hc_world *w = s->w;
-    const double m = s->m, inv_m = s->inv_m, vj = s->vj, qF = s->qF, lim = s->lim;
-    const double rate = s->rate0 * w->sIn[i], Pi = w->sP[i]; /* 2 f dt/m over wdr/n_j */
-    hcbd_real *HCBD__RESTRICT vx = w->svx, *HCBD__RESTRICT vy = w->svy, *HCBD__RESTRICT vz = w->svz;
-    const hcbd_real *HCBD__RESTRICT In = w->sIn, *HCBD__RESTRICT Pn2 = w->sP;
-    const int32_t *HCBD__RESTRICT fid = w->fid;
-    const int32_t idi = fid[i];
-    double vxi = a->r[0], vyi = a->r[1], vzi = a->r[2], x[HCBD__CHUNK], om[HCBD__CHUNK], f0[HCBD__CHUNK];
-    int64_t u0[HCBD__CHUNK], u1[HCBD__CHUNK], u2[HCBD__CHUNK];
-    int64_t *HCBD__RESTRICT aFx = w->aF[0], *HCBD__RESTRICT aFy = w->aF[1], *HCBD__RESTRICT aFz = w->aF[2];
-    int t, bad = 0;
-    (void)u;
-    HCBD__OMP(omp simd reduction(|:bad))
-    for (t = 0; t < mm; ++t) {
-        const int j = c->j[t];
-        const double wdr = hcbd__m4_wdr(sqrt(c->r2[t]) * s->ih, s->c1h);
-        const double fp = hcbd__tait_fr(Pi, Pn2[j], wdr);
-        const double F0 = fp * c->x[t], F1 = fp * c->y[t], F2 = fp * c->z[t];
-        x[t] = rate * wdr * In[j];
-        om[t] = hcbd__one_minus_exp_series(x[t]);
-        bad |= !((fabs(F0) <= lim) & (fabs(F1) <= lim) & (fabs(F2) <= lim));
-        f0[t] = F0;
-        u0[t] = hcbd__fix(F0 * qF); u1[t] = hcbd__fix(F1 * qF); u2[t] = hcbd__fix(F2 * qF);
-    }
-    a->bad |= bad;
-    for (t = 0; t < mm; ++t)
-        if (!(x[t] < 0.125)) om[t] = -expm1(-x[t]);
-    for (t = 0; t < mm; ++t) {
-        const int j = c->j[t];
-        const double cc = 0.5 * m * om[t];
-        double P[3];
-        P[0] = -cc * (vxi - vx[j] - c->k[t] * vj);
-        P[1] = -cc * (vyi - vy[j]);
-        P[2] = -cc * (vzi - vz[j]);
-        if (s->noise) {
-            const double b = sqrt(0.5 * s->kT * m * om[t] * (2.0 - om[t]));
-            double z3[3];
-            hcbd__deviates3(w->core.zig, HCBD_NOISE_GAUSS, hcbd__pair_key(s->skey, idi, fid[j]), z3);
-            P[0] += b * z3[0];
-            P[1] += b * z3[1];
-            P[2] += b * z3[2];
-        }
-        vxi = (hcbd_real)(vxi + P[0] * inv_m); vx[j] = (hcbd_real)(vx[j] - P[0] * inv_m);
-        vyi = (hcbd_real)(vyi + P[1] * inv_m); vy[j] = (hcbd_real)(vy[j] - P[1] * inv_m);
-        vzi = (hcbd_real)(vzi + P[2] * inv_m); vz[j] = (hcbd_real)(vz[j] - P[2] * inv_m);
-        a->q[0] += u0[t]; aFx[j] -= u0[t];
-        a->q[1] += u1[t]; aFy[j] -= u1[t];
-        a->q[2] += u2[t]; aFz[j] -= u2[t];
-        a->r[3] += c->y[t] * P[0];
-        a->r[4] += c->y[t] * f0[t];
-    }
-    a->r[0] = vxi; a->r[1] = vyi; a->r[2] = vzi;
-}
-
-HCBD__INLINE int hcbd__hc_sweep_end(void *ctx, int i, hcbd__acc *a)
-{
-    const hcbd__hc_sweep_ctx *s = (const hcbd__hc_sweep_ctx *)ctx;
-    hcbd_hc_world *w = s->w;
-    const int32_t idi = w->fid[i];
-    w->svx[i] = (hcbd_real)a->r[0]; w->svy[i] = (hcbd_real)a->r[1]; w->svz[i] = (hcbd_real)a->r[2];
-    w->aF[0][i] += a->q[0]; w->aF[1][i] += a->q[1]; w->aF[2][i] += a->q[2];
-    if (s->stress) {
-        w->fs[3 * idi] = a->r[4];
-        w->fs[3 * idi + 1] = a->r[3] / s->dt;
-        w->fs[3 * idi + 2] = 0;
-    }
-    return a->bad ? idi : INT_MAX;
-}
-
-/* one block of the sweep, for hcbd__colours */
-HCBD__NO_SLP static int hcbd__hc_sweep_block(void *ctx, int b)
-{
-    const hcbd__block_job *j = (const hcbd__block_job *)ctx;
-    return hcbd__traverse(j->T, j->list, j->start[b], j->start[b + 1], j->pass, hcbd__hc_sweep_begin,
-                          hcbd__hc_sweep_pairs, hcbd__hc_sweep_end);
-}
-
-static int hcbd__hc_fluid_shardlow(hcbd_hc_world *w, double dt, uint64_t skey)
-{
-    const int n = w->nf, nt = w->p.threads;
-    const double *L = w->p.L;
-    const double s = w->core.le_on ? w->core.le_offset - L[0] * floor(w->core.le_offset / L[0] + 0.5) : 0.0;
-    const double t = s / L[1];
-    const double h = w->p.h;
-    const hcbd__trav T = hcbd__hc_trav_f(w, 2.0 * h);
-    hcbd__hc_sweep_ctx sc;
-    /* blocks move with blob 0, so that a boosted copy of the world sweeps
-       in the same order (Galilean invariance of the trajectory) */
-    const int o = w->fslot[0];
-    const double x0 = w->sx[o], y0 = w->sy[o], z0 = w->sz[o];
-    int32_t *HCBD__RESTRICT blk = w->sw_blk, *HCBD__RESTRICT start = w->sw_start;
-    int32_t *HCBD__RESTRICT list = w->sw_list, *HCBD__RESTRICT fine = w->sw_fine;
-    int32_t *HCBD__RESTRICT tmp = w->sw_tmp, *HCBD__RESTRICT fstart = w->sw_fstart;
-    int nb[3], nc[3], nfc[3], nblk, nfine, q, worst = INT_MAX;
-    double f[3], g[3];
-    (void)nt;
-    sc.w = w;
-    sc.dt = dt;
-    sc.ih = 1.0 / h;
-    sc.c1h = 1.0 / (4.0 * HCBD__PI * h * h * h * h * h);
-    sc.m = w->m; sc.inv_m = w->inv_m; sc.kT = w->p.kT; sc.vj = w->core.le_vjump;
-    sc.rate0 = 2.0 * dt * w->inv_m * 2.0 * w->p.eta;
-    sc.qF = w->core.qF; sc.lim = w->core.limF;
-    sc.skey = skey;
-    sc.noise = w->noise_f;
-    sc.stress = w->core.stress_on;
-    nblk = hcbd__hc_sweep_blocks(&w->p, t, nb, nc, NULL);
-    nfine = hcbd__hc_fine_cells(&w->p, nfc);
-    f[0] = nb[0] / L[0]; f[1] = nb[1] / L[1]; f[2] = nb[2] / L[2];
-    g[0] = nfc[0] / L[0]; g[1] = nfc[1] / L[1]; g[2] = nfc[2] / L[2];
-    HCBD__OMP(omp parallel for num_threads(nt) schedule(static))
-    for (q = 0; q < n; ++q) {
-        double r[3];
-        int c[3], e[3], d;
-        r[1] = w->sy[q] - y0;
-        r[0] = w->sx[q] - x0 - t * r[1];
-        r[2] = w->sz[q] - z0;
-        for (d = 0; d < 3; ++d) {
-            r[d] -= L[d] * floor(r[d] / L[d]);
-            c[d] = (int)(r[d] * f[d]);
-            if (c[d] > nb[d] - 1) c[d] = nb[d] - 1;
-            if (c[d] < 0) c[d] = 0;
-            e[d] = (int)(r[d] * g[d]);
-            if (e[d] > nfc[d] - 1) e[d] = nfc[d] - 1;
-            if (e[d] < 0) e[d] = 0;
-        }
-        blk[q] = (c[2] * nb[1] + c[1]) * nb[0] + c[0];
-        fine[q] = (e[2] * nfc[1] + e[1]) * nfc[0] + e[0];
-    }
-    /* two stable counting sorts: by fine cell (filled in id order), then
-       by block, so that a block's owners go fine cell by fine cell */
-    hcbd__count_sort(fine, n, w->fslot, nfine, fstart, tmp);
-    hcbd__count_sort(blk, n, tmp, nblk, start, list);
-    {
-        hcbd__block_job job;
-        job.T = &T; job.list = list; job.start = start; job.pass = &sc;
-        worst = hcbd__colours(nb, nc, nt, &job, hcbd__hc_sweep_block);
-    }
-    HCBD__OMP(omp parallel for num_threads(nt) schedule(static))
-    for (q = 0; q < n; ++q) {
-        const int i = w->fid[q];
-        w->fvx[i] = w->svx[q]; w->fvy[i] = w->svy[q]; w->fvz[i] = w->svz[q];
-    }
-    return worst;
-}
-
-/* HCBD_PAIR_EULER: the fluid pair forces, pressure, Morris friction and
-   the pair noise, dp = sqrt(2 kT f_ij dt) zeta_ij on the owner i (the
-   lower id) and minus on j (2018 eq. 18-19). */
-typedef struct hcbd__hc_kick_ctx {
-    hcbd_hc_world *w;
-    double ih, c1h, two_eta, sn, vj, qF, lim;
-    uint64_t skey;
-    int noise, stress;
-} hcbd__hc_kick_ctx;
-
-/* the traversal's lean form: acc q[0..2] the owner's force (fixed point),
-   r[0..2] its velocity, r[3] its P/n^2, r[4] its 1/n, r[5..7] its
-   pressure, viscous and noise stress */
-HCBD__INLINE void hcbd__hc_kick_begin(void *ctx, int i, hcbd__acc *a)
-{
-    const hcbd_hc_world *w = ((const hcbd__hc_kick_ctx *)ctx)->w;
-    memset(a, 0, sizeof *a);
-    a->r[0] = w->svx[i]; a->r[1] = w->svy[i]; a->r[2] = w->svz[i];
-    a->r[3] = w->sP[i]; a->r[4] = w->sIn[i];
-}
-
-HCBD__INLINE void hcbd__hc_kick_pairs(void *ctx, int i, const hcbd__near *c, int m, hcbd__acc *a,
-                                     hcbd__terms *u)
-{
-    const hcbd__hc_kick_ctx *s = (const hcbd__hc_kick_ctx *)ctx;
-    const hcbd_hc_world *w = s->w;
-    const hcbd_real *HCBD__RESTRICT vx = w->svx, *HCBD__RESTRICT vy = w->svy;
-    const hcbd_real *HCBD__RESTRICT vz = w->svz, *HCBD__RESTRICT Pn2 = w->sP, *HCBD__RESTRICT In = w->sIn;
-    const int32_t *HCBD__RESTRICT fid = w->fid;
-    const double vxi = a->r[0], vyi = a->r[1], vzi = a->r[2], Pi = a->r[3], ini = a->r[4];
-    const double qF = s->qF, lim = s->lim, ih = s->ih, c1h = s->c1h, two_eta = s->two_eta, vj = s->vj;
-    /* the deterministic forces in a SIMD loop, the noise (one draw per
-       pair) and the stress sums (in pair order) apart: the same operations
-       on each pair, so the same bits */
-    double fp[HCBD__CHUNK], fv0[HCBD__CHUNK], fm[HCBD__CHUNK], Fx[HCBD__CHUNK], Fy[HCBD__CHUNK], Fz[HCBD__CHUNK];
-    int64_t U0[HCBD__CHUNK], U1[HCBD__CHUNK], U2[HCBD__CHUNK];
-    int64_t *HCBD__RESTRICT aFx = w->aF[0], *HCBD__RESTRICT aFy = w->aF[1], *HCBD__RESTRICT aFz = w->aF[2];
-    int t, bad = 0;
-    (void)u;
-    HCBD__OMP(omp simd)
-    for (t = 0; t < m; ++t) {
-        const int j = c->j[t];
-        const double wdr = hcbd__m4_wdr(sqrt(c->r2[t]) * ih, c1h);
-        const double f = hcbd__morris_f(two_eta, wdr, ini, In[j]);
-        const double p = hcbd__tait_fr(Pi, Pn2[j], wdr);
-        const double v0 = -f * (vxi - (vx[j] + c->k[t] * vj));
-        fp[t] = p;
-        fv0[t] = v0;
-        fm[t] = f;
-        Fx[t] = p * c->x[t] + v0;
-        Fy[t] = p * c->y[t] + -f * (vyi - vy[j]);
-        Fz[t] = p * c->z[t] + -f * (vzi - vz[j]);
-    }
-    if (s->stress)
-        for (t = 0; t < m; ++t) {
-            a->r[5] += c->y[t] * (fp[t] * c->x[t]);
-            a->r[6] += c->y[t] * fv0[t];
-        }
-    if (s->noise)
-        for (t = 0; t < m; ++t) {
-            double zz[3];
-            const double sf = s->sn * sqrt(fm[t]);
-            hcbd__deviates3(w->core.zig, HCBD_NOISE_GAUSS, hcbd__pair_key(s->skey, fid[i], fid[c->j[t]]), zz);
-            Fx[t] += sf * zz[0];
-            Fy[t] += sf * zz[1];
-            Fz[t] += sf * zz[2];
-            if (s->stress) a->r[7] += c->y[t] * sf * zz[0];
-        }
-    HCBD__OMP(omp simd reduction(|:bad))
-    for (t = 0; t < m; ++t) {
-        bad |= !(fabs(Fx[t]) <= lim && fabs(Fy[t]) <= lim && fabs(Fz[t]) <= lim);
-        U0[t] = hcbd__fix(Fx[t] * qF);
-        U1[t] = hcbd__fix(Fy[t] * qF);
-        U2[t] = hcbd__fix(Fz[t] * qF);
-    }
-    for (t = 0; t < m; ++t) {
-        const int j = c->j[t];
-        a->q[0] += U0[t]; aFx[j] -= U0[t];
-        a->q[1] += U1[t]; aFy[j] -= U1[t];
-        a->q[2] += U2[t]; aFz[j] -= U2[t];
-    }
-    a->bad |= bad;
-}
-
-HCBD__INLINE int hcbd__hc_kick_end(void *ctx, int i, hcbd__acc *a)
-{
-    const hcbd__hc_kick_ctx *s = (const hcbd__hc_kick_ctx *)ctx;
-    hcbd_hc_world *w = s->w;
-    const int32_t idi = w->fid[i];
-    w->aF[0][i] += a->q[0]; w->aF[1][i] += a->q[1]; w->aF[2][i] += a->q[2];
-    if (s->stress) { /* by id: the sum over blobs in a fixed order */
-        w->fs[3 * idi] = a->r[5];
-        w->fs[3 * idi + 1] = a->r[6];
-        w->fs[3 * idi + 2] = a->r[7];
-    }
-    return a->bad ? idi : INT_MAX;
-}
-
-HCBD__INLINE int hcbd__hc_kick_run(hcbd_hc_world *w, int q0, int q1, const int noise,
-                                   const int stress)
-{
-    const double h = w->p.h, dt = w->p.dt / w->p.substeps;
-    const hcbd__trav T = hcbd__hc_trav_f(w, 2.0 * h);
-    hcbd__hc_kick_ctx s;
-    s.w = w;
-    s.ih = 1.0 / h;
-    s.c1h = 1.0 / (4.0 * HCBD__PI * h * h * h * h * h);
-    s.two_eta = 2.0 * w->p.eta;
-    s.sn = noise ? sqrt(2.0 * w->p.kT / dt) : 0.0;
-    s.vj = w->core.le_vjump;
-    s.qF = w->core.qF; s.lim = w->core.limF;
-    s.skey = w->kick_key;
-    s.noise = noise; s.stress = stress;
-    return hcbd__traverse(&T, w->lf.perm, q0, q1, &s, hcbd__hc_kick_begin, hcbd__hc_kick_pairs,
-                          hcbd__hc_kick_end);
-}
-
-static int hcbd__hc_kick_v(void *c, int q0, int q1)
-{
-    return hcbd__hc_kick_run((hcbd_hc_world *)c, q0, q1, 0, 0);
-}
-
-static int hcbd__hc_kick_vn(void *c, int q0, int q1)
-{
-    return hcbd__hc_kick_run((hcbd_hc_world *)c, q0, q1, 1, 0);
-}
-
-static int hcbd__hc_kick_any(void *c, int q0, int q1)
-{
-    hcbd_hc_world *w = (hcbd_hc_world *)c;
-    return hcbd__hc_kick_run(w, q0, q1, w->noise_f, w->core.stress_on);
-}
-
-/* Fluid velocities of t + dt (MODEL 6) into the scratch velocities: the
-   pair forces (Euler pairs, or the exact sweep with the pressure fused
-   into it), then body and polymer forces.  Returns the first blob with a
-   pair force beyond the fixed-point range, or -1. */
-static int hcbd__hc_fluid_kick(hcbd_hc_world *w, double dt, uint64_t skey)
-{
-    const int n = w->nf, nt = w->p.threads, rp = w->p.reverse_poiseuille;
-    const int exact = w->p.pair_integrator == HCBD_PAIR_SHARDLOW;
-    const double dt_m = dt * w->inv_m, inv_q = 1.0 / w->core.qF;
-    const double gx = w->p.g[0], gy = w->p.g[1], gz = w->p.g[2], half = 0.5 * w->p.L[1];
-    double gmean = 0;
-    int i, d, bad;
-    (void)nt;
-    if (rp) {
-        /* halves holding different numbers of blobs would get a net force
-           and the whole fluid would drift: remove the mean */
-        for (i = 0; i < n; ++i) gmean += w->fy[i] >= half ? 1.0 : -1.0;
-        gmean /= n;
-    }
-    for (d = 0; d < 3; ++d) hcbd__zero64(w->aF[d], n);
-    w->kick_key = skey;
-    bad = exact ? hcbd__hc_fluid_shardlow(w, dt, skey)
-                : hcbd__nl_owners(&w->lf, n, nt, w,
-                                  w->core.stress_on || w->core.general ? hcbd__hc_kick_any
-                                  : w->noise_f ? hcbd__hc_kick_vn
-                                               : hcbd__hc_kick_v);
-    HCBD__OMP(omp parallel for num_threads(nt) schedule(static))
-    for (i = 0; i < n; ++i) {
-        const double sgn = rp ? (w->fy[i] >= half ? 1.0 : -1.0) - gmean : 1.0;
-        const int s = w->fslot[i];
-        w->nvx[i] = (hcbd_real)(w->fvx[i] + dt_m * ((double)w->aF[0][s] * inv_q + w->fax[i]) + sgn * gx * dt);
-        w->nvy[i] = (hcbd_real)(w->fvy[i] + dt_m * ((double)w->aF[1][s] * inv_q + w->fay[i]) + sgn * gy * dt);
-        w->nvz[i] = (hcbd_real)(w->fvz[i] + dt_m * ((double)w->aF[2][s] * inv_q + w->faz[i]) + sgn * gz * dt);
-    }
-    return bad == INT_MAX ? -1 : bad;
-}
-
-/* >>HCBD: integrator (pair variables, moves, the state at the present
-   positions) */
-/* Exact Ornstein-Uhlenbeck update of the pair variables over dt with
-   lambda_eq held at its value of t: the equilibrium variance is kT/alpha
-   for any dt/tau_lambda (Euler-Maruyama, the paper's, agrees to first
-   order and is biased when a quick run shortens tau_lambda). */
-static void hcbd__hc_lambda_update(hcbd_hc_world *w)
-{
-    const int n = w->np, nt = w->p.threads, noise = w->noise_p;
-    const double e = exp(-w->p.dt / w->p.tau_lambda);
-    const double s = noise ? sqrt(w->p.kT / w->p.alpha * -expm1(-2.0 * w->p.dt / w->p.tau_lambda)) : 0.0;
-    const uint64_t skey = hcbd__mix64(w->key_lambda ^ hcbd__mix64((uint64_t)w->step));
-    const size_t cap = (size_t)w->pair_cap;
-    int a;
-    (void)nt;
-    HCBD__OMP(omp parallel for num_threads(nt) schedule(static))
-    for (a = 0; a < n; ++a) {
-        hcbd_real *l = w->pair_l + a * cap;
-        const hcbd_real *eq = w->pair_eq + a * cap;
-        const int32_t *b = w->pair_b + a * cap;
-        int k;
-        for (k = 0; k < w->pair_n[a]; ++k) {
-            double x = eq[k] + (l[k] - eq[k]) * e;
-            if (noise) x += s * hcbd__normal_at(w->core.zig, hcbd__pair_key(skey, a, b[k]));
-            l[k] = (hcbd_real)x;
-        }
-    }
-}
-
-/* Moves a particle by dr with periodic and Lees-Edwards wrapping; returns
-   the image crossing in y (+1 up, -1 down, 0). */
-static inline int hcbd__hc_move(const hcbd_hc_world *w, double s_new, double *x, double *y,
-                                double *z)
-{
-    const double *L = w->p.L;
-    int k = 0;
-    if (*y >= L[1]) { *y -= L[1]; k = 1; }
-    else if (*y < 0) { *y += L[1]; k = -1; }
-    if (*y >= L[1] || *y < 0) *y = 0; /* round-off of y - L */
-    if (k && w->core.le_on) *x -= k * s_new;
-    *x -= L[0] * floor(*x / L[0]);
-    if (*x >= L[0]) *x = 0;
-    *z -= L[2] * floor(*z / L[2]);
-    if (*z >= L[2]) *z = 0;
-    return k;
-}
-
-/* Kick-drift: the velocities of t + dt move the blobs (symplectic Euler).
-   For the reversible pressure forces it keeps phase-space volume, so sound
-   waves neither grow nor decay from the integrator; drifting with the old
-   velocities (explicit Euler) amplifies them every step. */
-/* Moves the fluid over dt_f (advancing the Lees-Edwards offset) and/or
-   the polymers over dt (with the offset as it then stands). */
-static int hcbd__hc_drift(hcbd_hc_world *w, double dt_f, int fluid, int poly, int *why)
-{
-    const int nf = fluid ? w->nf : 0, np = poly ? w->np : 0, nt = w->p.threads, noise = w->noise_p;
-    const double dt = w->p.dt, lim_f = 0.5 * w->p.h, lim_p = 0.25 * w->p.rc, vj = w->core.le_vjump;
-    const double sdr = sqrt(2.0 * w->p.kT * dt / w->p.xi);
-    const double s_new = fluid ? fmod(w->core.le_offset + w->p.gdot * w->p.L[1] * dt_f, w->p.L[0])
-                               : w->core.le_offset;
-    const uint64_t skey = hcbd__mix64(w->key_poly ^ hcbd__mix64((uint64_t)w->step));
-    hcbd__box box = hcbd__hc_box(w);
-    double dm_f = 0, dm_p = 0;
-    int i, bad_f = INT_MAX, bad_p = INT_MAX, nan_f = INT_MAX, nan_p = INT_MAX;
-    (void)nt;
-    box.offset = s_new;
-    HCBD__OMP(omp parallel for num_threads(nt) schedule(static) reduction(min:bad_f) reduction(min:nan_f) reduction(max:dm_f))
-    for (i = 0; i < nf; ++i) {
-        double v[3], x, y, z, e[3];
-        int k;
-        v[0] = w->nvx[i]; v[1] = w->nvy[i]; v[2] = w->nvz[i];
-        if (!(isfinite(v[0]) && isfinite(v[1]) && isfinite(v[2]))) {
-            if (i < nan_f) nan_f = i;
-            continue;
-        }
-        if ((v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) * dt_f * dt_f > lim_f * lim_f && i < bad_f)
-            bad_f = i;
-        x = w->fx[i] + v[0] * dt_f;
-        y = w->fy[i] + v[1] * dt_f;
-        z = w->fz[i] + v[2] * dt_f;
-        k = hcbd__hc_move(w, s_new, &x, &y, &z);
-        w->fx[i] = (hcbd_real)x;
-        w->fy[i] = (hcbd_real)y;
-        w->fz[i] = (hcbd_real)z;
-        hcbd__delta_box(&box, x - w->lf.x0[i], y - w->lf.y0[i], z - w->lf.z0[i], e);
-        if (e[0] * e[0] + e[1] * e[1] + e[2] * e[2] > dm_f) dm_f = e[0] * e[0] + e[1] * e[1] + e[2] * e[2];
-        w->fvx[i] = (hcbd_real)(v[0] - k * vj);
-        w->fvy[i] = (hcbd_real)v[1];
-        w->fvz[i] = (hcbd_real)v[2];
-    }
-    HCBD__OMP(omp parallel for num_threads(nt) schedule(static) reduction(min:bad_p) reduction(min:nan_p) reduction(max:dm_p))
-    for (i = 0; i < np; ++i) {
-        double dr[3], x, y, z, e[3];
-        dr[0] = w->pux[i] * dt;
-        dr[1] = w->puy[i] * dt;
-        dr[2] = w->puz[i] * dt;
-        if (noise) {
-            double z3[3];
-            hcbd__deviates3(w->core.zig, HCBD_NOISE_GAUSS, hcbd__mix64(skey ^ (uint64_t)(uint32_t)i), z3);
-            dr[0] += sdr * z3[0];
-            dr[1] += sdr * z3[1];
-            dr[2] += sdr * z3[2];
-        }
-        if (!(isfinite(dr[0]) && isfinite(dr[1]) && isfinite(dr[2]))) {
-            if (i < nan_p) nan_p = i;
-            continue;
-        }
-        if (dr[0] * dr[0] + dr[1] * dr[1] + dr[2] * dr[2] > lim_p * lim_p && i < bad_p) bad_p = i;
-        x = w->px[i] + dr[0];
-        y = w->py[i] + dr[1];
-        z = w->pz[i] + dr[2];
-        hcbd__hc_move(w, s_new, &x, &y, &z);
-        w->px[i] = (hcbd_real)x;
-        w->py[i] = (hcbd_real)y;
-        w->pz[i] = (hcbd_real)z;
-        hcbd__delta_box(&box, x - w->lp.x0[i], y - w->lp.y0[i], z - w->lp.z0[i], e);
-        if (e[0] * e[0] + e[1] * e[1] + e[2] * e[2] > dm_p) dm_p = e[0] * e[0] + e[1] * e[1] + e[2] * e[2];
-    }
-    /* a blob that crossed the sheared boundary since the build is measured
-       with today's offset: the drift term of the rebuild test covers it */
-    if (fluid) w->lf.le_drift += fabs(w->p.gdot * w->p.L[1] * dt_f);
-    if (sqrt(dm_f) > w->lf.disp_max) w->lf.disp_max = sqrt(dm_f);
-    if (sqrt(dm_p) > w->lp.disp_max) w->lp.disp_max = sqrt(dm_p);
-    w->core.le_offset = s_new;
-    if (nan_f != INT_MAX) { *why = 0; return nan_f; }
-    if (nan_p != INT_MAX) { *why = 1; return nan_p; }
-    if (bad_f != INT_MAX) { *why = 2; return bad_f; }
-    if (bad_p != INT_MAX) { *why = 3; return bad_p; }
-    return -1;
-}
-
-/* Densities, pairs, forces and the coupling at the present positions. */
-static hcbd_result hcbd__hc_prepare(hcbd_hc_world *w, int64_t step)
-{
-    int bad, need = 0;
-    hcbd_result r = hcbd__hc_lists(w, step);
-    if (r != HCBD_OK) return r;
-    hcbd__hc_fluid_density(w);
-    if (w->np > 0) {
-        bad = hcbd__hc_poly_density(w);
-        if (bad >= 0) return hcbd__hc_phi_fail(w, step, bad, w->pn[bad]);
-        bad = hcbd__hc_poly_forces(w, &need);
-        if (bad >= 0)
-            return hcbd__fail(&w->err, HCBD_ERR_CAPACITY, step, bad,
-                              "polymer %d has %d transient partners of higher id, more "
-                              "than pair_capacity %d", bad, need, w->pair_cap);
-        bad = hcbd__hc_interp(w);
-        if (bad >= 0)
-            return hcbd__fail(&w->err, HCBD_ERR_PARAM, step, bad,
-                              "polymer %d at (%g, %g, %g) has no fluid blob within rc = %g",
-                              bad, (double)w->px[bad], (double)w->py[bad], (double)w->pz[bad],
-                              w->p.rc);
-        hcbd__hc_redistribute(w);
-    } else {
-        memset(w->fax, 0, (size_t)w->nf * sizeof(hcbd_real));
-        memset(w->fay, 0, (size_t)w->nf * sizeof(hcbd_real));
-        memset(w->faz, 0, (size_t)w->nf * sizeof(hcbd_real));
-    }
-    w->ready = 1;
-    return HCBD_OK;
-}
-
-hcbd_result hcbd_hc_world_refresh(hcbd_hc_world *w)
-{
-    if (!w) return HCBD_ERR_NULL;
-    if (w->nf < 2) return hcbd__fail(&w->err, HCBD_ERR_STATE, -1, -1, "no fluid blobs set");
-    hcbd__hc_lists_stale(w); /* positions may have been written directly */
-    return hcbd__hc_prepare(w, -1);
-}
-
-static void hcbd__hc_stress_add(hcbd_hc_world *w)
-{
-    double s[HCBD_HC_NSTRESS] = {0}, inv_V = 1.0 / (w->p.L[0] * w->p.L[1] * w->p.L[2]);
-    int i, k;
-    for (i = 0; i < w->nf; ++i) {
-        double ux = w->fvx[i] - w->p.gdot * (w->fy[i] - 0.5 * w->p.L[1]);
-        s[HCBD_HC_S_KINETIC] += w->m * ux * w->fvy[i];
-        s[HCBD_HC_S_PRESSURE] += w->fs[3 * i];
-        s[HCBD_HC_S_VISCOUS] += w->fs[3 * i + 1];
-        s[HCBD_HC_S_NOISE] += w->fs[3 * i + 2];
-    }
-    for (i = 0; i < w->np; ++i) {
-        s[HCBD_HC_S_CONSERVATIVE] += w->ps[3 * i];
-        s[HCBD_HC_S_TRANSIENT] += w->ps[3 * i + 1];
-        s[HCBD_HC_S_INTERACTION] += w->ps[3 * i + 2];
-    }
-    s[HCBD_HC_S_FLUID] = s[0] + s[1] + s[2] + s[3];
-    s[HCBD_HC_S_POLYMER] = s[5] + s[6];
-    s[HCBD_HC_S_TOTAL] = s[HCBD_HC_S_FLUID] + s[HCBD_HC_S_POLYMER] + s[HCBD_HC_S_INTERACTION];
-    for (k = 0; k < HCBD_HC_NSTRESS; ++k) w->core.stress_sum[k] -= s[k] * inv_V;
-    w->core.stress_steps++;
-}
-
-/* >>HCBD: the step and its guard */
-/* The fluid (poly 0) or the polymers (1, no velocities of their own) as a
-   species view */
-static hcbd__vset hcbd__hc_vset(const hcbd_hc_world *w, int poly)
-{
-    hcbd__vset s;
-    s.n = poly ? w->np : w->nf;
-    s.slot = NULL;
-    s.x = poly ? w->px : w->fx; s.y = poly ? w->py : w->fy; s.z = poly ? w->pz : w->fz;
-    s.vx = poly ? NULL : w->fvx; s.vy = w->fvy; s.vz = w->fvz;
-    s.m = w->m;
-    return s;
-}
-
-
-/* The run-time guard (guard_every): positions inside the box, finite
-   velocities and pair variables. */
-static hcbd_result hcbd__hc_guard(hcbd_hc_world *w)
-{
-    const double *L = w->p.L;
-    const int nt = w->p.threads;
-    const hcbd__vset fs = hcbd__hc_vset(w, 0), ps = hcbd__hc_vset(w, 1);
-    hcbd_result r;
-    int i, k, f0 = INT_MAX, p0 = INT_MAX;
-    (void)nt;
-    /* the first offending blob and polymer, found on all threads; the
-       loops below then name the cause from there on */
-    HCBD__OMP(omp parallel for num_threads(nt) schedule(static) reduction(min:f0))
-    for (i = 0; i < w->nf; ++i) {
-        const double x = w->fx[i], y = w->fy[i], z = w->fz[i];
-        if (!(isfinite(w->fvx[i]) && isfinite(w->fvy[i]) && isfinite(w->fvz[i])) ||
-            !(x >= 0 && x < L[0] && y >= 0 && y < L[1] && z >= 0 && z < L[2]))
-            if (i < f0) f0 = i;
-    }
-    HCBD__OMP(omp parallel for num_threads(nt) schedule(static) reduction(min:p0))
-    for (i = 0; i < w->np; ++i) {
-        const double x = w->px[i], y = w->py[i], z = w->pz[i];
-        int bad = !(x >= 0 && x < L[0] && y >= 0 && y < L[1] && z >= 0 && z < L[2]), kk;
-        for (kk = 0; w->transient && kk < w->pair_n[i]; ++kk)
-            bad |= !isfinite(w->pair_l[(size_t)i * w->pair_cap + kk]);
-        if (bad && i < p0) p0 = i;
-    }
-    for (i = f0; i < w->nf; ++i)
-        if ((r = hcbd__guard_one(&w->err, w->step, &fs, i, L, "fluid blob", i)) != HCBD_OK)
-            return r;
-    for (i = p0; i < w->np; ++i) {
-        if ((r = hcbd__guard_one(&w->err, w->step, &ps, i, L, "polymer", w->nf + i)) != HCBD_OK)
-            return r;
-        for (k = 0; w->transient && k < w->pair_n[i]; ++k)
-            if (!isfinite(w->pair_l[(size_t)i * w->pair_cap + k]))
-                return hcbd__fail(&w->err, HCBD_ERR_NONFINITE, w->step, w->nf + i,
-                                  "guard at step %lld: polymer %d's pair variable with %d "
-                                  "is not finite", (long long)w->step, i,
-                                  (int)w->pair_b[(size_t)i * w->pair_cap + k]);
-    }
-    return HCBD_OK;
-}
-
-hcbd_result hcbd_hc_world_step(hcbd_hc_world *w, int nsteps)
-{
-    static const char *why_s[4] = {"fluid velocity is not finite",
-                                   "polymer displacement is not finite",
-                                   "fluid blob moved more than h/2 in one step",
-                                   "polymer moved more than rc/4 in one step"};
-    int s;
-    if (!w) return HCBD_ERR_NULL;
-    hcbd__clear(&w->err);
-    if (w->nf < 2) return hcbd__fail(&w->err, HCBD_ERR_STATE, -1, -1, "no fluid blobs set");
-    if (nsteps < 0)
-        return hcbd__fail(&w->err, HCBD_ERR_PARAM, -1, -1, "nsteps = %d is negative", nsteps);
-    for (s = 0; s < nsteps; ++s) {
-        const int nsub = w->p.substeps;
-        const double dt_f = w->p.dt / nsub;
-        hcbd_result r;
-        int bad = -1, why = 0, i, k;
-        if (!w->ready && (r = hcbd__hc_prepare(w, w->step)) != HCBD_OK) return r;
-        for (k = 0; k < nsub && bad < 0; ++k) {
-            const uint64_t skey = hcbd__mix64(w->key_fpair ^ hcbd__mix64((uint64_t)(w->step * nsub + k)));
-            if (k > 0) { /* the fluid alone moved: its lists and densities */
-                if ((r = hcbd__hc_lists(w, w->step)) != HCBD_OK) return r;
-                hcbd__hc_fluid_density(w);
-            }
-            if ((i = w->dens_bad) >= 0)
-                return hcbd__fail(&w->err, HCBD_ERR_UNSTABLE, w->step, i,
-                                  "fluid blob %d: density n/nbar = %g is outside (1/3, 3): "
-                                  "dt too long for the sound speed or the flow", i,
-                                  (double)w->fn[i] / w->p.nbar);
-            hcbd__hc_sync(w); /* velocities may have been set between steps */
-            if ((bad = hcbd__hc_fluid_kick(w, dt_f, skey)) >= 0)
-                return hcbd__fail(&w->err, HCBD_ERR_UNSTABLE, w->step, bad,
-                                  "fluid blob %d has a pair force beyond %g (the fixed-point "
-                                  "range: a move of 16 h in one step); dt = %g is too long",
-                                  bad, w->core.limF, dt_f);
-            if (k == nsub - 1) {
-                if (w->core.stress_on) hcbd__hc_stress_add(w);
-                if (w->transient && w->np > 0) hcbd__hc_lambda_update(w);
-            }
-            bad = hcbd__hc_drift(w, dt_f, 1, nsub == 1, &why);
-        }
-        if (bad < 0 && nsub > 1) bad = hcbd__hc_drift(w, dt_f, 0, 1, &why);
-        w->step++;
-        w->ready = 0;
-        if (bad >= 0)
-            return hcbd__fail(&w->err, why < 2 ? HCBD_ERR_NONFINITE : HCBD_ERR_UNSTABLE,
-                              w->step, bad, "%s (id %d, dt = %g, substeps %d)", why_s[why], bad,
-                              w->p.dt, nsub);
-        if (w->p.guard_every > 0 && w->step % w->p.guard_every == 0 &&
-            (r = hcbd__hc_guard(w)) != HCBD_OK)
-            return r;
-    }
-    if (!w->ready) return hcbd__hc_prepare(w, w->step);
-    return HCBD_OK;
-}
-
-/* >>HCBD: observables */
-static int hcbd__hc_pair_slot(const hcbd_hc_world *w, int a, int b, int *lo)
-{
-    if (!w->transient || a < 0 || b < 0 || a >= w->np || b >= w->np || a == b) return -1;
-    *lo = a < b ? a : b;
-    return hcbd__hc_find(w, *lo, a < b ? b : a);
-}
-
-hcbd_result hcbd_hc_world_get_lambda(const hcbd_hc_world *w, int a, int b, double *lambda)
-{
-    int lo, k;
-    if (!w || !lambda) return HCBD_ERR_NULL;
-    if (a < 0 || b < 0 || a >= w->np || b >= w->np || a == b) return HCBD_ERR_PARAM;
-    k = hcbd__hc_pair_slot(w, a, b, &lo);
-    if (k < 0) return HCBD_ERR_STATE;
-    *lambda = w->pair_l[(size_t)lo * w->pair_cap + k];
-    return HCBD_OK;
-}
-
-hcbd_result hcbd_hc_world_set_lambda(hcbd_hc_world *w, int a, int b, double lambda)
-{
-    int lo, k;
-    if (!w) return HCBD_ERR_NULL;
-    hcbd__clear(&w->err);
-    if (a < 0 || a >= w->np || b < 0 || b >= w->np || a == b)
-        return hcbd__fail(&w->err, HCBD_ERR_PARAM, -1, a,
-                          "a = %d, b = %d are not two polymer ids (need 0 <= a != b < %d)", a, b,
-                          w->np);
-    if (!isfinite(lambda))
-        return hcbd__fail(&w->err, HCBD_ERR_NONFINITE, -1, a, "lambda = %g is not finite", lambda);
-    k = hcbd__hc_pair_slot(w, a, b, &lo);
-    if (k < 0)
-        return hcbd__fail(&w->err, HCBD_ERR_STATE, -1, a,
-                          "polymers %d and %d have no pair variable", a, b);
-    w->pair_l[(size_t)lo * w->pair_cap + k] = (hcbd_real)lambda;
-    w->ready = 0;
-    return hcbd_hc_world_refresh(w);
-}
-
-double hcbd_hc_world_temperature(const hcbd_hc_world *w)
-{
-    hcbd__vset s;
-    if (!w) return 0.0;
-    s = hcbd__hc_vset(w, 0);
-    return hcbd__temperature(&s, w->p.gdot, w->p.L[1]);
-}
-
-void hcbd_hc_world_momentum(const hcbd_hc_world *w, double p[3])
-{
-    hcbd__vset s;
-    if (!p) return;
-    p[0] = p[1] = p[2] = 0.0;
-    if (!w) return;
-    s = hcbd__hc_vset(w, 0);
-    hcbd__momentum(&s, p);
-}
-
-hcbd_result hcbd_hc_world_transverse_current(const hcbd_hc_world *w, int nk, double out[12])
-{
-    if (!w || !out) return HCBD_ERR_NULL;
-    if (nk < 1) return HCBD_ERR_PARAM;
-    hcbd__tcurrent(w->nf, NULL, w->fx, w->fy, w->fz, w->fvx, w->fvy, w->fvz, w->p.L, nk, out);
-    return HCBD_OK;
-}
-
-double hcbd_hc_world_polymer_energy(const hcbd_hc_world *w)
-{
-    double e = 0.0, et = 0.0;
-    int a, k;
-    if (!w || !w->ready) return NAN;
-    if (w->has_fc)
-        for (a = 0; a < w->np; ++a) e += hcbd_flory_g1(w->pn[a] / w->p.n_max, w->p.chi);
-    e *= w->p.p_kuhn * w->p.kT;
-    for (a = 0; a < w->np && w->transient; ++a)
-        for (k = 0; k < w->pair_n[a]; ++k) {
-            double u = w->pair_l[(size_t)a * w->pair_cap + k] - w->pair_eq[(size_t)a * w->pair_cap + k];
-            et += u * u;
-        }
-    return e + 0.5 * w->p.alpha * et;
-}
-
-hcbd_result hcbd_hc_world_density_range(const hcbd_hc_world *w, double out[3])
-{
-    int i;
-    if (!w || !out) return HCBD_ERR_NULL;
-    if (!w->ready || w->nf < 1) return HCBD_ERR_STATE;
-    out[0] = out[1] = w->fn[0] / w->p.nbar;
-    out[2] = w->fP[0];
-    for (i = 1; i < w->nf; ++i) {
-        double x = w->fn[i] / w->p.nbar;
-        if (x < out[0]) out[0] = x;
-        if (x > out[1]) out[1] = x;
-        if (w->fP[i] < out[2]) out[2] = w->fP[i];
-    }
-    return HCBD_OK;
-}
-
-hcbd_result hcbd_hc_world_stress_enable(hcbd_hc_world *w, int on)
-{
-    hcbd_result r;
-    if (!w) return HCBD_ERR_NULL;
-    r = hcbd__stress_enable(&w->core, &w->err, w->step, on);
-    if (r == HCBD_OK) w->ready = 0; /* the next step's passes must fill the accumulators */
-    return r;
-}
-
-hcbd_result hcbd_hc_world_stress_read(const hcbd_hc_world *w, double out[HCBD_HC_NSTRESS],
-                                int64_t *nsteps)
-{
-    if (!w || !out) return HCBD_ERR_NULL;
-    hcbd__stress_read(&w->core, out, HCBD_HC_NSTRESS, nsteps);
-    return HCBD_OK;
-}
-
-uint64_t hcbd_hc_world_checksum(const hcbd_hc_world *w)
-{
-    uint64_t h = 0xCBF29CE484222325ULL;
-    size_t R = sizeof(hcbd_real), nf, np;
-    int a;
-    if (!w) return 0;
-    nf = (size_t)w->nf;
-    np = (size_t)w->np;
-    h = hcbd__hash(h, &w->step, sizeof w->step);
-    h = hcbd__hash(h, &w->core.le_offset, sizeof w->core.le_offset);
-    h = hcbd__hash(h, w->fx, nf * R); h = hcbd__hash(h, w->fy, nf * R); h = hcbd__hash(h, w->fz, nf * R);
-    h = hcbd__hash(h, w->fvx, nf * R); h = hcbd__hash(h, w->fvy, nf * R); h = hcbd__hash(h, w->fvz, nf * R);
-    h = hcbd__hash(h, w->px, np * R); h = hcbd__hash(h, w->py, np * R); h = hcbd__hash(h, w->pz, np * R);
-    for (a = 0; a < w->np && w->transient; ++a) {
-        size_t o = (size_t)a * w->pair_cap, k = (size_t)w->pair_n[a];
-        h = hcbd__hash(h, &w->pair_n[a], sizeof(int32_t));
-        h = hcbd__hash(h, w->pair_b + o, k * sizeof(int32_t));
-        h = hcbd__hash(h, w->pair_l + o, k * R);
-    }
-    return h;
-}
 /* >>HCBD: checkpoints, lifecycle, XYZ and thermo */
 static void hcbd__ck_hc_params(hcbd__ck *c, hcbd_hc_params *p)
 {

@@ -1,6 +1,7 @@
 #!/bin/sh
 # make test, part "docs": the header's banners against its CONTENTS block
-# (tests/banners.sh), every program the docs quote (build/NAME in
+# (tests/banners.sh), the HCBD step's walk through the header (tests/walk.sh,
+# at most 600 lines per jump), every program the docs quote (build/NAME in
 # README.md and docs/*.md) is one make knows how to build, so that a quoted
 # command cannot outlive its program (build/logs, build/prefix and
 # build/lammps are folders that make test and make lammps create), and
@@ -13,6 +14,8 @@ last=$(echo "$out" | tail -n 1)
 passed=${last%% passed*}
 failed=${last#*passed, }
 failed=${failed%% failed*}
+# the HCBD step reads forward through the header (tests/walk.sh)
+if tests/walk.sh hcbd.h | head -n 1; then passed=$((passed + 1)); else failed=$((failed + 1)); fi
 progs=$(grep -ohE '(^|[ `(])(\./)?build/[A-Za-z0-9_]+([^A-Za-z0-9_/.]|$)' README.md docs/*.md |
     sed -E 's#^[ `(]?(\./)?##; s#^(build/[A-Za-z0-9_]+).*#\1#' | sort -u)
 for p in $progs; do
