@@ -1,6 +1,6 @@
 /* hcbd.h - hydrodynamically coupled Brownian dynamics in one C header.
 
-   Version 0.1; see README.md.
+   Version 0.2; see README.md.
 
    WHAT IT IS
      A simulation kernel for soft-matter fluids: Brownian particles that carry
@@ -115,7 +115,8 @@
      >>random numbers [hcbd_splitmix64 hcbd_rng_ hcbd_world_rng_normal hcbd_world_pair_normals
         hcbd_world_particle_normals
         hcbd_noise_]
-     >>GI-BD equations without a world [hcbd_params_gibd_coef hcbd_gibd_]
+     >>GI-BD equations without a world [hcbd_params_gibd_coef hcbd_gibd_ hcbd_params_sweep_rows
+        hcbd_sweep_row_place]
      >>walls without a world [hcbd_walls_]
      >>kernels [hcbd_wendland hcbd_star_ hcbd_star_coef_]
      >>HCBD (2018) [hcbd_hc_si_ hcbd_hc_params_ hcbd_hc_world_def_default]
@@ -128,7 +129,7 @@
      >>HCBD: theory and stability limits [hcbd_hc_params_theory hcbd_hc_params_stability]
      >>HCBD: kernels of the 2018 model [hcbd_m4 hcbd_rapid_w hcbd_flory_]
      >>HCBD: equations without a world [hcbd_hc_params_coef hcbd_hc_fluid_ hcbd_hc_polymer_
-        hcbd_hc_lambda_ hcbd_hc_noise_ hcbd_hc_params_sweep_grid]
+        hcbd_hc_lambda_ hcbd_hc_noise_ hcbd_hc_params_sweep_grid hcbd_hc_sweep_place]
      >>checkpoint/restart [hcbd_world_checkpoint_ hcbd_world_save hcbd_world_load]
      >>trajectories and logs [hcbd_world_write_ hcbd_thermo_header hcbd_world_thermo_line]
      >>HCBD: checkpoints, threads, XYZ and thermo [hcbd_hc_world_checkpoint_ hcbd_hc_world_save
@@ -150,7 +151,7 @@
      >>pair traversal
      >>HCBD (2018): the fluid and polymer world
      >>HCBD: kernels [hcbd_m4 hcbd_rapid_w hcbd_flory_]
-     >>HCBD: the fluid sweep's order and the Tait pressure [hcbd_hc_params_sweep_grid]
+     >>HCBD: the fluid sweep's order and the Tait pressure [hcbd_hc_params_sweep_grid hcbd_hc_sweep_place]
      >>HCBD: lists and pair passes
      >>HCBD: integrator [hcbd_hc_world_refresh]
      >>HCBD: the step and its guard [hcbd_hc_world_step]
@@ -165,7 +166,7 @@
      >>HCBD: set-up [hcbd_hc_world_set_fluid hcbd_hc_world_set_polymers hcbd_hc_world_place_
         hcbd_hc_world_get_fluid hcbd_hc_world_get_polymers]
      >>GI-BD and BD (2014, 2016): the bulk and walled world
-     >>GI-BD equations [hcbd_params_gibd_coef hcbd_gibd_]
+     >>GI-BD equations [hcbd_params_gibd_coef hcbd_gibd_ hcbd_params_sweep_rows hcbd_sweep_row_place]
      >>star potential [hcbd_star_ hcbd_star_coef_]
      >>walls [hcbd_params_wall_potential]
      >>theory and stability limits [hcbd_params_theory hcbd_params_stability hcbd_limits_]
@@ -975,9 +976,22 @@ double hcbd_gibd_sdt(const hcbd_gibd_coef *c, double r, double inv_rho_i, double
    velocity of the image of j the pair sees less j's own (k gdot L[1] for
    the image k boxes up), so that u_x = v_ix - v_jx - dvx; 0 otherwise.
    The caller sweeps the pairs in an order of its own (the world's: MODEL
-   13.2). */
+   13.2, below). */
 void hcbd_gibd_pair_exact(const hcbd_gibd_coef *c, double kT, double sdt, const double z[3],
                           double dvx, double vi[3], double vj[3]);
+/* The world's sweep order, for an engine that is to match it bit for bit
+   (the LAMMPS fix does): hcbd_params_sweep_rows gives the rows, ns[0]
+   along y times ns[1] along z (each at least Rc wide, a multiple of 3 or a
+   single one; returns their count, 0 with ns untouched if p is refused).
+   hcbd_sweep_row_place places a particle whose position less particle
+   0's is (dy, dz), both in the box (|dy| < L_y, |dz| < L_z): its row
+   indices c (c_0 along y), its row c_1 ns[0] + c_0, and, returned, its
+   colour (c_0 mod 3) + 3 (c_1 mod 3) (-1 on bad input).
+   The colours run in increasing order, the rows of a colour side by side
+   (they share no particle), inside a row owners by increasing id, an
+   owner's partners (higher ids within Rc) by increasing id. */
+int hcbd_params_sweep_rows(const hcbd_params *p, int ns[2]);
+int hcbd_sweep_row_place(const int ns[2], const double L[3], double dy, double dz, int c[2], int *row);
 
 /* >>walls without a world (for engines of their own) --------------------*/
 #if HCBD_MODEL == HCBD_MODEL_WALLED
@@ -1351,6 +1365,13 @@ void hcbd_hc_fluid_pair_exact(const hcbd_hc_coef *c, double r, double inv_n_i, d
                               const double z[3], double v_i[3], double v_j[3], double P[3]);
 hcbd_result hcbd_hc_params_sweep_grid(const hcbd_hc_params *p, double s, int nb[3], int nc[3], int nf[3], char *msg,
                                size_t msg_size);
+/* A blob's place in that order: r its position less blob 0's (any image),
+   t = s'/L_y; writes its block indices c, its block and fine cell, and
+   returns its colour (-1 on bad input: a NULL pointer, a count below 1,
+   nb not a multiple of nc, an edge not positive, r or t not finite).  The
+   world places its blobs through the same code. */
+int hcbd_hc_sweep_place(const int nb[3], const int nc[3], const int nf[3], const double L[3], double t,
+                        const double r[3], int c[3], int *block, int *fine);
 double hcbd_hc_polymer_weight(const hcbd_hc_coef *c, double r);
 double hcbd_hc_polymer_density(const hcbd_hc_coef *c, double wsum);
 double hcbd_hc_polymer_mu(const hcbd_hc_coef *c, double n);
@@ -3677,7 +3698,7 @@ double hcbd_flory_g1(double phi, double chi)
 }
 
 /* >>HCBD: the fluid sweep's order and the Tait pressure, for the world and
-   for engines of their own (hcbd_hc_params_sweep_grid) */
+   for engines of their own (hcbd_hc_params_sweep_grid, hcbd_hc_sweep_place) */
 /* Tait pressure at density n (MODEL 6), as the world's density pass
    computes it */
 static inline double hcbd__tait_p(double P0, double inv_nbar, double n)
@@ -3762,6 +3783,47 @@ hcbd_result hcbd_hc_params_sweep_grid(const hcbd_hc_params *p, double s, int nb[
     hcbd__hc_fine_cells(p, nf);
     hcbd__hc_sweep_blocks(p, s / p->L[1], nb, nc, NULL);
     return HCBD_OK;
+}
+
+/* A blob's place in the sweep (hcbd_hc_sweep_place): f = nb / L and
+   g = nf / L along each axis. */
+HCBD__INLINE int hcbd__hc_sweep_at(const int nb[3], const int nc[3], const int nf[3], const double L[3],
+                                  const double f[3], const double g[3], double t, const double r0[3], int c[3],
+                                  int *block, int *fine)
+{
+    double r[3];
+    int e[3], d;
+    r[1] = r0[1];
+    r[0] = r0[0] - t * r[1];
+    r[2] = r0[2];
+    for (d = 0; d < 3; ++d) {
+        r[d] -= L[d] * floor(r[d] / L[d]);
+        c[d] = (int)(r[d] * f[d]);
+        if (c[d] > nb[d] - 1) c[d] = nb[d] - 1;
+        if (c[d] < 0) c[d] = 0;
+        e[d] = (int)(r[d] * g[d]);
+        if (e[d] > nf[d] - 1) e[d] = nf[d] - 1;
+        if (e[d] < 0) e[d] = 0;
+    }
+    *block = (c[2] * nb[1] + c[1]) * nb[0] + c[0];
+    *fine = (e[2] * nf[1] + e[1]) * nf[0] + e[0];
+    return c[0] % nc[0] + nc[0] * (c[1] % nc[1] + nc[1] * (c[2] % nc[2]));
+}
+
+int hcbd_hc_sweep_place(const int nb[3], const int nc[3], const int nf[3], const double L[3], double t,
+                        const double r[3], int c[3], int *block, int *fine)
+{
+    double f[3], g[3];
+    int d;
+    if (!nb || !nc || !nf || !L || !r || !c || !block || !fine || !isfinite(t)) return -1;
+    for (d = 0; d < 3; ++d) {
+        if (nb[d] < 1 || nc[d] < 1 || nf[d] < 1 || nb[d] % nc[d] || !(L[d] > 0) || !isfinite(L[d]) ||
+            !isfinite(r[d]))
+            return -1;
+        f[d] = nb[d] / L[d];
+        g[d] = nf[d] / L[d];
+    }
+    return hcbd__hc_sweep_at(nb, nc, nf, L, f, g, t, r, c, block, fine);
 }
 
 /* >>HCBD: lists and pair passes.  Fluid and polymer pairs run over the
@@ -4583,21 +4645,13 @@ static int hcbd__hc_fluid_shardlow(hcbd_hc_world *w, double dt, uint64_t skey)
     HCBD__OMP(omp parallel for num_threads(nt) schedule(static))
     for (q = 0; q < n; ++q) {
         double r[3];
-        int c[3], e[3], d;
+        int c[3], b, e;
+        r[0] = w->sx[q] - x0;
         r[1] = w->sy[q] - y0;
-        r[0] = w->sx[q] - x0 - t * r[1];
         r[2] = w->sz[q] - z0;
-        for (d = 0; d < 3; ++d) {
-            r[d] -= L[d] * floor(r[d] / L[d]);
-            c[d] = (int)(r[d] * f[d]);
-            if (c[d] > nb[d] - 1) c[d] = nb[d] - 1;
-            if (c[d] < 0) c[d] = 0;
-            e[d] = (int)(r[d] * g[d]);
-            if (e[d] > nfc[d] - 1) e[d] = nfc[d] - 1;
-            if (e[d] < 0) e[d] = 0;
-        }
-        blk[q] = (c[2] * nb[1] + c[1]) * nb[0] + c[0];
-        fine[q] = (e[2] * nfc[1] + e[1]) * nfc[0] + e[0];
+        hcbd__hc_sweep_at(nb, nc, nfc, L, f, g, t, r, c, &b, &e);
+        blk[q] = b;
+        fine[q] = e;
     }
     /* two stable counting sorts: by fine cell (filled in id order), then
        by block, so that a block's owners go fine cell by fine cell */
@@ -6131,6 +6185,46 @@ void hcbd_gibd_pair_exact(const hcbd_gibd_coef *c, double kT, double sdt, const 
     }
 }
 
+/* Rows of the exact pair sweep (hcbd__shardlow): y-z cells at least Rc
+   wide, a multiple of 3 along each axis, or a single one. */
+static int hcbd__sweep_rows(const hcbd_params *p, int ns[2])
+{
+    int d;
+    for (d = 0; d < 2; ++d) {
+        double k = floor(p->L[d + 1] / p->Rc);
+        ns[d] = k >= 3.0 ? 3 * (int)((k > 768.0 ? 768.0 : k) / 3.0) : 1;
+    }
+    return ns[0] * ns[1];
+}
+
+/* A particle's row and colour in the sweep (hcbd_sweep_row_place): dy, dz
+   its position less particle 0's, fy = ns[0] / L_y, fz = ns[1] / L_z. */
+HCBD__INLINE int hcbd__sweep_row_at(const int ns[2], double Ly, double Lz, double fy, double fz, double dy,
+                                   double dz, int c[2], int *row)
+{
+    int a = (int)((dy < 0 ? dy + Ly : dy) * fy), b = (int)((dz < 0 ? dz + Lz : dz) * fz);
+    if (a > ns[0] - 1) a = ns[0] - 1;
+    if (b > ns[1] - 1) b = ns[1] - 1;
+    c[0] = a;
+    c[1] = b;
+    *row = b * ns[0] + a;
+    return a % 3 + 3 * (b % 3);
+}
+
+int hcbd_params_sweep_rows(const hcbd_params *p, int ns[2])
+{
+    if (!p || !ns || hcbd_params_check(p, NULL, 0) != HCBD_OK || p->dynamics != HCBD_DYN_GIBD) return 0;
+    return hcbd__sweep_rows(p, ns);
+}
+
+int hcbd_sweep_row_place(const int ns[2], const double L[3], double dy, double dz, int c[2], int *row)
+{
+    if (!ns || !L || !c || !row || ns[0] < 1 || ns[1] < 1 || !(L[1] > 0) || !(L[2] > 0) ||
+        !(fabs(dy) < L[1]) || !(fabs(dz) < L[2]))
+        return -1;
+    return hcbd__sweep_row_at(ns, L[1], L[2], ns[0] / L[1], ns[1] / L[2], dy, dz, c, row);
+}
+
 /* >>star potential, its force and the force table (MODEL 9) */
 double hcbd_star_potential(double r, double f, double sigma, double eps)
 {
@@ -6631,18 +6725,6 @@ static int hcbd__cells(const hcbd_params *p, int nc[3])
         total *= nc[d];
     }
     return total;
-}
-
-/* Rows of the exact pair sweep (hcbd__shardlow): y-z cells at least Rc
-   wide, a multiple of 3 along each axis, or a single one. */
-static int hcbd__sweep_rows(const hcbd_params *p, int ns[2])
-{
-    int d;
-    for (d = 0; d < 2; ++d) {
-        double k = floor(p->L[d + 1] / p->Rc);
-        ns[d] = k >= 3.0 ? 3 * (int)((k > 768.0 ? 768.0 : k) / 3.0) : 1;
-    }
-    return ns[0] * ns[1];
 }
 
 static int64_t hcbd__auto_pairs(const hcbd_world_def *def)
@@ -7732,11 +7814,9 @@ static void hcbd__shardlow(hcbd_world *w)
     /* rows by counting sort, filled in id order */
     for (k = 0; k < n; ++k) {
         const int i = w->slot[k];
-        const double yy = w->y[i] - y0, zz = w->z[i] - z0;
-        int a = (int)((yy < 0 ? yy + Ly : yy) * fy), b = (int)((zz < 0 ? zz + Lz : zz) * fz);
-        if (a > ny - 1) a = ny - 1;
-        if (b > nz - 1) b = nz - 1;
-        row[i] = b * ny + a;
+        int c[2], r;
+        hcbd__sweep_row_at(w->sw_n, Ly, Lz, fy, fz, w->y[i] - y0, w->z[i] - z0, c, &r);
+        row[i] = r;
     }
     hcbd__count_sort(row, n, w->slot, nrows, start, list);
     {

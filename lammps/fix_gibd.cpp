@@ -219,12 +219,9 @@ void FixGIBD::init()
       error->all(FLERR, "fix gibd: atom type {} has mass {}, GI-BD needs xip tau = {}", t, atom->mass[t], c.m);
   hcbd_noise_stream_init(&ns, p.seed, p.noise);
   if (exact) {
-    // the rows of hcbd's world (hcbd__sweep_rows)
+    // the rows of hcbd's world
     int n[2];
-    for (int d = 0; d < 2; ++d) {
-      const double k = std::floor(p.L[d + 1] / p.Rc);
-      n[d] = k >= 3.0 ? 3 * (int) ((k > 768.0 ? 768.0 : k) / 3.0) : 1;
-    }
+    if (hcbd_params_sweep_rows(&p, n) < 1) error->all(FLERR, "fix gibd: no rows for the exact sweep");
     ny = n[0];
     nz = n[1];
     for (int d = 0; d < 3; ++d) {
@@ -452,6 +449,7 @@ void FixGIBD::sweep_plan()
     a0[1] = xw[3 * i1 + 2];
   }
   MPI_Allreduce(a0, o, 2, MPI_DOUBLE, MPI_MAX, world);
+  const int ns[2] = {ny, nz};
   const double fy = ny / L[1], fz = nz / L[2];
   const int tri = domain->triclinic;
   const double lo[2] = {tri ? domain->sublo_lamda[1] * L[1] : domain->sublo[1] - domain->boxlo[1],
@@ -462,11 +460,10 @@ void FixGIBD::sweep_plan()
   for (int k = 0; k < nall; ++k) {
     if (atom->map(tag[k]) != k) continue; // another copy of the atom takes part
     const double *r = xw + 3 * k;
-    // the atom's row, as hcbd__shardlow finds it
-    const double yy = r[1] - o[0], zz = r[2] - o[1];
-    int a = (int) ((yy < 0 ? yy + L[1] : yy) * fy), b = (int) ((zz < 0 ? zz + L[2] : zz) * fz);
-    if (a > ny - 1) a = ny - 1;
-    if (b > nz - 1) b = nz - 1;
+    // the atom's row and colour, as hcbd's world finds them
+    int c[2], row;
+    const long long colour = hcbd_sweep_row_place(ns, L, r[1] - o[0], r[2] - o[1], c, &row);
+    const int a = c[0], b = c[1];
     // the row is this rank's when its corner lies here (any rule that gives each row
     // to one rank within the ghosts' reach gives the same bits)
     double cy = o[0] + a / fy, cz = o[1] + b / fz;
@@ -474,8 +471,7 @@ void FixGIBD::sweep_plan()
     if (cz >= L[2]) cz -= L[2];
     if (comm->procgrid[1] > 1 && !(cy >= lo[0] && cy < hi[0])) continue;
     if (comm->procgrid[2] > 1 && !(cz >= lo[1] && cz < hi[1])) continue;
-    const long long colour = (a % 3) + 3 * (b % 3), row = (long long) b * ny + a;
-    key.push_back((((colour << 24) + row) << 32) + (long long) tag[k]);
+    key.push_back((((colour << 24) + (long long) row) << 32) + (long long) tag[k]);
   }
   std::sort(key.begin(), key.end());
   own.resize(key.size());

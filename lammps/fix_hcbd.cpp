@@ -540,7 +540,7 @@ void FixHCBD::sweep_plan()
     for (int d = 0; d < 3; ++d) a0[d] = xw[3 * i1 + d];
   MPI_Allreduce(a0, o, 3, MPI_DOUBLE, MPI_MAX, world);
   const double t = le_s / L[1];
-  const double f[3] = {nb[0] / L[0], nb[1] / L[1], nb[2] / L[2]}, g[3] = {nf[0] / L[0], nf[1] / L[1], nf[2] / L[2]};
+  const double f[3] = {nb[0] / L[0], nb[1] / L[1], nb[2] / L[2]};
   const int tri = domain->triclinic;
   const double lo[2] = {tri ? domain->sublo_lamda[1] * L[1] : domain->sublo[1] - domain->boxlo[1],
                         tri ? domain->sublo_lamda[2] * L[2] : domain->sublo[2] - domain->boxlo[2]};
@@ -549,17 +549,10 @@ void FixHCBD::sweep_plan()
   owners.clear();
   for (int k = 0; k < nall; ++k) {
     if (type[k] != tf || atom->map(tag[k]) != k) continue;
-    const double *x = xw + 3 * k;
-    double r[3];
-    int cb[3], cf[3];
-    r[1] = x[1] - o[1];
-    r[0] = x[0] - o[0] - t * r[1];
-    r[2] = x[2] - o[2];
-    for (int d = 0; d < 3; ++d) {
-      r[d] -= L[d] * std::floor(r[d] / L[d]);
-      cb[d] = std::min(std::max((int) (r[d] * f[d]), 0), nb[d] - 1);
-      cf[d] = std::min(std::max((int) (r[d] * g[d]), 0), nf[d] - 1);
-    }
+    const double *x = xw + 3 * k, r[3] = {x[0] - o[0], x[1] - o[1], x[2] - o[2]};
+    int cb[3];
+    Owner w;
+    w.colour = hcbd_hc_sweep_place(nb, nc, nf, L, t, r, cb, &w.block, &w.fine);
     // the block is this rank's when its corner lies here
     bool mine = true;
     for (int d = 1; d < 3; ++d) {
@@ -569,10 +562,6 @@ void FixHCBD::sweep_plan()
       mine = mine && cy >= lo[d - 1] && cy < hi[d - 1];
     }
     if (!mine) continue;
-    Owner w;
-    w.colour = cb[0] % nc[0] + nc[0] * (cb[1] % nc[1] + nc[1] * (cb[2] % nc[2]));
-    w.block = (cb[2] * nb[1] + cb[1]) * nb[0] + cb[0];
-    w.fine = (cf[2] * nf[1] + cf[1]) * nf[0] + cf[0];
     w.tag = tag[k];
     w.i = k;
     owners.push_back(w);

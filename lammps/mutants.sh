@@ -63,8 +63,7 @@ exact_mobility|fix_gibd.cpp|x[i][d] += F[d] * dt_xi|x[i][d] += 1.1 * F[d] * dt_x
 exact_advection|fix_gibd.cpp|(u + v[i][d]) * (0.5 * dt)|(u + 1.1 * v[i][d]) * (0.5 * dt)
 lm_amplitude|fix_gibd.cpp|sdz = lmw ? 0.5 * bd : bd|sdz = lmw ? 0.55 * bd : bd
 lm_next_step|fix_gibd.cpp|hcbd_noise_particle(&ns, step + 1, id, z1);|hcbd_noise_particle(&ns, step + 2, id, z1);
-sweep_rows|fix_gibd.cpp|n[d] = k >= 3.0 ? 3 * (int)|n[d] = k >= 5.5 ? 3 * (int)
-sweep_anchor|fix_gibd.cpp|const double yy = r[1] - o[0]|const double yy = r[1] - 1.1 * o[0]
+sweep_anchor|fix_gibd.cpp|r[1] - o[0], r[2] - o[1]|r[1] - 1.1 * o[0], r[2] - o[1]
 pair_exact_rate|hcbd.h|x = 2.0 * sdt * inv_m;|x = 2.2 * sdt * inv_m;
 pair_exact_noise|hcbd.h|sqrt(0.5 * kT * m * om|sqrt(0.55 * kT * m * om
 pair_exact_share|hcbd.h|h = 0.5 * m * om;|h = 0.55 * m * om;
@@ -107,9 +106,8 @@ hc_exact_frame|fix_hcbd.cpp|v[i][d] = vc[3 * i + d] + (d == 0 ? kw[i] * le_v : 0
 hc_exact_stress_pressure|fix_hcbd.cpp|if (sum) ss[0] += d[1] * F[0];|if (sum) ss[0] += 1.1 * d[1] * F[0];
 hc_exact_stress_viscous|fix_hcbd.cpp|ss[1] += pt.y * P[0] / c.dt;|ss[1] += 1.1 * pt.y * P[0] / c.dt;
 hc_exact_fine_order|fix_hcbd.cpp|if (a.fine != b.fine) return a.fine < b.fine;|if (a.fine != b.fine) return a.fine > b.fine;
-hc_exact_colour|fix_hcbd.cpp|w.colour = cb[0] % nc[0] + nc[0] *|w.colour = cb[0] % nc[0] + (nc[0] + 1) *
 hc_exact_origin|fix_hcbd.cpp|for (int d = 0; d < 3; ++d) a0[d] = xw[3 * i1 + d];|for (int d = 0; d < 3; ++d) a0[d] = 1.1 * xw[3 * i1 + d];
-hc_exact_shear_cut|fix_hcbd.cpp|r[0] = x[0] - o[0] - t * r[1];|r[0] = x[0] - o[0] - 1.1 * t * r[1];
+hc_exact_shear_cut|fix_hcbd.cpp|const double t = le_s / L[1];|const double t = 1.1 * le_s / L[1];
 hc_exact_ghost_relay|fix_hcbd.cpp|touched[slist[k]] = 1;|touched[slist[k]] = 0;
 hc_exact_stale_partners|fix_hcbd.cpp|neighbor->ago == 0|neighbor->ago == -1
 hc_poly_velocity|fix_hcbd.cpp|v[i][d] = tp ? st[i][1 + d] + (d == 0 ? kw[i] * le_v : 0.0) : 0.0;|v[i][d] = tp ? 1.1 * st[i][1 + d] + (d == 0 ? kw[i] * le_v : 0.0) : 0.0;

@@ -990,6 +990,48 @@ void test_hc_exact_sweep_exported(void)
             }
         g.L[0] = g.L[1] = g.L[2] = 13.86;
         hcbd_hc_params_sweep_grid(&g, 0.0, nb, nc, nfc, msg, sizeof msg);
+        /* a blob's place as exported (hcbd_hc_sweep_place, what
+           lammps/fix_hcbd places its blobs by) against the order written
+           out here (a_sweep_order), at tilts of either sign */
+        {
+            hcbd_rng rg;
+            int miss = 0;
+            hcbd_rng_seed(&rg, 7);
+            for (e = 0; e < 600; ++e) {
+                const double tl = (e % 5 - 2) * 0.21;
+                double r[3], u[3];
+                int cb[3], cf[3], dd, blk = -1, fn = -1, col, cc[3] = {-1, -1, -1};
+                for (dd = 0; dd < 3; ++dd) r[dd] = (2.0 * hcbd_rng_uniform(&rg) - 1.0) * 1.5 * g.L[dd];
+                u[1] = r[1];
+                u[0] = r[0] - tl * u[1];
+                u[2] = r[2];
+                for (dd = 0; dd < 3; ++dd) {
+                    u[dd] -= g.L[dd] * floor(u[dd] / g.L[dd]);
+                    cb[dd] = (int)(u[dd] * (nb[dd] / g.L[dd]));
+                    cf[dd] = (int)(u[dd] * (nfc[dd] / g.L[dd]));
+                    if (cb[dd] > nb[dd] - 1) cb[dd] = nb[dd] - 1;
+                    if (cf[dd] > nfc[dd] - 1) cf[dd] = nfc[dd] - 1;
+                }
+                col = hcbd_hc_sweep_place(nb, nc, nfc, g.L, tl, r, cc, &blk, &fn);
+                if (col != cb[0] % nc[0] + nc[0] * (cb[1] % nc[1] + nc[1] * (cb[2] % nc[2])) ||
+                    blk != (cb[2] * nb[1] + cb[1]) * nb[0] + cb[0] || fn != (cf[2] * nfc[1] + cf[1]) * nfc[0] + cf[0] ||
+                    cc[0] != cb[0] || cc[1] != cb[1] || cc[2] != cb[2])
+                    miss++;
+            }
+            CHECK(!miss, "hcbd_hc_sweep_place: %d of 600 places differ from the written-out order", miss);
+            {
+                const int nc2[3] = {4, 3, 3}, nb0[3] = {0, 6, 6};
+                double r[3] = {1, 2, 3}, rn[3] = {1, NAN, 3};
+                int cc[3], blk, fn;
+                CHECK(hcbd_hc_sweep_place(NULL, nc, nfc, g.L, 0, r, cc, &blk, &fn) == -1 &&
+                          hcbd_hc_sweep_place(nb, nc, nfc, g.L, 0, r, cc, NULL, &fn) == -1 &&
+                          hcbd_hc_sweep_place(nb, nc2, nfc, g.L, 0, r, cc, &blk, &fn) == -1 &&
+                          hcbd_hc_sweep_place(nb0, nc, nfc, g.L, 0, r, cc, &blk, &fn) == -1 &&
+                          hcbd_hc_sweep_place(nb, nc, nfc, g.L, NAN, r, cc, &blk, &fn) == -1 &&
+                          hcbd_hc_sweep_place(nb, nc, nfc, g.L, 0, rn, cc, &blk, &fn) == -1,
+                      "bad input to hcbd_hc_sweep_place refused");
+            }
+        }
         NOTE("grid of a 13.86^3 box, h = 1.1: %d x %d x %d blocks, %d x %d x %d colours", nb[0], nb[1], nb[2], nc[0],
              nc[1], nc[2]);
         CHECK(!bad && nb[0] == 6 && nb[1] == 6 && nb[2] == 6 && nc[0] == 3 && nc[1] == 3 && nc[2] == 3,

@@ -361,3 +361,66 @@ void test_gibd_pair_exact_exported(void)
         hcbd_world_destroy(&w);
     }
 }
+
+/* The exact sweep's order as exported for engines that match the world bit
+   for bit (hcbd_params_sweep_rows, hcbd_sweep_row_place: lammps/fix_gibd
+   places its atoms by them), against the order written out from the
+   header's description: y-z rows at least Rc wide, a multiple of 3 along
+   each axis or a single one, each particle's row from its place relative
+   to particle 0, colour (y row mod 3) + 3 (z row mod 3).  The world's own
+   sweep is held to the same description by test_abs_one_step_replica.  Bad input
+   is refused. */
+void test_sweep_rows_exported(void)
+{
+    const double Ls[3][3] = {{12.9, 12.9, 12.9}, {10.0, 7.4, 30.2}, {8.0, 6.3, 16.0}};
+    const int want_ns[3][2] = {{3, 3}, {1, 12}, {1, 6}};
+    hcbd_rng g;
+    int t, k, bad = 0;
+    hcbd_rng_seed(&g, 41);
+    for (t = 0; t < 3; ++t) {
+        hcbd_params p = hcbd_params_default();
+        int ns[2] = {0, 0}, d;
+        for (d = 0; d < 3; ++d) p.L[d] = Ls[t][d];
+        CHECK(hcbd_params_sweep_rows(&p, ns) == want_ns[t][0] * want_ns[t][1] && ns[0] == want_ns[t][0] &&
+                  ns[1] == want_ns[t][1],
+              "box %g x %g x %g, Rc %g: %d x %d rows, %d x %d meant", p.L[0], p.L[1], p.L[2], p.Rc, ns[0], ns[1],
+              want_ns[t][0], want_ns[t][1]);
+        for (k = 0; k < 400; ++k) {
+            /* the last cases: a place just below particle 0's, whose
+               wrap rounds to the edge */
+            const double dy = k == 398 ? -1e-17 : (2.0 * hcbd_rng_uniform(&g) - 1.0) * p.L[1];
+            const double dz = k == 399 ? -1e-17 : (2.0 * hcbd_rng_uniform(&g) - 1.0) * p.L[2];
+            const double s[2] = {dy < 0 ? dy + p.L[1] : dy, dz < 0 ? dz + p.L[2] : dz};
+            int a[2], c[2] = {-1, -1}, row = -1, col;
+            for (d = 0; d < 2; ++d) {
+                a[d] = (int)(s[d] * (ns[d] / p.L[d + 1]));
+                if (a[d] > ns[d] - 1) a[d] = ns[d] - 1;
+            }
+            col = hcbd_sweep_row_place(ns, p.L, dy, dz, c, &row);
+            if (col != a[0] % 3 + 3 * (a[1] % 3) || c[0] != a[0] || c[1] != a[1] || row != a[1] * ns[0] + a[0]) {
+                if (!bad++)
+                    NOTE("box %d, (%.17g, %.17g): row %d colour %d, written out %d %d", t, dy, dz, row, col,
+                         a[1] * ns[0] + a[0], a[0] % 3 + 3 * (a[1] % 3));
+            }
+        }
+    }
+    CHECK(!bad, "%d places differ from the written-out order", bad);
+    {
+        hcbd_params p = hcbd_params_default();
+        const int ns[2] = {3, 3}, ns0[2] = {0, 3};
+        int c[2], row, n2[2];
+        CHECK(hcbd_sweep_row_place(NULL, p.L, 0, 0, c, &row) == -1 && hcbd_sweep_row_place(ns, NULL, 0, 0, c, &row) == -1 &&
+                  hcbd_sweep_row_place(ns, p.L, 0, 0, NULL, &row) == -1 &&
+                  hcbd_sweep_row_place(ns, p.L, 0, 0, c, NULL) == -1 &&
+                  hcbd_sweep_row_place(ns0, p.L, 0, 0, c, &row) == -1 &&
+                  hcbd_sweep_row_place(ns, p.L, p.L[1], 0, c, &row) == -1 &&
+                  hcbd_sweep_row_place(ns, p.L, 0, NAN, c, &row) == -1,
+              "bad input to hcbd_sweep_row_place refused");
+        CHECK(hcbd_params_sweep_rows(NULL, n2) == 0 && hcbd_params_sweep_rows(&p, NULL) == 0, "NULL refused");
+        p.dynamics = HCBD_DYN_BD;
+        CHECK(hcbd_params_sweep_rows(&p, n2) == 0, "BD has no sweep");
+        p = hcbd_params_default();
+        p.Rc = -1;
+        CHECK(hcbd_params_sweep_rows(&p, n2) == 0, "Rc = -1 refused");
+    }
+}
