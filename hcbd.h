@@ -9811,6 +9811,7 @@ static void hcbd__ck_walk(hcbd__ck *c, void *w)
 static hcbd_result hcbd__ck_def(hcbd_world *w, hcbd__ck *c, hcbd_world_def *def, int *n, double **tab)
 {
     int64_t cap = 0, mp = 0;
+    size_t bytes;
     memset(def, 0, sizeof *def);
     hcbd__ck_i64(c, &cap);
     hcbd__ck_i64(c, &mp);
@@ -9837,11 +9838,12 @@ static hcbd_result hcbd__ck_def(hcbd_world *w, hcbd__ck *c, hcbd_world_def *def,
     }
     /* every particle takes at least 7 words (position, images, Lees-Edwards
        shift): a short file is refused before its capacity is allocated */
-    if ((size_t)*n > (c->size - c->off) / (7 * 8)) return hcbd__ck_bad(&w->err, c, "is shorter than its particles");
-    if (hcbd_world_bytes(def) > HCBD_LOAD_MAX_BYTES)
+    if ((size_t)*n > (c->size - c->off) / (7 * 8))
+        return hcbd__ck_bad(&w->err, c, "is shorter than its particles");
+    bytes = hcbd_world_bytes(def);
+    if (bytes > HCBD_LOAD_MAX_BYTES)
         return hcbd__fail(&w->err, HCBD_ERR_MEMORY, -1, -1,
-                          "checkpoint world needs %zu bytes, more than HCBD_LOAD_MAX_BYTES",
-                          hcbd_world_bytes(def));
+                          "checkpoint world needs %zu bytes, more than HCBD_LOAD_MAX_BYTES", bytes);
     return HCBD_OK;
 }
 

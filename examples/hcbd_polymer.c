@@ -262,7 +262,7 @@ static void usage(FILE *f)
             "                      the stress growth fitted to them would carry less than\n"
             "                      startup_tol of the measured mean (3..startup_max blocks), then\n"
             "                      measures blocks of block_tau tau_lambda; 0: le_steps, 2/3 start-up\n"
-            "  block_tau=1 startup_max=8 (paper 16) startup_tol=0.005  (with plateau=1)\n"
+            "  block_tau=1 startup_max=8 (paper 64) startup_tol=0.005  (with plateau=1)\n"
             "  startup_min=t       at least t tau_lambda of start-up (with plateau=1; up to startup_max)\n"
             "  startup_strain=s    at least the strain s in the start-up (with plateau=1)\n"
             "  startup_corr=k      at least k correlation times of the stress (blocking of the\n"
