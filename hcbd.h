@@ -2901,89 +2901,87 @@ static int hcbd__density_stale(const hcbd_world *w)
 
 /* >>pair traversal: owners scheduled in slabs, partners gathered in chunks,
    the loop of every pair pass, and its streamed form. */
-/* Runs fn over the owners in cell order and returns the least of its
-   results (the lowest id of an owner with a term out of range, or INT_MAX).
-   With T threads and at least 4T layers of cells along z, the owners are
-   cut into 2T slabs of whole layers.  A pair reaches at most one layer up
-   or down (cells are at least the list range wide), so slabs of one parity
-   never write to the same particle: they run side by side, then those of
-   the other parity.  The sums are integers, so the cut changes no bit. */
-typedef int (*hcbd__owner_fn)(void *ctx, int q0, int q1);
-static int hcbd__nl_owners(const hcbd__nlist *L, int n, int T, void *ctx, hcbd__owner_fn fn)
-{
-    const int nl = L->nc[2], layer = L->nc[0] * L->nc[1];
-    int bad = INT_MAX;
-    if (T > nl / 4) T = nl / 4;
-    if (T <= 1) return fn(ctx, 0, n);
-    HCBD__OMP(omp parallel num_threads(T) reduction(min:bad))
-    {
-        const int K = 2 * T;
-        int ph, k;
-        for (ph = 0; ph < 2; ++ph) {
-            HCBD__OMP(omp for schedule(static))
-            for (k = ph; k < K; k += 2) {
-                int b = fn(ctx, L->cell_start[(int64_t)k * nl / K * layer],
-                           L->cell_start[(int64_t)(k + 1) * nl / K * layer]);
-                if (b < bad) bad = b;
-            }
-        }
+/* HCBD__SLABS(NAME, W) writes NAME(w, L, n, fn), which runs fn(w, q0, q1)
+   over the owners of list L in cell order and returns the least of its
+   results (the lowest id of an owner with a term out of range, or
+   INT_MAX).  With T = w->p.threads threads and at least 4T layers of
+   cells along z, the owners are cut into 2T slabs of whole layers.  A
+   pair reaches at most one layer up or down (cells are at least the list
+   range wide), so slabs of one parity never write to the same particle:
+   they run side by side, then those of the other parity.  The sums are
+   integers, so the cut changes no bit. */
+#define HCBD__SLABS(NAME, W)                                                                                 \
+    static int NAME(W *w, const hcbd__nlist *L, int n, int (*fn)(W *, int, int))                             \
+    {                                                                                                        \
+        const int nl = L->nc[2], layer = L->nc[0] * L->nc[1];                                                \
+        int T = w->p.threads, bad = INT_MAX;                                                                 \
+        if (T > nl / 4) T = nl / 4;                                                                          \
+        if (T <= 1) return fn(w, 0, n);                                                                      \
+        HCBD__OMP(omp parallel num_threads(T) reduction(min:bad))                                            \
+        {                                                                                                    \
+            const int K = 2 * T;                                                                             \
+            int ph, k;                                                                                       \
+            for (ph = 0; ph < 2; ++ph) {                                                                     \
+                HCBD__OMP(omp for schedule(static))                                                          \
+                for (k = ph; k < K; k += 2) {                                                                \
+                    int b = fn(w, L->cell_start[(int64_t)k * nl / K * layer],                                \
+                               L->cell_start[(int64_t)(k + 1) * nl / K * layer]);                            \
+                    if (b < bad) bad = b;                                                                    \
+                }                                                                                            \
+            }                                                                                                \
+        }                                                                                                    \
+        return bad;                                                                                          \
     }
-    return bad;
-}
-
-static int hcbd__owners(hcbd_world *w, hcbd__owner_fn fn)
-{
-    return hcbd__nl_owners(&w->nl, w->n, w->p.threads, w, fn);
-}
 
 /* The exact sweeps' scheduler: a grid of nb[0] x nb[1] x nb[2] blocks
    (block (c0, c1, c2) = (c2 nb[1] + c1) nb[0] + c0), nc[d] colours along
    axis d, nb[d] a multiple of nc[d], and no pair reaching past the blocks
    of its owner's colour.  The colours run in turn (the x colour
-   fastest), the blocks of a colour side by side; fn runs one block and
-   returns as hcbd__traverse does.  Blocks of one colour share no
-   particle, so the bits do not depend on T. */
-typedef int (*hcbd__block_fn)(void *ctx, int b);
-/* what a sweep's block function needs: block b's owners are
-   list[start[b] .. start[b + 1]) */
-typedef struct hcbd__block_job {
-    const struct hcbd__trav *T;
-    const int32_t *list, *start;
-    void *pass;
-} hcbd__block_job;
-
-static int hcbd__colours(const int nb[3], const int nc[3], int T, void *ctx, hcbd__block_fn fn)
+   fastest), the blocks of a colour side by side.  Blocks of one colour
+   share no particle, so the bits do not depend on the thread count.
+   hcbd__block_of names the j-th block of colour col. */
+HCBD__INLINE int hcbd__block_of(const int nb[3], const int nc[3], int col, int j)
 {
-    const int m0 = nb[0] / nc[0], m1 = nb[1] / nc[1], per = m0 * m1 * (nb[2] / nc[2]);
-    const int ncol = nc[0] * nc[1] * nc[2];
-    int worst = INT_MAX;
-    (void)T;
-#define HCBD__BLOCK(col, j)                                                                                  \
-    ((((col) / (nc[0] * nc[1]) + nc[2] * ((j) / (m0 * m1))) * nb[1] + (col) / nc[0] % nc[1] +              \
-      nc[1] * ((j) / m0 % m1)) * nb[0] + (col) % nc[0] + nc[0] * ((j) % m0))
-    if (T <= 1) { /* no team: libgomp's barrier of a team of one still costs a system call per colour */
-        int col, j;
-        for (col = 0; col < ncol; ++col)
-            for (j = 0; j < per; ++j) {
-                const int b = fn(ctx, HCBD__BLOCK(col, j));
-                if (b < worst) worst = b;
-            }
-        return worst;
-    }
-    HCBD__OMP(omp parallel num_threads(T) reduction(min:worst))
-    {
-        int col, j;
-        for (col = 0; col < ncol; ++col) {
-            HCBD__OMP(omp for schedule(dynamic, 1))
-            for (j = 0; j < per; ++j) {
-                const int b = fn(ctx, HCBD__BLOCK(col, j));
-                if (b < worst) worst = b;
-            }
-        }
-    }
-#undef HCBD__BLOCK
-    return worst;
+    const int m0 = nb[0] / nc[0], m1 = nb[1] / nc[1];
+    return ((col / (nc[0] * nc[1]) + nc[2] * (j / (m0 * m1))) * nb[1] + col / nc[0] % nc[1] +
+            nc[1] * (j / m0 % m1)) * nb[0] + col % nc[0] + nc[0] * (j % m0);
 }
+
+/* HCBD__COLOURS(X) writes X_colours(nb, nc, T, Tr, list, start, ps): pass
+   X over the grid's blocks with T threads, block b's owners being
+   list[start[b] .. start[b + 1]); returns as X_traverse does.  Without
+   gcc's SLP vectoriser (HCBD__NO_SLP), as the sweeps need. */
+#define HCBD__COLOURS(X)                                                                                     \
+    HCBD__NO_SLP static int X##_colours(const int nb[3], const int nc[3], int T, const hcbd__trav *Tr,       \
+                                        const int32_t *list, const int32_t *start, X##_pass *ps)             \
+    {                                                                                                        \
+        const int per = nb[0] / nc[0] * (nb[1] / nc[1]) * (nb[2] / nc[2]), ncol = nc[0] * nc[1] * nc[2];     \
+        int worst = INT_MAX;                                                                                 \
+        (void)T;                                                                                             \
+        if (T <= 1) { /* no team: libgomp's barrier of a team of one still costs a system call per colour */ \
+            int col, j;                                                                                      \
+            for (col = 0; col < ncol; ++col)                                                                 \
+                for (j = 0; j < per; ++j) {                                                                  \
+                    const int bk = hcbd__block_of(nb, nc, col, j);                                           \
+                    const int b = X##_traverse(Tr, list, start[bk], start[bk + 1], ps);                      \
+                    if (b < worst) worst = b;                                                                \
+                }                                                                                            \
+            return worst;                                                                                    \
+        }                                                                                                    \
+        HCBD__OMP(omp parallel num_threads(T) reduction(min:worst))                                          \
+        {                                                                                                    \
+            int col, j;                                                                                      \
+            for (col = 0; col < ncol; ++col) {                                                               \
+                HCBD__OMP(omp for schedule(dynamic, 1))                                                      \
+                for (j = 0; j < per; ++j) {                                                                  \
+                    const int bk = hcbd__block_of(nb, nc, col, j);                                           \
+                    const int b = X##_traverse(Tr, list, start[bk], start[bk + 1], ps);                      \
+                    if (b < worst) worst = b;                                                                \
+                }                                                                                            \
+            }                                                                                                \
+        }                                                                                                    \
+        return worst;                                                                                        \
+    }
 
 /* Gathers the partners of i from list entries [*p, min(pend, *p + CHUNK))
    that lie within r^2 < cut2, without a branch (about half the list lies in
@@ -3146,42 +3144,31 @@ HCBD__INLINE int hcbd__gather_art(const hcbd__wallset *s, const double L[3], hcb
    the r^2 or whole pairs an earlier pass stored: hcbd__gather_r2,
    hcbd__gather_kept), the artificial wall particles around it
    (hcbd__gather_art), or a transposed list's entries (hcbd__gather_map).
-   A pass plugs in three inline evaluators: begin (the owner's running
-   state), pairs (one chunk: the pass's equation, its terms returned in
-   hcbd__terms), end (the owner's own results written; returns the id of an
-   owner whose terms left the fixed-point range, or INT_MAX).  The loop
-   owns the rest: the fixed-point sums of both sides (the channels of
-   hcbd__trav), the values kept per entry and zeroed in the skin, and, with
-   hcbd__rev_add, their partner side.  The loop knows lists, sources,
-   orders and chunks; an evaluator knows one equation, from the pair terms
-   of its model (hcbd__weight, hcbd__star_table, hcbd__sdt; hcbd__rapid,
-   hcbd__flory_fr, hcbd__spring_fr, hcbd__tait_fr, hcbd__morris_f).  The
-   schedulers (slabs: hcbd__nl_owners; colours: hcbd__colours) hand it
-   ranges of owners.  A pass with no channels, nothing kept and its
-   partners from the list takes the loop's lean form (hcbd__trav_lean),
-   its evaluator adding its own fixed-point terms inside its loop: the hot
-   fluid passes, measured faster so.  A pass whose terms need only the separation may take
-   the streamed form below instead (same owners, same partners, same bits,
-   the same scatter). */
-typedef struct hcbd__acc {
-    int64_t q[8];                 /* an evaluator's integer state          */
-    double r[8];                  /* double sums, an owner's velocity      */
-    int bad;                      /* a term left the fixed-point range     */
-} hcbd__acc;
-
-/* What an evaluator returns for a chunk, pair by pair: fixed-point terms
-   (channel k goes to the owner, and to the partner with the sign of the
-   traversal's channel: -1 for a force, +1 for a density weight) and
-   values kept per list entry (the polymers' weights and forces, for the
-   partner-side sums and the redistribution).  The loop adds and stores
-   them; a term of an inactive channel is not read. */
-#define HCBD__NQ 7
-#define HCBD__NE 3
-typedef struct hcbd__terms {
-    int64_t u[HCBD__NQ][HCBD__CHUNK];
-    double e[HCBD__NE][HCBD__CHUNK];
-} hcbd__terms;
-
+   A pass X is typed, as HOOMD-blue's pair evaluators are: a struct
+   X_pass (its constants and the arrays it reads and writes, by name), a
+   struct X_own (an owner's running sums, by name), and three inline
+   functions
+       void X_begin(const X_pass *, int i, X_own *)   the owner's state
+       void X_pairs(X_pass *, int i, const hcbd__near *c, int m, X_own *)
+                                                      one chunk of partners
+       int  X_end(X_pass *, int i, X_own *)           the owner's results;
+                     the id of an owner whose terms left the fixed-point
+                     range, or INT_MAX
+   HCBD__PASS(X) writes the loop for that pass, X_traverse (and
+   X_partners: one owner at a point, for the walls' passes), as klib's
+   KHASH_INIT writes a hash table for its types: no void *, no call
+   through a pointer, and the compiler sees the whole pass at once.  The
+   loop owns the lists, sources, orders and chunks, the values kept per
+   entry zeroed in the skin and, with hcbd__rev_add, their partner side;
+   a pass owns one equation, from the pair terms of its model
+   (hcbd__weight, hcbd__star_table, hcbd__sdt; hcbd__rapid,
+   hcbd__flory_fr, hcbd__spring_fr, hcbd__tait_fr, hcbd__morris_f), and
+   adds its fixed-point terms to both sides itself (hcbd__scatter).  The
+   schedulers (slabs: HCBD__SLABS; colours: HCBD__COLOURS) hand it ranges
+   of owners.  A pass with nothing kept and its partners from the list
+   takes the loop's lean form (hcbd__trav_lean).  A pass whose terms need
+   only the separation may take the streamed form below instead (same
+   owners, same partners, same bits, the same scatter). */
 typedef struct hcbd__trav {
     const int32_t *start, *nb;    /* owner i's entries start[i] .. start[i+1] */
     const hcbd_real *x, *y, *z;   /* partners' positions by the list's index  */
@@ -3195,15 +3182,14 @@ typedef struct hcbd__trav {
     /* the third source: every entry is a partner, with no geometry, and
        emap[p] names the entry of the list it transposes (or NULL) */
     const int32_t *emap;
+#if HCBD__WALLS
     /* the second source: the partners are the artificial wall particles
        around the owner (hcbd__trav_art), not list entries */
     const hcbd__wallset *art;
     const hcbd_params *art_p;
-    /* the sums the loop takes: channel k's terms into sink[k] (NULL: none)
-       on both sides, the partner's with sign sgn[k] */
-    int64_t *sink[HCBD__NQ];
-    int sgn[HCBD__NQ];
-    /* entries' values: ent[ne p + k] = e[k] of entry p, 0 in the skin */
+#endif
+    /* the pass keeps ne values per entry in ent (by entry, written by the
+       pass): the loop zeroes an owner's entries first, so the skin's read 0 */
     double *ent;
     int ne;
 } hcbd__trav;
@@ -3221,14 +3207,7 @@ static inline hcbd__trav hcbd__trav_make(const hcbd__nlist *L, const hcbd_real *
     return t;
 }
 
-/* channel k of T sums into a, the partner's share with sign s */
-static inline void hcbd__trav_sink(hcbd__trav *T, int k, int64_t *a, int s)
-{
-    T->sink[k] = a;
-    T->sgn[k] = s;
-}
-
-/* Adds channel terms u[t0 .. t1) to the partners j[t] with sign s and
+/* Adds fixed-point terms u[t0 .. t1) to the partners j[t] with sign s and
    returns their sum (the owner's share) */
 HCBD__INLINE int64_t hcbd__scatter(int64_t *HCBD__RESTRICT sink, int s, const int64_t *HCBD__RESTRICT u,
                                    const int32_t *HCBD__RESTRICT j, int t0, int t1)
@@ -3283,11 +3262,6 @@ static inline hcbd__trav hcbd__trav_art(const hcbd__wallset *s, const hcbd_param
 }
 #endif
 
-typedef void (*hcbd__ev_begin)(void *ctx, int i, hcbd__acc *a);
-typedef void (*hcbd__ev_pairs)(void *ctx, int i, const hcbd__near *c, int m, hcbd__acc *a,
-                               hcbd__terms *u);
-typedef int (*hcbd__ev_end)(void *ctx, int i, hcbd__acc *a);
-
 /* The owners of a sweep go by id, so their list entries lie anywhere in
    the list: ask for the entries (and stored r^2) of an owner two ahead
    while this one's pairs run (no effect on any value). */
@@ -3305,109 +3279,139 @@ HCBD__INLINE void hcbd__prefetch_owner(const hcbd__trav *T, int i)
 #endif
 }
 
-/* Owner i at (xi, yi, zi) meets its partners from T's source, chunk by
-   chunk: the loop's body, also run alone for one owner at a point (the
-   walls' passes, which need no list).  own: the owner's shares of the
-   channels, added to. */
-HCBD__INLINE void hcbd__partners(const hcbd__trav *T, int i, double xi, double yi, double zi, void *ctx,
-                                 hcbd__ev_pairs pairs, hcbd__acc *a, int64_t own[HCBD__NQ])
-{
-    hcbd__near c;
-    hcbd__terms u;
+/* Where an owner's partners come from, chunk by chunk: its list entries
+   p .. pend (the pairs kept so far: kept), or the wall's columns. */
+typedef struct hcbd__source {
+    int32_t p, p0, pend, kept;
 #if HCBD__WALLS
-    if (T->art) {
-        hcbd__art_cursor cur;
-        cur.nc = hcbd__art_cols(T->art, T->art_p, xi, zi, cur.cols);
-        cur.c = 0;
-        cur.k = cur.ke = 0;
-        while (cur.c < cur.nc || cur.k < cur.ke)
-            pairs(ctx, i, &c, hcbd__gather_art(T->art, T->box.L, &cur, xi, yi, zi, T->cut2, &c), a, &u);
+    hcbd__art_cursor art;
+    int walls;
+#endif
+} hcbd__source;
+
+/* Opens owner i's partners at (xi, zi); its kept entries are zeroed. */
+HCBD__INLINE void hcbd__source_open(const hcbd__trav *T, int i, double xi, double zi, hcbd__source *s)
+{
+#if HCBD__WALLS
+    s->walls = T->art != NULL;
+    if (s->walls) {
+        s->art.nc = hcbd__art_cols(T->art, T->art_p, xi, zi, s->art.cols);
+        s->art.c = 0;
+        s->art.k = s->art.ke = 0;
         return;
     }
+#else
+    (void)xi; (void)zi;
 #endif
-    {
-        const int32_t p0 = T->start[i], pend = T->kin ? p0 + T->kin->n[i] : T->start[i + 1];
-        int32_t p = p0, kept = 0;
-        if (T->ent) /* the skin's entries read 0 */
-            memset(T->ent + (size_t)T->ne * (size_t)p0, 0,
-                   (size_t)T->ne * (size_t)(T->start[i + 1] - p0) * sizeof *T->ent);
-        while (p < pend) {
-            const int m = T->emap ? hcbd__gather_map(T->nb, T->emap, &p, pend, &c)
-                          : T->kin ? hcbd__gather_kept(T->kin, &p, pend, &c)
-                          : T->r2in ? hcbd__gather_r2(T->nb, T->r2in, &p, pend, T->cut2, &c)
-                                    : hcbd__gather_at(T->x, T->y, T->z, T->nb, &T->box, xi, yi, zi, &p,
-                                                      pend, T->cut2, T->r2out, &c);
-            int k, t;
-            if (T->kout) kept = hcbd__keep(T->kout, p0, kept, &c, m);
-            pairs(ctx, i, &c, m, a, &u);
-            for (k = 0; k < HCBD__NQ; ++k)
-                if (T->sink[k]) own[k] += hcbd__scatter(T->sink[k], T->sgn[k], u.u[k], c.j, 0, m);
-            if (T->ent)
-                for (k = 0; k < T->ne; ++k)
-                    for (t = 0; t < m; ++t) T->ent[(size_t)T->ne * (size_t)c.e[t] + (size_t)k] = u.e[k][t];
-        }
-        if (T->kout) T->kout->n[i] = kept;
-    }
+    s->p = s->p0 = T->start[i];
+    s->pend = T->kin ? s->p0 + T->kin->n[i] : T->start[i + 1];
+    s->kept = 0;
+    if (T->ent)
+        memset(T->ent + (size_t)T->ne * (size_t)s->p0, 0,
+               (size_t)T->ne * (size_t)(T->start[i + 1] - s->p0) * sizeof *T->ent);
+}
+
+HCBD__INLINE int hcbd__source_more(const hcbd__source *s)
+{
+#if HCBD__WALLS
+    if (s->walls) return s->art.c < s->art.nc || s->art.k < s->art.ke;
+#endif
+    return s->p < s->pend;
+}
+
+/* The next chunk of partners of the owner at (xi, yi, zi) into c; returns
+   their count. */
+HCBD__INLINE int hcbd__source_next(const hcbd__trav *T, hcbd__source *s, double xi, double yi, double zi,
+                                hcbd__near *c)
+{
+    int m;
+#if HCBD__WALLS
+    if (s->walls) return hcbd__gather_art(T->art, T->box.L, &s->art, xi, yi, zi, T->cut2, c);
+#endif
+    m = T->emap ? hcbd__gather_map(T->nb, T->emap, &s->p, s->pend, c)
+        : T->kin ? hcbd__gather_kept(T->kin, &s->p, s->pend, c)
+        : T->r2in ? hcbd__gather_r2(T->nb, T->r2in, &s->p, s->pend, T->cut2, c)
+                  : hcbd__gather_at(T->x, T->y, T->z, T->nb, &T->box, xi, yi, zi, &s->p, s->pend, T->cut2,
+                                    T->r2out, c);
+    if (T->kout) s->kept = hcbd__keep(T->kout, s->p0, s->kept, c, m);
+    return m;
+}
+
+HCBD__INLINE void hcbd__source_close(const hcbd__trav *T, int i, const hcbd__source *s)
+{
+#if HCBD__WALLS
+    if (s->walls) return;
+#endif
+    if (T->kout) T->kout->n[i] = s->kept;
 }
 
 /* A traversal in the lean form: partners from the list (or the r^2 it
-   stored) alone, nothing kept per entry, and no channels: its evaluator
-   adds its fixed-point terms to both sides itself, inside its own loop.
-   The 2018 fluid's density, sweep and Euler pairs take it: through the
-   general form with the traversal's channels their step cost 13 % more,
-   the same bits (bench/paired.sh against 251f3af, issue 62). */
+   stored) alone, and nothing kept per entry.  The 2018 fluid's density,
+   sweep and Euler pairs take it: through the general form their step
+   cost 13 % more, the same bits (bench/paired.sh against 251f3af, issue
+   62). */
 static inline int hcbd__trav_lean(const hcbd__trav *T)
 {
-    int k, lean = !T->emap && !T->kin && !T->kout && !T->ent;
+    int lean = !T->emap && !T->kin && !T->kout && !T->ent;
 #if HCBD__WALLS
     lean &= !T->art;
 #endif
-    for (k = 0; k < HCBD__NQ; ++k) lean &= !T->sink[k];
     return lean;
 }
 
-HCBD__INLINE int hcbd__traverse(const hcbd__trav *T, const int32_t *owners, int q0, int q1,
-                                void *ctx, hcbd__ev_begin begin, hcbd__ev_pairs pairs,
-                                hcbd__ev_end end)
+/* the lean form's next chunk of owner i's entries p .. pend */
+HCBD__INLINE int hcbd__gather_list(const hcbd__trav *T, int i, int32_t *p, int32_t pend, hcbd__near *c)
 {
-    int q, k, worst = INT_MAX;
-    if (hcbd__trav_lean(T)) {
-        for (q = q0; q < q1; ++q) {
-            const int i = owners[q];
-            const int32_t pend = T->start[i + 1];
-            int32_t p = T->start[i];
-            hcbd__acc a;
-            int b;
-            if (q + 2 < q1) hcbd__prefetch_owner(T, owners[q + 2]);
-            begin(ctx, i, &a);
-            while (p < pend) {
-                hcbd__near c;
-                hcbd__terms u; /* not read: no channels */
-                const int m = T->r2in ? hcbd__gather_r2(T->nb, T->r2in, &p, pend, T->cut2, &c)
-                                      : hcbd__gather_at(T->x, T->y, T->z, T->nb, &T->box, T->ox[i], T->oy[i],
-                                                        T->oz[i], &p, pend, T->cut2, T->r2out, &c);
-                pairs(ctx, i, &c, m, &a, &u);
-            }
-            b = end(ctx, i, &a);
-            if (b < worst) worst = b;
-        }
-        return worst;
-    }
-    for (q = q0; q < q1; ++q) {
-        const int i = owners[q];
-        int64_t own[HCBD__NQ] = {0, 0, 0, 0, 0, 0, 0};
-        hcbd__acc a;
-        int b;
-        if (q + 2 < q1) hcbd__prefetch_owner(T, owners[q + 2]);
-        begin(ctx, i, &a);
-        hcbd__partners(T, i, T->ox[i], T->oy[i], T->oz[i], ctx, pairs, &a, own);
-        for (k = 0; k < HCBD__NQ; ++k)
-            if (T->sink[k]) T->sink[k][i] += own[k];
-        b = end(ctx, i, &a);
-        if (b < worst) worst = b;
-    }
-    return worst;
+    return T->r2in ? hcbd__gather_r2(T->nb, T->r2in, p, pend, T->cut2, c)
+                   : hcbd__gather_at(T->x, T->y, T->z, T->nb, &T->box, T->ox[i], T->oy[i], T->oz[i], p, pend,
+                                     T->cut2, T->r2out, c);
 }
+
+/* The loop of pass X (see above): X_partners, owner i at (xi, yi, zi)
+   meeting its partners from T's source; X_traverse, owners[q0 .. q1) in
+   turn, returning the least of X_end's results. */
+#define HCBD__PASS(X)                                                                                        \
+    HCBD__INLINE void X##_partners(const hcbd__trav *T, int i, double xi, double yi, double zi,              \
+                                   X##_pass *ps, X##_own *o)                                                 \
+    {                                                                                                        \
+        hcbd__source s;                                                                                      \
+        hcbd__near c;                                                                                        \
+        hcbd__source_open(T, i, xi, zi, &s);                                                                 \
+        while (hcbd__source_more(&s))                                                                        \
+            X##_pairs(ps, i, &c, hcbd__source_next(T, &s, xi, yi, zi, &c), o);                               \
+        hcbd__source_close(T, i, &s);                                                                        \
+    }                                                                                                        \
+    HCBD__INLINE int X##_traverse(const hcbd__trav *T, const int32_t *owners, int q0, int q1, X##_pass *ps)  \
+    {                                                                                                        \
+        int q, b, worst = INT_MAX;                                                                           \
+        if (hcbd__trav_lean(T)) {                                                                            \
+            for (q = q0; q < q1; ++q) {                                                                      \
+                const int i = owners[q];                                                                     \
+                const int32_t pend = T->start[i + 1];                                                        \
+                int32_t p = T->start[i];                                                                     \
+                X##_own o;                                                                                   \
+                if (q + 2 < q1) hcbd__prefetch_owner(T, owners[q + 2]);                                      \
+                X##_begin(ps, i, &o);                                                                        \
+                while (p < pend) {                                                                           \
+                    hcbd__near c;                                                                            \
+                    X##_pairs(ps, i, &c, hcbd__gather_list(T, i, &p, pend, &c), &o);                         \
+                }                                                                                            \
+                b = X##_end(ps, i, &o);                                                                      \
+                if (b < worst) worst = b;                                                                    \
+            }                                                                                                \
+            return worst;                                                                                    \
+        }                                                                                                    \
+        for (q = q0; q < q1; ++q) {                                                                          \
+            const int i = owners[q];                                                                         \
+            X##_own o;                                                                                       \
+            if (q + 2 < q1) hcbd__prefetch_owner(T, owners[q + 2]);                                          \
+            X##_begin(ps, i, &o);                                                                            \
+            X##_partners(T, i, T->ox[i], T->oy[i], T->oz[i], ps, &o);                                        \
+            b = X##_end(ps, i, &o);                                                                          \
+            if (b < worst) worst = b;                                                                        \
+        }                                                                                                    \
+        return worst;                                                                                        \
+    }
 
 /* The stream: the pairs within cut of many owners in one buffer, for a
    pass whose terms depend on the separation alone, so that its arithmetic
@@ -3423,9 +3427,6 @@ typedef struct hcbd__stream {
     int32_t own[HCBD__STREAM + 1], at[HCBD__STREAM + 2];
     int m, nseg;
 } hcbd__stream;
-
-/* evaluates pairs [0, m) and adds their terms; returns as end does */
-typedef int (*hcbd__ev_stream)(void *ctx, const hcbd__stream *s);
 
 /* Entries [p, pe) of an owner at (xi, yi, zi) into the stream from place
    m on, each written and kept only if within cut2; returns the new count.
@@ -3449,44 +3450,46 @@ HCBD__INLINE int hcbd__gather_into(const hcbd_real *HCBD__RESTRICT x, const hcbd
     return m;
 }
 
-HCBD__INLINE int hcbd__traverse_stream(const hcbd__trav *T, const int32_t *owners, int q0, int q1,
-                                       void *ctx, hcbd__ev_stream flush)
-{
-    hcbd__stream s;
-    int q, worst = INT_MAX, b;
-    s.m = 0;
-    s.nseg = 0;
-    for (q = q0; q < q1; ++q) {
-        const int i = owners[q];
-        const double xi = T->ox[i], yi = T->oy[i], zi = T->oz[i];
-        const int32_t pend = T->start[i + 1];
-        int32_t p = T->start[i];
-        s.own[s.nseg] = i;
-        s.at[s.nseg++] = s.m;
-        while (p < pend) {
-            const int32_t pe = pend - p > HCBD__CHUNK ? p + HCBD__CHUNK : pend;
-            int m = s.m;
-            if (m + HCBD__CHUNK > HCBD__STREAM) {
-                s.at[s.nseg] = m;
-                b = flush(ctx, &s);
-                if (b < worst) worst = b;
-                s.own[0] = i;
-                s.at[0] = m = 0;
-                s.nseg = 1;
-            }
-            s.m = hcbd__gather_into(T->x, T->y, T->z, T->nb, &T->box, xi, yi, zi, p, pe, T->cut2,
-                                    T->r2out, m, &s);
-            p = pe;
-        }
-        if (s.at[s.nseg - 1] == s.m) s.nseg--; /* no pair in range: no segment */
+/* Owner q's entries into the stream, chunk by chunk; a full stream is
+   first handed to flush.  Returns the least of flush's results. */
+#define HCBD__PASS_STREAM(X)                                                                                 \
+    HCBD__INLINE int X##_stream(const hcbd__trav *T, const int32_t *owners, int q0, int q1, X##_pass *ps)    \
+    {                                                                                                        \
+        hcbd__stream s;                                                                                      \
+        int q, worst = INT_MAX, b;                                                                           \
+        s.m = 0;                                                                                             \
+        s.nseg = 0;                                                                                          \
+        for (q = q0; q < q1; ++q) {                                                                          \
+            const int i = owners[q];                                                                         \
+            const double xi = T->ox[i], yi = T->oy[i], zi = T->oz[i];                                        \
+            const int32_t pend = T->start[i + 1];                                                            \
+            int32_t p = T->start[i];                                                                         \
+            s.own[s.nseg] = i;                                                                               \
+            s.at[s.nseg++] = s.m;                                                                            \
+            while (p < pend) {                                                                               \
+                const int32_t pe = pend - p > HCBD__CHUNK ? p + HCBD__CHUNK : pend;                          \
+                int m = s.m;                                                                                 \
+                if (m + HCBD__CHUNK > HCBD__STREAM) {                                                        \
+                    s.at[s.nseg] = m;                                                                        \
+                    b = X##_flush(ps, &s);                                                                   \
+                    if (b < worst) worst = b;                                                                \
+                    s.own[0] = i;                                                                            \
+                    s.at[0] = m = 0;                                                                         \
+                    s.nseg = 1;                                                                              \
+                }                                                                                            \
+                s.m = hcbd__gather_into(T->x, T->y, T->z, T->nb, &T->box, xi, yi, zi, p, pe, T->cut2,        \
+                                        T->r2out, m, &s);                                                    \
+                p = pe;                                                                                      \
+            }                                                                                                \
+            if (s.at[s.nseg - 1] == s.m) s.nseg--; /* no pair in range: no segment */                        \
+        }                                                                                                    \
+        if (s.nseg) {                                                                                        \
+            s.at[s.nseg] = s.m;                                                                              \
+            b = X##_flush(ps, &s);                                                                           \
+            if (b < worst) worst = b;                                                                        \
+        }                                                                                                    \
+        return worst;                                                                                        \
     }
-    if (s.nseg) {
-        s.at[s.nseg] = s.m;
-        b = flush(ctx, &s);
-        if (b < worst) worst = b;
-    }
-    return worst;
-}
 
 /* 1 - e^{-x} for x >= 0: the series for small x (the usual case, 2 f dt/tau
    ~ 0.05), which is exact to a few ulp and far cheaper than expm1 */
@@ -3496,21 +3499,6 @@ static inline double hcbd__one_minus_exp_series(double x)
            (1 - x * (1.0 / 6) * (1 - x * (1.0 / 7) * (1 - x * (1.0 / 8) * (1 - x * (1.0 / 9) *
            (1 - x * (1.0 / 10))))))))));
 }
-
-/* begin for passes whose owner state is sums from zero */
-HCBD__INLINE void hcbd__ev_zero(void *ctx, int i, hcbd__acc *a)
-{
-    (void)ctx; (void)i;
-    memset(a, 0, sizeof *a);
-}
-
-/* end for passes whose sums are all the loop's */
-HCBD__INLINE int hcbd__ev_done(void *ctx, int i, hcbd__acc *a)
-{
-    (void)ctx; (void)i; (void)a;
-    return INT_MAX;
-}
-
 
 #if HCBD_MODEL == HCBD_MODEL_HCBD
 /* ========================================================================= */
@@ -3828,7 +3816,7 @@ int hcbd_hc_sweep_place(const int nb[3], const int nc[3], const int nf[3], const
 
 /* >>HCBD: lists and pair passes.  Fluid and polymer pairs run over the
    engine's half lists, owner = the lower id, in the slabs of
-   hcbd__nl_owners, with 64-bit fixed-point sums (exactly opposite on the
+   HCBD__SLABS, with 64-bit fixed-point sums (exactly opposite on the
    two sides, so momentum is exact, and the same bits for any thread count
    or list build).  The coupling passes run over the cross list and its
    transpose, each particle summing its own partners in increasing id. */
@@ -3992,32 +3980,44 @@ static void hcbd__hc_lists_stale(hcbd_hc_world *w)
 
 
 /* Fluid density weights w(r_ij) (MODEL 6) into aW, each pair once, in
-   the traversal's lean form (its own sums: q[0] the owner's) */
-typedef struct hcbd__hc_dens_ctx {
-    hcbd_hc_world *w;
+   the traversal's lean form */
+typedef struct hcbd__hc_dens_pass {
+    int64_t *aW;
     double ih, cq;
-} hcbd__hc_dens_ctx;
+} hcbd__hc_dens_pass;
 
-HCBD__INLINE void hcbd__hc_dens_pairs(void *ctx, int i, const hcbd__near *c, int m, hcbd__acc *a,
-                                     hcbd__terms *u)
+typedef struct hcbd__hc_dens_own {
+    int64_t w; /* the owner's weights, fixed point */
+} hcbd__hc_dens_own;
+
+HCBD__INLINE void hcbd__hc_dens_begin(const hcbd__hc_dens_pass *d, int i, hcbd__hc_dens_own *o)
 {
-    const hcbd__hc_dens_ctx *d = (const hcbd__hc_dens_ctx *)ctx;
-    int64_t *HCBD__RESTRICT aW = d->w->aW, v[HCBD__CHUNK];
+    (void)d; (void)i;
+    o->w = 0;
+}
+
+HCBD__INLINE void hcbd__hc_dens_pairs(hcbd__hc_dens_pass *d, int i, const hcbd__near *c, int m,
+                                      hcbd__hc_dens_own *o)
+{
+    int64_t *HCBD__RESTRICT aW = d->aW, v[HCBD__CHUNK];
     int t;
-    (void)i; (void)u;
+    (void)i;
     HCBD__OMP(omp simd)
     for (t = 0; t < m; ++t) v[t] = hcbd__fix(d->cq * hcbd__m4u(sqrt(c->r2[t]) * d->ih));
     for (t = 0; t < m; ++t) {
-        a->q[0] += v[t];
+        o->w += v[t];
         aW[c->j[t]] += v[t];
     }
 }
 
-HCBD__INLINE int hcbd__hc_dens_end(void *ctx, int i, hcbd__acc *a)
+HCBD__INLINE int hcbd__hc_dens_end(hcbd__hc_dens_pass *d, int i, hcbd__hc_dens_own *o)
 {
-    ((hcbd__hc_dens_ctx *)ctx)->w->aW[i] += a->q[0];
+    d->aW[i] += o->w;
     return INT_MAX;
 }
+
+HCBD__PASS(hcbd__hc_dens)
+HCBD__SLABS(hcbd__hc_owners, hcbd_hc_world)
 
 /* the fluid's half list over its cell-ordered copy, within range */
 static inline hcbd__trav hcbd__hc_trav_f(const hcbd_hc_world *w, double range)
@@ -4025,16 +4025,15 @@ static inline hcbd__trav hcbd__hc_trav_f(const hcbd_hc_world *w, double range)
     return hcbd__trav_make(&w->lf, w->sx, w->sy, w->sz, w->sx, w->sy, w->sz, hcbd__hc_box(w), range);
 }
 
-static int hcbd__hc_dens_owners(void *ctx, int q0, int q1)
+static int hcbd__hc_dens_owners(hcbd_hc_world *w, int q0, int q1)
 {
-    hcbd_hc_world *w = (hcbd_hc_world *)ctx;
     const double h = w->p.h;
     hcbd__trav T = hcbd__hc_trav_f(w, 2.0 * h);
-    hcbd__hc_dens_ctx d;
-    d.w = w;
+    hcbd__hc_dens_pass d;
+    d.aW = w->aW;
     d.ih = 1.0 / h;
     d.cq = w->core.qW / (4.0 * HCBD__PI * h * h * h);
-    return hcbd__traverse(&T, w->lf.perm, q0, q1, &d, hcbd__ev_zero, hcbd__hc_dens_pairs, hcbd__hc_dens_end);
+    return hcbd__hc_dens_traverse(&T, w->lf.perm, q0, q1, &d);
 }
 
 /* Fluid densities and Tait pressures (MODEL 6). */
@@ -4046,7 +4045,7 @@ static void hcbd__hc_fluid_density(hcbd_hc_world *w)
     int i, bad = INT_MAX;
     (void)nt;
     hcbd__zero64(w->aW, n);
-    hcbd__nl_owners(&w->lf, n, nt, w, hcbd__hc_dens_owners);
+    hcbd__hc_owners(w, &w->lf, n, hcbd__hc_dens_owners);
     HCBD__OMP(omp parallel for num_threads(nt) schedule(static) reduction(min:bad))
     for (i = 0; i < n; ++i) { /* i: slot */
         const double s = w0 + (double)w->aW[i] * inv_q, x = s * inv_nbar, P = hcbd__tait_p(P0, inv_nbar, s);
@@ -4069,18 +4068,20 @@ static void hcbd__hc_fluid_density(hcbd_hc_world *w)
    precision, a fixed order set by the ids alone, any thread count: each
    owner writes only its own entries, so the owners are shared out in
    contiguous ranges, and counters are summed per thread. */
-typedef struct hcbd__hc_poly_ctx {
+typedef struct hcbd__hc_poly {
     hcbd_hc_world *w;
     double rc, sg, A, cfh, alpha;
     size_t cap;
     int tr, fc, stress;
     int64_t created, total, coinc; /* per thread */
     int most;
-} hcbd__hc_poly_ctx;
+} hcbd__hc_poly;
+typedef hcbd__hc_poly hcbd__hc_pdens_pass;
+typedef hcbd__hc_poly hcbd__hc_pforce_pass;
 
-static hcbd__hc_poly_ctx hcbd__hc_poly_ctx_of(hcbd_hc_world *w)
+static hcbd__hc_poly hcbd__hc_poly_of(hcbd_hc_world *w)
 {
-    hcbd__hc_poly_ctx c;
+    hcbd__hc_poly c;
     memset(&c, 0, sizeof c);
     c.w = w;
     c.rc = w->p.rc;
@@ -4104,24 +4105,38 @@ static inline hcbd__trav hcbd__hc_trav_p(const hcbd_hc_world *w, double *ent, in
     return T;
 }
 
-/* entries: 0 the weight; acc: r[0] the owner's sum */
-HCBD__INLINE void hcbd__hc_pdens_pairs(void *ctx, int a, const hcbd__near *c, int m, hcbd__acc *acc,
-                                      hcbd__terms *u)
+/* the weights, kept per entry in pw */
+typedef struct hcbd__hc_pdens_own {
+    double w; /* the owner's sum */
+} hcbd__hc_pdens_own;
+
+HCBD__INLINE void hcbd__hc_pdens_begin(const hcbd__hc_poly *s, int a, hcbd__hc_pdens_own *o)
 {
-    const hcbd__hc_poly_ctx *s = (const hcbd__hc_poly_ctx *)ctx;
-    double *HCBD__RESTRICT wt = u->e[0];
+    (void)s; (void)a;
+    o->w = 0;
+}
+
+HCBD__INLINE void hcbd__hc_pdens_pairs(hcbd__hc_poly *s, int a, const hcbd__near *c, int m,
+                                       hcbd__hc_pdens_own *o)
+{
+    double *HCBD__RESTRICT pw = s->w->pw, wt[HCBD__CHUNK];
     int t;
     (void)a;
     HCBD__OMP(omp simd)
     for (t = 0; t < m; ++t) wt[t] = hcbd__rapid(sqrt(c->r2[t]), s->sg, s->rc, s->A);
-    for (t = 0; t < m; ++t) acc->r[0] += wt[t];
+    for (t = 0; t < m; ++t) {
+        o->w += wt[t];
+        pw[c->e[t]] = wt[t];
+    }
 }
 
-HCBD__INLINE int hcbd__hc_pdens_end(void *ctx, int a, hcbd__acc *acc)
+HCBD__INLINE int hcbd__hc_pdens_end(hcbd__hc_poly *s, int a, hcbd__hc_pdens_own *o)
 {
-    ((hcbd__hc_poly_ctx *)ctx)->w->pown[a] = acc->r[0];
+    s->w->pown[a] = o->w;
     return INT_MAX;
 }
+
+HCBD__PASS(hcbd__hc_pdens)
 
 /* RaPiD densities and mu(phi) (MODEL 8), keeping the pairs within rc for
    hcbd__hc_poly_forces (w->pk).  Returns the first id with phi >= 1, or
@@ -4132,17 +4147,16 @@ static int hcbd__hc_poly_density(hcbd_hc_world *w)
     const double rc = w->p.rc, sg = w->p.sigma, A = hcbd__rapid_A(sg, rc);
     const double w0 = A * (rc - sg) * (rc + sg), inv_nmax = 1.0 / w->p.n_max;
     hcbd__trav T = hcbd__hc_trav_p(w, w->pw, 1);
-    const hcbd__hc_poly_ctx base = hcbd__hc_poly_ctx_of(w);
+    const hcbd__hc_poly base = hcbd__hc_poly_of(w);
     int q, bad = INT_MAX;
     (void)nt;
     if (hcbd__hc_poly_pairs(&w->p)) T.kout = &w->pk; /* else none allocated, none read */
     HCBD__OMP(omp parallel num_threads(nt))
     {
-        hcbd__hc_poly_ctx s = base;
+        hcbd__hc_poly s = base;
         int64_t lo, hi;
         hcbd__share(n, &lo, &hi);
-        hcbd__traverse(&T, w->lp.perm, (int)lo, (int)hi, &s, hcbd__ev_zero, hcbd__hc_pdens_pairs,
-                       hcbd__hc_pdens_end);
+        hcbd__hc_pdens_traverse(&T, w->lp.perm, (int)lo, (int)hi, &s);
     }
     HCBD__OMP(omp parallel for num_threads(nt) schedule(static) reduction(min:bad))
     for (q = 0; q < n; ++q) {
@@ -4178,13 +4192,23 @@ static int hcbd__hc_find(const hcbd_hc_world *w, int a, int b)
    fused with the search for the transient pairs: the partners b > a within
    rc come in increasing id and are merged with the old list, so a
    persisting pair keeps its lambda, a new one starts at lambda_eq and a
-   departed one is dropped; the new list goes to the spare buffers.
-   acc: q[0] the pairs found, q[1] the old list's cursor; r[0..2] the
-   force, r[3] r[4] the conservative and transient stress. */
-HCBD__INLINE void hcbd__hc_pforce_pairs(void *ctx, int a, const hcbd__near *c, int m, hcbd__acc *acc,
-                                       hcbd__terms *u)
+   departed one is dropped; the new list goes to the spare buffers.  The
+   forces are kept per entry in pf. */
+typedef struct hcbd__hc_pforce_own {
+    int64_t found, old;    /* the pairs found, the old list's cursor        */
+    double fx, fy, fz;     /* the owner's force                             */
+    double sc, st;         /* its conservative and transient stress         */
+} hcbd__hc_pforce_own;
+
+HCBD__INLINE void hcbd__hc_pforce_begin(const hcbd__hc_poly *s, int a, hcbd__hc_pforce_own *o)
 {
-    hcbd__hc_poly_ctx *s = (hcbd__hc_poly_ctx *)ctx;
+    (void)s; (void)a;
+    memset(o, 0, sizeof *o);
+}
+
+HCBD__INLINE void hcbd__hc_pforce_pairs(hcbd__hc_poly *s, int a, const hcbd__near *c, int m,
+                                        hcbd__hc_pforce_own *o)
+{
     hcbd_hc_world *w = s->w;
     const double rc = s->rc, sg = s->sg, A = s->A, mua = w->pmu[a], cfh = s->cfh, al = s->alpha;
     const double r0 = 1e-12 * sg; /* below: no direction, counted, no force */
@@ -4198,7 +4222,7 @@ HCBD__INLINE void hcbd__hc_pforce_pairs(void *ctx, int a, const hcbd__near *c, i
        from it, in SIMD loops (the same operations on each pair, so the
        same bits), and their sums again in order */
     double r[HCBD__CHUNK], leq[HCBD__CHUNK], lam[HCBD__CHUNK], fr[HCBD__CHUNK], ft[HCBD__CHUNK];
-    double *HCBD__RESTRICT fx = u->e[0], *HCBD__RESTRICT fy = u->e[1], *HCBD__RESTRICT fz = u->e[2];
+    double fx[HCBD__CHUNK], fy[HCBD__CHUNK], fz[HCBD__CHUNK], *HCBD__RESTRICT pf = w->pf;
     int t;
     HCBD__OMP(omp simd)
     for (t = 0; t < m; ++t) {
@@ -4209,21 +4233,21 @@ HCBD__INLINE void hcbd__hc_pforce_pairs(void *ctx, int a, const hcbd__near *c, i
     if (tr)
         for (t = 0; t < m; ++t) {
             const int b = c->j[t];
-            int o = (int)acc->q[1];
-            while (o < on && ob[o] < b) ++o;
-            acc->q[1] = o;
-            if (o < on && ob[o] == b) {
-                lam[t] = ol[o];
+            int k = (int)o->old;
+            while (k < on && ob[k] < b) ++k;
+            o->old = k;
+            if (k < on && ob[k] == b) {
+                lam[t] = ol[k];
             } else {
                 lam[t] = (hcbd_real)leq[t];
                 ++s->created;
             }
-            if (acc->q[0] < (int64_t)cap) {
-                nb[acc->q[0]] = b;
-                ne[acc->q[0]] = (hcbd_real)leq[t];
-                nl[acc->q[0]] = (hcbd_real)lam[t];
+            if (o->found < (int64_t)cap) {
+                nb[o->found] = b;
+                ne[o->found] = (hcbd_real)leq[t];
+                nl[o->found] = (hcbd_real)lam[t];
             }
-            acc->q[0]++;
+            o->found++;
         }
     HCBD__OMP(omp simd)
     for (t = 0; t < m; ++t) {
@@ -4238,31 +4262,34 @@ HCBD__INLINE void hcbd__hc_pforce_pairs(void *ctx, int a, const hcbd__near *c, i
         fz[t] = live ? (a1 + a2) * c->z[t] : 0.0;
     }
     for (t = 0; t < m; ++t) {
+        const size_t e = 3 * (size_t)c->e[t];
+        pf[e] = fx[t]; pf[e + 1] = fy[t]; pf[e + 2] = fz[t];
+    }
+    for (t = 0; t < m; ++t) {
         if (r[t] < r0) {
             ++s->coinc;
             continue;
         }
-        acc->r[0] += fx[t];
-        acc->r[1] += fy[t];
-        acc->r[2] += fz[t];
+        o->fx += fx[t];
+        o->fy += fy[t];
+        o->fz += fz[t];
         if (s->stress) {
-            acc->r[3] += c->y[t] * fr[t] * c->x[t];
-            acc->r[4] += c->y[t] * ft[t] * c->x[t];
+            o->sc += c->y[t] * fr[t] * c->x[t];
+            o->st += c->y[t] * ft[t] * c->x[t];
         }
     }
 }
 
-HCBD__INLINE int hcbd__hc_pforce_end(void *ctx, int a, hcbd__acc *acc)
+HCBD__INLINE int hcbd__hc_pforce_end(hcbd__hc_poly *s, int a, hcbd__hc_pforce_own *o)
 {
-    hcbd__hc_poly_ctx *s = (hcbd__hc_poly_ctx *)ctx;
     hcbd_hc_world *w = s->w;
-    const int cnt = (int)acc->q[0];
-    w->pFx[a] = (hcbd_real)acc->r[0];
-    w->pFy[a] = (hcbd_real)acc->r[1];
-    w->pFz[a] = (hcbd_real)acc->r[2];
+    const int cnt = (int)o->found;
+    w->pFx[a] = (hcbd_real)o->fx;
+    w->pFy[a] = (hcbd_real)o->fy;
+    w->pFz[a] = (hcbd_real)o->fz;
     if (s->stress) {
-        w->ps[3 * a] = acc->r[3];
-        w->ps[3 * a + 1] = acc->r[4];
+        w->ps[3 * a] = o->sc;
+        w->ps[3 * a + 1] = o->st;
     }
     if (!s->tr) return INT_MAX;
     if (cnt > s->most) s->most = cnt;
@@ -4270,6 +4297,8 @@ HCBD__INLINE int hcbd__hc_pforce_end(void *ctx, int a, hcbd__acc *acc)
     w->pair_n2[a] = cnt;
     return cnt > (int)s->cap ? a : INT_MAX;
 }
+
+HCBD__PASS(hcbd__hc_pforce)
 
 /* Over the pairs hcbd__hc_poly_density kept, so only right after it, at
    the same positions: the gather and its minimum image are done once.
@@ -4280,7 +4309,7 @@ static int hcbd__hc_poly_forces(hcbd_hc_world *w, int *need)
 {
     const int n = w->np, nt = w->p.threads;
     hcbd__trav T = hcbd__hc_trav_p(w, w->pf, 3);
-    const hcbd__hc_poly_ctx base = hcbd__hc_poly_ctx_of(w);
+    const hcbd__hc_poly base = hcbd__hc_poly_of(w);
     int q, bad = INT_MAX, most = 0;
     int64_t created = 0, total = 0, coinc = 0;
     (void)nt;
@@ -4296,12 +4325,11 @@ static int hcbd__hc_poly_forces(hcbd_hc_world *w, int *need)
     }
     HCBD__OMP(omp parallel num_threads(nt) reduction(min:bad) reduction(max:most) reduction(+:created) reduction(+:total) reduction(+:coinc))
     {
-        hcbd__hc_poly_ctx s = base;
+        hcbd__hc_poly s = base;
         int64_t lo, hi;
         int b;
         hcbd__share(n, &lo, &hi);
-        b = hcbd__traverse(&T, w->lp.perm, (int)lo, (int)hi, &s, hcbd__ev_zero, hcbd__hc_pforce_pairs,
-                           hcbd__hc_pforce_end);
+        b = hcbd__hc_pforce_traverse(&T, w->lp.perm, (int)lo, (int)hi, &s);
         if (b < bad) bad = b;
         if (s.most > most) most = s.most;
         created += s.created;
@@ -4333,29 +4361,34 @@ static int hcbd__hc_poly_forces(hcbd_hc_world *w, int *need)
    over the cross list: each polymer's fluid blobs within rc, whose RaPiD
    weights it keeps (xw, zero for the skin's entries) for the
    redistribution.  Relative to the first neighbour's velocity, so a
-   uniform flow is reproduced bit for bit.  acc: q[0] no neighbour yet;
-   r[0] the psi normaliser S, r[1..3] the weighted velocity differences,
-   r[4..6] the reference velocity, r[7] the stress lever. */
-typedef struct hcbd__hc_interp_ctx {
+   uniform flow is reproduced bit for bit. */
+typedef struct hcbd__hc_interp_pass {
     hcbd_hc_world *w;
     double rc, sg, A, inv_xi, vj;
     int shep, stress;
-} hcbd__hc_interp_ctx;
+} hcbd__hc_interp_pass;
 
-HCBD__INLINE void hcbd__hc_interp_begin(void *ctx, int a, hcbd__acc *acc)
+typedef struct hcbd__hc_interp_own {
+    int first;             /* no neighbour yet                              */
+    double S;              /* the psi normaliser                            */
+    double dv[3];          /* the weighted velocity differences             */
+    double vref[3];        /* the reference velocity: the first neighbour's */
+    double lever;          /* the stress lever                              */
+} hcbd__hc_interp_own;
+
+HCBD__INLINE void hcbd__hc_interp_begin(const hcbd__hc_interp_pass *s, int a, hcbd__hc_interp_own *o)
 {
-    (void)ctx; (void)a;
-    memset(acc, 0, sizeof *acc);
-    acc->q[0] = 1;
+    (void)s; (void)a;
+    memset(o, 0, sizeof *o);
+    o->first = 1;
 }
 
-HCBD__INLINE void hcbd__hc_interp_pairs(void *ctx, int a, const hcbd__near *c, int m, hcbd__acc *acc,
-                                       hcbd__terms *u)
+HCBD__INLINE void hcbd__hc_interp_pairs(hcbd__hc_interp_pass *s, int a, const hcbd__near *c, int m,
+                                        hcbd__hc_interp_own *o)
 {
-    const hcbd__hc_interp_ctx *s = (const hcbd__hc_interp_ctx *)ctx;
     const hcbd_hc_world *w = s->w;
     const hcbd_real *HCBD__RESTRICT sn = w->sn;
-    double *HCBD__RESTRICT wr = u->e[0], wn[HCBD__CHUNK];
+    double *HCBD__RESTRICT xw = w->xw, wr[HCBD__CHUNK], wn[HCBD__CHUNK];
     int t;
     (void)a;
     HCBD__OMP(omp simd)
@@ -4363,6 +4396,7 @@ HCBD__INLINE void hcbd__hc_interp_pairs(void *ctx, int a, const hcbd__near *c, i
         wr[t] = hcbd__rapid(sqrt(c->r2[t]), s->sg, s->rc, s->A);
         wn[t] = wr[t] / sn[c->j[t]];
     }
+    for (t = 0; t < m; ++t) xw[c->e[t]] = wr[t];
     for (t = 0; t < m; ++t) {
         const int i = c->j[t]; /* a fluid slot */
         const double wt = wn[t];
@@ -4371,24 +4405,23 @@ HCBD__INLINE void hcbd__hc_interp_pairs(void *ctx, int a, const hcbd__near *c, i
         v[0] = w->svx[i] + c->k[t] * s->vj;
         v[1] = w->svy[i];
         v[2] = w->svz[i];
-        if (acc->q[0]) {
-            acc->r[4] = v[0]; acc->r[5] = v[1]; acc->r[6] = v[2];
-            acc->q[0] = 0;
+        if (o->first) {
+            o->vref[0] = v[0]; o->vref[1] = v[1]; o->vref[2] = v[2];
+            o->first = 0;
         }
-        acc->r[0] += wt;
-        acc->r[1] += wt * (v[0] - acc->r[4]);
-        acc->r[2] += wt * (v[1] - acc->r[5]);
-        acc->r[3] += wt * (v[2] - acc->r[6]);
-        acc->r[7] -= wt * c->y[t];
+        o->S += wt;
+        o->dv[0] += wt * (v[0] - o->vref[0]);
+        o->dv[1] += wt * (v[1] - o->vref[1]);
+        o->dv[2] += wt * (v[2] - o->vref[2]);
+        o->lever -= wt * c->y[t];
     }
 }
 
-HCBD__INLINE int hcbd__hc_interp_end(void *ctx, int a, hcbd__acc *acc)
+HCBD__INLINE int hcbd__hc_interp_end(hcbd__hc_interp_pass *s, int a, hcbd__hc_interp_own *o)
 {
-    const hcbd__hc_interp_ctx *s = (const hcbd__hc_interp_ctx *)ctx;
     hcbd_hc_world *w = s->w;
-    double S = acc->r[0], v[3];
-    const double *dv = acc->r + 1, *vref = acc->r + 4;
+    double S = o->S, v[3];
+    const double *dv = o->dv, *vref = o->vref;
     const int none = !(S > 0);
     if (none) S = 1;
     if (s->shep) {
@@ -4400,9 +4433,11 @@ HCBD__INLINE int hcbd__hc_interp_end(void *ctx, int a, hcbd__acc *acc)
     w->pux[a] = (hcbd_real)(v[0] + w->pFx[a] * s->inv_xi);
     w->puy[a] = (hcbd_real)(v[1] + w->pFy[a] * s->inv_xi);
     w->puz[a] = (hcbd_real)(v[2] + w->pFz[a] * s->inv_xi);
-    if (s->stress) w->ps[3 * a + 2] = acc->r[7] / (s->shep ? S : 1.0) * w->pFx[a];
+    if (s->stress) w->ps[3 * a + 2] = o->lever / (s->shep ? S : 1.0) * w->pFx[a];
     return none ? a : INT_MAX;
 }
+
+HCBD__PASS(hcbd__hc_interp)
 
 /* Returns the first polymer with no fluid blob within rc, or -1. */
 static int hcbd__hc_interp(hcbd_hc_world *w)
@@ -4410,7 +4445,7 @@ static int hcbd__hc_interp(hcbd_hc_world *w)
     const int n = w->np, nt = w->p.threads;
     hcbd__trav T = hcbd__trav_make(&w->lx, w->px, w->py, w->pz, w->sx, w->sy, w->sz, hcbd__hc_box(w),
                                    w->p.rc);
-    hcbd__hc_interp_ctx s;
+    hcbd__hc_interp_pass s;
     int bad = INT_MAX;
     (void)nt;
     s.w = w;
@@ -4427,8 +4462,7 @@ static int hcbd__hc_interp(hcbd_hc_world *w)
     {
         int64_t lo, hi;
         hcbd__share(n, &lo, &hi);
-        bad = hcbd__traverse(&T, w->lp.perm, (int)lo, (int)hi, &s, hcbd__hc_interp_begin, hcbd__hc_interp_pairs,
-                             hcbd__hc_interp_end);
+        bad = hcbd__hc_interp_traverse(&T, w->lp.perm, (int)lo, (int)hi, &s);
     }
     return bad == INT_MAX ? -1 : bad;
 }
@@ -4436,32 +4470,47 @@ static int hcbd__hc_interp(hcbd_hc_world *w)
 /* Polymer forces redistributed onto the fluid blobs with the same psi,
    each blob over its polymers in increasing id (the transpose of the
    cross list, the traversal's third source), with the weights the
-   interpolation kept.  acc: r[0..2] the blob's force. */
-HCBD__INLINE void hcbd__hc_redist_pairs(void *ctx, int i, const hcbd__near *c, int m, hcbd__acc *acc,
-                                       hcbd__terms *u)
+   interpolation kept. */
+typedef struct hcbd__hc_redist_pass {
+    hcbd_hc_world *w;
+} hcbd__hc_redist_pass;
+
+typedef struct hcbd__hc_redist_own {
+    double fx, fy, fz; /* the blob's force */
+} hcbd__hc_redist_own;
+
+HCBD__INLINE void hcbd__hc_redist_begin(const hcbd__hc_redist_pass *s, int i, hcbd__hc_redist_own *o)
 {
-    const hcbd_hc_world *w = (const hcbd_hc_world *)ctx;
+    (void)s; (void)i;
+    o->fx = o->fy = o->fz = 0;
+}
+
+HCBD__INLINE void hcbd__hc_redist_pairs(hcbd__hc_redist_pass *s, int i, const hcbd__near *c, int m,
+                                        hcbd__hc_redist_own *o)
+{
+    const hcbd_hc_world *w = s->w;
     int t;
-    (void)u;
     for (t = 0; t < m; ++t) {
         const int a = c->j[t];
         const double wt = w->xw[c->e[t]], psi = wt / w->sn[i] / w->pS[a];
         if (wt == 0) continue; /* beyond rc */
-        acc->r[0] += psi * w->pFx[a];
-        acc->r[1] += psi * w->pFy[a];
-        acc->r[2] += psi * w->pFz[a];
+        o->fx += psi * w->pFx[a];
+        o->fy += psi * w->pFy[a];
+        o->fz += psi * w->pFz[a];
     }
 }
 
-HCBD__INLINE int hcbd__hc_redist_end(void *ctx, int i, hcbd__acc *acc)
+HCBD__INLINE int hcbd__hc_redist_end(hcbd__hc_redist_pass *s, int i, hcbd__hc_redist_own *o)
 {
-    hcbd_hc_world *w = (hcbd_hc_world *)ctx;
+    hcbd_hc_world *w = s->w;
     const int id = w->fid[i];
-    w->fax[id] = (hcbd_real)acc->r[0];
-    w->fay[id] = (hcbd_real)acc->r[1];
-    w->faz[id] = (hcbd_real)acc->r[2];
+    w->fax[id] = (hcbd_real)o->fx;
+    w->fay[id] = (hcbd_real)o->fy;
+    w->faz[id] = (hcbd_real)o->fz;
     return INT_MAX;
 }
+
+HCBD__PASS(hcbd__hc_redist)
 
 static void hcbd__hc_redistribute(hcbd_hc_world *w)
 {
@@ -4475,10 +4524,11 @@ static void hcbd__hc_redistribute(hcbd_hc_world *w)
     T.ox = T.oy = T.oz = w->sx; /* not read: no geometry */
     HCBD__OMP(omp parallel num_threads(nt))
     {
+        hcbd__hc_redist_pass s;
         int64_t lo, hi;
+        s.w = w;
         hcbd__share(w->nf, &lo, &hi);
-        hcbd__traverse(&T, w->lf.perm, (int)lo, (int)hi, w, hcbd__ev_zero, hcbd__hc_redist_pairs,
-                       hcbd__hc_redist_end);
+        hcbd__hc_redist_traverse(&T, w->lf.perm, (int)lo, (int)hi, &s);
     }
 }
 
@@ -4511,27 +4561,32 @@ static void hcbd__hc_redistribute(hcbd_hc_world *w)
    partners the velocity-free part (kernel, rate, 1 - e, pressure) comes
    first, in a loop without dependences; the chain of velocity updates
    follows. */
-typedef struct hcbd__hc_sweep_ctx {
+typedef struct hcbd__hc_sweep_pass {
     hcbd_hc_world *w;
     double dt, ih, c1h, m, inv_m, kT, vj, rate0, qF, lim;
     uint64_t skey;
     int noise, stress;
-} hcbd__hc_sweep_ctx;
+} hcbd__hc_sweep_pass;
 
-/* the traversal's lean form: acc q[0..2] the owner's pressure force
-   (fixed point), r[0..2] its velocity (in registers: no partner is the
-   owner itself), r[3] r[4] its viscous and pressure stress */
-HCBD__INLINE void hcbd__hc_sweep_begin(void *ctx, int i, hcbd__acc *a)
+/* the traversal's lean form */
+typedef struct hcbd__hc_sweep_own {
+    int64_t fx, fy, fz;    /* the owner's pressure force, fixed point       */
+    double vx, vy, vz;     /* its velocity (in registers: no partner is the
+                              owner itself)                                 */
+    double sv, sp;         /* its viscous and pressure stress               */
+    int bad;               /* a term left the fixed-point range             */
+} hcbd__hc_sweep_own;
+
+HCBD__INLINE void hcbd__hc_sweep_begin(const hcbd__hc_sweep_pass *s, int i, hcbd__hc_sweep_own *o)
 {
-    const hcbd_hc_world *w = ((const hcbd__hc_sweep_ctx *)ctx)->w;
-    memset(a, 0, sizeof *a);
-    a->r[0] = w->svx[i]; a->r[1] = w->svy[i]; a->r[2] = w->svz[i];
+    const hcbd_hc_world *w = s->w;
+    memset(o, 0, sizeof *o);
+    o->vx = w->svx[i]; o->vy = w->svy[i]; o->vz = w->svz[i];
 }
 
-HCBD__INLINE void hcbd__hc_sweep_pairs(void *ctx, int i, const hcbd__near *c, int mm, hcbd__acc *a,
-                                      hcbd__terms *u)
+HCBD__INLINE void hcbd__hc_sweep_pairs(hcbd__hc_sweep_pass *s, int i, const hcbd__near *c, int mm,
+                                       hcbd__hc_sweep_own *a)
 {
-    const hcbd__hc_sweep_ctx *s = (const hcbd__hc_sweep_ctx *)ctx;
     hcbd_hc_world *w = s->w;
     const double m = s->m, inv_m = s->inv_m, vj = s->vj, qF = s->qF, lim = s->lim;
     const double rate = s->rate0 * w->sIn[i], Pi = w->sP[i]; /* 2 f dt/m over wdr/n_j */
@@ -4539,11 +4594,10 @@ HCBD__INLINE void hcbd__hc_sweep_pairs(void *ctx, int i, const hcbd__near *c, in
     const hcbd_real *HCBD__RESTRICT In = w->sIn, *HCBD__RESTRICT Pn2 = w->sP;
     const int32_t *HCBD__RESTRICT fid = w->fid;
     const int32_t idi = fid[i];
-    double vxi = a->r[0], vyi = a->r[1], vzi = a->r[2], x[HCBD__CHUNK], om[HCBD__CHUNK], f0[HCBD__CHUNK];
+    double vxi = a->vx, vyi = a->vy, vzi = a->vz, x[HCBD__CHUNK], om[HCBD__CHUNK], f0[HCBD__CHUNK];
     int64_t u0[HCBD__CHUNK], u1[HCBD__CHUNK], u2[HCBD__CHUNK];
     int64_t *HCBD__RESTRICT aFx = w->aF[0], *HCBD__RESTRICT aFy = w->aF[1], *HCBD__RESTRICT aFz = w->aF[2];
     int t, bad = 0;
-    (void)u;
     HCBD__OMP(omp simd reduction(|:bad))
     for (t = 0; t < mm; ++t) {
         const int j = c->j[t];
@@ -4577,37 +4631,31 @@ HCBD__INLINE void hcbd__hc_sweep_pairs(void *ctx, int i, const hcbd__near *c, in
         vxi = (hcbd_real)(vxi + P[0] * inv_m); vx[j] = (hcbd_real)(vx[j] - P[0] * inv_m);
         vyi = (hcbd_real)(vyi + P[1] * inv_m); vy[j] = (hcbd_real)(vy[j] - P[1] * inv_m);
         vzi = (hcbd_real)(vzi + P[2] * inv_m); vz[j] = (hcbd_real)(vz[j] - P[2] * inv_m);
-        a->q[0] += u0[t]; aFx[j] -= u0[t];
-        a->q[1] += u1[t]; aFy[j] -= u1[t];
-        a->q[2] += u2[t]; aFz[j] -= u2[t];
-        a->r[3] += c->y[t] * P[0];
-        a->r[4] += c->y[t] * f0[t];
+        a->fx += u0[t]; aFx[j] -= u0[t];
+        a->fy += u1[t]; aFy[j] -= u1[t];
+        a->fz += u2[t]; aFz[j] -= u2[t];
+        a->sv += c->y[t] * P[0];
+        a->sp += c->y[t] * f0[t];
     }
-    a->r[0] = vxi; a->r[1] = vyi; a->r[2] = vzi;
+    a->vx = vxi; a->vy = vyi; a->vz = vzi;
 }
 
-HCBD__INLINE int hcbd__hc_sweep_end(void *ctx, int i, hcbd__acc *a)
+HCBD__INLINE int hcbd__hc_sweep_end(hcbd__hc_sweep_pass *s, int i, hcbd__hc_sweep_own *a)
 {
-    const hcbd__hc_sweep_ctx *s = (const hcbd__hc_sweep_ctx *)ctx;
     hcbd_hc_world *w = s->w;
     const int32_t idi = w->fid[i];
-    w->svx[i] = (hcbd_real)a->r[0]; w->svy[i] = (hcbd_real)a->r[1]; w->svz[i] = (hcbd_real)a->r[2];
-    w->aF[0][i] += a->q[0]; w->aF[1][i] += a->q[1]; w->aF[2][i] += a->q[2];
+    w->svx[i] = (hcbd_real)a->vx; w->svy[i] = (hcbd_real)a->vy; w->svz[i] = (hcbd_real)a->vz;
+    w->aF[0][i] += a->fx; w->aF[1][i] += a->fy; w->aF[2][i] += a->fz;
     if (s->stress) {
-        w->fs[3 * idi] = a->r[4];
-        w->fs[3 * idi + 1] = a->r[3] / s->dt;
+        w->fs[3 * idi] = a->sp;
+        w->fs[3 * idi + 1] = a->sv / s->dt;
         w->fs[3 * idi + 2] = 0;
     }
     return a->bad ? idi : INT_MAX;
 }
 
-/* one block of the sweep, for hcbd__colours */
-HCBD__NO_SLP static int hcbd__hc_sweep_block(void *ctx, int b)
-{
-    const hcbd__block_job *j = (const hcbd__block_job *)ctx;
-    return hcbd__traverse(j->T, j->list, j->start[b], j->start[b + 1], j->pass, hcbd__hc_sweep_begin,
-                          hcbd__hc_sweep_pairs, hcbd__hc_sweep_end);
-}
+HCBD__PASS(hcbd__hc_sweep)
+HCBD__COLOURS(hcbd__hc_sweep)
 
 static int hcbd__hc_fluid_shardlow(hcbd_hc_world *w, double dt, uint64_t skey)
 {
@@ -4617,7 +4665,7 @@ static int hcbd__hc_fluid_shardlow(hcbd_hc_world *w, double dt, uint64_t skey)
     const double t = s / L[1];
     const double h = w->p.h;
     const hcbd__trav T = hcbd__hc_trav_f(w, 2.0 * h);
-    hcbd__hc_sweep_ctx sc;
+    hcbd__hc_sweep_pass sc;
     /* blocks move with blob 0, so that a boosted copy of the world sweeps
        in the same order (Galilean invariance of the trajectory) */
     const int o = w->fslot[0];
@@ -4657,11 +4705,7 @@ static int hcbd__hc_fluid_shardlow(hcbd_hc_world *w, double dt, uint64_t skey)
        by block, so that a block's owners go fine cell by fine cell */
     hcbd__count_sort(fine, n, w->fslot, nfine, fstart, tmp);
     hcbd__count_sort(blk, n, tmp, nblk, start, list);
-    {
-        hcbd__block_job job;
-        job.T = &T; job.list = list; job.start = start; job.pass = &sc;
-        worst = hcbd__colours(nb, nc, nt, &job, hcbd__hc_sweep_block);
-    }
+    worst = hcbd__hc_sweep_colours(nb, nc, nt, &T, list, start, &sc);
     HCBD__OMP(omp parallel for num_threads(nt) schedule(static))
     for (q = 0; q < n; ++q) {
         const int i = w->fid[q];
@@ -4673,33 +4717,38 @@ static int hcbd__hc_fluid_shardlow(hcbd_hc_world *w, double dt, uint64_t skey)
 /* HCBD_PAIR_EULER: the fluid pair forces, pressure, Morris friction and
    the pair noise, dp = sqrt(2 kT f_ij dt) zeta_ij on the owner i (the
    lower id) and minus on j (2018 eq. 18-19). */
-typedef struct hcbd__hc_kick_ctx {
+typedef struct hcbd__hc_kick_pass {
     hcbd_hc_world *w;
     double ih, c1h, two_eta, sn, vj, qF, lim;
     uint64_t skey;
     int noise, stress;
-} hcbd__hc_kick_ctx;
+} hcbd__hc_kick_pass;
 
-/* the traversal's lean form: acc q[0..2] the owner's force (fixed point),
-   r[0..2] its velocity, r[3] its P/n^2, r[4] its 1/n, r[5..7] its
-   pressure, viscous and noise stress */
-HCBD__INLINE void hcbd__hc_kick_begin(void *ctx, int i, hcbd__acc *a)
+/* the traversal's lean form */
+typedef struct hcbd__hc_kick_own {
+    int64_t fx, fy, fz;    /* the owner's force, fixed point                */
+    double vx, vy, vz;     /* its velocity                                  */
+    double Pn2, in;        /* its P/n^2 and 1/n                             */
+    double sp, sv, sn;     /* its pressure, viscous and noise stress        */
+    int bad;               /* a term left the fixed-point range             */
+} hcbd__hc_kick_own;
+
+HCBD__INLINE void hcbd__hc_kick_begin(const hcbd__hc_kick_pass *s, int i, hcbd__hc_kick_own *a)
 {
-    const hcbd_hc_world *w = ((const hcbd__hc_kick_ctx *)ctx)->w;
+    const hcbd_hc_world *w = s->w;
     memset(a, 0, sizeof *a);
-    a->r[0] = w->svx[i]; a->r[1] = w->svy[i]; a->r[2] = w->svz[i];
-    a->r[3] = w->sP[i]; a->r[4] = w->sIn[i];
+    a->vx = w->svx[i]; a->vy = w->svy[i]; a->vz = w->svz[i];
+    a->Pn2 = w->sP[i]; a->in = w->sIn[i];
 }
 
-HCBD__INLINE void hcbd__hc_kick_pairs(void *ctx, int i, const hcbd__near *c, int m, hcbd__acc *a,
-                                     hcbd__terms *u)
+HCBD__INLINE void hcbd__hc_kick_pairs(hcbd__hc_kick_pass *s, int i, const hcbd__near *c, int m,
+                                      hcbd__hc_kick_own *a)
 {
-    const hcbd__hc_kick_ctx *s = (const hcbd__hc_kick_ctx *)ctx;
     const hcbd_hc_world *w = s->w;
     const hcbd_real *HCBD__RESTRICT vx = w->svx, *HCBD__RESTRICT vy = w->svy;
     const hcbd_real *HCBD__RESTRICT vz = w->svz, *HCBD__RESTRICT Pn2 = w->sP, *HCBD__RESTRICT In = w->sIn;
     const int32_t *HCBD__RESTRICT fid = w->fid;
-    const double vxi = a->r[0], vyi = a->r[1], vzi = a->r[2], Pi = a->r[3], ini = a->r[4];
+    const double vxi = a->vx, vyi = a->vy, vzi = a->vz, Pi = a->Pn2, ini = a->in;
     const double qF = s->qF, lim = s->lim, ih = s->ih, c1h = s->c1h, two_eta = s->two_eta, vj = s->vj;
     /* the deterministic forces in a SIMD loop, the noise (one draw per
        pair) and the stress sums (in pair order) apart: the same operations
@@ -4708,7 +4757,6 @@ HCBD__INLINE void hcbd__hc_kick_pairs(void *ctx, int i, const hcbd__near *c, int
     int64_t U0[HCBD__CHUNK], U1[HCBD__CHUNK], U2[HCBD__CHUNK];
     int64_t *HCBD__RESTRICT aFx = w->aF[0], *HCBD__RESTRICT aFy = w->aF[1], *HCBD__RESTRICT aFz = w->aF[2];
     int t, bad = 0;
-    (void)u;
     HCBD__OMP(omp simd)
     for (t = 0; t < m; ++t) {
         const int j = c->j[t];
@@ -4725,8 +4773,8 @@ HCBD__INLINE void hcbd__hc_kick_pairs(void *ctx, int i, const hcbd__near *c, int
     }
     if (s->stress)
         for (t = 0; t < m; ++t) {
-            a->r[5] += c->y[t] * (fp[t] * c->x[t]);
-            a->r[6] += c->y[t] * fv0[t];
+            a->sp += c->y[t] * (fp[t] * c->x[t]);
+            a->sv += c->y[t] * fv0[t];
         }
     if (s->noise)
         for (t = 0; t < m; ++t) {
@@ -4736,7 +4784,7 @@ HCBD__INLINE void hcbd__hc_kick_pairs(void *ctx, int i, const hcbd__near *c, int
             Fx[t] += sf * zz[0];
             Fy[t] += sf * zz[1];
             Fz[t] += sf * zz[2];
-            if (s->stress) a->r[7] += c->y[t] * sf * zz[0];
+            if (s->stress) a->sn += c->y[t] * sf * zz[0];
         }
     HCBD__OMP(omp simd reduction(|:bad))
     for (t = 0; t < m; ++t) {
@@ -4747,33 +4795,34 @@ HCBD__INLINE void hcbd__hc_kick_pairs(void *ctx, int i, const hcbd__near *c, int
     }
     for (t = 0; t < m; ++t) {
         const int j = c->j[t];
-        a->q[0] += U0[t]; aFx[j] -= U0[t];
-        a->q[1] += U1[t]; aFy[j] -= U1[t];
-        a->q[2] += U2[t]; aFz[j] -= U2[t];
+        a->fx += U0[t]; aFx[j] -= U0[t];
+        a->fy += U1[t]; aFy[j] -= U1[t];
+        a->fz += U2[t]; aFz[j] -= U2[t];
     }
     a->bad |= bad;
 }
 
-HCBD__INLINE int hcbd__hc_kick_end(void *ctx, int i, hcbd__acc *a)
+HCBD__INLINE int hcbd__hc_kick_end(hcbd__hc_kick_pass *s, int i, hcbd__hc_kick_own *a)
 {
-    const hcbd__hc_kick_ctx *s = (const hcbd__hc_kick_ctx *)ctx;
     hcbd_hc_world *w = s->w;
     const int32_t idi = w->fid[i];
-    w->aF[0][i] += a->q[0]; w->aF[1][i] += a->q[1]; w->aF[2][i] += a->q[2];
+    w->aF[0][i] += a->fx; w->aF[1][i] += a->fy; w->aF[2][i] += a->fz;
     if (s->stress) { /* by id: the sum over blobs in a fixed order */
-        w->fs[3 * idi] = a->r[5];
-        w->fs[3 * idi + 1] = a->r[6];
-        w->fs[3 * idi + 2] = a->r[7];
+        w->fs[3 * idi] = a->sp;
+        w->fs[3 * idi + 1] = a->sv;
+        w->fs[3 * idi + 2] = a->sn;
     }
     return a->bad ? idi : INT_MAX;
 }
+
+HCBD__PASS(hcbd__hc_kick)
 
 HCBD__INLINE int hcbd__hc_kick_run(hcbd_hc_world *w, int q0, int q1, const int noise,
                                    const int stress)
 {
     const double h = w->p.h, dt = w->p.dt / w->p.substeps;
     const hcbd__trav T = hcbd__hc_trav_f(w, 2.0 * h);
-    hcbd__hc_kick_ctx s;
+    hcbd__hc_kick_pass s;
     s.w = w;
     s.ih = 1.0 / h;
     s.c1h = 1.0 / (4.0 * HCBD__PI * h * h * h * h * h);
@@ -4783,23 +4832,21 @@ HCBD__INLINE int hcbd__hc_kick_run(hcbd_hc_world *w, int q0, int q1, const int n
     s.qF = w->core.qF; s.lim = w->core.limF;
     s.skey = w->kick_key;
     s.noise = noise; s.stress = stress;
-    return hcbd__traverse(&T, w->lf.perm, q0, q1, &s, hcbd__hc_kick_begin, hcbd__hc_kick_pairs,
-                          hcbd__hc_kick_end);
+    return hcbd__hc_kick_traverse(&T, w->lf.perm, q0, q1, &s);
 }
 
-static int hcbd__hc_kick_v(void *c, int q0, int q1)
+static int hcbd__hc_kick_v(hcbd_hc_world *w, int q0, int q1)
 {
-    return hcbd__hc_kick_run((hcbd_hc_world *)c, q0, q1, 0, 0);
+    return hcbd__hc_kick_run(w, q0, q1, 0, 0);
 }
 
-static int hcbd__hc_kick_vn(void *c, int q0, int q1)
+static int hcbd__hc_kick_vn(hcbd_hc_world *w, int q0, int q1)
 {
-    return hcbd__hc_kick_run((hcbd_hc_world *)c, q0, q1, 1, 0);
+    return hcbd__hc_kick_run(w, q0, q1, 1, 0);
 }
 
-static int hcbd__hc_kick_any(void *c, int q0, int q1)
+static int hcbd__hc_kick_any(hcbd_hc_world *w, int q0, int q1)
 {
-    hcbd_hc_world *w = (hcbd_hc_world *)c;
     return hcbd__hc_kick_run(w, q0, q1, w->noise_f, w->core.stress_on);
 }
 
@@ -4825,7 +4872,7 @@ static int hcbd__hc_fluid_kick(hcbd_hc_world *w, double dt, uint64_t skey)
     for (d = 0; d < 3; ++d) hcbd__zero64(w->aF[d], n);
     w->kick_key = skey;
     bad = exact ? hcbd__hc_fluid_shardlow(w, dt, skey)
-                : hcbd__nl_owners(&w->lf, n, nt, w,
+                : hcbd__hc_owners(w, &w->lf, n,
                                   w->core.stress_on || w->core.general ? hcbd__hc_kick_any
                                   : w->noise_f ? hcbd__hc_kick_vn
                                                : hcbd__hc_kick_v);
@@ -7128,34 +7175,51 @@ hcbd_result hcbd_world_set_velocities(hcbd_world *w, const double *v)
    pairs, evaluators of the traversal over its second source */
 #if HCBD__WALLS
 /* The weights of the artificial particles around a point: they count in
-   the real particles' densities.  acc: r[0] the sum. */
-typedef struct hcbd__art_w_ctx {
+   the real particles' densities. */
+typedef struct hcbd__art_w_pass {
     double cw, invRc;
-} hcbd__art_w_ctx;
+} hcbd__art_w_pass;
 
-HCBD__INLINE void hcbd__art_w_pairs(void *ctx, int i, const hcbd__near *c, int m, hcbd__acc *a,
-                                   hcbd__terms *u)
+typedef struct hcbd__art_w_own {
+    double w; /* the weights' sum */
+} hcbd__art_w_own;
+
+HCBD__INLINE void hcbd__art_w_begin(const hcbd__art_w_pass *e, int i, hcbd__art_w_own *a)
 {
-    const hcbd__art_w_ctx *e = (const hcbd__art_w_ctx *)ctx;
+    (void)e; (void)i;
+    a->w = 0.0;
+}
+
+HCBD__INLINE void hcbd__art_w_pairs(hcbd__art_w_pass *e, int i, const hcbd__near *c, int m,
+                                    hcbd__art_w_own *a)
+{
     int t;
-    (void)i; (void)u;
+    (void)i;
     for (t = 0; t < m; ++t) {
         const double q = sqrt(c->r2[t]) * e->invRc;
-        a->r[0] += hcbd__weight(e->cw, q, 1.0 - q);
+        a->w += hcbd__weight(e->cw, q, 1.0 - q);
     }
 }
+
+HCBD__INLINE int hcbd__art_w_end(hcbd__art_w_pass *e, int i, hcbd__art_w_own *a)
+{
+    (void)e; (void)i; (void)a;
+    return INT_MAX;
+}
+
+HCBD__PASS(hcbd__art_w)
 
 static double hcbd__ws_wsum(const hcbd__wallset *s, const hcbd_params *p, double cw, double x, double y,
                             double z)
 {
     const hcbd__trav T = hcbd__trav_art(s, p, p->Rc);
-    hcbd__art_w_ctx e;
-    hcbd__acc a;
+    hcbd__art_w_pass e;
+    hcbd__art_w_own a;
     e.cw = cw;
     e.invRc = 1.0 / p->Rc;
-    a.r[0] = 0.0;
-    hcbd__partners(&T, 0, x, y, z, &e, hcbd__art_w_pairs, &a, NULL);
-    return a.r[0];
+    hcbd__art_w_begin(&e, 0, &a);
+    hcbd__art_w_partners(&T, 0, x, y, z, &e, &a);
+    return a.w;
 }
 
 /* Friction and noise of the artificial particles on a real particle
@@ -7165,25 +7229,39 @@ static double hcbd__ws_wsum(const hcbd__wallset *s, const hcbd_params *p, double
    plane); the noise carries sqrt(beta) so the pair keeps its
    fluctuation-dissipation balance.  The wall absorbs the momentum.  exact:
    v relaxes pair by pair over the step; else the Euler exchanges are added
-   to P.  acc: r[0..2] the particle's v, r[3..5] its P. */
-typedef struct hcbd__morris_ctx {
+   to P. */
+typedef struct hcbd__morris_pass {
     const hcbd__wallset *s;
     const hcbd_params *p;
     const hcbd__zig *zig;
     double cs, two_kT, bmax, m, inv_m, iri, yi;
+    double v0[3], P0[3]; /* the particle's velocity and exchange before */
     uint64_t key, idk;
     int exact;
-} hcbd__morris_ctx;
+} hcbd__morris_pass;
 
-HCBD__INLINE void hcbd__morris_pairs(void *ctx, int i, const hcbd__near *c, int mm, hcbd__acc *a,
-                                    hcbd__terms *u)
+typedef struct hcbd__morris_own {
+    double v[3], P[3]; /* the particle's velocity and momentum exchange */
+} hcbd__morris_own;
+
+HCBD__INLINE void hcbd__morris_begin(const hcbd__morris_pass *e, int i, hcbd__morris_own *a)
 {
-    const hcbd__morris_ctx *e = (const hcbd__morris_ctx *)ctx;
+    int d;
+    (void)i;
+    for (d = 0; d < 3; ++d) {
+        a->v[d] = e->v0[d];
+        a->P[d] = e->P0[d];
+    }
+}
+
+HCBD__INLINE void hcbd__morris_pairs(hcbd__morris_pass *e, int i, const hcbd__near *c, int mm,
+                                     hcbd__morris_own *a)
+{
     const hcbd__wallset *s = e->s;
     const double invRc = 1.0 / e->p->Rc, m = e->m, inv_m = e->inv_m, yi = e->yi;
-    double *v = a->r, *P = a->r + 3;
+    double *v = a->v, *P = a->P;
     int t, d;
-    (void)i; (void)u;
+    (void)i;
     for (t = 0; t < mm; ++t) {
         const double dy = c->y[t], q = sqrt(c->r2[t]) * invRc;
         const double sdt = hcbd__sdt(e->cs, e->iri, s->art_inv_rho, 1.0 - q);
@@ -7215,6 +7293,14 @@ HCBD__INLINE void hcbd__morris_pairs(void *ctx, int i, const hcbd__near *c, int 
     }
 }
 
+HCBD__INLINE int hcbd__morris_end(hcbd__morris_pass *e, int i, hcbd__morris_own *a)
+{
+    (void)e; (void)i; (void)a;
+    return INT_MAX;
+}
+
+HCBD__PASS(hcbd__morris)
+
 /* The Morris pairs of the particle id at r with 1/rho iri; cf, m: the
    GI-BD coefficient and mass; key: the step's */
 static void hcbd__ws_morris(const hcbd__wallset *s, const hcbd_params *p, const hcbd__zig *zig, double cf,
@@ -7222,8 +7308,8 @@ static void hcbd__ws_morris(const hcbd__wallset *s, const hcbd_params *p, const 
                             double v[3], double P[3], int exact)
 {
     const hcbd__trav T = hcbd__trav_art(s, p, p->Rc);
-    hcbd__morris_ctx e;
-    hcbd__acc a;
+    hcbd__morris_pass e;
+    hcbd__morris_own a;
     int d;
     e.s = s; e.p = p; e.zig = zig;
     e.cs = cf * m * m * p->dt / p->tau;
@@ -7235,13 +7321,14 @@ static void hcbd__ws_morris(const hcbd__wallset *s, const hcbd_params *p, const 
     e.idk = (uint64_t)(uint32_t)id << 32;
     e.exact = exact;
     for (d = 0; d < 3; ++d) {
-        a.r[d] = v[d];
-        a.r[3 + d] = exact ? 0.0 : P[d];
+        e.v0[d] = v[d];
+        e.P0[d] = exact ? 0.0 : P[d];
     }
-    hcbd__partners(&T, 0, r[0], r[1], r[2], &e, hcbd__morris_pairs, &a, NULL);
+    hcbd__morris_begin(&e, 0, &a);
+    hcbd__morris_partners(&T, 0, r[0], r[1], r[2], &e, &a);
     for (d = 0; d < 3; ++d) {
-        v[d] = a.r[d];
-        if (!exact) P[d] = a.r[3 + d];
+        v[d] = a.v[d];
+        if (!exact) P[d] = a.P[d];
     }
 }
 
@@ -7341,35 +7428,51 @@ void hcbd_walls_morris(const hcbd_walls *wl, int exact, int32_t id, const double
 /* >>pair passes (sums in fixed point, see hcbd__fix): densities, forces and
    the exact sweep, each an evaluator of the traversal */
 /* GI-BD density weights (MODEL 1-3) into aW, each pair once */
-typedef struct hcbd__dens_ctx {
-    hcbd_world *w;
+typedef struct hcbd__dens_pass {
+    int64_t *aW;
     double invRc, cwq;
-} hcbd__dens_ctx;
+} hcbd__dens_pass;
 
-HCBD__INLINE void hcbd__dens_pairs(void *ctx, int i, const hcbd__near *c, int m, hcbd__acc *a,
-                                  hcbd__terms *u)
+typedef struct hcbd__dens_own {
+    int64_t w; /* the owner's weights, fixed point */
+} hcbd__dens_own;
+
+HCBD__INLINE void hcbd__dens_begin(const hcbd__dens_pass *d, int i, hcbd__dens_own *a)
 {
-    const hcbd__dens_ctx *d = (const hcbd__dens_ctx *)ctx;
-    int64_t *HCBD__RESTRICT v = u->u[0];
+    (void)d; (void)i;
+    a->w = 0;
+}
+
+HCBD__INLINE void hcbd__dens_pairs(hcbd__dens_pass *d, int i, const hcbd__near *c, int m, hcbd__dens_own *a)
+{
+    int64_t v[HCBD__CHUNK];
     int t;
-    (void)i; (void)a;
+    (void)i;
     HCBD__OMP(omp simd)
     for (t = 0; t < m; ++t) {
         const double qq = sqrt(c->r2[t]) * d->invRc;
         v[t] = hcbd__fix(hcbd__weight(d->cwq, qq, 1.0 - qq));
     }
+    a->w += hcbd__scatter(d->aW, 1, v, c->j, 0, m);
 }
 
-static int hcbd__density_owners(void *ctx, int q0, int q1)
+HCBD__INLINE int hcbd__dens_end(hcbd__dens_pass *d, int i, hcbd__dens_own *a)
 {
-    hcbd_world *w = (hcbd_world *)ctx;
+    d->aW[i] += a->w;
+    return INT_MAX;
+}
+
+HCBD__PASS(hcbd__dens)
+HCBD__SLABS(hcbd__owners, hcbd_world)
+
+static int hcbd__density_owners(hcbd_world *w, int q0, int q1)
+{
     hcbd__trav T = hcbd__trav_make(&w->nl, w->x, w->y, w->z, w->x, w->y, w->z, hcbd__box_of(w), w->p.Rc);
-    hcbd__dens_ctx d;
-    d.w = w;
+    hcbd__dens_pass d;
+    d.aW = w->aW;
     d.invRc = 1.0 / w->p.Rc;
     d.cwq = w->cw * w->core.qW;
-    hcbd__trav_sink(&T, 0, w->aW, 1);
-    return hcbd__traverse(&T, w->nl.perm, q0, q1, &d, hcbd__ev_zero, hcbd__dens_pairs, hcbd__ev_done);
+    return hcbd__dens_traverse(&T, w->nl.perm, q0, q1, &d);
 }
 
 /* rho_i from the weight sums in aW (and the wall's artificial particles) */
@@ -7395,7 +7498,7 @@ static void hcbd__density_finish(hcbd_world *w)
 static void hcbd__density(hcbd_world *w)
 {
     hcbd__zero64(w->aW, w->n);
-    hcbd__owners(w, hcbd__density_owners);
+    hcbd__owners(w, &w->nl, w->n, hcbd__density_owners);
     hcbd__density_finish(w);
 }
 
@@ -7405,18 +7508,18 @@ static void hcbd__density(hcbd_world *w)
    taken from the partner j.  With lag, the density weights of the same
    positions are summed into aW (the next step's lagged density, or this
    step's before the exact sweep). */
-typedef struct hcbd__force_ctx {
+typedef struct hcbd__force_pass {
     hcbd_world *w;
     int pot, fric, lag, flux, gibd, noise, table; /* constants in each wrapper */
     double vle, rc2, Rc2, invRc, cs, two_kT, cwq, qF, qP, limF, limP;
     uint64_t skey;
     hcbd__box box;
-} hcbd__force_ctx;
+} hcbd__force_pass;
 
-HCBD__INLINE hcbd__force_ctx hcbd__force_ctx_of(hcbd_world *w, const int pot, const int fric,
-                                                const int lag, const int flux)
+HCBD__INLINE hcbd__force_pass hcbd__force_pass_of(hcbd_world *w, const int pot, const int fric,
+                                                  const int lag, const int flux)
 {
-    hcbd__force_ctx f;
+    hcbd__force_pass f;
     f.w = w;
     f.pot = pot; f.fric = fric; f.lag = lag; f.flux = flux;
     f.gibd = fric || lag;
@@ -7435,28 +7538,31 @@ HCBD__INLINE hcbd__force_ctx hcbd__force_ctx_of(hcbd_world *w, const int pot, co
     return f;
 }
 
-/* terms: 0..2 the force, 3..5 the momentum exchange, 6 the weight; acc:
-   r[0..2] the owner's velocity, r[3] its 1/rho, r[4] r[5] its flux terms */
-HCBD__INLINE void hcbd__force_begin(void *ctx, int i, hcbd__acc *a)
+typedef struct hcbd__force_own {
+    double vx, vy, vz, iri;    /* the owner's velocity and 1/rho            */
+    int64_t F[3], P[3], W;     /* its force, momentum exchange and weights,
+                                  fixed point                               */
+    double sp, sb;             /* its flux terms                            */
+    int bad;                   /* a term left the fixed-point range         */
+} hcbd__force_own;
+
+HCBD__INLINE void hcbd__force_begin(const hcbd__force_pass *f, int i, hcbd__force_own *a)
 {
-    const hcbd__force_ctx *f = (const hcbd__force_ctx *)ctx;
     memset(a, 0, sizeof *a);
     if (f->gibd) {
-        a->r[0] = f->w->vx[i]; a->r[1] = f->w->vy[i]; a->r[2] = f->w->vz[i];
-        a->r[3] = f->w->inv_rho[i];
+        a->vx = f->w->vx[i]; a->vy = f->w->vy[i]; a->vz = f->w->vz[i];
+        a->iri = f->w->inv_rho[i];
     }
 }
 
-HCBD__INLINE void hcbd__force_pairs(void *ctx, int i, const hcbd__near *c, int m, hcbd__acc *a,
-                                   hcbd__terms *u)
+HCBD__INLINE void hcbd__force_pairs(hcbd__force_pass *f, int i, const hcbd__near *c, int m,
+                                    hcbd__force_own *a)
 {
-    const hcbd__force_ctx *f = (const hcbd__force_ctx *)ctx;
-    const hcbd_world *w = f->w;
-    const double vxi = a->r[0], vyi = a->r[1], vzi = a->r[2], iri = a->r[3];
+    hcbd_world *w = f->w;
+    const double vxi = a->vx, vyi = a->vy, vzi = a->vz, iri = a->iri;
     const int32_t idi = w->id[i];
-    int64_t *HCBD__RESTRICT U0 = u->u[0], *HCBD__RESTRICT U1 = u->u[1], *HCBD__RESTRICT U2 = u->u[2];
-    int64_t *HCBD__RESTRICT U3 = u->u[3], *HCBD__RESTRICT U4 = u->u[4], *HCBD__RESTRICT U5 = u->u[5];
-    int64_t *HCBD__RESTRICT U6 = u->u[6];
+    int64_t U0[HCBD__CHUNK], U1[HCBD__CHUNK], U2[HCBD__CHUNK], U3[HCBD__CHUNK], U4[HCBD__CHUNK];
+    int64_t U5[HCBD__CHUNK], U6[HCBD__CHUNK];
     const double rc2 = f->rc2, Rc2 = f->Rc2, limF = f->limF, qF = f->qF;
     int t, bad = a->bad;
     for (t = 0; t < m; ++t) {
@@ -7495,23 +7601,41 @@ HCBD__INLINE void hcbd__force_pairs(void *ctx, int i, const hcbd__near *c, int m
             if (f->lag) U6[t] = hcbd__fix(hcbd__weight(f->cwq, qq, aa));
         }
         if (f->flux) { /* y_ij F_ij,x: flux of x momentum across y planes */
-            a->r[4] += 0.5 * (dy * Fx + dx * Fy);
-            a->r[5] += dy * Px;
+            a->sp += 0.5 * (dy * Fx + dx * Fy);
+            a->sb += dy * Px;
         }
     }
     a->bad = bad;
+    if (f->pot) {
+        a->F[0] += hcbd__scatter(w->aF[0], -1, U0, c->j, 0, m);
+        a->F[1] += hcbd__scatter(w->aF[1], -1, U1, c->j, 0, m);
+        a->F[2] += hcbd__scatter(w->aF[2], -1, U2, c->j, 0, m);
+    }
+    if (f->fric) {
+        a->P[0] += hcbd__scatter(w->aP[0], -1, U3, c->j, 0, m);
+        a->P[1] += hcbd__scatter(w->aP[1], -1, U4, c->j, 0, m);
+        a->P[2] += hcbd__scatter(w->aP[2], -1, U5, c->j, 0, m);
+    }
+    if (f->lag) a->W += hcbd__scatter(w->aW, 1, U6, c->j, 0, m);
 }
 
-HCBD__INLINE int hcbd__force_end(void *ctx, int i, hcbd__acc *a)
+HCBD__INLINE int hcbd__force_end(hcbd__force_pass *f, int i, hcbd__force_own *a)
 {
-    const hcbd__force_ctx *f = (const hcbd__force_ctx *)ctx;
     hcbd_world *w = f->w;
+    int d;
+    for (d = 0; d < 3; ++d) {
+        if (f->pot) w->aF[d][i] += a->F[d];
+        if (f->fric) w->aP[d][i] += a->P[d];
+    }
+    if (f->lag) w->aW[i] += a->W;
     if (f->flux) {
-        w->fl_p[i] = (hcbd_real)a->r[4];
-        if (f->fric) w->fl_b[i] = (hcbd_real)a->r[5];
+        w->fl_p[i] = (hcbd_real)a->sp;
+        if (f->fric) w->fl_b[i] = (hcbd_real)a->sb;
     }
     return a->bad ? w->id[i] : INT_MAX;
 }
+
+HCBD__PASS(hcbd__force)
 
 /* c ? a : b in bit operations: written as a conditional, the compiler
    turns it back into branches, and the loop around it stops vectorising */
@@ -7531,7 +7655,7 @@ static inline double hcbd__select(int c, double a, double b)
    same bits.  Both branches of the table are computed and one selected;
    the index is clamped so that a pair outside the table reads inside it
    (its value is then not taken; inside, the clamp changes nothing). */
-HCBD__INLINE int hcbd__force_stream_run(const hcbd__force_ctx *f, const hcbd__stream *s, const int pot,
+HCBD__INLINE int hcbd__force_stream_run(const hcbd__force_pass *f, const hcbd__stream *s, const int pot,
                                         const int lag)
 {
     hcbd_world *w = f->w;
@@ -7590,56 +7714,46 @@ HCBD__INLINE int hcbd__force_stream_run(const hcbd__force_ctx *f, const hcbd__st
     return worst;
 }
 
-static int hcbd__force_stream_pot(void *ctx, const hcbd__stream *s)
+/* a full stream: the star table's forces, and with lag the weights (a
+   call of its own, as each of its loops runs over hundreds of pairs) */
+static int hcbd__force_flush(hcbd__force_pass *f, const hcbd__stream *s)
 {
-    return hcbd__force_stream_run((const hcbd__force_ctx *)ctx, s, 1, 0);
+    return f->lag ? hcbd__force_stream_run(f, s, 1, 1) : hcbd__force_stream_run(f, s, 1, 0);
 }
 
-static int hcbd__force_stream_dens(void *ctx, const hcbd__stream *s)
-{
-    return hcbd__force_stream_run((const hcbd__force_ctx *)ctx, s, 1, 1);
-}
+HCBD__PASS_STREAM(hcbd__force)
 
 HCBD__INLINE int hcbd__forces_run(hcbd_world *w, int q0, int q1, const int pot, const int fric,
                                   const int lag, const int flux, const int store)
 {
-    hcbd__force_ctx f = hcbd__force_ctx_of(w, pot, fric, lag, flux);
+    hcbd__force_pass f = hcbd__force_pass_of(w, pot, fric, lag, flux);
     hcbd__trav T = hcbd__trav_make(&w->nl, w->x, w->y, w->z, w->x, w->y, w->z, f.box, w->cutmax);
-    int d;
     T.r2out = store && w->pr2_ok ? w->pr2 : NULL;
-    for (d = 0; d < 3; ++d) {
-        if (pot) hcbd__trav_sink(&T, d, w->aF[d], -1);
-        if (fric) hcbd__trav_sink(&T, 3 + d, w->aP[d], -1);
-    }
-    if (lag) hcbd__trav_sink(&T, 6, w->aW, 1);
     if (pot && !fric && !flux && f.table && w->p.rcut > w->p.sigma && !w->core.general)
-        return hcbd__traverse_stream(&T, w->nl.perm, q0, q1, &f,
-                                     lag ? hcbd__force_stream_dens : hcbd__force_stream_pot);
-    return hcbd__traverse(&T, w->nl.perm, q0, q1, &f, hcbd__force_begin, hcbd__force_pairs,
-                          hcbd__force_end);
+        return hcbd__force_stream(&T, w->nl.perm, q0, q1, &f);
+    return hcbd__force_traverse(&T, w->nl.perm, q0, q1, &f);
 }
 
 /* The common cases with their switches constant, so that each loop holds
    only its own work; anything else takes the general one. */
-static int hcbd__forces_pot(void *ctx, int q0, int q1)
+static int hcbd__forces_pot(hcbd_world *w, int q0, int q1)
 {
-    return hcbd__forces_run((hcbd_world *)ctx, q0, q1, 1, 0, 0, 0, 0);
+    return hcbd__forces_run(w, q0, q1, 1, 0, 0, 0, 0);
 }
 
-static int hcbd__forces_gibd(void *ctx, int q0, int q1)
+static int hcbd__forces_gibd(hcbd_world *w, int q0, int q1)
 {
-    return hcbd__forces_run((hcbd_world *)ctx, q0, q1, 1, 1, 0, 0, 0);
+    return hcbd__forces_run(w, q0, q1, 1, 1, 0, 0, 0);
 }
 
 /* forces and this step's density weights in one pass (exact sweep) */
-static int hcbd__forces_dens(void *ctx, int q0, int q1)
+static int hcbd__forces_dens(hcbd_world *w, int q0, int q1)
 {
-    return hcbd__forces_run((hcbd_world *)ctx, q0, q1, 1, 0, 1, 0, 1);
+    return hcbd__forces_run(w, q0, q1, 1, 0, 1, 0, 1);
 }
 
-static int hcbd__forces_any(void *ctx, int q0, int q1)
+static int hcbd__forces_any(hcbd_world *w, int q0, int q1)
 {
-    hcbd_world *w = (hcbd_world *)ctx;
     return hcbd__forces_run(w, q0, q1, w->p.potential != HCBD_POT_IDEAL, w->gibd && !w->shardlow,
                             w->gibd && w->p.lagged_density, w->core.stress_on, 0);
 }
@@ -7660,7 +7774,7 @@ static hcbd_result hcbd__forces(hcbd_world *w, int dens)
     {
         const int pot = w->p.potential != HCBD_POT_IDEAL, fric = w->gibd && !w->shardlow;
         const int plain = !w->core.stress_on && !(w->gibd && w->p.lagged_density) && pot && !w->core.general;
-        bad = hcbd__owners(w, dens ? hcbd__forces_dens : plain && !fric ? hcbd__forces_pot
+        bad = hcbd__owners(w, &w->nl, n, dens ? hcbd__forces_dens : plain && !fric ? hcbd__forces_pot
                               : plain ? hcbd__forces_gibd : hcbd__forces_any);
     }
     if (dens && bad == INT_MAX) hcbd__density_finish(w);
@@ -7695,20 +7809,24 @@ static hcbd_result hcbd__forces(hcbd_world *w, int dens)
    positions and ids alone, so the bits depend on neither the thread count,
    nor the storage, nor when the list was built. */
 
-typedef struct hcbd__sweep_ctx {
+typedef struct hcbd__sweep_pass {
     hcbd_world *w;
     double m, inv_m, kT, vle, invRc, cs;
     uint64_t skey, wkey;
     int noise, flux;
-} hcbd__sweep_ctx;
+} hcbd__sweep_pass;
 
-/* acc: r[0..2] the owner's velocity (in registers: no partner is the
-   owner itself), r[3] its flux term */
-HCBD__INLINE void hcbd__sweep_begin(void *ctx, int i, hcbd__acc *a)
+typedef struct hcbd__sweep_own {
+    double vx, vy, vz;     /* the owner's velocity (in registers: no partner
+                              is the owner itself)                          */
+    double sb;             /* its flux term                                 */
+} hcbd__sweep_own;
+
+HCBD__INLINE void hcbd__sweep_begin(const hcbd__sweep_pass *s, int i, hcbd__sweep_own *a)
 {
-    const hcbd_world *w = ((const hcbd__sweep_ctx *)ctx)->w;
-    a->r[0] = w->vx[i]; a->r[1] = w->vy[i]; a->r[2] = w->vz[i];
-    a->r[3] = 0.0;
+    const hcbd_world *w = s->w;
+    a->vx = w->vx[i]; a->vy = w->vy[i]; a->vz = w->vz[i];
+    a->sb = 0.0;
 }
 
 /* Per chunk the velocity-free part of every pair (rate, 1 - e, the noise
@@ -7716,10 +7834,9 @@ HCBD__INLINE void hcbd__sweep_begin(void *ctx, int i, hcbd__acc *a)
    without dependences that vectorise; the chain of velocity updates
    through v_i follows.  The same operations in the same order as one pair
    at a time, so the same bits. */
-HCBD__INLINE void hcbd__sweep_pairs(void *ctx, int i, const hcbd__near *c, int m2, hcbd__acc *a,
-                                   hcbd__terms *u)
+HCBD__INLINE void hcbd__sweep_pairs(hcbd__sweep_pass *s, int i, const hcbd__near *c, int m2,
+                                    hcbd__sweep_own *a)
 {
-    const hcbd__sweep_ctx *s = (const hcbd__sweep_ctx *)ctx;
     hcbd_world *w = s->w;
     const double m = s->m, inv_m = s->inv_m, iri = w->inv_rho[i], invRc = s->invRc, cs = s->cs;
     const double hm = 0.5 * m, hkTm = 0.5 * s->kT * m, vle = s->vle;
@@ -7729,12 +7846,11 @@ HCBD__INLINE void hcbd__sweep_pairs(void *ctx, int i, const hcbd__near *c, int m
     const hcbd_real *HCBD__RESTRICT irho = w->inv_rho;
     const int32_t *HCBD__RESTRICT id = w->id;
     hcbd_real *HCBD__RESTRICT vx = w->vx, *HCBD__RESTRICT vy = w->vy, *HCBD__RESTRICT vz = w->vz;
-    hcbd_real vxi = (hcbd_real)a->r[0], vyi = (hcbd_real)a->r[1], vzi = (hcbd_real)a->r[2];
-    double sb = a->r[3];
+    hcbd_real vxi = (hcbd_real)a->vx, vyi = (hcbd_real)a->vy, vzi = (hcbd_real)a->vz;
+    double sb = a->sb;
     double xx[HCBD__CHUNK], cc[HCBD__CHUNK], n0[HCBD__CHUNK], n1[HCBD__CHUNK], n2[HCBD__CHUNK];
     uint64_t key[HCBD__CHUNK];
     int t;
-    (void)u;
     HCBD__OMP(omp simd)
     for (t = 0; t < m2; ++t) {
         const double aa = 1.0 - sqrt(c->r2[t]) * invRc;
@@ -7775,26 +7891,20 @@ HCBD__INLINE void hcbd__sweep_pairs(void *ctx, int i, const hcbd__near *c, int m
         vzi = (hcbd_real)(vzi + Pz * inv_m); vz[j] = (hcbd_real)(vz[j] - Pz * inv_m);
         if (s->flux) sb += c->y[t] * Px;
     }
-    a->r[0] = vxi; a->r[1] = vyi; a->r[2] = vzi; a->r[3] = sb;
+    a->vx = vxi; a->vy = vyi; a->vz = vzi; a->sb = sb;
 }
 
-HCBD__INLINE int hcbd__sweep_end(void *ctx, int i, hcbd__acc *a)
+HCBD__INLINE int hcbd__sweep_end(hcbd__sweep_pass *s, int i, hcbd__sweep_own *a)
 {
-    const hcbd__sweep_ctx *s = (const hcbd__sweep_ctx *)ctx;
     hcbd_world *w = s->w;
-    w->vx[i] = (hcbd_real)a->r[0]; w->vy[i] = (hcbd_real)a->r[1]; w->vz[i] = (hcbd_real)a->r[2];
+    w->vx[i] = (hcbd_real)a->vx; w->vy[i] = (hcbd_real)a->vy; w->vz[i] = (hcbd_real)a->vz;
     if (HCBD__WALLS && s->wkey && hcbd__near_wall(w, w->y[i])) hcbd__morris(w, i, s->wkey, NULL, 1);
-    if (w->core.stress_on) w->fl_b[i] = (hcbd_real)a->r[3];
+    if (w->core.stress_on) w->fl_b[i] = (hcbd_real)a->sb;
     return INT_MAX;
 }
 
-/* one row of the sweep, for hcbd__colours */
-HCBD__NO_SLP static int hcbd__sweep_row(void *ctx, int rr)
-{
-    const hcbd__block_job *j = (const hcbd__block_job *)ctx;
-    return hcbd__traverse(j->T, j->list, j->start[rr], j->start[rr + 1], j->pass, hcbd__sweep_begin,
-                          hcbd__sweep_pairs, hcbd__sweep_end);
-}
+HCBD__PASS(hcbd__sweep)
+HCBD__COLOURS(hcbd__sweep)
 
 static void hcbd__shardlow(hcbd_world *w)
 {
@@ -7822,7 +7932,7 @@ static void hcbd__shardlow(hcbd_world *w)
     {
         hcbd__trav T = hcbd__trav_make(&w->nl, w->x, w->y, w->z, w->x, w->y, w->z,
                                        hcbd__box_of(w), w->p.Rc);
-        hcbd__sweep_ctx s;
+        hcbd__sweep_pass s;
         if (w->pr2_ok) T.r2in = w->pr2;
         w->pr2_ok = 0;
         s.w = w;
@@ -7834,9 +7944,7 @@ static void hcbd__shardlow(hcbd_world *w)
         s.flux = w->core.stress_on;
         {
             const int nb[3] = {ny, nz, 1}, nc[3] = {ny > 1 ? 3 : 1, nz > 1 ? 3 : 1, 1};
-            hcbd__block_job job;
-            job.T = &T; job.list = list; job.start = start; job.pass = &s;
-            hcbd__colours(nb, nc, nt, &job, hcbd__sweep_row);
+            hcbd__sweep_colours(nb, nc, nt, &T, list, start, &s);
         }
     }
 }
@@ -8308,51 +8416,47 @@ double hcbd_world_temperature(const hcbd_world *w)
     return hcbd__temperature(&s, w->p.gdot, w->p.L[1]);
 }
 
-/* Calls fn for every pair within rmax (<= the list's guaranteed range) once,
-   with x_ij = x_i - x_j: the traversal with owners in id order, partners in
-   id order, on one thread (the observables sum in double in that order). */
-typedef void (*hcbd__pair_fn)(void *ctx, int i, int j, double dx, double dy,
-                              double dz, double r2);
-typedef struct hcbd__obs_ctx {
-    hcbd__pair_fn fn;
-    void *ctx;
-} hcbd__obs_ctx;
+/* HCBD__OBSERVE(X) makes a pass of the observable X: X_pair(ps, i, j, dx,
+   dy, dz, r2) for every pair within rmax (<= the list's guaranteed range)
+   once, with x_ij = x_i - x_j, and X_run(w, rmax, ps) to run it: the
+   traversal with owners in id order, partners in id order, on one thread
+   (the observables sum in double in that order). */
+#define HCBD__OBSERVE(X)                                                                                     \
+    typedef struct X##_own {                                                                                 \
+        char none;                                                                                           \
+    } X##_own;                                                                                               \
+    HCBD__INLINE void X##_begin(const X##_pass *ps, int i, X##_own *o) { (void)ps; (void)i; (void)o; }       \
+    HCBD__INLINE void X##_pairs(X##_pass *ps, int i, const hcbd__near *c, int m, X##_own *o)                 \
+    {                                                                                                        \
+        int t;                                                                                               \
+        (void)o;                                                                                             \
+        for (t = 0; t < m; ++t) X##_pair(ps, i, c->j[t], c->x[t], c->y[t], c->z[t], c->r2[t]);               \
+    }                                                                                                        \
+    HCBD__INLINE int X##_end(X##_pass *ps, int i, X##_own *o)                                                \
+    {                                                                                                        \
+        (void)ps; (void)i; (void)o;                                                                          \
+        return INT_MAX;                                                                                      \
+    }                                                                                                        \
+    HCBD__PASS(X)                                                                                            \
+    static hcbd_result X##_run(hcbd_world *w, double rmax, X##_pass *ps)                                     \
+    {                                                                                                        \
+        hcbd__trav T;                                                                                        \
+        hcbd_result r = hcbd__ensure_list(w);                                                                \
+        if (r != HCBD_OK) return r;                                                                          \
+        T = hcbd__trav_make(&w->nl, w->x, w->y, w->z, w->x, w->y, w->z, hcbd__box_of(w), rmax);              \
+        X##_traverse(&T, w->slot, 0, w->n, ps);                                                              \
+        return HCBD_OK;                                                                                      \
+    }
 
-HCBD__INLINE void hcbd__obs_pairs(void *ctx, int i, const hcbd__near *c, int m, hcbd__acc *a,
-                                 hcbd__terms *u)
+/* the virial's pair sum, sum_ij -x_ij F_ij */
+typedef struct hcbd__virial_pass {
+    hcbd_world *w;
+    double s[9];
+} hcbd__virial_pass;
+
+HCBD__INLINE void hcbd__virial_pair(hcbd__virial_pass *s, int i, int j, double dx, double dy, double dz,
+                                    double r2)
 {
-    const hcbd__obs_ctx *o = (const hcbd__obs_ctx *)ctx;
-    int t;
-    (void)a; (void)u;
-    for (t = 0; t < m; ++t) o->fn(o->ctx, i, c->j[t], c->x[t], c->y[t], c->z[t], c->r2[t]);
-}
-
-HCBD__INLINE int hcbd__obs_end(void *ctx, int i, hcbd__acc *a)
-{
-    (void)ctx; (void)i; (void)a;
-    return INT_MAX;
-}
-
-static hcbd_result hcbd__for_pairs(hcbd_world *w, double rmax, hcbd__pair_fn fn,
-                                   void *ctx)
-{
-    hcbd__obs_ctx o;
-    hcbd__trav T;
-    hcbd_result r = hcbd__ensure_list(w);
-    if (r != HCBD_OK) return r;
-    T = hcbd__trav_make(&w->nl, w->x, w->y, w->z, w->x, w->y, w->z, hcbd__box_of(w), rmax);
-    o.fn = fn;
-    o.ctx = ctx;
-    hcbd__traverse(&T, w->slot, 0, w->n, &o, hcbd__ev_zero, hcbd__obs_pairs, hcbd__obs_end);
-    return HCBD_OK;
-}
-
-typedef struct { hcbd_world *w; double s[9]; double e; } hcbd__stress_ctx;
-
-static void hcbd__stress_fn(void *c, int i, int j, double dx, double dy, double dz,
-                            double r2)
-{
-    hcbd__stress_ctx *s = (hcbd__stress_ctx *)c;
     double fr = hcbd__force_over_r(s->w, sqrt(r2), r2), d[3];
     int k, l;
     (void)i; (void)j;
@@ -8361,17 +8465,25 @@ static void hcbd__stress_fn(void *c, int i, int j, double dx, double dy, double 
         for (l = 0; l < 3; ++l) s->s[3 * k + l] -= d[k] * fr * d[l];
 }
 
-static void hcbd__energy_fn(void *c, int i, int j, double dx, double dy, double dz,
-                            double r2)
+HCBD__OBSERVE(hcbd__virial)
+
+typedef struct hcbd__energy_pass {
+    hcbd_world *w;
+    double e;
+} hcbd__energy_pass;
+
+HCBD__INLINE void hcbd__energy_pair(hcbd__energy_pass *s, int i, int j, double dx, double dy, double dz,
+                                    double r2)
 {
-    hcbd__stress_ctx *s = (hcbd__stress_ctx *)c;
     (void)i; (void)j; (void)dx; (void)dy; (void)dz;
     s->e += hcbd__pair_energy(s->w, sqrt(r2));
 }
 
+HCBD__OBSERVE(hcbd__energy)
+
 hcbd_result hcbd_world_virial_stress(hcbd_world *w, double s[9])
 {
-    hcbd__stress_ctx c;
+    hcbd__virial_pass c;
     hcbd_result r;
     int k;
     if (!w) return HCBD_ERR_NULL;
@@ -8380,7 +8492,7 @@ hcbd_result hcbd_world_virial_stress(hcbd_world *w, double s[9])
     memset(&c, 0, sizeof c);
     c.w = w;
     if (w->p.potential != HCBD_POT_IDEAL && w->n > 0) {
-        r = hcbd__for_pairs(w, w->p.rcut, hcbd__stress_fn, &c);
+        r = hcbd__virial_run(w, w->p.rcut, &c);
         if (r != HCBD_OK) return r;
     }
     for (k = 0; k < 9; ++k) s[k] = c.s[k] / (w->p.L[0] * w->p.L[1] * w->p.L[2]);
@@ -8389,12 +8501,12 @@ hcbd_result hcbd_world_virial_stress(hcbd_world *w, double s[9])
 
 double hcbd_world_potential_energy(hcbd_world *w)
 {
-    hcbd__stress_ctx c;
+    hcbd__energy_pass c;
     if (!w) return 0.0;
     memset(&c, 0, sizeof c);
     c.w = w;
     if (w->p.potential != HCBD_POT_IDEAL && w->n > 0)
-        if (hcbd__for_pairs(w, w->p.rcut, hcbd__energy_fn, &c) != HCBD_OK) return NAN;
+        if (hcbd__energy_run(w, w->p.rcut, &c) != HCBD_OK) return NAN;
     return c.e;
 }
 
@@ -8417,11 +8529,17 @@ static double hcbd__pair_lap(const hcbd_world *w, double r)
     }
 }
 
-typedef struct { hcbd_world *w; double *acc; int c; double lap; } hcbd__tconf_ctx;
+/* component c of the pair forces into acc, and the Laplacian's pair sum */
+typedef struct hcbd__tconf_pass {
+    hcbd_world *w;
+    double *acc;
+    int c;
+    double lap;
+} hcbd__tconf_pass;
 
-static void hcbd__tconf_fn(void *c, int i, int j, double dx, double dy, double dz, double r2)
+HCBD__INLINE void hcbd__tconf_pair(hcbd__tconf_pass *t, int i, int j, double dx, double dy, double dz,
+                                   double r2)
 {
-    hcbd__tconf_ctx *t = (hcbd__tconf_ctx *)c;
     const double r = sqrt(r2), d = t->c == 0 ? dx : (t->c == 1 ? dy : dz);
     const double F = hcbd__force_over_r(t->w, r, r2) * d;
     t->acc[i] += F;
@@ -8429,9 +8547,11 @@ static void hcbd__tconf_fn(void *c, int i, int j, double dx, double dy, double d
     if (t->c == 0) t->lap += 2.0 * hcbd__pair_lap(t->w, r);
 }
 
+HCBD__OBSERVE(hcbd__tconf)
+
 hcbd_result hcbd_world_config_temperature(hcbd_world *w, double out[2])
 {
-    hcbd__tconf_ctx t;
+    hcbd__tconf_pass t;
     hcbd_result r;
     int i;
     if (!w || !out) return HCBD_ERR_NULL;
@@ -8448,7 +8568,7 @@ hcbd_result hcbd_world_config_temperature(hcbd_world *w, double out[2])
     /* one component at a time: the scratch array holds n doubles */
     for (t.c = 0; t.c < 3; ++t.c) {
         for (i = 0; i < w->n; ++i) t.acc[i] = 0.0;
-        if ((r = hcbd__for_pairs(w, w->p.rcut, hcbd__tconf_fn, &t)) != HCBD_OK) return r;
+        if ((r = hcbd__tconf_run(w, w->p.rcut, &t)) != HCBD_OK) return r;
         for (i = 0; i < w->n; ++i) {
             double F = t.acc[i];
 #if HCBD__WALLS
@@ -8474,20 +8594,26 @@ hcbd_result hcbd_world_config_temperature(hcbd_world *w, double out[2])
     return HCBD_OK;
 }
 
-typedef struct { hcbd_world *w; double *f; } hcbd__forces_obs_ctx;
+/* the pair forces by id into f */
+typedef struct hcbd__fobs_pass {
+    hcbd_world *w;
+    double *f;
+} hcbd__fobs_pass;
 
-static void hcbd__force_fn(void *c, int i, int j, double dx, double dy, double dz, double r2)
+HCBD__INLINE void hcbd__fobs_pair(hcbd__fobs_pass *t, int i, int j, double dx, double dy, double dz,
+                                  double r2)
 {
-    hcbd__forces_obs_ctx *t = (hcbd__forces_obs_ctx *)c;
     const double fr = hcbd__force_over_r(t->w, sqrt(r2), r2);
     double *fi = t->f + 3 * (size_t)t->w->id[i], *fj = t->f + 3 * (size_t)t->w->id[j];
     fi[0] += fr * dx; fi[1] += fr * dy; fi[2] += fr * dz;
     fj[0] -= fr * dx; fj[1] -= fr * dy; fj[2] -= fr * dz;
 }
 
+HCBD__OBSERVE(hcbd__fobs)
+
 hcbd_result hcbd_world_forces(hcbd_world *w, double *f)
 {
-    hcbd__forces_obs_ctx t;
+    hcbd__fobs_pass t;
     hcbd_result r;
     int k, d;
     if (!w) return HCBD_ERR_NULL;
@@ -8498,7 +8624,7 @@ hcbd_result hcbd_world_forces(hcbd_world *w, double *f)
     t.w = w;
     t.f = f;
     if (w->p.potential != HCBD_POT_IDEAL && w->n > 1 &&
-        (r = hcbd__for_pairs(w, w->p.rcut, hcbd__force_fn, &t)) != HCBD_OK)
+        (r = hcbd__fobs_run(w, w->p.rcut, &t)) != HCBD_OK)
         return r;
     for (k = 0; HCBD__WALLS && w->has_gauss && k < w->n; ++k) {
         f[3 * k + 1] += hcbd__wall_fy(w, w->y[w->slot[k]]);
@@ -8506,12 +8632,15 @@ hcbd_result hcbd_world_forces(hcbd_world *w, double *f)
     return HCBD_OK;
 }
 
-typedef struct { hcbd_world *w; double k[3]; double s[3]; } hcbd__fric_ctx;
+/* the friction's pair sums at wave vector k */
+typedef struct hcbd__fric_pass {
+    hcbd_world *w;
+    double k[3], s[3];
+} hcbd__fric_pass;
 
-static void hcbd__fric_fn(void *c, int i, int j, double dx, double dy, double dz,
-                          double r2)
+HCBD__INLINE void hcbd__fric_pair(hcbd__fric_pass *f, int i, int j, double dx, double dy, double dz,
+                                  double r2)
 {
-    hcbd__fric_ctx *f = (hcbd__fric_ctx *)c;
     hcbd_world *w = f->w;
     double a = 1.0 - sqrt(r2) / w->p.Rc;
     /* f_ij = S_ij / m = cf m (1/rho_i + 1/rho_j) (1 - r/Rc)^3 = f_ji */
@@ -8523,9 +8652,11 @@ static void hcbd__fric_fn(void *c, int i, int j, double dx, double dy, double dz
     f->s[2] += 2.0 * fij * c3 / 3.0;
 }
 
+HCBD__OBSERVE(hcbd__fric)
+
 hcbd_result hcbd_world_friction_average(hcbd_world *w, int nk, double out[3])
 {
-    hcbd__fric_ctx c;
+    hcbd__fric_pass c;
     hcbd_result r;
     int d;
     if (!w) return HCBD_ERR_NULL;
@@ -8545,7 +8676,7 @@ hcbd_result hcbd_world_friction_average(hcbd_world *w, int nk, double out[3])
     memset(&c, 0, sizeof c);
     c.w = w;
     for (d = 0; d < 3; ++d) c.k[d] = 2.0 * HCBD__PI * nk / w->p.L[d];
-    r = hcbd__for_pairs(w, w->p.Rc, hcbd__fric_fn, &c);
+    r = hcbd__fric_run(w, w->p.Rc, &c);
     if (r != HCBD_OK) return r;
     for (d = 0; d < 3; ++d) out[d] = c.s[d] / w->n;
     return HCBD_OK;
@@ -8646,10 +8777,12 @@ static void hcbd__rdf_close(hcbd_rdf *g)
     g->blocks++;
 }
 
-static void hcbd__rdf_fn(void *c, int i, int j, double dx, double dy, double dz,
-                         double r2)
+/* a pair into the histogram */
+typedef hcbd_rdf hcbd__rdf_pass;
+
+HCBD__INLINE void hcbd__rdf_pair(hcbd__rdf_pass *g, int i, int j, double dx, double dy, double dz,
+                                 double r2)
 {
-    hcbd_rdf *g = (hcbd_rdf *)c;
     int b = (int)(sqrt(r2) / g->dr);
     (void)i; (void)j; (void)dx; (void)dy; (void)dz;
     if (b < g->nbins) {
@@ -8657,6 +8790,8 @@ static void hcbd__rdf_fn(void *c, int i, int j, double dx, double dy, double dz,
         if (g->cur) g->cur[b] += 1.0;
     }
 }
+
+HCBD__OBSERVE(hcbd__rdf)
 
 hcbd_result hcbd_rdf_sample(hcbd_rdf *g, hcbd_world *w)
 {
@@ -8671,7 +8806,7 @@ hcbd_result hcbd_rdf_sample(hcbd_rdf *g, hcbd_world *w)
         return hcbd__fail(&w->err, HCBD_ERR_PARAM, w->step, -1,
                           "g(r) rmax = %g exceeds half the shortest box edge", g->rmax);
     if (w->has_pairs && g->rmax <= w->cutmax) {
-        hcbd_result r = hcbd__for_pairs(w, g->rmax, hcbd__rdf_fn, g);
+        hcbd_result r = hcbd__rdf_run(w, g->rmax, g);
         if (r != HCBD_OK) return r;
     } else {
         for (i = 0; i < w->n; ++i)
@@ -8680,7 +8815,7 @@ hcbd_result hcbd_rdf_sample(hcbd_rdf *g, hcbd_world *w)
                 hcbd__delta(w, (double)w->x[i] - w->x[j], (double)w->y[i] - w->y[j],
                             (double)w->z[i] - w->z[j], d);
                 r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-                if (r2 < g->rmax * g->rmax) hcbd__rdf_fn(g, i, j, d[0], d[1], d[2], r2);
+                if (r2 < g->rmax * g->rmax) hcbd__rdf_pair(g, i, j, d[0], d[1], d[2], r2);
             }
     }
     V = w->p.L[0] * w->p.L[1] * w->p.L[2];

@@ -25,30 +25,41 @@
 typedef struct {
     int64_t *acc;
     double ic2;
-} bare_ctx;
+} bare_pass;
 
-HCBD__INLINE void bare_pairs(void *ctx, int i, const hcbd__near *c, int m, hcbd__acc *a, hcbd__terms *u)
+typedef struct {
+    int64_t w;
+} bare_own;
+
+HCBD__INLINE void bare_begin(const bare_pass *b, int i, bare_own *a)
 {
-    const bare_ctx *b = (const bare_ctx *)ctx;
+    (void)b; (void)i;
+    a->w = 0;
+}
+
+HCBD__INLINE void bare_pairs(bare_pass *b, int i, const hcbd__near *c, int m, bare_own *a)
+{
     int64_t v[HCBD__CHUNK], *HCBD__RESTRICT acc = b->acc;
     int t;
-    (void)i; (void)u;
+    (void)i;
     HCBD__OMP(omp simd)
     for (t = 0; t < m; ++t) {
         const double s = 1.0 - c->r2[t] * b->ic2;
         v[t] = hcbd__fix(1e12 * s * s);
     }
     for (t = 0; t < m; ++t) {
-        a->q[0] += v[t];
+        a->w += v[t];
         acc[c->j[t]] += v[t];
     }
 }
 
-HCBD__INLINE int bare_end(void *ctx, int i, hcbd__acc *a)
+HCBD__INLINE int bare_end(bare_pass *b, int i, bare_own *a)
 {
-    ((bare_ctx *)ctx)->acc[i] += a->q[0];
+    b->acc[i] += a->w;
     return INT_MAX;
 }
+
+HCBD__PASS(bare)
 
 /* over list L of owners at x, y, z and partners at X, Y, Z within cut */
 static int64_t bare(const hcbd_hc_world *w, const hcbd__nlist *L, int n, const hcbd_real *x, const hcbd_real *y,
@@ -56,13 +67,13 @@ static int64_t bare(const hcbd_hc_world *w, const hcbd__nlist *L, int n, const h
                     int64_t *acc)
 {
     const hcbd__trav T = hcbd__trav_make(L, x, y, z, X, Y, Z, hcbd__hc_box(w), cut);
-    bare_ctx b;
+    bare_pass b;
     int64_t tot = 0;
     int i;
     b.acc = acc;
     b.ic2 = 1.0 / (cut * cut);
     memset(acc, 0, sizeof(int64_t) * (size_t)(w->nf + w->np + 1));
-    hcbd__traverse(&T, L->perm, 0, n, &b, hcbd__ev_zero, bare_pairs, bare_end);
+    bare_traverse(&T, L->perm, 0, n, &b);
     for (i = 0; i < n; ++i) tot += acc[i];
     return tot;
 }

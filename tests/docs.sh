@@ -5,7 +5,8 @@
 # README.md and docs/*.md) is one make knows how to build, so that a quoted
 # command cannot outlive its program (build/logs, build/prefix and
 # build/lammps are folders that make test and make lammps create), and
-# every mutant's pattern (tests/mutants/mutants.txt) is found.
+# every mutant's pattern (tests/mutants/mutants.txt) is found, and no
+# function in hcbd.h is longer than 80 lines.
 # Ends with "N passed, N failed".
 cd "$(dirname "$0")/.." || exit 1
 out=$(tests/banners.sh hcbd.h)
@@ -28,6 +29,20 @@ for p in $progs; do
     fi
 done
 echo "docs: $(echo "$progs" | wc -w) programs quoted in README.md and docs/"
+# no function in the header is longer than 80 lines (issue 64): from the
+# line that names it to its closing brace in column 0
+long=$(awk '
+    /^[A-Za-z_].*\(/ && !/;[ \t]*$/ && !/^(typedef|struct|enum|union|#)/ { sig = $0; at = NR; next }
+    /^\{/ && sig != "" { name = sig; start = at; infn = 1; sig = ""; next }
+    infn && /^\}/ { if (NR - start + 1 > 80) { sub(/\(.*/, "", name); print "docs: " name " is " NR - start + 1 " lines (limit 80)" }
+                    infn = 0; next }
+    !infn && /;[ \t]*$/ { sig = "" }' hcbd.h)
+if [ -z "$long" ]; then
+    passed=$((passed + 1))
+else
+    echo "$long"
+    failed=$((failed + 1))
+fi
 # every injected error of make mutants still finds its text exactly once:
 # code rewritten around a pattern would otherwise drop that mutant from
 # the check unseen until make mutants runs (it is not part of make test)

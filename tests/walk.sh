@@ -2,7 +2,9 @@
 # The HCBD step read as a walk through hcbd.h: starting at
 # hcbd_hc_world_step, each function defined in the header is read once, at
 # its first call (depth first, in the order the calls stand in the code;
-# a function handed on as a callback counts as called there).  Prints the
+# a function handed on as a callback counts as called there; one that a
+# macro writes, HCBD__PASS(X) and its kin, stands where the macro is used
+# and calls what the macro's body calls).  Prints the
 # walk and the mean distance in lines between the definitions of
 # consecutive functions along it; fails above the limit (issue 64: a step
 # reads forward through the file).  make test runs it (tests/docs.sh).
@@ -37,8 +39,63 @@ function strip(s,    out, i, c, n) {
     }
     return out
 }
+# a macro that writes functions (HCBD__PASS(X) and its kin): its body and
+# the names of the functions it defines, for its uses below
+function subst(s, p, a,    out, k) {
+    gsub(p "##", a, s)
+    out = ""
+    while (match(s, "(^|[^A-Za-z0-9_])" p "([^A-Za-z0-9_]|$)")) {
+        k = substr(s, RSTART, RLENGTH)
+        sub(p, a, k)
+        out = out substr(s, 1, RSTART - 1) k
+        s = substr(s, RSTART + RLENGTH)
+    }
+    return out s
+}
+function expand(name, argstr, s,    na, a, np, pp, k) {
+    np = split(mparams[name], pp, /[ \t]*,[ \t]*/)
+    na = split(argstr, a, /[ \t]*,[ \t]*/)
+    for (k = 1; k <= np && k <= na; k++) s = subst(s, pp[k], a[k])
+    return s
+}
 {
     line = strip($0)
+    if (inmac) {
+        mbody[inmac] = mbody[inmac] " " line
+        if (line ~ /^[ \t]*(HCBD__INLINE|HCBD__NO_SLP|static)[ \t]/ && line ~ /\(/) {
+            s = line
+            sub(/\(.*/, "", s)
+            n = split(s, w, /[^A-Za-z0-9_#]+/)
+            mdefs[inmac] = mdefs[inmac] " " w[n]
+        }
+        if (line !~ /\\[ \t]*$/) inmac = ""
+        next
+    }
+    if (line ~ /^#define HCBD__[A-Z_]+\([A-Za-z_, ]+\)[ \t]*\\[ \t]*$/) {
+        s = line
+        sub(/^#define /, "", s)
+        inmac = s
+        sub(/\(.*/, "", inmac)
+        sub(/^[^(]*\(/, "", s)
+        sub(/\).*/, "", s)
+        mparams[inmac] = s
+        mbody[inmac] = ""
+        mdefs[inmac] = ""
+        next
+    }
+    if (!infn && line ~ /^HCBD__[A-Z_]+\([^()]*\)[ \t]*$/) {
+        s = line
+        sub(/\(.*/, "", s)
+        if (s in mbody) {
+            a = line
+            sub(/^[^(]*\(/, "", a)
+            sub(/\).*/, "", a)
+            n = split(expand(s, a, mdefs[s]), w, /[ \t]+/)
+            for (k = 1; k <= n; k++)
+                if (w[k] != "" && !(w[k] in defline)) { defline[w[k]] = NR; body[w[k]] = expand(s, a, mbody[s]) }
+            next
+        }
+    }
     if (infn) {
         if (line ~ /^}/) { infn = 0; next }
         body[cur] = body[cur] " " line
