@@ -3145,7 +3145,8 @@ HCBD__INLINE int hcbd__gather_art(const hcbd__wallset *s, const double L[3], hcb
    hcbd__gather_kept), the artificial wall particles around it
    (hcbd__gather_art), or a transposed list's entries (hcbd__gather_map).
    A pass X is typed, as HOOMD-blue's pair evaluators are: a struct
-   X_pass (its constants and the arrays it reads and writes, by name), a
+   X_pass (its constants and the arrays it reads and writes, by name: the
+   partners' fields it reads among them, not read through the world), a
    struct X_own (an owner's running sums, by name), and three inline
    functions
        void X_begin(const X_pass *, int i, X_own *)   the owner's state
@@ -3162,10 +3163,14 @@ HCBD__INLINE int hcbd__gather_art(const hcbd__wallset *s, const double L[3], hcb
    entry zeroed in the skin and, with hcbd__rev_add, their partner side;
    a pass owns one equation, from the pair terms of its model
    (hcbd__weight, hcbd__star_table, hcbd__sdt; hcbd__rapid,
-   hcbd__flory_fr, hcbd__spring_fr, hcbd__tait_fr, hcbd__morris_f), and
-   adds its fixed-point terms to both sides itself (hcbd__scatter).  The
-   schedulers (slabs: HCBD__SLABS; colours: HCBD__COLOURS) hand it ranges
-   of owners.  A pass with nothing kept and its partners from the list
+   hcbd__flory_fr, hcbd__spring_fr, hcbd__tait_fr, hcbd__morris_f), reads
+   its partners' fields by index inside its own SIMD loops, and adds its
+   fixed-point terms to both sides itself (hcbd__scatter).  (Staged by the
+   loop into a chunk of their own before the pass, the partners' fields
+   cost 2 to 31 % per pass: the Euler pairs 12 %, the redistribution 31 %,
+   which would also stage the skin's entries; bench/roofline, 5
+   interleaved runs.)  The schedulers (slabs: HCBD__SLABS; colours:
+   HCBD__COLOURS) hand it ranges of owners.  A pass with nothing kept and its partners from the list
    takes the loop's lean form (hcbd__trav_lean).  A pass whose terms need
    only the separation may take the streamed form below instead (same
    owners, same partners, same bits, the same scatter). */
@@ -4075,6 +4080,7 @@ typedef struct hcbd__hc_poly {
     int tr, fc, stress;
     int64_t created, total, coinc; /* per thread */
     int most;
+    const hcbd_real *mu;           /* the partners' mu(phi)             */
 } hcbd__hc_poly;
 typedef hcbd__hc_poly hcbd__hc_pdens_pass;
 typedef hcbd__hc_poly hcbd__hc_pforce_pass;
@@ -4093,6 +4099,7 @@ static hcbd__hc_poly hcbd__hc_poly_of(hcbd_hc_world *w)
     c.tr = w->transient;
     c.fc = w->has_fc;
     c.stress = w->core.stress_on;
+    c.mu = w->pmu;
     return c;
 }
 
@@ -4215,7 +4222,7 @@ HCBD__INLINE void hcbd__hc_pforce_pairs(hcbd__hc_poly *s, int a, const hcbd__nea
     const size_t cap = s->cap, o0 = (size_t)a * cap;
     const int fc = s->fc, tr = s->tr, on = tr && !w->fresh_pairs ? w->pair_n[a] : 0;
     const int32_t *ob = w->pair_b + o0;
-    const hcbd_real *ol = w->pair_l + o0, *HCBD__RESTRICT mu = w->pmu;
+    const hcbd_real *ol = w->pair_l + o0, *HCBD__RESTRICT mu = s->mu;
     int32_t *nb = w->pair_b2 + o0;
     hcbd_real *nl = w->pair_l2 + o0, *ne = w->pair_eq2 + o0;
     /* the merge with the old list goes pair by pair; the forces, apart
@@ -4366,6 +4373,7 @@ typedef struct hcbd__hc_interp_pass {
     hcbd_hc_world *w;
     double rc, sg, A, inv_xi, vj;
     int shep, stress;
+    const hcbd_real *n, *vx, *vy, *vz; /* the partner blobs' n and v */
 } hcbd__hc_interp_pass;
 
 typedef struct hcbd__hc_interp_own {
@@ -4386,9 +4394,8 @@ HCBD__INLINE void hcbd__hc_interp_begin(const hcbd__hc_interp_pass *s, int a, hc
 HCBD__INLINE void hcbd__hc_interp_pairs(hcbd__hc_interp_pass *s, int a, const hcbd__near *c, int m,
                                         hcbd__hc_interp_own *o)
 {
-    const hcbd_hc_world *w = s->w;
-    const hcbd_real *HCBD__RESTRICT sn = w->sn;
-    double *HCBD__RESTRICT xw = w->xw, wr[HCBD__CHUNK], wn[HCBD__CHUNK];
+    const hcbd_real *HCBD__RESTRICT sn = s->n;
+    double *HCBD__RESTRICT xw = s->w->xw, wr[HCBD__CHUNK], wn[HCBD__CHUNK];
     int t;
     (void)a;
     HCBD__OMP(omp simd)
@@ -4402,9 +4409,9 @@ HCBD__INLINE void hcbd__hc_interp_pairs(hcbd__hc_interp_pass *s, int a, const hc
         const double wt = wn[t];
         double v[3];
         /* the image of blob i moves with the velocity of its layer */
-        v[0] = w->svx[i] + c->k[t] * s->vj;
-        v[1] = w->svy[i];
-        v[2] = w->svz[i];
+        v[0] = s->vx[i] + c->k[t] * s->vj;
+        v[1] = s->vy[i];
+        v[2] = s->vz[i];
         if (o->first) {
             o->vref[0] = v[0]; o->vref[1] = v[1]; o->vref[2] = v[2];
             o->first = 0;
@@ -4456,6 +4463,7 @@ static int hcbd__hc_interp(hcbd_hc_world *w)
     s.vj = w->core.le_vjump;
     s.shep = w->p.coupling == HCBD_COUPLE_SHEPARD;
     s.stress = w->core.stress_on;
+    s.n = w->sn; s.vx = w->svx; s.vy = w->svy; s.vz = w->svz;
     T.ent = w->xw; /* the weights, for the redistribution */
     T.ne = 1;
     HCBD__OMP(omp parallel num_threads(nt) reduction(min:bad))
@@ -4473,6 +4481,8 @@ static int hcbd__hc_interp(hcbd_hc_world *w)
    interpolation kept. */
 typedef struct hcbd__hc_redist_pass {
     hcbd_hc_world *w;
+    const hcbd_real *S, *Fx, *Fy, *Fz; /* the partner polymers' psi
+                                         normaliser and force */
 } hcbd__hc_redist_pass;
 
 typedef struct hcbd__hc_redist_own {
@@ -4492,11 +4502,11 @@ HCBD__INLINE void hcbd__hc_redist_pairs(hcbd__hc_redist_pass *s, int i, const hc
     int t;
     for (t = 0; t < m; ++t) {
         const int a = c->j[t];
-        const double wt = w->xw[c->e[t]], psi = wt / w->sn[i] / w->pS[a];
+        const double wt = w->xw[c->e[t]], psi = wt / w->sn[i] / s->S[a];
         if (wt == 0) continue; /* beyond rc */
-        o->fx += psi * w->pFx[a];
-        o->fy += psi * w->pFy[a];
-        o->fz += psi * w->pFz[a];
+        o->fx += psi * s->Fx[a];
+        o->fy += psi * s->Fy[a];
+        o->fz += psi * s->Fz[a];
     }
 }
 
@@ -4527,6 +4537,7 @@ static void hcbd__hc_redistribute(hcbd_hc_world *w)
         hcbd__hc_redist_pass s;
         int64_t lo, hi;
         s.w = w;
+        s.S = w->pS; s.Fx = w->pFx; s.Fy = w->pFy; s.Fz = w->pFz;
         hcbd__share(w->nf, &lo, &hi);
         hcbd__hc_redist_traverse(&T, w->lf.perm, (int)lo, (int)hi, &s);
     }
@@ -4566,6 +4577,9 @@ typedef struct hcbd__hc_sweep_pass {
     double dt, ih, c1h, m, inv_m, kT, vj, rate0, qF, lim;
     uint64_t skey;
     int noise, stress;
+    hcbd_real *vx, *vy, *vz;         /* the blobs' velocities, updated    */
+    const hcbd_real *In, *Pn2;       /* the partners' 1/n and P/n^2       */
+    const int32_t *id;               /* and ids                           */
 } hcbd__hc_sweep_pass;
 
 /* the traversal's lean form */
@@ -4590,9 +4604,9 @@ HCBD__INLINE void hcbd__hc_sweep_pairs(hcbd__hc_sweep_pass *s, int i, const hcbd
     hcbd_hc_world *w = s->w;
     const double m = s->m, inv_m = s->inv_m, vj = s->vj, qF = s->qF, lim = s->lim;
     const double rate = s->rate0 * w->sIn[i], Pi = w->sP[i]; /* 2 f dt/m over wdr/n_j */
-    hcbd_real *HCBD__RESTRICT vx = w->svx, *HCBD__RESTRICT vy = w->svy, *HCBD__RESTRICT vz = w->svz;
-    const hcbd_real *HCBD__RESTRICT In = w->sIn, *HCBD__RESTRICT Pn2 = w->sP;
-    const int32_t *HCBD__RESTRICT fid = w->fid;
+    hcbd_real *HCBD__RESTRICT vx = s->vx, *HCBD__RESTRICT vy = s->vy, *HCBD__RESTRICT vz = s->vz;
+    const hcbd_real *HCBD__RESTRICT In = s->In, *HCBD__RESTRICT Pn2 = s->Pn2;
+    const int32_t *HCBD__RESTRICT fid = s->id;
     const int32_t idi = fid[i];
     double vxi = a->vx, vyi = a->vy, vzi = a->vz, x[HCBD__CHUNK], om[HCBD__CHUNK], f0[HCBD__CHUNK];
     int64_t u0[HCBD__CHUNK], u1[HCBD__CHUNK], u2[HCBD__CHUNK];
@@ -4686,6 +4700,8 @@ static int hcbd__hc_fluid_shardlow(hcbd_hc_world *w, double dt, uint64_t skey)
     sc.skey = skey;
     sc.noise = w->noise_f;
     sc.stress = w->core.stress_on;
+    sc.vx = w->svx; sc.vy = w->svy; sc.vz = w->svz;
+    sc.In = w->sIn; sc.Pn2 = w->sP; sc.id = w->fid;
     nblk = hcbd__hc_sweep_blocks(&w->p, t, nb, nc, NULL);
     nfine = hcbd__hc_fine_cells(&w->p, nfc);
     f[0] = nb[0] / L[0]; f[1] = nb[1] / L[1]; f[2] = nb[2] / L[2];
@@ -4722,6 +4738,8 @@ typedef struct hcbd__hc_kick_pass {
     double ih, c1h, two_eta, sn, vj, qF, lim;
     uint64_t skey;
     int noise, stress;
+    const hcbd_real *vx, *vy, *vz, *Pn2, *In; /* the partners' v, P/n^2, 1/n */
+    const int32_t *id;                        /* and ids                   */
 } hcbd__hc_kick_pass;
 
 /* the traversal's lean form */
@@ -4745,9 +4763,9 @@ HCBD__INLINE void hcbd__hc_kick_pairs(hcbd__hc_kick_pass *s, int i, const hcbd__
                                       hcbd__hc_kick_own *a)
 {
     const hcbd_hc_world *w = s->w;
-    const hcbd_real *HCBD__RESTRICT vx = w->svx, *HCBD__RESTRICT vy = w->svy;
-    const hcbd_real *HCBD__RESTRICT vz = w->svz, *HCBD__RESTRICT Pn2 = w->sP, *HCBD__RESTRICT In = w->sIn;
-    const int32_t *HCBD__RESTRICT fid = w->fid;
+    const hcbd_real *HCBD__RESTRICT vx = s->vx, *HCBD__RESTRICT vy = s->vy;
+    const hcbd_real *HCBD__RESTRICT vz = s->vz, *HCBD__RESTRICT Pn2 = s->Pn2, *HCBD__RESTRICT In = s->In;
+    const int32_t *HCBD__RESTRICT fid = s->id;
     const double vxi = a->vx, vyi = a->vy, vzi = a->vz, Pi = a->Pn2, ini = a->in;
     const double qF = s->qF, lim = s->lim, ih = s->ih, c1h = s->c1h, two_eta = s->two_eta, vj = s->vj;
     /* the deterministic forces in a SIMD loop, the noise (one draw per
@@ -4832,6 +4850,7 @@ HCBD__INLINE int hcbd__hc_kick_run(hcbd_hc_world *w, int q0, int q1, const int n
     s.qF = w->core.qF; s.lim = w->core.limF;
     s.skey = w->kick_key;
     s.noise = noise; s.stress = stress;
+    s.vx = w->svx; s.vy = w->svy; s.vz = w->svz; s.Pn2 = w->sP; s.In = w->sIn; s.id = w->fid;
     return hcbd__hc_kick_traverse(&T, w->lf.perm, q0, q1, &s);
 }
 
@@ -7514,6 +7533,8 @@ typedef struct hcbd__force_pass {
     double vle, rc2, Rc2, invRc, cs, two_kT, cwq, qF, qP, limF, limP;
     uint64_t skey;
     hcbd__box box;
+    const hcbd_real *vx, *vy, *vz, *irho; /* the partners' v and 1/rho */
+    const int32_t *id;                    /* and ids                    */
 } hcbd__force_pass;
 
 HCBD__INLINE hcbd__force_pass hcbd__force_pass_of(hcbd_world *w, const int pot, const int fric,
@@ -7535,6 +7556,7 @@ HCBD__INLINE hcbd__force_pass hcbd__force_pass_of(hcbd_world *w, const int pot, 
     f.qF = w->core.qF; f.qP = w->qP; f.limF = w->core.limF; f.limP = w->limP;
     f.skey = hcbd__step_key(w, w->step);
     f.box = hcbd__box_of(w);
+    f.vx = w->vx; f.vy = w->vy; f.vz = w->vz; f.irho = w->inv_rho; f.id = w->id;
     return f;
 }
 
@@ -7584,15 +7606,15 @@ HCBD__INLINE void hcbd__force_pairs(hcbd__force_pass *f, int i, const hcbd__near
         if (f->gibd && r2 < Rc2) {
             const double qq = r * f->invRc, aa = 1.0 - qq;
             if (f->fric) {
-                const double sdt = hcbd__sdt(f->cs, iri, w->inv_rho[j], aa); /* S dt/tau */
+                const double sdt = hcbd__sdt(f->cs, iri, f->irho[j], aa); /* S dt/tau */
                 /* j's image across the sheared boundary moves faster by
                    k gdot Ly */
-                Px = sdt * (w->vx[j] + k * f->vle - vxi);
-                Py = sdt * (w->vy[j] - vyi);
-                Pz = sdt * (w->vz[j] - vzi);
+                Px = sdt * (f->vx[j] + k * f->vle - vxi);
+                Py = sdt * (f->vy[j] - vyi);
+                Pz = sdt * (f->vz[j] - vzi);
                 if (f->noise) {
                     double z3[3], b = sqrt(f->two_kT * sdt);
-                    hcbd__noise3(w, hcbd__pair_key(f->skey, idi, w->id[j]), z3);
+                    hcbd__noise3(w, hcbd__pair_key(f->skey, idi, f->id[j]), z3);
                     Px += b * z3[0]; Py += b * z3[1]; Pz += b * z3[2];
                 }
                 bad |= !(fabs(Px) <= f->limP && fabs(Py) <= f->limP && fabs(Pz) <= f->limP);
@@ -7814,6 +7836,9 @@ typedef struct hcbd__sweep_pass {
     double m, inv_m, kT, vle, invRc, cs;
     uint64_t skey, wkey;
     int noise, flux;
+    hcbd_real *vx, *vy, *vz;   /* the particles' velocities, updated */
+    const hcbd_real *irho;     /* the partners' 1/rho                */
+    const int32_t *id;         /* and ids                            */
 } hcbd__sweep_pass;
 
 typedef struct hcbd__sweep_own {
@@ -7843,9 +7868,9 @@ HCBD__INLINE void hcbd__sweep_pairs(hcbd__sweep_pass *s, int i, const hcbd__near
     const uint64_t skey = s->skey;
     const int32_t idi = w->id[i];
     const int noise = s->noise, uniform = w->p.noise == HCBD_NOISE_UNIFORM;
-    const hcbd_real *HCBD__RESTRICT irho = w->inv_rho;
-    const int32_t *HCBD__RESTRICT id = w->id;
-    hcbd_real *HCBD__RESTRICT vx = w->vx, *HCBD__RESTRICT vy = w->vy, *HCBD__RESTRICT vz = w->vz;
+    const hcbd_real *HCBD__RESTRICT irho = s->irho;
+    const int32_t *HCBD__RESTRICT id = s->id;
+    hcbd_real *HCBD__RESTRICT vx = s->vx, *HCBD__RESTRICT vy = s->vy, *HCBD__RESTRICT vz = s->vz;
     hcbd_real vxi = (hcbd_real)a->vx, vyi = (hcbd_real)a->vy, vzi = (hcbd_real)a->vz;
     double sb = a->sb;
     double xx[HCBD__CHUNK], cc[HCBD__CHUNK], n0[HCBD__CHUNK], n1[HCBD__CHUNK], n2[HCBD__CHUNK];
@@ -7942,6 +7967,8 @@ static void hcbd__shardlow(hcbd_world *w)
         s.skey = skey; s.wkey = wkey;
         s.noise = w->has_noise;
         s.flux = w->core.stress_on;
+        s.vx = w->vx; s.vy = w->vy; s.vz = w->vz;
+        s.irho = w->inv_rho; s.id = w->id;
         {
             const int nb[3] = {ny, nz, 1}, nc[3] = {ny > 1 ? 3 : 1, nz > 1 ? 3 : 1, 1};
             hcbd__sweep_colours(nb, nc, nt, &T, list, start, &s);
