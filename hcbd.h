@@ -2957,7 +2957,6 @@ HCBD__INLINE int hcbd__block_of(const int nb[3], const int nc[3], int col, int j
     {                                                                                                        \
         const int per = nb[0] / nc[0] * (nb[1] / nc[1]) * (nb[2] / nc[2]), ncol = nc[0] * nc[1] * nc[2];     \
         int worst = INT_MAX;                                                                                 \
-        (void)T;                                                                                             \
         if (T <= 1) { /* no team: libgomp's barrier of a team of one still costs a system call per colour */ \
             int col, j;                                                                                      \
             for (col = 0; col < ncol; ++col)                                                                 \
@@ -4498,15 +4497,26 @@ HCBD__INLINE void hcbd__hc_redist_begin(const hcbd__hc_redist_pass *s, int i, hc
 HCBD__INLINE void hcbd__hc_redist_pairs(hcbd__hc_redist_pass *s, int i, const hcbd__near *c, int m,
                                         hcbd__hc_redist_own *o)
 {
-    const hcbd_hc_world *w = s->w;
+    const double *HCBD__RESTRICT xw = s->w->xw;
+    const double sni = s->w->sn[i];
+    double px[HCBD__CHUNK], py[HCBD__CHUNK], pz[HCBD__CHUNK];
     int t;
+    /* the terms in a SIMD loop, an entry beyond rc (weight 0) adding
+       +0, which leaves a sum unchanged (a sum from +0 is never -0); their
+       sums in pair order after it: the same bits */
+    HCBD__OMP(omp simd)
     for (t = 0; t < m; ++t) {
         const int a = c->j[t];
-        const double wt = w->xw[c->e[t]], psi = wt / w->sn[i] / s->S[a];
-        if (wt == 0) continue; /* beyond rc */
-        o->fx += psi * s->Fx[a];
-        o->fy += psi * s->Fy[a];
-        o->fz += psi * s->Fz[a];
+        const double wt = xw[c->e[t]], psi = wt / sni / s->S[a];
+        const int in = wt != 0;
+        px[t] = in ? psi * s->Fx[a] : 0.0;
+        py[t] = in ? psi * s->Fy[a] : 0.0;
+        pz[t] = in ? psi * s->Fz[a] : 0.0;
+    }
+    for (t = 0; t < m; ++t) {
+        o->fx += px[t];
+        o->fy += py[t];
+        o->fz += pz[t];
     }
 }
 
