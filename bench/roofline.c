@@ -61,10 +61,13 @@ HCBD__INLINE int bare_end(bare_pass *b, int i, bare_own *a)
 
 HCBD__PASS(bare)
 
-/* over list L of owners at x, y, z and partners at X, Y, Z within cut */
-static int64_t bare(const hcbd_hc_world *w, const hcbd__nlist *L, int n, const hcbd_real *x, const hcbd_real *y,
-                    const hcbd_real *z, const hcbd_real *X, const hcbd_real *Y, const hcbd_real *Z, double cut,
-                    int64_t *acc)
+/* over list L of owners at x, y, z, taken in the order owners[0 .. n),
+   and partners at X, Y, Z within cut.  The order is the pass's own: the
+   polymer-fluid list is never sorted (its perm is all zeros), and its
+   passes take the polymer list's cell order. */
+static int64_t bare(const hcbd_hc_world *w, const hcbd__nlist *L, const int32_t *owners, int n,
+                    const hcbd_real *x, const hcbd_real *y, const hcbd_real *z, const hcbd_real *X,
+                    const hcbd_real *Y, const hcbd_real *Z, double cut, int64_t *acc)
 {
     const hcbd__trav T = hcbd__trav_make(L, x, y, z, X, Y, Z, hcbd__hc_box(w), cut);
     bare_pass b;
@@ -73,7 +76,7 @@ static int64_t bare(const hcbd_hc_world *w, const hcbd__nlist *L, int n, const h
     b.acc = acc;
     b.ic2 = 1.0 / (cut * cut);
     memset(acc, 0, sizeof(int64_t) * (size_t)(w->nf + w->np + 1));
-    bare_traverse(&T, L->perm, 0, n, &b);
+    bare_traverse(&T, owners, 0, n, &b);
     for (i = 0; i < n; ++i) tot += acc[i];
     return tot;
 }
@@ -161,11 +164,11 @@ int main(int argc, char **argv)
         TIME(8, "lists (all three)", w.lf.npairs + w.lp.npairs + w.lx.npairs, hcbd__hc_lists_stale(&w);
              hcbd__hc_lists(&w, w.step));
         TIME(9, "bare: fluid list (2h)", w.lf.npairs,
-             sink = bare(&w, &w.lf, nf, w.sx, w.sy, w.sz, w.sx, w.sy, w.sz, 2.0 * p->h, acc));
+             sink = bare(&w, &w.lf, w.lf.perm, nf, w.sx, w.sy, w.sz, w.sx, w.sy, w.sz, 2.0 * p->h, acc));
         TIME(10, "bare: polymer list (rc)", w.lp.npairs,
-             sink = bare(&w, &w.lp, np, w.px, w.py, w.pz, w.px, w.py, w.pz, p->rc, acc));
+             sink = bare(&w, &w.lp, w.lp.perm, np, w.px, w.py, w.pz, w.px, w.py, w.pz, p->rc, acc));
         TIME(11, "bare: polymer-fluid list (rc)", w.lx.npairs,
-             sink = bare(&w, &w.lx, np, w.px, w.py, w.pz, w.sx, w.sy, w.sz, p->rc, acc));
+             sink = bare(&w, &w.lx, w.lp.perm, np, w.px, w.py, w.pz, w.sx, w.sy, w.sz, p->rc, acc));
     }
 #undef TIME
     /* the forces alone: the two together less the densities */

@@ -354,6 +354,69 @@ void test_hc_abs_one_step(void)
     }
 }
 
+/* The coupling of many polymers against a_polymer: 240 polymers at random
+   in a jittered fluid with random velocities, raw and Shepard weights.
+   The interpolation takes its pairs in batches of many owners (the
+   polymer a batch cuts goes on in the next), so its drift u_a = v(r_a) +
+   F_a/xi and the forces it hands the fluid (through the weights it kept,
+   the skin's as 0) are checked here over thousands of pairs, where the
+   one-step test's six polymers fill no batch. */
+void test_hc_abs_coupling_many(void)
+{
+    enum { NP = 240 };
+    const double tol = ABS_FLOAT ? 1e-4 : 1e-10;
+    int var;
+    for (var = 0; var < 2; ++var) {
+        hcbd_hc_world_def d = hc_scene(7, 7, 7, NP);
+        hcbd_hc_params *p = &d.params;
+        hcbd_hc_world w;
+        const int nf = d.fluid_capacity;
+        double *xyz = (double *)malloc(sizeof(double) * 3 * nf), *v = (double *)malloc(sizeof(double) * 3 * nf);
+        double *n = (double *)malloc(sizeof(double) * nf), *fa = (double *)malloc(sizeof(double) * 3 * nf);
+        double *buf = (double *)malloc(sizeof(double) * 3 * nf);
+        static double pxyz[3 * NP], pn[NP], F[3 * NP], u[3 * NP], ub[3 * NP];
+        double usc, fsc, e_u, e_fa;
+        hcbd_rng g;
+        int i, c, k, ok;
+        p->fluctuations = 0;
+        p->n_max = 50.0;
+        p->rc = 4.0; /* about 80 entries a polymer: more than a chunk, so batches end inside owners */
+        p->coupling = var ? HCBD_COUPLE_SHEPARD : HCBD_COUPLE_RAW;
+        hcbd_rng_seed(&g, 31 + var);
+        ok = hc_create(&w, &d) && a_ok(&w, hcbd_hc_world_place_fluid_lattice(&w, nf), "lattice");
+        for (i = 0; i < nf && ok; ++i)
+            for (c = 0; c < 3; ++c) {
+                double x = (c == 0 ? w.fx[i] : (c == 1 ? w.fy[i] : w.fz[i])) + 0.6 * (hcbd_rng_uniform(&g) - 0.5);
+                xyz[3 * i + c] = x - p->L[c] * floor(x / p->L[c]);
+                if (xyz[3 * i + c] >= p->L[c]) xyz[3 * i + c] = 0;
+                v[3 * i + c] = hcbd_rng_uniform(&g) - 0.5;
+            }
+        ok = ok && a_ok(&w, hcbd_hc_world_set_fluid(&w, nf, xyz, v), "fluid");
+        /* placed twice, so that the second placement's skin entries hold
+           the first one's weights unless they are zeroed */
+        for (k = 0; k < 2 && ok; ++k) {
+            for (i = 0; i < 3 * NP; ++i) pxyz[i] = p->L[i % 3] * hcbd_rng_uniform(&g);
+            ok = a_ok(&w, hcbd_hc_world_set_polymers(&w, NP, pxyz), "polymers");
+        }
+        if (ok) {
+            a_fluid_density(&w, n);
+            a_polymer(&w, n, pn, F, u, fa, NULL);
+            for (i = 0; i < NP; ++i) { ub[3 * i] = w.pux[i]; ub[3 * i + 1] = w.puy[i]; ub[3 * i + 2] = w.puz[i]; }
+            e_u = a_maxdiff(ub, u, 3 * NP, &usc) / usc;
+            for (i = 0; i < nf; ++i) { buf[3 * i] = w.fax[i]; buf[3 * i + 1] = w.fay[i]; buf[3 * i + 2] = w.faz[i]; }
+            e_fa = a_maxdiff(buf, fa, 3 * nf, &fsc) / fsc;
+            NOTE("%s, %d polymers, %lld polymer-fluid entries: u_a %.1e, sum_a psi_ai F_a %.1e",
+                 var ? "Shepard" : "raw", NP, (long long)w.lx.npairs, e_u, e_fa);
+            /* many batches, most of them ending inside an owner's pairs */
+            CHECK(w.lx.npairs > 4 * 512, "only %lld entries", (long long)w.lx.npairs); /* HCBD__STREAM */
+            CHECK(e_u < tol, "%s: polymer drift v(r_a) + F_a/xi %g", var ? "Shepard" : "raw", e_u);
+            CHECK(e_fa < tol, "%s: force on the fluid %g", var ? "Shepard" : "raw", e_fa);
+        }
+        hcbd_hc_world_destroy(&w);
+        free(xyz); free(v); free(n); free(fa); free(buf);
+    }
+}
+
 /* Free polymer blobs (no Flory-Huggins, no pairs) in a fluid at rest
    without fluctuations: nothing moves the fluid, so each step is
    dr = dW exactly, <dr^2> = 6 kT dt / xi, and the MSD grows as 6 kT t / xi.
