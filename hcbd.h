@@ -2900,7 +2900,7 @@ static int hcbd__density_stale(const hcbd_world *w)
 }
 
 /* >>pair traversal: owners scheduled in slabs, partners gathered in chunks,
-   the loop of every pair pass, and its streamed form. */
+   the loop of every pair pass, its streamed form and its batched form. */
 /* HCBD__SLABS(NAME, W) writes NAME(w, L, n, fn), which runs fn(w, q0, q1)
    over the owners of list L in cell order and returns the least of its
    results (the lowest id of an owner with a term out of range, or
