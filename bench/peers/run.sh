@@ -191,8 +191,8 @@ row bd          star_bd_gauss "$STAR_N"  3  "Gaussian noise on both sides (LAMMP
 row gibd_u      star_bd       "$STAR_N"  1.5  "uniform: hcbd GI-BD pair and Brownian noise; LAMMPS fix brownian"
 row gibd        star_bd_gauss "$STAR_N"  -  "Gaussian: hcbd GI-BD; LAMMPS fix brownian rng gaussian"
 row gibd        star_dpd      "$STAR_N"  2  "LAMMPS dpd/tstat (1 Gaussian per pair) + fix nve"
-row sph         sph_tait      "$FLUID_N" 2  "no noise; both from random positions"
-row sdpd        sdpd          "$FLUID_N" 8  "LAMMPS 6 Gaussians per pair; hcbd pairwise"
+row sph         sph_tait      "$FLUID_N" 1.5 "no noise; both from random positions"
+row sdpd        sdpd          "$FLUID_N" 6  "LAMMPS 6 Gaussians per pair; hcbd pairwise"
 row table1      sph_tait      "$SOLUTION_N" 1 "hcbd Table I solution (N fluid + N polymer blobs, defaults) per blob-step; LAMMPS pure fluid"
 own=$(awk -v a="$(med_col "$tmp/hcbd_gibd_u.txt" 1)" -v b="$(med_col "$tmp/hcbd_bd_u.txt" 1)" \
     'BEGIN {if (a + 0 > 0 && b + 0 > 0) printf "%.2f", a / b; else print "n/a"}')
