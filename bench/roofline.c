@@ -12,7 +12,9 @@
    This program includes the implementation (HCBD_IMPLEMENTATION) to call
    the passes one at a time; 1 thread, the minimum over repeats.
 
-   usage: roofline [C=5] [reps=20] [out=out/bench]   writes OUT/roofline.csv */
+   usage: roofline [C=5] [reps=20] [steps=0] [out=out/bench]   writes OUT/roofline.csv
+   steps=N first times N whole steps of the same world and counts its
+   list builds (how the passes add up to a step). */
 #define HCBD_IMPLEMENTATION
 #include "bench_common.h"
 
@@ -95,7 +97,7 @@ int main(int argc, char **argv)
     hcbd_hc_params *p = &d.params;
     hcbd_hc_world w;
     double C = 5, best[16], t0;
-    int reps = 20, k, r, np, nf, need, nrow = 0;
+    int reps = 20, steps = 0, k, r, np, nf, need, nrow = 0;
     const char *out = "out/bench";
     char msg[256], path[600];
     int64_t *acc;
@@ -104,14 +106,15 @@ int main(int argc, char **argv)
     for (k = 1; k < argc; ++k) {
         if (!strncmp(argv[k], "C=", 2)) C = atof(argv[k] + 2);
         else if (!strncmp(argv[k], "reps=", 5)) reps = atoi(argv[k] + 5);
+        else if (!strncmp(argv[k], "steps=", 6)) steps = atoi(argv[k] + 6);
         else if (!strncmp(argv[k], "out=", 4)) out = argv[k] + 4;
         else {
-            fprintf(stderr, "roofline: unknown argument '%s' (C=, reps=, out=)\n", argv[k]);
+            fprintf(stderr, "roofline: unknown argument '%s' (C=, reps=, steps=, out=)\n", argv[k]);
             return 2;
         }
     }
-    if (!(C > 0) || reps < 1) {
-        fprintf(stderr, "roofline: C > 0 and reps >= 1\n");
+    if (!(C > 0) || reps < 1 || steps < 0) {
+        fprintf(stderr, "roofline: C > 0, reps >= 1 and steps >= 0\n");
         return 2;
     }
     si.dt = 1e-4;
@@ -134,6 +137,18 @@ int main(int argc, char **argv)
         hcbd_hc_world_place_polymers_random(&w, np) != HCBD_OK || hcbd_hc_world_step(&w, 200) != HCBD_OK) {
         fprintf(stderr, "roofline: %s\n", w.err.msg);
         return 1;
+    }
+    if (steps > 0) {
+        const int64_t b0 = w.lp.n_rebuilds;
+        t0 = now();
+        if (hcbd_hc_world_step(&w, steps) != HCBD_OK) {
+            fprintf(stderr, "roofline: %s\n", w.err.msg);
+            return 1;
+        }
+        t0 = now() - t0;
+        printf("roofline: %d whole steps: %.3f ms per step, lists built %lld times (every %.0f steps)\n", steps,
+               t0 / steps * 1e3, (long long)(w.lp.n_rebuilds - b0),
+               (double)steps / (double)(w.lp.n_rebuilds - b0 > 0 ? w.lp.n_rebuilds - b0 : 1));
     }
     acc = (int64_t *)malloc(sizeof(int64_t) * (size_t)(nf + np + 1));
     for (k = 0; k < 16; ++k) best[k] = 1e30;
