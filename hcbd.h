@@ -1167,9 +1167,10 @@ typedef struct hcbd_hc_world {
     hcbd_real *pS;               /* psi normaliser sum_i w(r_ai) / n_i      */
     double *ps;                  /* 3 x np stress accumulators              */
     /* transient pairs owned by a (partners b > a in increasing id):
-       pair_n[a] of them at pair_b/pair_l/pair_eq[a * pair_cap + k] */
+       pair_n[a] of them at pair_b/pair_l/pair_eq[a * pair_cap + k];
+       pair_ln holds their values at t + dt, drawn by the force pass */
     int32_t *pair_n, *pair_b, *pair_n2, *pair_b2;
-    hcbd_real *pair_l, *pair_eq, *pair_l2, *pair_eq2;
+    hcbd_real *pair_l, *pair_eq, *pair_l2, *pair_eq2, *pair_ln;
     int64_t npairs, n_created;
     int64_t n_coincident;        /* polymer pairs at zero distance (no force,
                                     no direction) met by the force passes  */
@@ -4183,6 +4184,8 @@ static void hcbd__hc_fluid_density(hcbd_hc_world *w)
 typedef struct hcbd__hc_poly {
     hcbd_hc_world *w;
     double rc, sg, A, cfh, alpha;
+    double le, ls;                 /* pair variables: e^(-dt/tau), noise */
+    uint64_t lkey;                 /* their draws' key at this step      */
     size_t cap;
     int tr, fc, stress;
     int64_t created, total, coinc; /* per thread */
@@ -4207,6 +4210,11 @@ static hcbd__hc_poly hcbd__hc_poly_of(hcbd_hc_world *w)
     c.fc = w->has_fc;
     c.stress = w->core.stress_on;
     c.mu = w->pmu;
+    if (c.tr) {
+        c.le = exp(-w->p.dt / w->p.tau_lambda);
+        c.ls = w->noise_p ? sqrt(w->p.kT / w->p.alpha * -expm1(-2.0 * w->p.dt / w->p.tau_lambda)) : 0.0;
+        c.lkey = hcbd__mix64(w->key_lambda ^ hcbd__mix64((uint64_t)w->step));
+    }
     return c;
 }
 
@@ -4307,7 +4315,14 @@ static int hcbd__hc_find(const hcbd_hc_world *w, int a, int b)
    rc come in increasing id and are merged with the old list, so a
    persisting pair keeps its lambda, a new one starts at lambda_eq and a
    departed one is dropped; the new list goes to the spare buffers.  The
-   forces are kept per entry in pf. */
+   forces are kept per entry in pf.
+   The same merge draws each pair's value at t + dt into pair_ln, which the
+   step takes after its forces (a pass over the pairs saved, and lambda(t)
+   stays readable until then): the exact Ornstein-Uhlenbeck step over dt
+   with lambda_eq held at its value of t, so the equilibrium variance is
+   kT/alpha for any dt/tau_lambda (Euler-Maruyama, the paper's, agrees to
+   first order and is biased when a quick run shortens tau_lambda).  A
+   change of lambda(t) (set_lambda, a checkpoint) runs this pass again. */
 typedef struct hcbd__hc_pforce_own {
     int64_t found, old;    /* the pairs found, the old list's cursor        */
     double fx, fy, fz;     /* the owner's force                             */
@@ -4331,7 +4346,7 @@ HCBD__INLINE void hcbd__hc_pforce_pairs(hcbd__hc_poly *s, int a, const hcbd__nea
     const int32_t *ob = w->pair_b + o0;
     const hcbd_real *ol = w->pair_l + o0, *HCBD__RESTRICT mu = s->mu;
     int32_t *nb = w->pair_b2 + o0;
-    hcbd_real *nl = w->pair_l2 + o0, *ne = w->pair_eq2 + o0;
+    hcbd_real *nl = w->pair_l2 + o0, *ne = w->pair_eq2 + o0, *nn = w->pair_ln + o0;
     /* the merge with the old list goes pair by pair; the forces, apart
        from it, in SIMD loops (the same operations on each pair, so the
        same bits), and their sums again in order */
@@ -4357,9 +4372,14 @@ HCBD__INLINE void hcbd__hc_pforce_pairs(hcbd__hc_poly *s, int a, const hcbd__nea
                 ++s->created;
             }
             if (o->found < (int64_t)cap) {
+                const hcbd_real eq = (hcbd_real)leq[t], l = (hcbd_real)lam[t];
+                double x = eq + (l - eq) * s->le;
+                if (s->ls > 0)
+                    x += s->ls * hcbd__normal_at(w->core.zig, hcbd__pair_key(s->lkey, a, b));
                 nb[o->found] = b;
-                ne[o->found] = (hcbd_real)leq[t];
-                nl[o->found] = (hcbd_real)lam[t];
+                ne[o->found] = eq;
+                nl[o->found] = l;
+                nn[o->found] = (hcbd_real)x;
             }
             o->found++;
         }
@@ -5036,35 +5056,7 @@ static int hcbd__hc_fluid_kick(hcbd_hc_world *w, double dt, uint64_t skey)
     return bad == INT_MAX ? -1 : bad;
 }
 
-/* >>HCBD: integrator (pair variables, moves, the state at the present
-   positions) */
-/* Exact Ornstein-Uhlenbeck update of the pair variables over dt with
-   lambda_eq held at its value of t: the equilibrium variance is kT/alpha
-   for any dt/tau_lambda (Euler-Maruyama, the paper's, agrees to first
-   order and is biased when a quick run shortens tau_lambda). */
-static void hcbd__hc_lambda_update(hcbd_hc_world *w)
-{
-    const int n = w->np, nt = w->p.threads, noise = w->noise_p;
-    const double e = exp(-w->p.dt / w->p.tau_lambda);
-    const double s = noise ? sqrt(w->p.kT / w->p.alpha * -expm1(-2.0 * w->p.dt / w->p.tau_lambda)) : 0.0;
-    const uint64_t skey = hcbd__mix64(w->key_lambda ^ hcbd__mix64((uint64_t)w->step));
-    const size_t cap = (size_t)w->pair_cap;
-    int a;
-    (void)nt;
-    HCBD__OMP(omp parallel for num_threads(nt) schedule(static))
-    for (a = 0; a < n; ++a) {
-        hcbd_real *l = w->pair_l + a * cap;
-        const hcbd_real *eq = w->pair_eq + a * cap;
-        const int32_t *b = w->pair_b + a * cap;
-        int k;
-        for (k = 0; k < w->pair_n[a]; ++k) {
-            double x = eq[k] + (l[k] - eq[k]) * e;
-            if (noise) x += s * hcbd__normal_at(w->core.zig, hcbd__pair_key(skey, a, b[k]));
-            l[k] = (hcbd_real)x;
-        }
-    }
-}
-
+/* >>HCBD: integrator (moves, the state at the present positions) */
 /* Moves a particle by dr with periodic and Lees-Edwards wrapping; returns
    the image crossing in y (+1 up, -1 down, 0). */
 static inline int hcbd__hc_move(const hcbd_hc_world *w, double s_new, double *x, double *y,
@@ -5324,7 +5316,11 @@ hcbd_result hcbd_hc_world_step(hcbd_hc_world *w, int nsteps)
                                   bad, w->core.limF, dt_f);
             if (k == nsub - 1) {
                 if (w->core.stress_on) hcbd__hc_stress_add(w);
-                if (w->transient && w->np > 0) hcbd__hc_lambda_update(w);
+                if (w->transient && w->np > 0) { /* lambda(t + dt), drawn by the force pass */
+                    hcbd_real *l = w->pair_l;
+                    w->pair_l = w->pair_ln;
+                    w->pair_ln = l;
+                }
             }
             bad = hcbd__hc_drift(w, dt_f, 1, nsub == 1, &why);
         }
@@ -5947,7 +5943,7 @@ static size_t hcbd__hc_layout(const hcbd_hc_world_def *def, hcbd_hc_world *t, ch
     HCBD__HA(pair_n, np * I); HCBD__HA(pair_n2, np * I);
     HCBD__HA(pair_b, npc * I); HCBD__HA(pair_b2, npc * I);
     HCBD__HA(pair_l, npc * R); HCBD__HA(pair_l2, npc * R);
-    HCBD__HA(pair_eq, npc * R); HCBD__HA(pair_eq2, npc * R);
+    HCBD__HA(pair_eq, npc * R); HCBD__HA(pair_eq2, npc * R); HCBD__HA(pair_ln, npc * R);
     HCBD__HA(core.zig, sizeof(hcbd__zig));
     HCBD__HA(aW, nf * Q);
     for (d = 0; d < 3; ++d) HCBD__HA(aF[d], nf * Q);

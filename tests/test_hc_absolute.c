@@ -417,6 +417,67 @@ void test_hc_abs_coupling_many(void)
     }
 }
 
+/* The pair variables of many pairs over one step, against the exact
+   Ornstein-Uhlenbeck step written with the public stream
+   (hcbd_hc_lambda_step, hcbd_hc_noise_lambda): lambda_eq at the positions
+   of t, the world's lambda(t) as get_lambda reads it before the step.
+   The force pass draws lambda(t + dt) while it merges the pairs, and the
+   step takes it; about 5000 pairs, so the ziggurat's slow path (about one
+   draw in 80) is met too.  A set_lambda between steps must be the value
+   the step starts from. */
+void test_hc_abs_lambda_many(void)
+{
+    enum { NP = 240 };
+    const double tol = ABS_FLOAT ? 1e-6 : 1e-12;
+    hcbd_hc_world_def d = hc_scene(7, 7, 7, NP);
+    hcbd_hc_params *p = &d.params;
+    hcbd_hc_world w;
+    hcbd_hc_coef c;
+    hcbd_hc_noise_stream ns;
+    static double lam[NP * NP], leq[NP * NP];
+    char msg[160];
+    double e_l = 0, dev = 0;
+    int a, b, npair = 0, checked = 0, ok;
+    int64_t step;
+    p->n_max = 50.0;
+    p->rc = 4.0;
+    CHECK(hcbd_hc_params_coef(p, &c, msg, sizeof msg) == HCBD_OK, "coef: %s", msg);
+    hcbd_hc_noise_stream_init(&ns, p->seed);
+    ok = hc_create(&w, &d) && a_ok(&w, hcbd_hc_world_place_fluid_lattice(&w, d.fluid_capacity), "lattice") &&
+         a_ok(&w, hcbd_hc_world_place_polymers_random(&w, NP), "polymers") && hc_run(&w, 3);
+    /* one pair set by hand: the step must start from it */
+    for (b = 1; b < NP && ok; ++b)
+        if (hcbd_hc_world_get_lambda(&w, 0, b, &lam[b]) == HCBD_OK) {
+            ok = a_ok(&w, hcbd_hc_world_set_lambda(&w, 0, b, lam[b] + 0.3), "set_lambda");
+            break;
+        }
+    step = w.step;
+    for (a = 0; a < NP && ok; ++a)
+        for (b = a + 1; b < NP; ++b) {
+            double dd[3];
+            lam[NP * a + b] = NAN;
+            if (hcbd_hc_world_get_lambda(&w, a, b, &lam[NP * a + b]) != HCBD_OK) continue;
+            leq[NP * a + b] = hcbd_hc_lambda_eq(&c, a_sep(p->L, w.px[a], w.py[a], w.pz[a], w.px[b], w.py[b], w.pz[b], dd));
+            dev += fabs(lam[NP * a + b] - leq[NP * a + b]);
+            ++npair;
+        }
+    ok = ok && hc_run(&w, 1);
+    for (a = 0; a < NP && ok; ++a)
+        for (b = a + 1; b < NP; ++b) {
+            double l;
+            if (isnan(lam[NP * a + b]) || hcbd_hc_world_get_lambda(&w, a, b, &l) != HCBD_OK) continue;
+            l -= hcbd_hc_lambda_step(&c, lam[NP * a + b], leq[NP * a + b], hcbd_hc_noise_lambda(&ns, step, a, b));
+            if (fabs(l) > e_l) e_l = fabs(l);
+            ++checked;
+        }
+    NOTE("%d pairs at step %lld (mean |lambda - lambda_eq| %.3f), %d still paired after it: lambda %.1e",
+         npair, (long long)step, npair ? dev / npair : 0.0, checked, e_l);
+    CHECK(ok, "the scene did not run");
+    CHECK(checked > 3000, "only %d pairs checked", checked);
+    CHECK(e_l < tol, "pair variables over one step %g", e_l);
+    hcbd_hc_world_destroy(&w);
+}
+
 /* Free polymer blobs (no Flory-Huggins, no pairs) in a fluid at rest
    without fluctuations: nothing moves the fluid, so each step is
    dr = dW exactly, <dr^2> = 6 kT dt / xi, and the MSD grows as 6 kT t / xi.
