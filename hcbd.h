@@ -1168,9 +1168,12 @@ typedef struct hcbd_hc_world {
     double *ps;                  /* 3 x np stress accumulators              */
     /* transient pairs owned by a (partners b > a in increasing id):
        pair_n[a] of them at pair_b/pair_l/pair_eq[a * pair_cap + k];
-       pair_ln holds their values at t + dt, drawn by the force pass */
+       pair_ln holds their values at t + dt, drawn by the force pass,
+       which names the first polymer (lowest id) with one not finite and
+       its partner in ln_bad, ln_bad_b (-1: none) for the guard */
     int32_t *pair_n, *pair_b, *pair_n2, *pair_b2;
     hcbd_real *pair_l, *pair_eq, *pair_l2, *pair_eq2, *pair_ln;
+    int ln_bad, ln_bad_b;
     int64_t npairs, n_created;
     int64_t n_coincident;        /* polymer pairs at zero distance (no force,
                                     no direction) met by the force passes  */
@@ -4189,7 +4192,7 @@ typedef struct hcbd__hc_poly {
     size_t cap;
     int tr, fc, stress;
     int64_t created, total, coinc; /* per thread */
-    int most;
+    int most, lbad, lbad_b;        /* lbad: as hcbd_hc_world.ln_bad     */
     const hcbd_real *mu;           /* the partners' mu(phi)             */
 } hcbd__hc_poly;
 typedef hcbd__hc_poly hcbd__hc_pdens_pass;
@@ -4210,6 +4213,7 @@ static hcbd__hc_poly hcbd__hc_poly_of(hcbd_hc_world *w)
     c.fc = w->has_fc;
     c.stress = w->core.stress_on;
     c.mu = w->pmu;
+    c.lbad = INT_MAX;
     if (c.tr) {
         c.le = exp(-w->p.dt / w->p.tau_lambda);
         c.ls = w->noise_p ? sqrt(w->p.kT / w->p.alpha * -expm1(-2.0 * w->p.dt / w->p.tau_lambda)) : 0.0;
@@ -4380,6 +4384,7 @@ HCBD__INLINE void hcbd__hc_pforce_pairs(hcbd__hc_poly *s, int a, const hcbd__nea
                 ne[o->found] = eq;
                 nl[o->found] = l;
                 nn[o->found] = (hcbd_real)x;
+                if (!isfinite(nn[o->found]) && a < s->lbad) { s->lbad = a; s->lbad_b = b; }
             }
             o->found++;
         }
@@ -4445,7 +4450,7 @@ static int hcbd__hc_poly_forces(hcbd_hc_world *w, int *need)
     hcbd__trav T = hcbd__hc_trav_p(w, w->pf, 3);
     const hcbd__hc_poly base = hcbd__hc_poly_of(w);
     int q, bad = INT_MAX, most = 0;
-    int64_t created = 0, total = 0, coinc = 0;
+    int64_t created = 0, total = 0, coinc = 0, lbad = INT64_MAX; /* owner << 32 | partner */
     (void)nt;
     T.kin = &w->pk;
     if (!hcbd__hc_poly_pairs(&w->p)) { /* no polymer pair forces: nothing to sum */
@@ -4457,7 +4462,7 @@ static int hcbd__hc_poly_forces(hcbd_hc_world *w, int *need)
         *need = 0;
         return -1;
     }
-    HCBD__OMP(omp parallel num_threads(nt) reduction(min:bad) reduction(max:most) reduction(+:created) reduction(+:total) reduction(+:coinc))
+    HCBD__OMP(omp parallel num_threads(nt) reduction(min:bad) reduction(max:most) reduction(+:created) reduction(+:total) reduction(+:coinc) reduction(min:lbad))
     {
         hcbd__hc_poly s = base;
         int64_t lo, hi;
@@ -4469,6 +4474,7 @@ static int hcbd__hc_poly_forces(hcbd_hc_world *w, int *need)
         created += s.created;
         total += s.total;
         coinc += s.coinc;
+        if (s.lbad != INT_MAX) lbad = (int64_t)s.lbad << 32 | (int64_t)(uint32_t)s.lbad_b;
     }
     *need = most;
     if (bad != INT_MAX) return bad;
@@ -4487,6 +4493,8 @@ static int hcbd__hc_poly_forces(hcbd_hc_world *w, int *need)
         hcbd__hc_swap_pairs(w);
         w->npairs = total;
         w->n_created += created;
+        w->ln_bad = lbad == INT64_MAX ? -1 : (int)(lbad >> 32);
+        w->ln_bad_b = lbad == INT64_MAX ? -1 : (int)(lbad & 0xFFFFFFFF);
     }
     return -1;
 }
@@ -5237,8 +5245,10 @@ static hcbd__vset hcbd__hc_vset(const hcbd_hc_world *w, int poly)
 
 
 /* The run-time guard (guard_every): positions inside the box, finite
-   velocities and pair variables. */
-static hcbd_result hcbd__hc_guard(hcbd_hc_world *w)
+   velocities and pair variables.  After a step the force pass that drew
+   the pair variables has named the first one not finite (ln_bad), so
+   only a loaded state (scan) reads them all. */
+static hcbd_result hcbd__hc_guard(hcbd_hc_world *w, int scan)
 {
     const double *L = w->p.L;
     const int nt = w->p.threads;
@@ -5259,22 +5269,26 @@ static hcbd_result hcbd__hc_guard(hcbd_hc_world *w)
     for (i = 0; i < w->np; ++i) {
         const double x = w->px[i], y = w->py[i], z = w->pz[i];
         int bad = !(x >= 0 && x < L[0] && y >= 0 && y < L[1] && z >= 0 && z < L[2]), kk;
-        for (kk = 0; w->transient && kk < w->pair_n[i]; ++kk)
+        for (kk = 0; scan && w->transient && kk < w->pair_n[i]; ++kk)
             bad |= !isfinite(w->pair_l[(size_t)i * w->pair_cap + kk]);
         if (bad && i < p0) p0 = i;
     }
+    if (!scan && w->transient && w->ln_bad >= 0 && w->ln_bad < p0) p0 = w->ln_bad;
     for (i = f0; i < w->nf; ++i)
         if ((r = hcbd__guard_one(&w->err, w->step, &fs, i, L, "fluid blob", i)) != HCBD_OK)
             return r;
     for (i = p0; i < w->np; ++i) {
+        int partner = -1;
         if ((r = hcbd__guard_one(&w->err, w->step, &ps, i, L, "polymer", w->nf + i)) != HCBD_OK)
             return r;
-        for (k = 0; w->transient && k < w->pair_n[i]; ++k)
+        for (k = 0; scan && w->transient && k < w->pair_n[i] && partner < 0; ++k)
             if (!isfinite(w->pair_l[(size_t)i * w->pair_cap + k]))
-                return hcbd__fail(&w->err, HCBD_ERR_NONFINITE, w->step, w->nf + i,
-                                  "guard at step %lld: polymer %d's pair variable with %d "
-                                  "is not finite", (long long)w->step, i,
-                                  (int)w->pair_b[(size_t)i * w->pair_cap + k]);
+                partner = (int)w->pair_b[(size_t)i * w->pair_cap + k];
+        if (!scan && w->transient && i == w->ln_bad) partner = w->ln_bad_b;
+        if (partner >= 0)
+            return hcbd__fail(&w->err, HCBD_ERR_NONFINITE, w->step, w->nf + i,
+                              "guard at step %lld: polymer %d's pair variable with %d "
+                              "is not finite", (long long)w->step, i, partner);
     }
     return HCBD_OK;
 }
@@ -5332,7 +5346,7 @@ hcbd_result hcbd_hc_world_step(hcbd_hc_world *w, int nsteps)
                               w->step, bad, "%s (id %d, dt = %g, substeps %d)", why_s[why], bad,
                               w->p.dt, nsub);
         if (w->p.guard_every > 0 && w->step % w->p.guard_every == 0 &&
-            (r = hcbd__hc_guard(w)) != HCBD_OK)
+            (r = hcbd__hc_guard(w, 0)) != HCBD_OK)
             return r;
     }
     if (!w->ready) return hcbd__hc_prepare(w, w->step);
@@ -6035,6 +6049,7 @@ hcbd_result hcbd_hc_world_init(hcbd_hc_world *w, const hcbd_hc_world_def *def, v
     w->has_fc = p->p_kuhn > 0;
     w->noise_f = p->fluctuations && p->kT > 0;
     w->noise_p = p->kT > 0;
+    w->ln_bad = w->ln_bad_b = -1;
     w->key_fpair = hcbd__mix64(p->seed ^ hcbd__mix64(HCBD__STREAM_FPAIR));
     w->key_lambda = hcbd__mix64(p->seed ^ hcbd__mix64(HCBD__STREAM_LAMBDA));
     w->key_poly = hcbd__mix64(p->seed ^ hcbd__mix64(HCBD__STREAM_POLY));
@@ -10647,7 +10662,7 @@ static hcbd_result hcbd__hc_ck_load(hcbd_hc_world *w, const void *buf, size_t si
                             c.bad ? "ends inside, or holds invalid, particle state"
                             : c.off != c.size ? "has trailing bytes" : "has a bad flag");
     for (np = 0; np < w->np && w->transient; ++np) w->npairs += w->pair_n[np];
-    r = hcbd__hc_guard(w);
+    r = hcbd__hc_guard(w, 1);
     /* the densities and forces of the saved step, recomputed from the
        same positions and pairs (the pair merge keeps every saved pair) */
     if (r == HCBD_OK && ready) {

@@ -126,6 +126,7 @@ T(test_hc_fluid_equipartition_shardlow)
 T(test_hc_fluid_viscosity)
 T(test_hc_poiseuille_no_lag)
 T(test_hc_checkpoint_restart_bits)
+T(test_hc_pair_guard)
 T(test_hc_xyz_frame)
 T(test_hc_bad_input)
 #endif

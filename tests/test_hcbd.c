@@ -1049,6 +1049,49 @@ void test_hc_checkpoint_restart_bits(void)
     }
 }
 
+/* A pair variable that is not finite.  The force pass, which draws the
+   pair variables of t + dt, names the first polymer (lowest id) with one
+   and its partner, and the guard after a step reads that instead of every
+   pair; a loaded checkpoint's pairs the guard reads one by one. */
+void test_hc_pair_guard(void)
+{
+    hcbd_hc_world_def d = hc_scene(5, 5, 6, 120);
+    hcbd_hc_world w, b;
+    unsigned char *buf;
+    size_t size, o;
+    char want[64];
+    int a, partner;
+    hcbd_result r;
+    d.params.n_max = 3.0;
+    if (!hc_make(&w, &d, 120)) return;
+    hc_run(&w, 3);
+    CHECK(w.ln_bad == -1, "a finite state names polymer %d", w.ln_bad);
+    for (a = 0; a < w.np && w.pair_n[a] < 2; ++a) {
+    }
+    if (a == w.np) {
+        CHECK(0, "no polymer owns two pairs");
+        hcbd_hc_world_destroy(&w);
+        return;
+    }
+    o = (size_t)a * (size_t)w.pair_cap + 1;
+    partner = w.pair_b[o];
+    w.pair_l[o] = (hcbd_real)NAN;
+    snprintf(want, sizeof want, "polymer %d's pair variable with %d", a, partner);
+    size = hcbd_hc_world_checkpoint_size(&w);
+    buf = (unsigned char *)malloc(size);
+    CHECK(hcbd_hc_world_checkpoint_save(&w, buf, size) == HCBD_OK, "save: %s", w.err.msg);
+    r = hcbd_hc_world_checkpoint_load(&b, buf, size);
+    CHECK(r == HCBD_ERR_NONFINITE && strstr(b.err.msg, want), "load: %s (%s)", hcbd_result_name(r), b.err.msg);
+    if (r == HCBD_OK) hcbd_hc_world_destroy(&b);
+    free(buf);
+    CHECK(hcbd_hc_world_refresh(&w) == HCBD_OK, "refresh: %s", w.err.msg);
+    CHECK(w.ln_bad == a && w.ln_bad_b == partner, "the force pass names %d and %d, not %d and %d", w.ln_bad,
+          w.ln_bad_b, a, partner);
+    r = hcbd_hc_world_step(&w, 1);
+    CHECK(r == HCBD_ERR_NONFINITE, "step: %s (%s)", hcbd_result_name(r), w.err.msg);
+    hcbd_hc_world_destroy(&w);
+}
+
 /* One extended XYZ frame of both species: counts, species, ids and the
    fluid's fields against the world. */
 void test_hc_xyz_frame(void)
