@@ -4361,9 +4361,8 @@ HCBD__INLINE void hcbd__hc_pforce_pairs(hcbd__hc_poly *s, int a, const hcbd__nea
     for (t = 0; t < m; ++t) {
         r[t] = sqrt(c->r2[t]);
         leq[t] = hcbd__leq(r[t], rc);
-        lam[t] = 0;
     }
-    if (tr)
+    if (tr) /* sets every lam[t]; without pair variables no loop reads it */
         for (t = 0; t < m; ++t) {
             const int b = c->j[t];
             int k = (int)o->old;
