@@ -189,7 +189,7 @@ int main(int argc, char **argv)
 #undef TIME
     /* the forces alone: the two together less the densities */
     best[1] -= best[0];
-    rows[1].name = "polymer forces and pair variables (after densities)";
+    rows[1].name = "polymer forces + lambda after densities";
     csv = bench_csv("roofline", out, "roofline.csv", path, sizeof path);
     if (!csv) return 1;
     fprintf(csv, "# roofline C=%g reps=%d: %d fluid blobs, %d polymers, 1 thread\n", C, reps, nf, np);
